@@ -1,0 +1,70 @@
+// The immutable robot model: topology arrays (paper 000 Eq. 1-3, κ, μ, ν, φ), joint models,
+// constant joint placements and spatial inertias. Built and validated only by ModelBuilder
+// (model_builder.hpp); see docs/conventions.md for frames and ordering.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "rbdc/spatial.hpp"
+
+namespace rbdc {
+
+enum class JointType { Floating, Fixed, Revolute, Prismatic };
+
+/// Joint i connects body λ(i) to body i. Joint 0 is the root joint (Floating or Fixed).
+struct Joint {
+  std::string name;
+  JointType type = JointType::Revolute;
+  Vector3 axis = Vector3::Zero();   ///< unit axis in the joint (= child body) frame
+  Matrix3 rotation = Matrix3::Identity();  ///< E_T: parent → joint coordinates at q = 0
+  Vector3 translation = Vector3::Zero();   ///< r_T: joint origin in parent coordinates
+  double lower = -std::numeric_limits<double>::infinity();  ///< limits; ±inf when none
+  double upper = std::numeric_limits<double>::infinity();
+  int q_index = 0;  ///< first entry of this joint in q
+  int v_index = 0;  ///< first entry of this joint in v
+};
+
+struct Body {
+  std::string name;
+  double mass = 0;
+  Vector3 com = Vector3::Zero();              ///< body coordinates
+  Matrix3 inertia_com = Matrix3::Zero();      ///< about the COM, body axes
+};
+
+/// A foot is a point on a body (Eq. 16): φ(k) = body.
+struct Foot {
+  std::string name;
+  int body = 0;
+  Vector3 offset = Vector3::Zero();
+};
+
+struct Model {
+  std::string name;
+  bool floating_base = true;
+  int nb = 0;  ///< number of bodies, root included
+  int nq = 0;
+  int nv = 0;
+  Vector3 gravity{0, 0, -9.81};  ///< world frame
+
+  // Topology over joints 1 … nb-1, stored at index i (index 0 holds -1 / 0): paper 000 Eq. 1-3.
+  std::vector<int> pred, succ, parent;
+  std::vector<std::vector<int>> support;   ///< κ(i): joints between body i and the root (i incl.)
+  std::vector<std::vector<int>> children;  ///< μ(i)
+  std::vector<std::vector<int>> subtree;   ///< ν(i), i included
+
+  std::vector<Body> bodies;
+  std::vector<Joint> joints;
+  std::vector<Foot> feet;
+
+  // Derived constants, filled by ModelBuilder.
+  std::vector<Matrix6> X_tree;   ///< X_T(i) = motion_transform(rotation, translation)
+  std::vector<Matrix6> inertia;  ///< spatial inertia of body i at its origin
+  std::vector<Vector6> motion_subspace;  ///< S_i for 1-DoF joints (zero for the root)
+
+  int num_joints() const { return nb - 1; }  ///< 1-DoF joints (actuated)
+  int root_dofs() const { return floating_base ? 6 : 0; }
+};
+
+}  // namespace rbdc

@@ -1,0 +1,46 @@
+// Builds and validates a Model from topology arrays PRED/SUCC plus per-joint parameters
+// (paper 000 Eq. 1-2). This is the one place where numbering and validation happen; the URDF
+// and topology-file loaders only translate their input into a ModelSpec.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "rbdc/model.hpp"
+
+namespace rbdc {
+
+/// Refusal of bad input: the message names the source, the element and what is wrong.
+class ModelError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct JointSpec {
+  std::string name;
+  JointType type = JointType::Revolute;  ///< Revolute or Prismatic
+  Vector3 axis = Vector3::UnitZ();
+  Matrix3 rotation = Matrix3::Identity();  ///< E_T
+  Vector3 translation = Vector3::Zero();   ///< r_T
+  double lower = -std::numeric_limits<double>::infinity();
+  double upper = std::numeric_limits<double>::infinity();
+};
+
+struct ModelSpec {
+  std::string name;
+  std::string source = "<arrays>";  ///< file name used in error messages
+  bool floating_base = true;
+  Vector3 gravity{0, 0, -9.81};
+  std::vector<int> pred, succ;     ///< joints 1 … nb-1 (entry k describes joint k+1), Eq. 1
+  std::vector<JointSpec> joints;   ///< joints 1 … nb-1, same order as pred/succ
+  std::vector<Body> bodies;        ///< nb bodies in final numbering, body 0 = root
+  std::vector<Foot> feet;
+};
+
+/// Validates the spec, derives λ (Eq. 2), κ, μ, ν, q/v indices and the spatial constants.
+/// Throws ModelError on bad input; appends non-fatal findings (e.g. an inertia that breaks the
+/// triangle inequality) to `warnings` when given.
+Model build_model(const ModelSpec& spec, std::vector<std::string>* warnings = nullptr);
+
+}  // namespace rbdc
