@@ -1,0 +1,84 @@
+"""What each `rbdc` subcommand does, given its parsed arguments (cli.py owns the parsing)."""
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+from . import flops_report, verify
+from .errors import RbdcError
+from .layout import Layout
+from .pipeline import compile_robot, render
+
+
+def _compile(args, layout: Layout):
+    return compile_robot(args.robot, args.scene, args.topology, args.base, getattr(args, "name", None), layout)
+
+
+def generate(args, layout: Layout) -> int:
+    files = render(_compile(args, layout), layout)
+    out = args.output
+    if args.list_outputs:
+        for f in files:
+            print((out / f.path).as_posix())
+        return 0
+    changed = [f for f in files if not (out / f.path).is_file() or (out / f.path).read_text() != f.text]
+    stale = _stale_files(files, out)
+    if args.check:
+        for f in changed:
+            print(f"differs: {(out / f.path).as_posix()}")
+        for path in stale:
+            print(f"not generated any more: {path.as_posix()}")
+        return 1 if changed or stale else 0
+    for f in changed:
+        if args.dry_run:
+            print(f"would write {(out / f.path).as_posix()}")
+        else:
+            (out / f.path).parent.mkdir(parents=True, exist_ok=True)
+            (out / f.path).write_text(f.text)
+    for path in stale:
+        if args.dry_run:
+            print(f"would remove {path.as_posix()}")
+        else:
+            path.unlink()
+    return 0
+
+
+def _stale_files(files, out: Path) -> list[Path]:
+    """Quantity headers left in this robot/scene directory by an earlier run with other quantities."""
+    umbrella = next(f for f in files if f.path.count("/") == 1 and not f.path.startswith("rbdc_gen/"))
+    directory = out / umbrella.path.removesuffix(".hpp")
+    wanted = {out / f.path for f in files}
+    return sorted(p for p in directory.glob("*.hpp") if p not in wanted) if directory.is_dir() else []
+
+
+def flops(args, layout: Layout) -> int:
+    compilation = _compile(args, layout)
+    rows = flops_report.rows(compilation)
+    print(json.dumps(flops_report.as_json(compilation, rows), indent=2, sort_keys=True) if args.json
+          else flops_report.table(compilation, rows))
+    return 0
+
+
+def verify_command(args, layout: Layout) -> int:
+    return verify.run(args, layout)
+
+
+def evaluate(args, layout: Layout) -> int:
+    if not layout.eval_tool.exists():
+        raise RbdcError(f"{layout.eval_tool}: rbdc-eval is not built (cmake --build build --target rbdc-eval)")
+    command = [str(layout.eval_tool), str(args.robot)]
+    if args.q:
+        command += ["--q", args.q]
+    if args.v:
+        command += ["--v", args.v]
+    command += [a for a in args.extra if a != "--"]
+    result = subprocess.run(command, capture_output=True, text=True)
+    sys.stdout.write(result.stdout)
+    if result.returncode != 0:
+        raise RbdcError("\n".join(line.removeprefix("error: ") for line in result.stderr.splitlines())
+                        or f"rbdc-eval failed with exit code {result.returncode}")
+    sys.stderr.write(result.stderr)
+    return 0
+
+
+COMMANDS = {"generate": generate, "flops": flops, "verify": verify_command, "eval": evaluate}

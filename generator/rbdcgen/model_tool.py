@@ -1,0 +1,69 @@
+"""Front end: runs the C++ tool rbdc-model, the one place that parses, validates and numbers a robot,
+and returns its IR (docs/ir.md) as JSON text. An IR JSON file is accepted as input directly."""
+import json
+import subprocess
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .errors import RbdcError
+from .layout import Layout
+
+
+@dataclass(frozen=True)
+class ModelRequest:
+    """What to ask rbdc-model for: the robot file and the options a scene or the command line set."""
+    robot: Path
+    topology: Path | None = None
+    base: str | None = None                      # 'floating', 'fixed' or None for the file's own
+    locks: dict[str, float] = field(default_factory=dict)
+
+    def inputs(self) -> list[Path]:
+        """The files the IR depends on, for banners (hashes) and build-system dependencies."""
+        return [self.robot] + ([self.topology] if self.topology else [])
+
+
+def model_command(request: ModelRequest, layout: Layout) -> list[str]:
+    command = [str(layout.model_tool), str(request.robot)]
+    if request.topology:
+        command += ["--topology", str(request.topology)]
+    if request.base:
+        command.append(f"--{request.base}-base")
+    for name, value in sorted(request.locks.items()):
+        command += ["--lock", f"{name}={value!r}"]
+    return command
+
+
+def load_ir_text(request: ModelRequest, layout: Layout) -> str:
+    """The IR JSON text for the request; raises RbdcError with rbdc-model's own message on bad input."""
+    if not request.robot.is_file():
+        raise RbdcError(f"{request.robot}: no such file")
+    if request.robot.suffix == ".json":
+        return _checked_ir_file(request)
+    if not layout.model_tool.exists():
+        raise RbdcError(f"{layout.model_tool}: rbdc-model is not built (cmake --build build --target rbdc-model)")
+    result = subprocess.run(model_command(request, layout), capture_output=True, text=True)
+    for line in result.stderr.splitlines():
+        if line.startswith("warning:"):
+            print(f"rbdc: {line}", file=sys.stderr)
+    if result.returncode != 0:
+        errors = [line for line in result.stderr.splitlines() if not line.startswith("warning:")]
+        message = "\n".join(line.removeprefix("error: ") for line in errors) or \
+            f"rbdc-model failed with exit code {result.returncode}"
+        raise RbdcError(message)
+    return result.stdout
+
+
+def _checked_ir_file(request: ModelRequest) -> str:
+    if request.topology or request.locks:
+        raise RbdcError(f"{request.robot}: an IR file is already numbered; --topology and locked joints "
+                        "apply only to URDF or topology input")
+    text = request.robot.read_text()
+    try:
+        floating = json.loads(text).get("floating_base")
+    except (json.JSONDecodeError, AttributeError) as error:
+        raise RbdcError(f"{request.robot}: not an IR JSON object ({error})") from None
+    if request.base and floating != (request.base == "floating"):
+        raise RbdcError(f"{request.robot}: the IR has a {'floating' if floating else 'fixed'} base, "
+                        f"but a {request.base} base was asked for")
+    return text

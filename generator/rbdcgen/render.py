@@ -1,0 +1,149 @@
+"""Back end: renders one robot and scene into header files through the Jinja2 templates.
+
+Templates see only plain data built here (names, dimensions, C++ statement lists, op counts); the
+file layout, banner, namespaces, types and signatures live in templates/. Output is byte-stable:
+no timestamps, sorted inputs, the input files' sha256 in the banner.
+"""
+import hashlib
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import jinja2
+
+from .emit import emit_body
+from .flops import count_ops, generic_ops
+from .layout import Layout, display_path
+from .names import cpp_identifier, unique_identifiers
+from .version import VERSION
+
+SUPPORT_HEADER = "rbdc_gen/support.hpp"
+
+# The Eigen type aliases of docs/generated_api.md: name, rows, cols (as C++ expressions), doc.
+ALIASES = (
+    ("ConfigVector", "nq", "1", "q"),
+    ("TangentVector", "nv", "1", "v, a, c, g, τ"),
+    ("JointVector", "n_joints", "1", "joint torques"),
+    ("MassMatrix", "nv", "nv", "M, full symmetric"),
+    ("FeetMatrix", "3", "n_feet", "one column per foot, world frame"),
+    ("FeetJacobian", "3 * n_feet", "nv", "stacked 3 x nv foot Jacobians"),
+    ("OscInertia", "6", "6", "operational-space inertia Λ"),
+    ("OscJacobianT", "6", "n_joints", "dynamically consistent inverse transposed, J̄ᵀ"),
+    ("Wrench", "6", "1", "(moment; force)"),
+)
+# Arguments whose alias is fixed by their name (dimensions alone are ambiguous for a fixed base).
+ALIAS_BY_NAME = {"q": "ConfigVector"}
+
+
+@dataclass(frozen=True)
+class GeneratedFile:
+    path: str      # relative to the output directory, '/'-separated
+    text: str
+
+
+def template_environment(layout: Layout) -> jinja2.Environment:
+    return jinja2.Environment(loader=jinja2.FileSystemLoader(str(layout.templates)),
+                              undefined=jinja2.StrictUndefined, trim_blocks=True,
+                              lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)
+
+
+def sha256_of(path: Path) -> str:
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
+def input_records(inputs, layout: Layout) -> list[dict]:
+    return [{"path": display_path(p, layout), "sha256": sha256_of(p)} for p in inputs]
+
+
+def _dimensions(robot) -> dict[str, int]:
+    return {"nq": robot.nq, "nv": robot.nv, "nb": robot.nb, "n_joints": robot.n_joints,
+            "n_feet": len(robot.feet)}
+
+
+def _alias_shapes(robot) -> dict[str, tuple[int, int]]:
+    dims = _dimensions(robot)
+    return {name: (eval(rows, {}, dims), eval(cols, {}, dims)) for name, rows, cols, _ in ALIASES}
+
+
+def eigen_alias(argument, robot) -> str:
+    """The Eigen alias for an argument of shape rows x cols, or a plain Eigen::Matrix spelling.
+
+    The name decides where dimensions cannot (q of a fixed base has the shape of v)."""
+    shapes = _alias_shapes(robot)
+    shape = (argument.rows, argument.cols)
+    preferred = ALIAS_BY_NAME.get(argument.name)
+    if preferred and shapes[preferred] == shape:
+        return preferred
+    for name, *_ in ALIASES:
+        if shapes[name] == shape and name != "ConfigVector":
+            return name
+    return f"Matrix{argument.rows}x{argument.cols}"
+
+
+def _argument_record(argument, is_input: bool, robot) -> dict:
+    alias = eigen_alias(argument, robot)
+    eigen_type = f"Eigen::Matrix<Scalar, {argument.rows}, {argument.cols}>" if alias.startswith("Matrix") \
+        else f"{alias}<Scalar>"
+    return {"name": argument.name, "rows": argument.rows, "cols": argument.cols, "doc": argument.doc,
+            "is_input": is_input, "is_scalar": is_input and argument.rows == 1 and argument.cols == 1,
+            "eigen_type": eigen_type}
+
+
+def _unused_inputs(arguments, body: list[str]) -> list[str]:
+    text = "\n".join(body)
+    return [a["name"] for a in arguments if a["is_input"] and not re.search(rf"\b{a['name']}\b", text)]
+
+
+def function_record(function, robot, robot_id: str, scene_id: str) -> dict:
+    arguments = [_argument_record(a, True, robot) for a in function.inputs] + \
+                [_argument_record(a, False, robot) for a in function.outputs]
+    body = emit_body(function)
+    # An input the scene made irrelevant is still part of the signature; say so to the compiler.
+    body = [f"static_cast<void>({name});" for name in _unused_inputs(arguments, body)] + body
+    return {"name": function.name, "doc": function.doc, "arguments": arguments, "body": body,
+            "ops": count_ops(function), "generic": generic_ops(robot, function),
+            "include": f"{robot_id}/{scene_id}/{function.name}.hpp"}
+
+
+def robot_record(robot, robot_id: str) -> dict:
+    body_ids = unique_identifiers([b.name for b in robot.bodies])
+    joint_ids = unique_identifiers([j.name for j in robot.joints])
+    foot_ids = unique_identifiers([f.name for f in robot.feet])
+    return {
+        "name": robot_id, "floating_base": robot.floating_base, **_dimensions(robot),
+        "bodies": [{"id": body_ids[i], "index": i, "name": b.name} for i, b in enumerate(robot.bodies)],
+        "joints": [{"id": joint_ids[i], "index": i, "name": j.name, "type": j.type,
+                    "q_index": j.q_index, "v_index": j.v_index} for i, j in enumerate(robot.joints)],
+        "feet": [{"id": foot_ids[k], "index": k, "body": body_ids[f.body],
+                  "offset": [repr(float(x)) for x in f.offset]} for k, f in enumerate(robot.feet)],
+    }
+
+
+def _gravity_text(scene, robot) -> str:
+    gravity = getattr(scene, "gravity", robot.gravity)
+    return "none" if gravity is None else "(" + ", ".join(repr(float(g)) for g in gravity) + ")"
+
+
+def render_robot_scene(robot, scene, functions, robot_name: str, inputs, layout: Layout) -> list[GeneratedFile]:
+    """All files for one robot and scene: the support header, the umbrella and one per function."""
+    environment = template_environment(layout)
+    robot_id, scene_id = cpp_identifier(robot_name), cpp_identifier(scene.name)
+    umbrella = f"{robot_id}/{scene_id}.hpp"
+    common = {"generator_version": VERSION, "inputs": input_records(inputs, layout),
+              "scene_name": scene.name, "scene_gravity": _gravity_text(scene, robot),
+              "robot": robot_record(robot, robot_id), "namespace": f"rbdc_gen::{robot_id}::{scene_id}",
+              "umbrella_include": umbrella,
+              "aliases": [{"name": n, "rows": r, "cols": c, "doc": d} for n, r, c, d in ALIASES]}
+    records = [function_record(f, robot, robot_id, scene_id) for f in functions]
+    files = [support_file(layout),
+             GeneratedFile(umbrella, environment.get_template("robot_scene.hpp.j2").render(
+                 **common, functions=records))]
+    function_template = environment.get_template("function.hpp.j2")
+    files += [GeneratedFile(r["include"], function_template.render(**common, function=r)) for r in records]
+    return files
+
+
+def support_file(layout: Layout) -> GeneratedFile:
+    text = template_environment(layout).get_template("support.hpp.j2").render(
+        generator_version=VERSION, inputs=[])
+    return GeneratedFile(SUPPORT_HEADER, text)
