@@ -1,1 +1,4 @@
-"""rbdcgen: the rigid-body dynamics compiler (IR → traced scalar DAG → Jinja2-rendered C++)."""
+"""rbdcgen: the rbdc generator. IR → traced expression DAG → straight-line C++ (see
+docs/generator_core.md)."""
+
+__version__ = "0.1.0"

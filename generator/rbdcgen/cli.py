@@ -31,6 +31,8 @@ def _robot_arguments(parser, multiple=False):
                       help="6-DoF floating root joint (overrides the scene)")
     base.add_argument("--fixed-base", dest="base", action="store_const", const="fixed",
                       help="root welded to the world (overrides the scene)")
+    parser.add_argument("--lock-mimic", action="store_true",
+                        help="lock each URDF mimic joint at its offset (rbdc-model refuses mimic joints otherwise)")
 
 
 def build_parser() -> argparse.ArgumentParser:

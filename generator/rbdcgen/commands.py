@@ -11,7 +11,8 @@ from .pipeline import compile_robot, render
 
 
 def _compile(args, layout: Layout):
-    return compile_robot(args.robot, args.scene, args.topology, args.base, getattr(args, "name", None), layout)
+    return compile_robot(args.robot, args.scene, args.topology, args.base, getattr(args, "name", None), layout,
+                         lock_mimic=args.lock_mimic)
 
 
 def generate(args, layout: Layout) -> int:

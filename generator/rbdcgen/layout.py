@@ -22,6 +22,7 @@ class Layout:
     eval_tool: Path
     runtime_include: Path
     runtime_library: Path
+    verify_flags: Path       # rbdc-verify.json: compiler and external libraries (cmake/RbdcVerifyFlags.cmake)
     in_source_tree: bool
 
 
@@ -38,7 +39,8 @@ def find_layout() -> Layout:
         layout = Layout(root=root, templates=root / "templates", scenes=root / "scenes",
                         model_tool=build / "bin" / "rbdc-model", eval_tool=build / "bin" / "rbdc-eval",
                         runtime_include=root / "runtime" / "include",
-                        runtime_library=build / "runtime" / "librbdc_runtime.a", in_source_tree=True)
+                        runtime_library=build / "runtime" / "librbdc_runtime.a",
+                        verify_flags=build / "rbdc-verify.json", in_source_tree=True)
     else:
         # Installed: the package sits in <prefix>/share/rbdc/generator/rbdcgen.
         share = PACKAGE_DIR.parent.parent
@@ -46,7 +48,8 @@ def find_layout() -> Layout:
         layout = Layout(root=share, templates=share / "templates", scenes=share / "scenes",
                         model_tool=prefix / "bin" / "rbdc-model", eval_tool=prefix / "bin" / "rbdc-eval",
                         runtime_include=prefix / "include",
-                        runtime_library=_installed_library(prefix), in_source_tree=False)
+                        runtime_library=_installed_library(prefix),
+                        verify_flags=share / "rbdc-verify.json", in_source_tree=False)
     overrides = {"model_tool": "RBDC_MODEL_TOOL", "eval_tool": "RBDC_EVAL_TOOL",
                  "runtime_library": "RBDC_RUNTIME_LIBRARY", "runtime_include": "RBDC_RUNTIME_INCLUDE"}
     changes = {field: Path(env[var]) for field, var in overrides.items() if env.get(var)}

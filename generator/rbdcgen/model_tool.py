@@ -17,6 +17,7 @@ class ModelRequest:
     topology: Path | None = None
     base: str | None = None                      # 'floating', 'fixed' or None for the file's own
     locks: dict[str, float] = field(default_factory=dict)
+    lock_mimic: bool = False                     # lock each mimic joint at its offset
 
     def inputs(self) -> list[Path]:
         """The files the IR depends on, for banners (hashes) and build-system dependencies."""
@@ -29,6 +30,8 @@ def model_command(request: ModelRequest, layout: Layout) -> list[str]:
         command += ["--topology", str(request.topology)]
     if request.base:
         command.append(f"--{request.base}-base")
+    if request.lock_mimic:
+        command.append("--lock-mimic")
     for name, value in sorted(request.locks.items()):
         command += ["--lock", f"{name}={value!r}"]
     return command
@@ -55,7 +58,7 @@ def load_ir_text(request: ModelRequest, layout: Layout) -> str:
 
 
 def _checked_ir_file(request: ModelRequest) -> str:
-    if request.topology or request.locks:
+    if request.topology or request.locks or request.lock_mimic:
         raise RbdcError(f"{request.robot}: an IR file is already numbered; --topology and locked joints "
                         "apply only to URDF or topology input")
     text = request.robot.read_text()

@@ -31,10 +31,11 @@ def resolve_scene(scene_path: Path | None, base: str | None) -> Scene:
 
 
 def compile_robot(robot_path: Path, scene_path: Path | None = None, topology: Path | None = None,
-                  base: str | None = None, name: str | None = None, layout: Layout = None) -> Compilation:
+                  base: str | None = None, name: str | None = None, layout: Layout = None,
+                  lock_mimic: bool = False) -> Compilation:
     scene = resolve_scene(scene_path, base)
     request = ModelRequest(robot=Path(robot_path), topology=Path(topology) if topology else None,
-                           base=scene.base, locks=dict(scene.locked_joints))
+                           base=scene.base, locks=dict(scene.locked_joints), lock_mimic=lock_mimic)
     robot = load_ir(json.loads(load_ir_text(request, layout)))
     robot_name = name or robot.name
     if not robot_name:

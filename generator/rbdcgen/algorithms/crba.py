@@ -1,0 +1,44 @@
+"""Composite-rigid-body algorithm (paper 000 Alg. 5, Eqs. 26-29).
+
+Composite inertias stay in (m, h, Ī) form and are moved to the parent with the structured
+congruence of spatial.Inertia; F_i = I_ci S_i is carried towards the root through (X_λ(j)^j)ᵀ.
+Only the entries H_ij with i ∈ ν(j) or j ∈ ν(i) are computed; the rest are structural zeros and the
+upper triangle is mirrored."""
+
+from __future__ import annotations
+
+from .. import expr as ex
+from .. import spatial as sp
+
+
+def mass_matrix(m):
+    robot = m.robot
+    nv = robot.nv
+    zero = ex.const(0.0)
+    H = [[zero] * nv for _ in range(nv)]
+    composite = [m.inertia(i) for i in range(robot.nb)]        # I_ci ← I_i
+    for i in range(robot.nb - 1, 0, -1):
+        j = robot.parent[i]
+        X = m.X_up(i)
+        composite[j] = composite[j] + X.congruence(composite[i])  # Eq. 26
+        F = composite[i].apply(m.motion_subspace(i))             # Eq. 28: F_i = I_ci S_i
+        col = m.joint(i).v_index
+        H[col][col] = sp.dot(m.motion_subspace(i), F)             # H_ii = S_iᵀ F_i
+        body = i
+        while robot.parent[body] != 0:                            # Eq. 27, j ∈ κ(i)
+            F = m.X_up(body).force_T(F)
+            body = robot.parent[body]
+            row = m.joint(body).v_index
+            H[row][col] = sp.dot(m.motion_subspace(body), F)
+            H[col][row] = H[row][col]
+        if robot.floating_base:
+            F = m.X_up(body).force_T(F)                           # F_i in trunk coordinates
+            for r in range(6):
+                H[r][col] = F[r]
+                H[col][r] = F[r]
+    if robot.floating_base:
+        I0 = composite[0].dense()                                 # H_00 = I_c0 (Eq. 29)
+        for r in range(6):
+            for c in range(6):
+                H[r][c] = I0[min(r, c)][max(r, c)]
+    return H

@@ -1,0 +1,73 @@
+"""Forward dynamics: M a = Sᵀτ + τ_e − c − g (paper 000 Eq. 29-30) with M from the CRBA, the bias
+from one RNEA pass and an unrolled sparse LᵀDL factorisation whose non-zeros are exactly the ones
+the tree induces (no fill-in: row k of L is non-zero only at the ancestors of dof k)."""
+
+from __future__ import annotations
+
+from .. import expr as ex
+from .crba import mass_matrix
+from .rnea import bias_minus_external
+
+
+def dof_parents(robot):
+    """λ over degrees of freedom: the six trunk dofs form a chain (their block is dense), each joint
+    dof hangs from the last dof of its parent body."""
+    parents = []
+    if robot.floating_base:
+        parents = [-1, 0, 1, 2, 3, 4]
+    for i in range(1, robot.nb):
+        p = robot.parent[i]
+        if p == 0:
+            parents.append(5 if robot.floating_base else -1)
+        else:
+            parents.append(robot.joints[p].v_index)
+    return parents
+
+
+def ltdl(H, parents):
+    """In place M = Lᵀ D L over the tree's dof parents (Featherstone's LTDL): returns (L, D) with L
+    unit lower triangular stored below the diagonal of H and D its diagonal; inverse pivots are
+    computed once each."""
+    n = len(H)
+    H = [list(row) for row in H]
+    inv_diag = [None] * n
+    for k in range(n - 1, -1, -1):
+        inv_diag[k] = ex.const(1.0) / H[k][k]
+        i = parents[k]
+        while i != -1:
+            ratio = H[k][i] * inv_diag[k]
+            j = i
+            while j != -1:
+                H[i][j] = H[i][j] - ratio * H[k][j]
+                j = parents[j]
+            H[k][i] = ratio
+            i = parents[i]
+    return H, inv_diag
+
+
+def ltdl_solve(L, inv_diag, parents, b):
+    """Solves Lᵀ D L x = b: x ← L⁻ᵀ b, x ← D⁻¹ x, x ← L⁻¹ x, walking only tree non-zeros."""
+    x = list(b)
+    n = len(x)
+    for i in range(n - 1, -1, -1):
+        j = parents[i]
+        while j != -1:
+            x[j] = x[j] - L[i][j] * x[i]
+            j = parents[j]
+    x = [x[i] * inv_diag[i] for i in range(n)]
+    for i in range(n):
+        j = parents[i]
+        while j != -1:
+            x[i] = x[i] - L[i][j] * x[j]
+            j = parents[j]
+    return x
+
+
+def forward_dynamics(m):
+    robot = m.robot
+    bias = bias_minus_external(m)                   # c + g − τ_e
+    rhs = [-b for b in bias[:robot.root_dofs]]      # unactuated trunk: Sᵀτ has zeros there
+    rhs += [m.tau[i - 1] - bias[robot.joints[i].v_index] for i in range(1, robot.nb)]
+    parents = dof_parents(robot)
+    L, inv_diag = ltdl(mass_matrix(m), parents)
+    return tuple(ltdl_solve(L, inv_diag, parents, rhs))

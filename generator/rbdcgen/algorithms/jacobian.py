@@ -1,0 +1,35 @@
+"""Feet Jacobian (paper 000 Alg. 6, App. B, Eq. B3): the block of joint j in the rows of foot k is
+the linear part of X_j^fk S_j (Eq. B3) rotated to the world; only joints in the support κ(φ(k))
+contribute. Written with world axes and lever arms, the cheapest form of the same product."""
+
+from __future__ import annotations
+
+from .. import spatial as sp
+from .kinematics import feet_positions, world_frames
+
+
+def feet_jacobian(m):
+    """J = [J_0; J_1; …] (3·n_feet × nv), world-frame foot velocities from v (conventions.md)."""
+    robot = m.robot
+    frames = world_frames(m)
+    positions = feet_positions(m, frames)
+    rows = []
+    for foot, p_foot in zip(m.feet, positions):
+        cols = [sp.zeros(3) for _ in range(robot.nv)]
+        if robot.floating_base:
+            R, p0 = frames[0]
+            lever = sp.vsub(p_foot, p0)
+            Rt = sp.transpose(R)
+            for c in range(3):
+                cols[c] = sp.cross(Rt[c], lever)   # ω_B enters as (R ω_B) × (p_f − p_0)
+                cols[3 + c] = Rt[c]                # v_B enters as R v_B
+        for j in robot.support[foot.body]:
+            R_j, p_j = frames[j]
+            axis = sp.matvec(R_j, sp.vec(m.joint(j).axis))
+            if m.joint(j).type == "revolute":
+                cols[m.joint(j).v_index] = sp.cross(axis, sp.vsub(p_foot, p_j))
+            else:
+                cols[m.joint(j).v_index] = axis
+        for r in range(3):
+            rows.append(tuple(col[r] for col in cols))
+    return rows

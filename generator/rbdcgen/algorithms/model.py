@@ -1,0 +1,128 @@
+"""The robot as the algorithms see it while tracing: constants lifted to expressions, inputs as
+symbols (or zeros, for the inputs a scene declares zero), and the per-joint quantities of paper 000
+Section 3 (X_T, X_J, S_i, I_i) built once per traced function."""
+
+from __future__ import annotations
+
+
+from .. import expr as ex
+from .. import spatial as sp
+
+
+class TracedModel:
+    """Per-function view of (robot, scene) with symbolic inputs.
+
+    `inputs` maps an input array name (q, v, a, tau, f, ground_mass) to its length; an input the
+    scene declares zero is all constant zeros, so everything depending on it folds away."""
+
+    def __init__(self, robot, scene, zero_inputs=()):
+        self.robot = robot
+        self.scene = scene
+        self.feet = scene.feet_for(robot)
+        self.contacts = scene.contacts_for(robot)
+        self.gravity = sp.vec(scene.gravity_for(robot))
+        self.zero_inputs = tuple(zero_inputs)
+        self._cache = {}
+
+    # --- inputs -------------------------------------------------------------------------------
+    def input(self, name, size):
+        key = ("input", name)
+        if key not in self._cache:
+            if name in self.zero_inputs:
+                self._cache[key] = sp.zeros(size)
+            else:
+                self._cache[key] = tuple(ex.symbol(name, k) for k in range(size))
+        return self._cache[key]
+
+    @property
+    def q(self):
+        return self.input("q", self.robot.nq)
+
+    @property
+    def v(self):
+        return self.input("v", self.robot.nv)
+
+    @property
+    def a(self):
+        return self.input("a", self.robot.nv)
+
+    @property
+    def tau(self):
+        return self.input("tau", self.robot.n_joints)
+
+    @property
+    def f(self):
+        return self.input("f", 3 * len(self.feet))
+
+    @property
+    def ground_mass(self):
+        return self.input("ground_mass", 1)[0]
+
+    def foot_force(self, k):
+        return self.f[3 * k:3 * k + 3]
+
+    # --- joints -------------------------------------------------------------------------------
+    def joint(self, i):
+        return self.robot.joints[i]
+
+    def motion_subspace(self, i):
+        """S_i (paper 000 Eq. 13): (axis; 0) for revolute, (0; axis) for prismatic joints."""
+        joint = self.joint(i)
+        axis = list(joint.axis)
+        zero = [0.0, 0.0, 0.0]
+        return sp.vec(axis + zero if joint.type == "revolute" else zero + axis)
+
+    def qi(self, i):
+        return self.q[self.joint(i).q_index]
+
+    def vi(self, i):
+        return self.v[self.joint(i).v_index]
+
+    def ai(self, i):
+        return self.a[self.joint(i).v_index]
+
+    def X_up(self, i):
+        """X_λ(i)^i = X_J(q_i) X_T(i) (Eqs. 9-11) as a chain keeping each factor's sparsity."""
+        key = ("X_up", i)
+        if key not in self._cache:
+            joint = self.joint(i)
+            E_T = sp.mat(joint.rotation)
+            identity = all(joint.rotation[r][c] == (1.0 if r == c else 0.0)
+                           for r in range(3) for c in range(3))
+            r_T = sp.vec(joint.translation) if any(joint.translation) else None
+            X_T = sp.Transform(None if identity else E_T, r_T)
+            q = self.qi(i)
+            if joint.type == "revolute":
+                X_J = sp.Transform(sp.coordinate_rotation(joint.axis, ex.cos(q), ex.sin(q)), None)
+            else:
+                X_J = sp.Transform(None, tuple(q * a for a in sp.vec(joint.axis)))
+            self._cache[key] = sp.Chain(X_T, X_J)
+        return self._cache[key]
+
+    def inertia(self, i):
+        key = ("inertia", i)
+        if key not in self._cache:
+            self._cache[key] = sp.Inertia.from_body(self.robot.bodies[i])
+        return self._cache[key]
+
+    # --- floating base ------------------------------------------------------------------------
+    def base_rotation(self):
+        """R: trunk → world (active), from the unit quaternion q[3:7] = (w, x, y, z); identity for
+        a fixed base."""
+        if not self.robot.floating_base:
+            return sp.identity3()
+        key = ("R",)
+        if key not in self._cache:
+            self._cache[key] = sp.quaternion_rotation(*self.q[3:7])
+        return self._cache[key]
+
+    def base_position(self):
+        return self.q[0:3] if self.robot.floating_base else sp.zeros(3)
+
+    def base_velocity(self):
+        """v₀ of Alg. 1: trunk twist in trunk coordinates; zero for a fixed base."""
+        return self.v[0:6] if self.robot.floating_base else sp.zeros(6)
+
+    def gravity_in_base(self):
+        """R_W^0 g_W: gravity in trunk coordinates (Alg. 3)."""
+        return sp.mat_tmatvec(self.base_rotation(), self.gravity)

@@ -1,0 +1,89 @@
+"""Operational-space quantities of the trunk task (paper 001): the O(nd) recursion of Table 1
+(Eqs. 29-41) with measured foot forces, and its closed-chain variant of Table 2 (Eqs. 42-47) with
+the big-ground-inertia approximation. The task is body 0 (the trunk) in trunk coordinates with
+ẍ_t = (ω̇, classical linear acceleration), so Λ_t ẍ_t + b_t = J̄_tᵀ τ + f_t (Eqs. 28, 40, 48)."""
+
+from __future__ import annotations
+
+from .. import expr as ex
+from .. import spatial as sp
+from .kinematics import body_velocities, world_frames
+from .rnea import foot_wrenches
+
+
+def _recursion(m, articulated, beta, velocities):
+    """Table 1 inward loop. `articulated[i]` (I_i^A, dense 6×6) and `beta[i]` (β_i^A) are
+    initialised by the caller; returns (Λ_t, J̄_tᵀ as 6 × n_joints rows, b_t)."""
+    robot = m.robot
+    nb = robot.nb
+    B = [dict() for _ in range(nb)]        # B[i][k]: torque-force coupling B_ik (Eq. 32)
+    for i in range(nb - 1, 0, -1):
+        j = robot.parent[i]
+        X = m.X_up(i)
+        S = m.motion_subspace(i)
+        Ia = articulated[i]
+        U = sp.matvec(Ia, S)                                        # I_i^A Φ_i
+        D = ex.const(1.0) / sp.dot(S, U)                            # D_i (Eq. 35)
+        UD = sp.vscale(D, U)
+
+        def propagate(x):
+            """L_iᵀ x = x − I^A Φ D Φᵀ x (Eq. 37)."""
+            return sp.vsub(x, sp.vscale(sp.dot(S, x), UD))
+
+        zeta = sp.crm(velocities[i], sp.vscale(m.vi(i), S))        # ζ_i (Eq. 29)
+        p = sp.vadd(beta[i], sp.matvec(Ia, zeta))
+        LIa = sp.symmetric(tuple(sp.vsub(Ia[r], sp.vscale(UD[r], U)) for r in range(6)))
+        articulated[j] = sp.mat6_add(articulated[j], X.congruence6(LIa))
+        beta[j] = sp.vadd(beta[j], X.force_T(propagate(p)))
+        B[j][i] = sp.vneg(X.force_T(UD))
+        for k, column in B[i].items():
+            B[j][k] = X.force_T(propagate(column))
+    Lam = articulated[0]
+    JbarT_cols = [B[0][k] for k in range(1, nb)]
+    JbarT = tuple(tuple(col[r] for col in JbarT_cols) for r in range(6))
+    v0 = velocities[0]
+    trunk_bias = sp.zeros(3) + sp.cross(sp.ang(v0), sp.lin(v0))
+    correction = sp.vadd(sp.zeros(3) + m.gravity_in_base(), trunk_bias)
+    b = sp.vsub(beta[0], sp.matvec(Lam, correction))                # Eq. 41
+    return Lam, JbarT, b
+
+
+def _outward(m):
+    """Table 1 outward loop: v_i and the initial I_i^A = I_i, β_i^A = v_i ×* I_i v_i."""
+    velocities = body_velocities(m)
+    articulated, beta = [], []
+    for i in range(m.robot.nb):
+        inertia = m.inertia(i)
+        articulated.append(inertia.dense())
+        beta.append(sp.crf(velocities[i], inertia.apply(velocities[i])))
+    return velocities, articulated, beta
+
+
+def osc_open_chain(m):
+    """Table 1 with the measured foot forces f (world frame): β_i^A −= f_i^e."""
+    velocities, articulated, beta = _outward(m)
+    for i, wrench in enumerate(foot_wrenches(m, world_frames(m))):
+        if wrench is not None:
+            beta[i] = sp.vsub(beta[i], wrench)
+    return _recursion(m, articulated, beta, velocities)
+
+
+def osc_closed_chain(m):
+    """Table 2: each foot in contact hangs a ground inertia I_c on a spherical joint. With Φ_c the
+    angular free modes, L_cᵀ I_c = diag(0, M 1), so Eqs. 46-47 add a point mass M (ground_mass)
+    at the foot to I_i^A and Xᵀ (0, M g_c) to β_i^A (g_c: gravity in body coordinates)."""
+    velocities, articulated, beta = _outward(m)
+    frames = world_frames(m)
+    M = m.ground_mass
+    for foot in m.contacts:
+        i = foot.body
+        r = sp.vec(foot.offset)
+        rr = sp.dot(r, r)
+        point = sp.Inertia(M, sp.vscale(M, r),
+                           sp.symmetric(tuple(tuple(M * ((rr if a == b else 0.0) - r[a] * r[b])
+                                                    for b in range(3)) for a in range(3))))
+        articulated[i] = sp.mat6_add(articulated[i], point.dense())            # Eq. 46
+        g_c = sp.mat_tmatvec(frames[i][0], m.gravity)
+        force = sp.vscale(M, g_c)
+        beta[i] = sp.vadd(beta[i], sp.cross(r, force) + force)                  # Eq. 47
+    return _recursion(m, articulated, beta, velocities)

@@ -1,0 +1,111 @@
+"""The recursive Newton-Euler passes of paper 000 Section 4: quadratic velocity terms (Alg. 2),
+gravity terms (Alg. 3), external wrench terms from foot forces (Alg. 4) and the full inverse
+dynamics M a + c + g, all one outward and one inward pass with different inputs."""
+
+from __future__ import annotations
+
+from .. import spatial as sp
+from .kinematics import body_velocities, world_frames
+
+
+def foot_wrenches(m, frames):
+    """Alg. 4 outward loop: the world foot forces as wrenches on their bodies at the body origin,
+    body coordinates: F_i = R_iᵀ f_k, f_i += (r_fk × F_i, F_i) (force transform of Eq. 7)."""
+    wrenches = [None] * m.robot.nb
+    for k, foot in enumerate(m.feet):
+        force = sp.mat_tmatvec(frames[foot.body][0], m.foot_force(k))
+        wrench = sp.cross(sp.vec(foot.offset), force) + force
+        i = foot.body
+        wrenches[i] = wrench if wrenches[i] is None else sp.vadd(wrenches[i], wrench)
+    return wrenches
+
+
+def inward_pass(m, forces):
+    """Alg. 2-4 inward loop: c_i = S_iᵀ f_i, f_λ(i) += (X_λ(i)^i)ᵀ f_i (Eqs. 22-23); the root
+    block c₀ = S₀ᵀ f₀ = f₀ for a floating base. Returns the joint-space vector (length nv)."""
+    forces = list(forces)
+    tau = [None] * m.robot.nb
+    for i in range(m.robot.nb - 1, 0, -1):
+        j = m.robot.parent[i]
+        tau[i] = sp.dot(m.motion_subspace(i), forces[i])
+        forces[j] = sp.vadd(forces[j], m.X_up(i).force_T(forces[i]))
+    root = list(forces[0]) if m.robot.floating_base else []
+    return tuple(root + tau[1:])
+
+
+def rnea(m, base_acceleration, joint_accelerations, with_velocity, external=None):
+    """One outward pass (Eqs. 19-20, 24) and the inward pass:
+        a_i = X_λ(i)^i a_λ(i) + v_i × S_i q̇_i + S_i q̈_i,   f_i = I_i a_i + v_i ×* I_i v_i − f_i^ext.
+    `base_acceleration` is a₀ (bias and gravity included), `joint_accelerations[i]` q̈_i or None,
+    `with_velocity` enables the velocity product terms, `external` the body wrenches."""
+    nb = m.robot.nb
+    velocities = body_velocities(m) if with_velocity else None
+    accelerations = [base_acceleration]
+    for i in range(1, nb):
+        j = m.robot.parent[i]
+        a_i = m.X_up(i).motion(accelerations[j])
+        S = m.motion_subspace(i)
+        if with_velocity:
+            a_i = sp.vadd(a_i, sp.crm(velocities[i], sp.vscale(m.vi(i), S)))
+        if joint_accelerations is not None:
+            a_i = sp.vadd(a_i, sp.vscale(joint_accelerations[i], S))
+        accelerations.append(a_i)
+    forces = []
+    for i in range(nb):
+        inertia = m.inertia(i)
+        f_i = inertia.apply(accelerations[i])
+        if with_velocity:
+            f_i = sp.vadd(f_i, sp.crf(velocities[i], inertia.apply(velocities[i])))
+        if external is not None and external[i] is not None:
+            f_i = sp.vsub(f_i, external[i])
+        forces.append(f_i)
+    return inward_pass(m, forces)
+
+
+def velocity_bias(m):
+    """a₀ = (0, −ω̃₀ v₀) of Alg. 2: the trunk's classical-to-spatial acceleration correction."""
+    v0 = m.base_velocity()
+    return sp.zeros(3) + sp.vneg(sp.cross(sp.ang(v0), sp.lin(v0)))
+
+
+def gravity_acceleration(m):
+    """a₀ = −(0, R_W^0 g) of Alg. 3: gravity as a fictitious upward trunk acceleration."""
+    return sp.zeros(3) + sp.vneg(m.gravity_in_base())
+
+
+def quadratic_velocity_terms(m):
+    """c of Alg. 2."""
+    return rnea(m, velocity_bias(m), None, True)
+
+
+def gravity_terms(m):
+    """g of Alg. 3."""
+    return rnea(m, gravity_acceleration(m), None, False)
+
+
+def feet_force_terms(m):
+    """τ_e of Alg. 4 from the world foot forces (τ_e = Jᵀ f)."""
+    return inward_pass(m, [w if w is not None else sp.zeros(6)
+                           for w in foot_wrenches(m, world_frames(m))])
+
+
+def joint_accelerations(m):
+    return [None] + [m.ai(i) for i in range(1, m.robot.nb)]
+
+
+def base_acceleration(m, trunk_acceleration):
+    """The trunk's spatial acceleration in the fictitious-gravity frame: the classical trunk
+    acceleration (ω̇, R_W^0 p̈) of conventions.md plus the Alg. 2 and Alg. 3 terms."""
+    return sp.vadd(sp.vadd(trunk_acceleration, velocity_bias(m)), gravity_acceleration(m))
+
+
+def inverse_dynamics(m):
+    """M a + c + g: Alg. 2 and 3 with the accelerations added (paper 000 Eq. 29)."""
+    trunk = m.a[0:6] if m.robot.floating_base else sp.zeros(6)
+    return rnea(m, base_acceleration(m, trunk), joint_accelerations(m), True)
+
+
+def bias_minus_external(m):
+    """c + g − τ_e in one pass (forward dynamics right-hand side)."""
+    external = foot_wrenches(m, world_frames(m)) if m.feet else None
+    return rnea(m, base_acceleration(m, sp.zeros(6)), None, True, external)

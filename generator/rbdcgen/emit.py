@@ -1,0 +1,76 @@
+"""Back end of the middle: a traced Function's DAG as straight-line C++ statements.
+
+The statements are the body of
+    template <class Scalar> void NAME(const Scalar* q, …, Scalar* out, …) noexcept
+Inputs are read as `q[k]`, each output entry is written exactly once as `M[k] = …;` (column-major,
+zeros and mirrored entries included). sin/cos of the joint angles come first, in one block; then
+every node used more than once becomes `const Scalar tN = …;` in topological order, and nodes used
+once are inlined into their single user. Same DAG in, same text out."""
+
+from __future__ import annotations
+
+from . import expr as ex
+
+_BINARY_SYMBOL = {"add": "+", "sub": "-", "mul": "*", "div": "/"}
+
+
+def format_constant(value):
+    """The double printed exactly (17 significant digits), e.g. Scalar(0.20899999999999999)."""
+    return "Scalar(%s)" % format(value, ".17g")
+
+
+def _is_joint_trig(node):
+    return node.op in ("sin", "cos") and node.args[0].op == "sym"
+
+
+def schedule(fn):
+    """(trig block, ordered temporaries, use counts) of the function's live DAG."""
+    outputs = fn.output_exprs()
+    order = ex.reachable(outputs)
+    uses = {}
+    for node in order:
+        for arg in node.args:
+            uses[arg.id] = uses.get(arg.id, 0) + 1
+    for node in outputs:
+        uses[node.id] = uses.get(node.id, 0) + 1
+    trig = sorted((n for n in order if _is_joint_trig(n)),
+                  key=lambda n: (n.args[0].value, n.op == "cos"))
+    temps = [n for n in order if n.op not in ("const", "sym") and not _is_joint_trig(n)
+             and uses[n.id] > 1]
+    return trig, temps, uses
+
+
+def emit_body(fn):
+    """C++ statements (list of str, no indentation) computing every output of `fn`."""
+    trig, temps, uses = schedule(fn)
+    names = {}
+    lines = []
+
+    def text(node, nested):
+        if node.id in names:
+            return names[node.id]
+        if node.op == "const":
+            return format_constant(node.value)
+        if node.op == "sym":
+            return "%s[%d]" % node.value
+        if node.op == "neg":
+            body = "-" + text(node.args[0], True)
+        elif node.op in _BINARY_SYMBOL:
+            body = "%s %s %s" % (text(node.args[0], True), _BINARY_SYMBOL[node.op],
+                                 text(node.args[1], True))
+        else:
+            return "%s(%s)" % (node.op, text(node.args[0], False))
+        return "(%s)" % body if nested else body
+
+    for node in trig:
+        name = "%s_%s_%d" % (node.op, node.args[0].value[0], node.args[0].value[1])
+        lines.append("const Scalar %s = %s(%s);" % (name, node.op, text(node.args[0], False)))
+        names[node.id] = name
+    for index, node in enumerate(temps):
+        name = "t%d" % index
+        lines.append("const Scalar %s = %s;" % (name, text(node, False)))
+        names[node.id] = name
+    for arg in fn.outputs:
+        for k, node in enumerate(fn.values[arg.name]):
+            lines.append("%s[%d] = %s;" % (arg.name, k, text(node, False)))
+    return lines

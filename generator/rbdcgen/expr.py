@@ -1,0 +1,299 @@
+"""Symbolic scalars: a hash-consed DAG of scalar operations with constant folding.
+
+Every node lives in a `Graph`. Building a node first folds it (rules below), then looks up an
+identical node in the graph's table, so structurally equal subexpressions are one node: common
+subexpression elimination comes for free, and node ids (creation order) make the output
+deterministic.
+
+Folding rules never reassociate non-constant terms, so a folded expression evaluates to the
+unfolded one up to round-off of the constants combined:
+    x + 0 = x        x - 0 = x        0 - x = -x       x - x = 0
+    x + (-y) = x - y (-x) + y = y - x x - (-y) = x + y  -(x - y) = y - x
+    x * 0 = 0        x * 1 = x        x * (-1) = -x     (-x) * (-y) = x * y
+    (-x) * y = -(x * y)               c1 * (c2 * x) = (c1 * c2) * x
+    x / 1 = x        0 / x = 0        -(-x) = x
+    c1 op c2, sin(c), cos(c), sqrt(c) evaluate to constants.
+Commutative operands (+, *) are ordered (constants first, then by node id) so that a + b and
+b + a are one node.
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+
+# Operation names. "const" and "sym" are leaves; the rest are the emitted operations.
+UNARY = ("neg", "sin", "cos", "sqrt")
+BINARY = ("add", "sub", "mul", "div")
+COMMUTATIVE = ("add", "mul")
+
+_state = threading.local()
+
+
+class Graph:
+    """The node table of one traced function. Use as a context manager around tracing."""
+
+    def __init__(self):
+        self._table = {}
+        self.nodes = []
+
+    def __enter__(self):
+        self._outer = getattr(_state, "graph", None)
+        _state.graph = self
+        return self
+
+    def __exit__(self, *exc):
+        _state.graph = self._outer
+        return False
+
+    def intern(self, op, args, value):
+        key = (op, tuple(a.id for a in args), value)
+        node = self._table.get(key)
+        if node is None:
+            node = Expr(op, args, value, len(self.nodes), self)
+            self._table[key] = node
+            self.nodes.append(node)
+        return node
+
+
+def current_graph():
+    graph = getattr(_state, "graph", None)
+    if graph is None:
+        raise RuntimeError("rbdcgen.expr: build expressions inside a `with Graph():` block")
+    return graph
+
+
+class Expr:
+    """One node. `value` is the float of a constant or the (array, index) of a symbol."""
+
+    __slots__ = ("op", "args", "value", "id", "graph")
+
+    def __init__(self, op, args, value, node_id, graph):
+        self.op = op
+        self.args = args
+        self.value = value
+        self.id = node_id
+        self.graph = graph
+
+    def __repr__(self):
+        if self.op == "const":
+            return repr(self.value)
+        if self.op == "sym":
+            return "%s[%d]" % self.value
+        return "%s(%s)" % (self.op, ", ".join(repr(a) for a in self.args))
+
+    # Python operators route through the folding constructors below.
+    def __add__(self, other):
+        return add(self, lift(other))
+
+    def __radd__(self, other):
+        return add(lift(other), self)
+
+    def __sub__(self, other):
+        return sub(self, lift(other))
+
+    def __rsub__(self, other):
+        return sub(lift(other), self)
+
+    def __mul__(self, other):
+        return mul(self, lift(other))
+
+    def __rmul__(self, other):
+        return mul(lift(other), self)
+
+    def __truediv__(self, other):
+        return div(self, lift(other))
+
+    def __rtruediv__(self, other):
+        return div(lift(other), self)
+
+    def __neg__(self):
+        return neg(self)
+
+    def __pos__(self):
+        return self
+
+    def is_const(self, value=None):
+        return self.op == "const" and (value is None or self.value == value)
+
+    __hash__ = object.__hash__
+
+
+def const(value):
+    value = float(value)
+    if not math.isfinite(value):
+        raise ValueError("rbdcgen.expr: non-finite constant %r" % value)
+    if value == 0.0:
+        value = 0.0  # one zero: -0.0 and 0.0 are the same node
+    return current_graph().intern("const", (), value)
+
+
+def symbol(array, index):
+    """The input scalar `array[index]` of the traced function."""
+    return current_graph().intern("sym", (), (array, int(index)))
+
+
+def lift(x):
+    return x if isinstance(x, Expr) else const(x)
+
+
+def _order_key(node):
+    return (node.op != "const", node.id)
+
+
+def _node(op, *args):
+    if op in COMMUTATIVE and _order_key(args[0]) > _order_key(args[1]):
+        args = (args[1], args[0])
+    return args[0].graph.intern(op, args, None)
+
+
+def neg(x):
+    if x.op == "const":
+        return const(-x.value)
+    if x.op == "neg":
+        return x.args[0]
+    if x.op == "sub":
+        return sub(x.args[1], x.args[0])
+    return _node("neg", x)
+
+
+def add(x, y):
+    if x.op == "const" and y.op == "const":
+        return const(x.value + y.value)
+    if y.is_const(0.0):
+        return x
+    if x.is_const(0.0):
+        return y
+    if y.op == "neg":
+        return sub(x, y.args[0])
+    if x.op == "neg":
+        return sub(y, x.args[0])
+    return _node("add", x, y)
+
+
+def sub(x, y):
+    if x.op == "const" and y.op == "const":
+        return const(x.value - y.value)
+    if x is y:
+        return const(0.0)
+    if y.is_const(0.0):
+        return x
+    if x.is_const(0.0):
+        return neg(y)
+    if y.op == "neg":
+        return add(x, y.args[0])
+    if x.op == "neg":
+        return neg(add(x.args[0], y))
+    return _node("sub", x, y)
+
+
+def mul(x, y):
+    if x.op == "const" and y.op == "const":
+        return const(x.value * y.value)
+    if y.op == "const":
+        x, y = y, x
+    if x.op == "const":
+        if x.value == 0.0:
+            return x
+        if x.value == 1.0:
+            return y
+        if x.value == -1.0:
+            return neg(y)
+        if y.op == "neg":
+            return mul(const(-x.value), y.args[0])
+        if y.op == "mul" and y.args[0].op == "const":
+            return mul(const(x.value * y.args[0].value), y.args[1])
+        if x.value < 0.0:
+            return neg(mul(const(-x.value), y))
+        return _node("mul", x, y)
+    if x.op == "neg" and y.op == "neg":
+        return mul(x.args[0], y.args[0])
+    if x.op == "neg":
+        return neg(mul(x.args[0], y))
+    if y.op == "neg":
+        return neg(mul(x, y.args[0]))
+    return _node("mul", x, y)
+
+
+def div(x, y):
+    if y.op == "const":
+        if y.value == 0.0:
+            raise ZeroDivisionError("rbdcgen.expr: division by the constant 0")
+        if x.op == "const":
+            return const(x.value / y.value)
+        if y.value == 1.0:
+            return x
+        if y.value == -1.0:
+            return neg(x)
+    if x.is_const(0.0):
+        return x
+    if x.op == "neg":
+        return neg(div(x.args[0], y))
+    if y.op == "neg":
+        return neg(div(x, y.args[0]))
+    return _node("div", x, y)
+
+
+def sin(x):
+    return const(math.sin(x.value)) if x.op == "const" else _node("sin", x)
+
+
+def cos(x):
+    return const(math.cos(x.value)) if x.op == "const" else _node("cos", x)
+
+
+def sqrt(x):
+    if x.op == "const":
+        return const(math.sqrt(x.value))
+    return _node("sqrt", x)
+
+
+def reachable(outputs):
+    """Nodes reaching `outputs` (dead-code elimination), in a deterministic topological order:
+    depth-first post-order, operands before users, outputs visited in the given order."""
+    seen = set()
+    order = []
+    for root in outputs:
+        if root.id in seen:
+            continue
+        stack = [(root, False)]
+        while stack:
+            node, expanded = stack.pop()
+            if expanded:
+                order.append(node)
+                continue
+            if node.id in seen:
+                continue
+            seen.add(node.id)
+            stack.append((node, True))
+            for arg in reversed(node.args):
+                if arg.id not in seen:
+                    stack.append((arg, False))
+    return order
+
+
+_EVAL = {
+    "neg": lambda a: -a,
+    "add": lambda a, b: a + b,
+    "sub": lambda a, b: a - b,
+    "mul": lambda a, b: a * b,
+    "div": lambda a, b: a / b,
+    "sin": math.sin,
+    "cos": math.cos,
+    "sqrt": math.sqrt,
+}
+
+
+def evaluate(outputs, inputs):
+    """Numeric value of each node in `outputs` given `inputs` = {array name: list of floats}.
+    The reference evaluator for tests and debugging."""
+    values = {}
+    for node in reachable(outputs):
+        if node.op == "const":
+            values[node.id] = node.value
+        elif node.op == "sym":
+            array, index = node.value
+            values[node.id] = float(inputs[array][index])
+        else:
+            values[node.id] = _EVAL[node.op](*(values[a.id] for a in node.args))
+    return [values[node.id] for node in outputs]

@@ -1,0 +1,224 @@
+"""Operation counts: of the emitted DAG (count_ops) and of the generic dense-6×6 algorithm the
+runtime runs (generic_ops, counted analytically), so the saving from folding is visible.
+
+Both return dict(mul, add, div, sqrt, trig, neg, total); `add` includes subtractions, `trig` sin
+and cos, `total` is the sum of all of them (every operation counts one)."""
+
+from __future__ import annotations
+
+from . import expr as ex
+
+_KIND = {"mul": "mul", "add": "add", "sub": "add", "div": "div", "sqrt": "sqrt",
+         "sin": "trig", "cos": "trig", "neg": "neg"}
+KINDS = ("mul", "add", "div", "sqrt", "trig", "neg")
+
+
+def _result(counts):
+    out = {k: counts.get(k, 0) for k in KINDS}
+    out["total"] = sum(out.values())
+    return out
+
+
+def count_ops(fn):
+    """Operations of the live DAG of `fn` after folding, CSE and DCE (what emit_body prints)."""
+    counts = {}
+    for node in ex.reachable(fn.output_exprs()):
+        kind = _KIND.get(node.op)
+        if kind is not None:
+            counts[kind] = counts.get(kind, 0) + 1
+    return _result(counts)
+
+
+class _Tally:
+    """Analytic count of dense 6×6 spatial arithmetic, as in runtime/include/rbdc/spatial.hpp."""
+
+    def __init__(self):
+        self.c = {k: 0 for k in KINDS}
+
+    def add(self, mul=0, add=0, div=0, sqrt=0, trig=0, times=1):
+        for key, value in (("mul", mul), ("add", add), ("div", div), ("sqrt", sqrt),
+                           ("trig", trig)):
+            self.c[key] += value * times
+
+    # Dense primitives.
+    def mv6(self, times=1):        # 6×6 · 6-vector
+        self.add(36, 30, times=times)
+
+    def mm6(self, times=1):        # 6×6 · 6×6
+        self.add(216, 180, times=times)
+
+    def v6(self, times=1):         # 6-vector sum
+        self.add(0, 6, times=times)
+
+    def mv3(self, times=1):        # 3×3 · 3-vector
+        self.add(9, 6, times=times)
+
+    def mm3(self, times=1):        # 3×3 · 3×3
+        self.add(27, 18, times=times)
+
+    def dot6(self, times=1):       # S_iᵀ f
+        self.add(6, 5, times=times)
+
+    def scale6(self, times=1):     # S_i q̇_i
+        self.add(6, 0, times=times)
+
+    # Algorithm building blocks.
+    def joint_transforms(self, robot):
+        """X_up = X_J(q) X_T per joint: axis-angle rotation (sin, cos, Rodrigues) and one 6×6
+        product (Eq. 11)."""
+        self.add(13, 9, trig=2, times=robot.n_joints)
+        self.mm6(robot.n_joints)
+
+    def base_rotation(self, robot):
+        if robot.floating_base:
+            self.add(12, 12)       # unit quaternion → rotation matrix
+
+    def world_transforms(self, robot):
+        """X_W^0 (Eq. 14: E r̃ product) and X_W^i = X_up X_W^λ(i) (Eq. 15)."""
+        self.base_rotation(robot)
+        self.mm3()
+        self.mm6(robot.n_joints)
+
+    def velocities(self, robot):
+        """Alg. 1 line 7: v_i = X_up v_λ + S q̇."""
+        self.mv6(robot.n_joints)
+        self.scale6(robot.n_joints)
+        self.v6(robot.n_joints)
+
+    def inward(self, robot):
+        """Eqs. 22-23: c_i = S_iᵀ f_i, f_λ += X_upᵀ f_i."""
+        self.dot6(robot.n_joints)
+        self.mv6(robot.n_joints)
+        self.v6(robot.n_joints)
+
+    def rnea(self, robot, velocity, acceleration):
+        """Outward accelerations and forces of Alg. 2/3 (and the full RNEA), dense."""
+        nj, nb = robot.n_joints, robot.nb
+        self.mv6(nj)                               # X_up a_λ
+        if velocity:
+            self.add(6, 3)                         # a₀ bias ω̃₀ v₀
+            self.scale6(nj)
+            self.mv6(nj)                           # v_i × S q̇ (crm dense)
+            self.v6(nj)
+            self.mv6(2 * nb)                       # I v, v ×* (I v)
+            self.v6(nb)
+        if acceleration:
+            self.scale6(nj)
+            self.v6(nj)
+        self.mv6(nb)                               # I a
+        self.mv3()                                 # R_W^0 g
+        self.inward(robot)
+
+    def crba(self, robot):
+        """Alg. 5: I_cλ += X_upᵀ I_c X_up, F = I_c S, H_ij along κ, X_0^i for the root block."""
+        self.mm6(2 * robot.n_joints)
+        self.add(0, 36, times=robot.n_joints)
+        self.mv6(robot.n_joints)
+        self.dot6(robot.n_joints)
+        for i in range(1, robot.nb):
+            depth = len(robot.support[i]) - 1
+            self.mv6(depth)
+            self.dot6(depth)
+            if robot.floating_base:
+                self.mv6()                         # X_upᵀ F up to the trunk
+        self.mm6(sum(1 for i in range(1, robot.nb) if robot.parent[i] != 0))  # X_0^i
+
+    def cholesky_solve(self, n):
+        """Dense LLᵀ (n³/6) and two triangular solves (n² each)."""
+        cubic = n * n * n // 6
+        self.add(cubic, cubic, div=n * (n - 1) // 2, sqrt=n)
+        self.add(n * n, n * n, div=2 * n)
+
+    def foot_wrenches(self, robot, nf):
+        """Alg. 4 outward loop: world force → body wrench via X̄ (rotation + 6×6 product)."""
+        self.mv3(nf)
+        self.mv6(nf)
+
+    def osc(self, robot, nf, closed):
+        """Paper 001 Table 1 (and Table 2) with dense 6×6 operations."""
+        nj, nb = robot.n_joints, robot.nb
+        self.velocities(robot)
+        self.scale6(nj)
+        self.mv6(nj)                               # ζ_i = v_i × S q̇
+        self.mv6(2 * nb)                           # β = v ×* I v
+        if closed:
+            self.mm6(4 * nf)                       # K_c, Lᵀ_c, Xᵀ Lᵀ I_c X
+            self.mv6(3 * nf)
+        else:
+            self.foot_wrenches(robot, nf)
+        for i in range(nb - 1, 0, -1):
+            self.mv6()                             # U = I^A S
+            self.dot6()
+            self.add(0, 0, div=1)                  # D = (Sᵀ U)⁻¹
+            self.add(36, 0)                        # K = S D Sᵀ
+            self.mm6()                             # Lᵀ = 1 − I^A K
+            self.add(0, 6)
+            self.mm6(3)                            # Xᵀ Lᵀ I^A X
+            self.add(0, 36)
+            self.mv6(3)                            # Xᵀ Lᵀ (β + I ζ)
+            self.v6(2)
+            self.mv6()                             # B_λi = −Xᵀ U D
+            self.add(6, 0)
+            self.mv6(2 * 6 * (len(robot.subtree[i]) - 1))   # B_λk = Xᵀ Lᵀ B_ik, 6 columns each
+        self.mv3()
+        self.mv6()                                 # b = β − I (a_g + (0, ω × v))
+        self.add(6, 9)
+
+
+def generic_ops(robot, scene, name):
+    """Operation count of the runtime's generic dense algorithm for function `name`."""
+    nf = len(scene.feet_for(robot))
+    nv = robot.nv
+    t = _Tally()
+    t.joint_transforms(robot)
+    if name == "feet_positions":
+        t.world_transforms(robot)
+        t.mm6(nf)                                  # X_W^fk = X_i^fk X_W^i (Eq. 17)
+        t.mm3(nf)                                  # Eq. 18
+    elif name == "feet_velocities":
+        t.world_transforms(robot)
+        t.velocities(robot)
+        t.mv6(nf)
+        t.mv3(nf)
+    elif name == "feet_jacobian":
+        t.world_transforms(robot)
+        for foot in scene.feet_for(robot):
+            t.mm6()                                # X_W^fk
+            depth = len(robot.support[foot.body])
+            t.mm6(depth)                           # X_j^fk along κ (Alg. 6)
+            t.mv6(depth)
+            t.mv3(depth)
+            if robot.floating_base:
+                t.mm6()
+                t.mv3(6)
+    elif name == "quadratic_velocity_terms":
+        t.velocities(robot)
+        t.rnea(robot, True, False)
+    elif name == "gravity_terms":
+        t.base_rotation(robot)
+        t.rnea(robot, False, False)
+    elif name == "feet_force_terms":
+        t.world_transforms(robot)
+        t.foot_wrenches(robot, nf)
+        t.inward(robot)
+    elif name == "inverse_dynamics":
+        t.base_rotation(robot)
+        t.velocities(robot)
+        t.rnea(robot, True, True)
+    elif name == "mass_matrix":
+        t.crba(robot)
+    elif name == "forward_dynamics":
+        t.base_rotation(robot)
+        t.crba(robot)
+        t.velocities(robot)
+        t.rnea(robot, True, False)
+        t.world_transforms(robot)
+        t.foot_wrenches(robot, nf)
+        t.cholesky_solve(nv)
+    elif name in ("osc_open_chain", "osc_closed_chain"):
+        t.base_rotation(robot)
+        t.osc(robot, nf if name == "osc_open_chain" else len(scene.contacts_for(robot)),
+              closed=name == "osc_closed_chain")
+    else:
+        raise KeyError("unknown function '%s'" % name)
+    return _result(t.c)

@@ -1,0 +1,238 @@
+"""The robot IR (`rbdc-ir-1`, docs/ir.md) as frozen plain-data dataclasses.
+
+The C++ model builder already validated the physics; here we only check shapes and types so that
+a malformed file gets an error naming the file, the element and the problem.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from typing import Optional, Tuple
+
+FORMAT = "rbdc-ir-1"
+ROOT_TYPES = ("floating", "fixed")
+JOINT_TYPES = ("revolute", "prismatic")
+
+Vec3 = Tuple[float, float, float]
+Mat3 = Tuple[Vec3, Vec3, Vec3]
+
+
+class IRError(ValueError):
+    """Malformed IR; the message names the source, the element and the problem."""
+
+
+@dataclass(frozen=True)
+class Body:
+    name: str
+    mass: float
+    com: Vec3
+    inertia_com: Mat3
+
+
+@dataclass(frozen=True)
+class Joint:
+    name: str
+    type: str             # floating | fixed (root only), revolute | prismatic
+    parent: int           # λ(i); -1 for the root joint
+    axis: Vec3
+    rotation: Mat3        # E_T: parent → joint coordinates
+    translation: Vec3     # r_T: joint origin in parent coordinates
+    q_index: int
+    v_index: int
+    lower: Optional[float]
+    upper: Optional[float]
+
+
+@dataclass(frozen=True)
+class Foot:
+    name: str
+    body: int
+    offset: Vec3
+
+
+@dataclass(frozen=True)
+class Robot:
+    name: str
+    floating_base: bool
+    gravity: Vec3
+    nb: int
+    nq: int
+    nv: int
+    pred: Tuple[int, ...]
+    succ: Tuple[int, ...]
+    parent: Tuple[int, ...]      # λ over bodies 0 … nb-1 (λ(0) = -1)
+    support: Tuple[Tuple[int, ...], ...]   # κ(i)
+    children: Tuple[Tuple[int, ...], ...]  # μ(i)
+    subtree: Tuple[Tuple[int, ...], ...]   # ν(i)
+    bodies: Tuple[Body, ...]
+    joints: Tuple[Joint, ...]
+    feet: Tuple[Foot, ...]
+
+    @property
+    def n_joints(self) -> int:
+        """1-DoF joints (the actuated ones)."""
+        return self.nb - 1
+
+    @property
+    def root_dofs(self) -> int:
+        return 6 if self.floating_base else 0
+
+    def foot(self, name: str) -> Foot:
+        for foot in self.feet:
+            if foot.name == name:
+                return foot
+        raise KeyError(name)
+
+
+class _Reader:
+    """Typed access to the JSON with errors that name the element."""
+
+    def __init__(self, source):
+        self.source = source
+
+    def fail(self, where, problem):
+        raise IRError("%s: %s: %s" % (self.source, where, problem))
+
+    def get(self, obj, key, where):
+        if not isinstance(obj, dict) or key not in obj:
+            self.fail(where, "missing key '%s'" % key)
+        return obj[key]
+
+    def number(self, x, where):
+        if isinstance(x, bool) or not isinstance(x, (int, float)):
+            self.fail(where, "expected a number, got %r" % (x,))
+        return float(x)
+
+    def integer(self, x, where):
+        if isinstance(x, bool) or not isinstance(x, int):
+            self.fail(where, "expected an integer, got %r" % (x,))
+        return x
+
+    def string(self, x, where):
+        if not isinstance(x, str):
+            self.fail(where, "expected a string, got %r" % (x,))
+        return x
+
+    def vec3(self, x, where):
+        if not isinstance(x, list) or len(x) != 3:
+            self.fail(where, "expected a list of 3 numbers, got %r" % (x,))
+        return tuple(self.number(c, where) for c in x)
+
+    def mat3(self, x, where):
+        if not isinstance(x, list) or len(x) != 3:
+            self.fail(where, "expected a 3x3 list of lists, got %r" % (x,))
+        return tuple(self.vec3(row, where) for row in x)
+
+    def int_list(self, x, length, where):
+        if not isinstance(x, list) or len(x) != length:
+            self.fail(where, "expected a list of %d integers" % length)
+        return tuple(self.integer(c, where) for c in x)
+
+    def optional_number(self, x, where):
+        return None if x is None else self.number(x, where)
+
+
+def load_ir(source) -> Robot:
+    """Reads an IR from a path or an already parsed dict; checks shapes, never physics."""
+    if isinstance(source, dict):
+        data, name = source, "<ir>"
+    else:
+        name = str(source)
+        try:
+            with open(name, encoding="utf-8") as handle:
+                data = json.load(handle)
+        except OSError as err:
+            raise IRError("%s: cannot read: %s" % (name, err.strerror)) from None
+        except json.JSONDecodeError as err:
+            raise IRError("%s: invalid JSON: %s" % (name, err)) from None
+    r = _Reader(name)
+    if r.get(data, "format", "top level") != FORMAT:
+        r.fail("format", "expected '%s', got %r" % (FORMAT, data.get("format")))
+    nb = r.integer(r.get(data, "nb", "top level"), "nb")
+    if nb < 1:
+        r.fail("nb", "expected at least 1 body")
+    floating = r.get(data, "floating_base", "top level")
+    if not isinstance(floating, bool):
+        r.fail("floating_base", "expected true or false")
+
+    bodies = []
+    raw_bodies = r.get(data, "bodies", "top level")
+    if not isinstance(raw_bodies, list) or len(raw_bodies) != nb:
+        r.fail("bodies", "expected a list of nb = %d bodies" % nb)
+    for i, b in enumerate(raw_bodies):
+        where = "bodies[%d]" % i
+        bodies.append(Body(
+            name=r.string(r.get(b, "name", where), where + ".name"),
+            mass=r.number(r.get(b, "mass", where), where + ".mass"),
+            com=r.vec3(r.get(b, "com", where), where + ".com"),
+            inertia_com=r.mat3(r.get(b, "inertia_com", where), where + ".inertia_com")))
+
+    joints = []
+    raw_joints = r.get(data, "joints", "top level")
+    if not isinstance(raw_joints, list) or len(raw_joints) != nb:
+        r.fail("joints", "expected a list of nb = %d joints" % nb)
+    for i, j in enumerate(raw_joints):
+        where = "joints[%d]" % i
+        kind = r.string(r.get(j, "type", where), where + ".type")
+        allowed = ROOT_TYPES if i == 0 else JOINT_TYPES
+        if kind not in allowed:
+            r.fail(where + ".type", "expected one of %s, got '%s'" % (", ".join(allowed), kind))
+        parent = r.integer(r.get(j, "parent", where), where + ".parent")
+        if (i == 0 and parent != -1) or (i > 0 and not 0 <= parent < i):
+            r.fail(where + ".parent", "expected %s, got %d" % ("-1" if i == 0 else "0 ≤ λ(i) < i", parent))
+        joints.append(Joint(
+            name=r.string(r.get(j, "name", where), where + ".name"),
+            type=kind, parent=parent,
+            axis=r.vec3(r.get(j, "axis", where), where + ".axis"),
+            rotation=r.mat3(r.get(j, "rotation", where), where + ".rotation"),
+            translation=r.vec3(r.get(j, "translation", where), where + ".translation"),
+            q_index=r.integer(r.get(j, "q_index", where), where + ".q_index"),
+            v_index=r.integer(r.get(j, "v_index", where), where + ".v_index"),
+            lower=r.optional_number(j.get("lower"), where + ".lower"),
+            upper=r.optional_number(j.get("upper"), where + ".upper")))
+    if (joints[0].type == "floating") != floating:
+        r.fail("joints[0].type", "'%s' contradicts floating_base = %s" % (joints[0].type, floating))
+
+    root = 6 if floating else 0
+    nq = r.integer(r.get(data, "nq", "top level"), "nq")
+    nv = r.integer(r.get(data, "nv", "top level"), "nv")
+    if nq != nb - 1 + (7 if floating else 0) or nv != nb - 1 + root:
+        r.fail("nq/nv", "nq = %d, nv = %d do not match nb = %d" % (nq, nv, nb))
+    for i in range(1, nb):
+        expected = (i - 1 + (7 if floating else 0), i - 1 + root)
+        if (joints[i].q_index, joints[i].v_index) != expected:
+            r.fail("joints[%d]" % i, "q_index/v_index must be %d/%d" % expected)
+
+    parent = tuple(j.parent for j in joints)
+    lam = r.int_list(r.get(data, "lambda", "top level"), nb - 1, "lambda")
+    if lam != parent[1:]:
+        r.fail("lambda", "does not match joints[i].parent")
+    feet = []
+    raw_feet = r.get(data, "feet", "top level")
+    if not isinstance(raw_feet, list):
+        r.fail("feet", "expected a list")
+    for k, f in enumerate(raw_feet):
+        where = "feet[%d]" % k
+        body = r.integer(r.get(f, "body", where), where + ".body")
+        if not 0 <= body < nb:
+            r.fail(where + ".body", "body %d out of range 0 … %d" % (body, nb - 1))
+        feet.append(Foot(name=r.string(r.get(f, "name", where), where + ".name"), body=body,
+                         offset=r.vec3(r.get(f, "offset", where), where + ".offset")))
+
+    def sets(key):
+        raw = r.get(data, key, "top level")
+        if not isinstance(raw, list) or len(raw) != nb:
+            r.fail(key, "expected a list of nb = %d lists" % nb)
+        return tuple(tuple(r.integer(x, key) for x in entry) for entry in raw)
+
+    return Robot(
+        name=r.string(r.get(data, "name", "top level"), "name"),
+        floating_base=floating,
+        gravity=r.vec3(r.get(data, "gravity", "top level"), "gravity"),
+        nb=nb, nq=nq, nv=nv,
+        pred=r.int_list(r.get(data, "PRED", "top level"), nb - 1, "PRED"),
+        succ=r.int_list(r.get(data, "SUCC", "top level"), nb - 1, "SUCC"),
+        parent=parent,
+        support=sets("kappa"), children=sets("mu"), subtree=sets("nu"),
+        bodies=tuple(bodies), joints=tuple(joints), feet=tuple(feet))

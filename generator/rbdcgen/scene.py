@@ -1,0 +1,171 @@
+"""Scenes: what to emit for a robot (docs/generator_core.md, "Scenes").
+
+A scene names the quantities to emit, the gravity, the base, the feet kept and those in contact,
+the inputs known to be zero and the joints locked at a value. Zero inputs vanish from the traced
+graph and from the signatures; `base` and `locked_joints` are applied by the C++ model builder
+(the product passes them to rbdc-model), the rest here.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Optional, Tuple
+
+import yaml
+
+# Function names of docs/generated_api.md, in emission order.
+QUANTITIES = (
+    "feet_positions",
+    "feet_velocities",
+    "feet_jacobian",
+    "quadratic_velocity_terms",
+    "gravity_terms",
+    "feet_force_terms",
+    "inverse_dynamics",
+    "mass_matrix",
+    "forward_dynamics",
+    "osc_open_chain",
+    "osc_closed_chain",
+)
+FEET_QUANTITIES = ("feet_positions", "feet_velocities", "feet_jacobian", "feet_force_terms")
+OSC_QUANTITIES = ("osc_open_chain", "osc_closed_chain")
+ZERO_INPUTS = ("v", "a", "tau", "f")
+KEYS = ("name", "quantities", "gravity", "base", "locked_joints", "feet", "contacts", "zero_inputs")
+
+
+class SceneError(ValueError):
+    """Bad scene; the message names the file, the key and the problem."""
+
+
+@dataclass(frozen=True)
+class Scene:
+    name: str = "full"
+    quantities: Optional[Tuple[str, ...]] = None   # None: all that apply to the robot
+    gravity: Optional[Tuple[float, float, float]] = None  # None: the robot's (IR) gravity
+    base: str = "floating"                          # floating | fixed
+    locked_joints: Tuple[Tuple[str, float], ...] = ()  # (joint name, value), sorted by name
+    feet: Optional[Tuple[str, ...]] = None          # None: all feet of the robot
+    contacts: Optional[Tuple[str, ...]] = None      # None: all kept feet
+    zero_inputs: Tuple[str, ...] = ()
+    source: str = "<default>"
+
+    # --- resolution against a robot -------------------------------------------------------
+    def fail(self, key, problem):
+        raise SceneError("%s: %s: %s" % (self.source, key, problem))
+
+    def gravity_for(self, robot):
+        return robot.gravity if self.gravity is None else self.gravity
+
+    def feet_for(self, robot):
+        """The kept feet, in the robot's order; unknown names are an error."""
+        names = [f.name for f in robot.feet]
+        if self.feet is None:
+            return tuple(robot.feet)
+        for name in self.feet:
+            if name not in names:
+                self.fail("feet", "unknown foot '%s' (the robot has: %s)"
+                          % (name, ", ".join(names) or "no feet"))
+        return tuple(f for f in robot.feet if f.name in self.feet)
+
+    def contacts_for(self, robot):
+        """The kept feet in contact (osc_closed_chain)."""
+        kept = self.feet_for(robot)
+        if self.contacts is None:
+            return kept
+        kept_names = [f.name for f in kept]
+        for name in self.contacts:
+            if name not in kept_names:
+                self.fail("contacts", "'%s' is not a kept foot (kept: %s)"
+                          % (name, ", ".join(kept_names) or "none"))
+        return tuple(f for f in kept if f.name in self.contacts)
+
+    def quantities_for(self, robot):
+        """The functions to emit: the requested ones, or all that apply to this robot.
+        OSC functions need a floating base; feet functions need feet."""
+        has_feet = bool(self.feet_for(robot))
+
+        def applies(name):
+            if name in OSC_QUANTITIES and not robot.floating_base:
+                return False
+            return has_feet or name not in FEET_QUANTITIES
+
+        if self.quantities is None:
+            return tuple(q for q in QUANTITIES if applies(q))
+        for name in self.quantities:
+            if not applies(name):
+                self.fail("quantities", "'%s' does not apply to robot '%s' (%s)" % (
+                    name, robot.name,
+                    "fixed base" if name in OSC_QUANTITIES else "no feet"))
+        return tuple(q for q in QUANTITIES if q in self.quantities)
+
+
+def default_scene() -> Scene:
+    """Everything, with the robot's gravity, floating base and all feet."""
+    return Scene()
+
+
+def _string_list(scene_fail, key, value, allowed=None):
+    if not isinstance(value, list) or not all(isinstance(x, str) for x in value):
+        scene_fail(key, "expected a list of names, got %r" % (value,))
+    if allowed is not None:
+        for x in value:
+            if x not in allowed:
+                scene_fail(key, "unknown name '%s' (allowed: %s)" % (x, ", ".join(allowed)))
+    if len(set(value)) != len(value):
+        scene_fail(key, "duplicate names")
+    return tuple(value)
+
+
+def scene_from_dict(data, source="<scene>") -> Scene:
+    def fail(key, problem):
+        raise SceneError("%s: %s: %s" % (source, key, problem))
+
+    if not isinstance(data, dict):
+        fail("top level", "expected a mapping of scene keys")
+    for key in data:
+        if key not in KEYS:
+            fail(key, "unknown key (allowed: %s)" % ", ".join(KEYS))
+    if "name" not in data or not isinstance(data["name"], str) or not data["name"].isidentifier():
+        fail("name", "required, a C++ identifier (it names the namespace)")
+    quantities = None
+    if data.get("quantities") is not None:
+        quantities = _string_list(fail, "quantities", data["quantities"], QUANTITIES)
+    gravity = None
+    if "gravity" in data:
+        g = data["gravity"]
+        if g is None or g == "none":
+            gravity = (0.0, 0.0, 0.0)
+        elif (isinstance(g, list) and len(g) == 3
+              and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in g)):
+            gravity = tuple(float(x) for x in g)
+        else:
+            fail("gravity", "expected [x, y, z] or none, got %r" % (g,))
+    base = data.get("base", "floating")
+    if base not in ("floating", "fixed"):
+        fail("base", "expected floating or fixed, got %r" % (base,))
+    locked = data.get("locked_joints") or {}
+    if not isinstance(locked, dict) or not all(
+            isinstance(k, str) and isinstance(v, (int, float)) and not isinstance(v, bool)
+            for k, v in locked.items()):
+        fail("locked_joints", "expected a mapping joint name → value")
+    feet = None if data.get("feet") is None else _string_list(fail, "feet", data["feet"])
+    contacts = (None if data.get("contacts") is None
+                else _string_list(fail, "contacts", data["contacts"]))
+    zero = _string_list(fail, "zero_inputs", data.get("zero_inputs") or [], ZERO_INPUTS)
+    return Scene(name=data["name"], quantities=quantities, gravity=gravity, base=base,
+                 locked_joints=tuple((k, float(v)) for k, v in sorted(locked.items())), feet=feet,
+                 contacts=contacts, zero_inputs=tuple(x for x in ZERO_INPUTS if x in zero),
+                 source=source)
+
+
+def load_scene(path) -> Scene:
+    """Reads and validates a scene YAML file."""
+    path = str(path)
+    try:
+        with open(path, encoding="utf-8") as handle:
+            data = yaml.safe_load(handle)
+    except OSError as err:
+        raise SceneError("%s: cannot read: %s" % (path, err.strerror)) from None
+    except yaml.YAMLError as err:
+        raise SceneError("%s: invalid YAML: %s" % (path, err)) from None
+    return scene_from_dict(data, source=path)

@@ -1,0 +1,153 @@
+"""Tracing: runs each requested algorithm over symbolic inputs and packages the result as a
+`Function` (signature + expression DAG) for the emitter, the FLOP counter and the templates."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Dict, Tuple
+
+from . import expr as ex
+from .algorithms import crba, forward_dynamics, jacobian, kinematics, osc, rnea
+from .algorithms.model import TracedModel
+
+
+@dataclass(frozen=True)
+class Argument:
+    name: str
+    rows: int
+    cols: int
+    doc: str
+
+    @property
+    def size(self):
+        return self.rows * self.cols
+
+
+@dataclass(frozen=True)
+class Function:
+    """One generated function: `outputs[k]` is written from `values[outputs[k].name]`, a tuple of
+    rows·cols expressions in column-major order, all nodes of `graph`."""
+    name: str
+    doc: str
+    inputs: Tuple[Argument, ...]
+    outputs: Tuple[Argument, ...]
+    values: Dict[str, Tuple[ex.Expr, ...]]
+    graph: ex.Graph
+
+    def output_exprs(self):
+        """All output entries in signature order (column-major within each output)."""
+        return [e for arg in self.outputs for e in self.values[arg.name]]
+
+    def __hash__(self):
+        return hash((self.name, self.inputs, self.outputs))
+
+
+def _columns(vectors):
+    """Column-major flattening of a list of column vectors."""
+    return tuple(x for col in vectors for x in col)
+
+
+def _matrix(rows):
+    """Column-major flattening of a matrix given as rows."""
+    return tuple(rows[r][c] for c in range(len(rows[0])) for r in range(len(rows)))
+
+
+def _input_args(robot, nf):
+    return {
+        "q": Argument("q", robot.nq, 1, "configuration (position, quaternion w x y z, joints)"
+                      if robot.floating_base else "joint positions"),
+        "v": Argument("v", robot.nv, 1, "velocity (trunk ω, v in trunk coordinates, joint rates)"
+                      if robot.floating_base else "joint velocities"),
+        "a": Argument("a", robot.nv, 1, "acceleration (trunk ω̇, R_W^0 p̈, joint accelerations)"
+                      if robot.floating_base else "joint accelerations"),
+        "tau": Argument("tau", robot.n_joints, 1, "joint torques / forces"),
+        "f": Argument("f", 3, nf, "foot forces, world frame, one column per foot"),
+        "ground_mass": Argument("ground_mass", 1, 1, "ground inertia of the big-ground-inertia "
+                                "approximation (paper 001 Eq. 43)"),
+    }
+
+
+def _spec(robot, nf):
+    """name → (doc, input names, [(output name, rows, cols, doc)], trace(m) → {name: values})."""
+    nv, nj = robot.nv, robot.n_joints
+
+    def osc_outputs(result):
+        Lam, JbarT, b = result
+        return {"Lambda": _matrix(Lam), "JbarT": _matrix(JbarT), "b": tuple(b)}
+
+    osc_out = [("Lambda", 6, 6, "operational-space inertia Λ_t of the trunk task"),
+               ("JbarT", 6, nj, "dynamically consistent J̄_tᵀ (joint columns)"),
+               ("b", 6, 1, "operational-space bias force b_t")]
+    return {
+        "feet_positions": (
+            "World positions of the feet (paper 000 Eqs. 16-18).", ("q",),
+            [("p", 3, nf, "foot positions, world frame, one column per foot")],
+            lambda m: {"p": _columns(kinematics.feet_positions(m))}),
+        "feet_velocities": (
+            "World linear velocities of the feet.", ("q", "v"),
+            [("pdot", 3, nf, "foot velocities, world frame, one column per foot")],
+            lambda m: {"pdot": _columns(kinematics.feet_velocities(m))}),
+        "feet_jacobian": (
+            "Stacked feet Jacobian J (paper 000 Alg. 6, App. B).", ("q",),
+            [("J", 3 * nf, nv, "feet Jacobian, world-frame foot velocities from v")],
+            lambda m: {"J": _matrix(jacobian.feet_jacobian(m))}),
+        "quadratic_velocity_terms": (
+            "Quadratic velocity terms c (paper 000 Alg. 2).", ("q", "v"),
+            [("c", nv, 1, "Coriolis and centrifugal terms")],
+            lambda m: {"c": rnea.quadratic_velocity_terms(m)}),
+        "gravity_terms": (
+            "Gravity terms g (paper 000 Alg. 3).", ("q",),
+            [("g", nv, 1, "gravity terms")],
+            lambda m: {"g": rnea.gravity_terms(m)}),
+        "feet_force_terms": (
+            "Generalised forces of the world foot forces (paper 000 Alg. 4).", ("q", "f"),
+            [("tau_e", nv, 1, "τ_e = Jᵀ f")],
+            lambda m: {"tau_e": rnea.feet_force_terms(m)}),
+        "inverse_dynamics": (
+            "Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3).", ("q", "v", "a"),
+            [("tau", nv, 1, "generalised forces M a + c + g")],
+            lambda m: {"tau": rnea.inverse_dynamics(m)}),
+        "mass_matrix": (
+            "Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).", ("q",),
+            [("M", nv, nv, "mass matrix, full symmetric")],
+            lambda m: {"M": _matrix(crba.mass_matrix(m))}),
+        "forward_dynamics": (
+            "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).",
+            ("q", "v", "tau", "f"),
+            [("a", nv, 1, "acceleration")],
+            lambda m: {"a": forward_dynamics.forward_dynamics(m)}),
+        "osc_open_chain": (
+            "Trunk operational-space Λ, J̄ᵀ, b with measured foot forces (paper 001 Table 1).",
+            ("q", "v", "f"), osc_out,
+            lambda m: osc_outputs(osc.osc_open_chain(m))),
+        "osc_closed_chain": (
+            "Trunk operational-space Λ, J̄ᵀ, b with feet in contact (paper 001 Table 2).",
+            ("q", "v", "ground_mass"), osc_out,
+            lambda m: osc_outputs(osc.osc_closed_chain(m))),
+    }
+
+
+def trace_function(robot, scene, name):
+    """Traces one function of the scene into a fresh graph."""
+    nf = len(scene.feet_for(robot))
+    spec = _spec(robot, nf)
+    if name not in spec:
+        raise KeyError("unknown function '%s'" % name)
+    doc, input_names, output_specs, build = spec[name]
+    args = _input_args(robot, nf)
+    zero = tuple(n for n in scene.zero_inputs if n in input_names)
+    with ex.Graph() as graph:
+        m = TracedModel(robot, scene, zero_inputs=zero)
+        values = build(m)
+    outputs = tuple(Argument(n, r, c, d) for n, r, c, d in output_specs)
+    for arg in outputs:
+        if len(values[arg.name]) != arg.size:
+            raise AssertionError("%s: output %s has %d entries, expected %d"
+                                 % (name, arg.name, len(values[arg.name]), arg.size))
+    inputs = tuple(args[n] for n in input_names if n not in zero)
+    return Function(name=name, doc=doc, inputs=inputs, outputs=outputs, values=values, graph=graph)
+
+
+def trace_scene(robot, scene):
+    """All functions of the scene, in the order of scene.QUANTITIES."""
+    return [trace_function(robot, scene, name) for name in scene.quantities_for(robot)]
