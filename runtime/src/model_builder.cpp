@@ -121,31 +121,17 @@ void check_joint(const ModelSpec& spec, int i, JointSpec& j) {
   }
 }
 
+// Principal moments of a symmetric 3x3 inertia, ascending.
+Vector3 principal_moments(const Matrix3& I) {
+  return Eigen::SelfAdjointEigenSolver<Matrix3>(I, Eigen::EigenvaluesOnly).eigenvalues();
+}
+
 void check_body(const ModelSpec& spec, int i, std::vector<std::string>* warnings) {
   const Body& b = spec.bodies[static_cast<size_t>(i)];
   const std::string label = body_label(spec, i);
-  if (!std::isfinite(b.mass)) fail(spec, label + ": mass is NaN or Inf");
-  if (!all_finite(b.com)) fail(spec, label + ": COM has NaN or Inf");
-  if (!all_finite(b.inertia_com)) fail(spec, label + ": inertia has NaN or Inf");
-  if (b.mass < 0) fail(spec, label + ": mass is negative");
-  const Matrix3& I = b.inertia_com;
-  const double scale = std::max(I.norm(), 1e-300);
-  if ((I - I.transpose()).norm() > kSymmetryTol * scale) {
-    fail(spec, label + ": rotational inertia is not symmetric");
-  }
-  if (b.mass == 0) {
-    if (I.norm() != 0) fail(spec, label + ": zero mass but non-zero rotational inertia");
-    return;
-  }
-  const Vector3 moments = Eigen::SelfAdjointEigenSolver<Matrix3>(I, Eigen::EigenvaluesOnly)
-                              .eigenvalues();  // ascending
-  if (moments(0) < -kEigenTol * scale) {
-    std::ostringstream s;
-    s << label << ": rotational inertia is not positive semi-definite (principal moments "
-      << moments.transpose() << ")";
-    fail(spec, s.str());
-  }
-  if (warnings == nullptr) return;
+  check_mass_properties(b, spec.source + ": " + label);
+  if (warnings == nullptr || b.mass == 0) return;
+  const Vector3 moments = principal_moments(b.inertia_com);
   if (moments(0) + moments(1) < moments(2) * (1 - kSymmetryTol)) {
     std::ostringstream s;
     s.precision(6);
@@ -221,6 +207,28 @@ void check_moving_inertia(const ModelSpec& spec, const Model& m) {
 }
 
 }  // namespace
+
+void check_mass_properties(const Body& b, const std::string& where) {
+  const auto refuse = [&](const std::string& problem) { throw ModelError(where + ": " + problem); };
+  if (!std::isfinite(b.mass)) refuse("mass is NaN or Inf");
+  if (!all_finite(b.com)) refuse("COM has NaN or Inf");
+  if (!all_finite(b.inertia_com)) refuse("inertia has NaN or Inf");
+  if (b.mass < 0) refuse("mass is negative");
+  const Matrix3& I = b.inertia_com;
+  const double scale = std::max(I.norm(), 1e-300);
+  if ((I - I.transpose()).norm() > kSymmetryTol * scale) refuse("rotational inertia is not symmetric");
+  if (b.mass == 0) {
+    if (I.norm() != 0) refuse("zero mass but non-zero rotational inertia");
+    return;
+  }
+  const Vector3 moments = principal_moments(I);
+  if (moments(0) < -kEigenTol * scale) {
+    std::ostringstream s;
+    s << "rotational inertia is not positive semi-definite (principal moments "
+      << moments.transpose() << ")";
+    refuse(s.str());
+  }
+}
 
 Model build_model(const ModelSpec& spec_in, std::vector<std::string>* warnings) {
   ModelSpec spec = spec_in;  // axes get normalized

@@ -38,6 +38,10 @@ struct ModelSpec {
   std::vector<Foot> feet;
 };
 
+/// Checks one body's mass properties: finite, mass ≥ 0, rotational inertia symmetric and positive
+/// semi-definite, zero inertia when the mass is zero. Throws ModelError("<where>: <problem>").
+void check_mass_properties(const Body& body, const std::string& where);
+
 /// Validates the spec, derives λ (Eq. 2), κ, μ, ν, q/v indices and the spatial constants.
 /// Throws ModelError on bad input; appends non-fatal findings (e.g. an inertia that breaks the
 /// triangle inequality) to `warnings` when given.

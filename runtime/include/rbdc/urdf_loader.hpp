@@ -1,0 +1,30 @@
+// URDF → Model through urdfdom: fixed joints merged into their parent (inertia lumped), numbering by
+// depth-first traversal in document order unless a topology file fixes it. Rules: docs/model.md.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "rbdc/model_builder.hpp"
+#include "rbdc/topology_file.hpp"
+
+namespace rbdc {
+
+struct UrdfOptions {
+  bool floating_base = true;   ///< false: the root link is welded to the world (joint 0 Fixed)
+  std::string root_link;       ///< empty: the URDF root (see docs/model.md for other choices)
+  std::vector<FootSpec> feet;  ///< empty: from the topology file, else one per leaf body
+  Vector3 gravity{0, 0, -9.81};
+  /// Mimic joints are refused unless true; then each is locked at q = offset (a fixed joint).
+  bool lock_mimic = false;
+  /// Joints turned into fixed joints at the given position (rad or m), then merged.
+  std::map<std::string, double> locked_joints;
+  std::string topology_file;  ///< optional overlay fixing numbering and feet
+};
+
+/// Loads and validates a URDF. Throws ModelError naming the file, the element and the problem.
+Model load_urdf(const std::string& path, const UrdfOptions& opts = {},
+                std::vector<std::string>* warnings = nullptr);
+
+}  // namespace rbdc

@@ -1,0 +1,389 @@
+// URDF → ModelSpec → build_model. The XML graph (document order, tree checks) comes from
+// read_urdf_outline; numbers, joint types and mimic tags come from urdfdom.
+#include "rbdc/urdf_loader.hpp"
+
+#include <console_bridge/console.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "urdf_outline.hpp"
+
+namespace rbdc {
+namespace {
+
+/// Placement of a child frame in a parent frame: x_parent = R x_child + p.
+struct Pose {
+  Matrix3 R = Matrix3::Identity();
+  Vector3 p = Vector3::Zero();
+  Pose operator*(const Pose& b) const { return {R * b.R, R * b.p + p}; }
+};
+
+Pose to_pose(const urdf::Pose& u) {
+  const urdf::Rotation& q = u.rotation;
+  return {Eigen::Quaterniond(q.w, q.x, q.y, q.z).toRotationMatrix(),
+          Vector3(u.position.x, u.position.y, u.position.z)};
+}
+
+/// urdfdom reports problems through console_bridge: collect them instead of printing.
+class UrdfdomLog : public console_bridge::OutputHandler {
+ public:
+  UrdfdomLog() { console_bridge::useOutputHandler(this); }
+  ~UrdfdomLog() override { console_bridge::restorePreviousOutputHandler(); }
+  UrdfdomLog(const UrdfdomLog&) = delete;
+  UrdfdomLog& operator=(const UrdfdomLog&) = delete;
+  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
+    (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR ? errors : warnings).push_back(text);
+  }
+  std::vector<std::string> errors, warnings;
+};
+
+std::string read_text(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw ModelError(path + ": cannot open file (missing or not a regular file)");
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw ModelError(path + ": cannot read file");
+  const std::string s = text.str();
+  if (s.find_first_not_of(" \t\r\n") == std::string::npos) throw ModelError(path + ": file is empty");
+  return s;
+}
+
+urdf::ModelInterfaceSharedPtr parse_with_urdfdom(const std::string& path, const std::string& text,
+                                                 std::vector<std::string>* warnings) {
+  UrdfdomLog log;
+  urdf::ModelInterfaceSharedPtr model;
+  try {
+    model = urdf::parseURDF(text);
+  } catch (const std::exception& e) {
+    log.errors.push_back(e.what());
+  }
+  if (warnings != nullptr) {
+    for (const std::string& w : log.warnings) warnings->push_back(path + ": urdfdom: " + w);
+  }
+  if (model == nullptr) {
+    std::string why;
+    for (const std::string& e : log.errors) why += (why.empty() ? "" : "; ") + e;
+    throw ModelError(path + ": urdfdom refused the file: " + (why.empty() ? "no reason given" : why));
+  }
+  return model;
+}
+
+/// A body under construction: the links merged into it and their mass properties in body axes.
+struct BodyDraft {
+  std::vector<std::string> links;  ///< links[0] names the body
+  std::vector<Body> parts;
+  int parent = -1;
+  JointSpec joint;  ///< joint from `parent` (unused for the root)
+};
+
+/// Lumps rigid parts expressed in one frame: mass sum, mass-weighted COM, and the parallel-axis
+/// theorem for each part's inertia about the common COM.
+Body lump(const std::string& name, const std::vector<Body>& parts) {
+  Body b;
+  b.name = name;
+  Vector3 first_moment = Vector3::Zero();
+  for (const Body& p : parts) {
+    b.mass += p.mass;
+    first_moment += p.mass * p.com;
+  }
+  if (b.mass == 0) return b;
+  b.com = first_moment / b.mass;
+  for (const Body& p : parts) {
+    const Vector3 d = p.com - b.com;
+    b.inertia_com += p.inertia_com + p.mass * (d.squaredNorm() * Matrix3::Identity() - d * d.transpose());
+  }
+  return b;
+}
+
+class UrdfTranslator {
+ public:
+  UrdfTranslator(std::string path, const UrdfOutline& outline, const urdf::ModelInterface& urdf,
+                 const UrdfOptions& opts)
+      : path_(std::move(path)), outline_(outline), urdf_(urdf), opts_(opts) {
+    for (const UrdfJointEdge& j : outline_.joints) {
+      child_joints_[j.parent].push_back(&j);
+      parent_joint_[j.child] = &j;
+    }
+  }
+
+  ModelSpec translate() {
+    for (const auto& [name, value] : opts_.locked_joints) {
+      if (urdf_.getJoint(name) == nullptr) {
+        throw ModelError(path_ + ": locked joint '" + name + "' does not exist");
+      }
+    }
+    drafts_.emplace_back();  // body 0, the root
+    visit(choose_root(), 0, Pose{});
+    return assemble();
+  }
+
+ private:
+  [[noreturn]] void fail(const UrdfJointEdge* j, const std::string& problem) const {
+    const std::string line = j == nullptr ? std::string() : std::to_string(j->line) + ":";
+    throw ModelError(path_ + ":" + line + " " + problem);
+  }
+
+  bool massless(const std::string& link) const {
+    const urdf::LinkConstSharedPtr l = urdf_.getLink(link);
+    return l->inertial == nullptr || l->inertial->mass == 0;
+  }
+
+  // The URDF root unless opts.root_link names another link. Links above the chosen root are
+  // dropped, so they must be massless with one child and joined by fixed (or floating) joints. A
+  // massless URDF root whose only joint is floating (a "world" link) is dropped the same way.
+  std::string choose_root() const {
+    std::string root = opts_.root_link;
+    if (root.empty()) {
+      root = outline_.root;
+      const auto kids = child_joints_.find(root);
+      if (kids != child_joints_.end() && kids->second.size() == 1 &&
+          kids->second[0]->type == "floating" && massless(root)) {
+        root = kids->second[0]->child;
+      }
+    }
+    if (urdf_.getLink(root) == nullptr) {
+      throw ModelError(path_ + ": root link '" + root + "' does not exist");
+    }
+    for (std::string at = root; at != outline_.root;) {
+      const UrdfJointEdge* j = parent_joint_.at(at);
+      const bool only_child = child_joints_.at(j->parent).size() == 1;
+      if ((j->type != "fixed" && j->type != "floating") || !massless(j->parent) || !only_child) {
+        fail(j, "cannot use link '" + root + "' as the root: link '" + j->parent +
+                    "' above it would have to be dropped, but it has mass, other children or a "
+                    "moving joint ('" + j->name + "')");
+      }
+      at = j->parent;
+    }
+    return root;
+  }
+
+  void add_mass_properties(const std::string& link, int body, const Pose& pose) {
+    const urdf::InertialSharedPtr& in = urdf_.getLink(link)->inertial;
+    if (in == nullptr) return;
+    Body part;
+    part.mass = in->mass;
+    const Pose inertial = to_pose(in->origin);
+    Matrix3 I;
+    I << in->ixx, in->ixy, in->ixz, in->ixy, in->iyy, in->iyz, in->ixz, in->iyz, in->izz;
+    part.com = inertial.p;
+    part.inertia_com = inertial.R * I * inertial.R.transpose();  // inertial frame → link frame
+    check_mass_properties(part, path_ + ": link '" + link + "'");
+    part.com = pose.R * part.com + pose.p;  // link frame → body frame
+    part.inertia_com = pose.R * part.inertia_com * pose.R.transpose();
+    drafts_[static_cast<size_t>(body)].parts.push_back(part);
+  }
+
+  // Motion of a locked 1-DoF joint at position q, as a pose of the child in the joint frame.
+  static Pose joint_motion(const urdf::Joint& j, const Vector3& axis, double q) {
+    if (j.type == urdf::Joint::PRISMATIC) return {Matrix3::Identity(), q * axis};
+    return {Eigen::AngleAxisd(q, axis).toRotationMatrix(), Vector3::Zero()};
+  }
+
+  // Depth-first over links, children in document order: a moving joint opens a new body, a fixed
+  // (or locked) joint merges the child link into the current body at its composed placement.
+  void visit(const std::string& link, int body, const Pose& pose) {
+    drafts_[static_cast<size_t>(body)].links.push_back(link);
+    placement_[link] = {body, pose};
+    add_mass_properties(link, body, pose);
+    const auto kids = child_joints_.find(link);
+    if (kids == child_joints_.end()) return;
+    for (const UrdfJointEdge* edge : kids->second) {
+      const urdf::Joint& j = *urdf_.getJoint(edge->name);
+      const Pose origin = pose * to_pose(j.parent_to_joint_origin_transform);
+      if (!origin.R.allFinite() || !origin.p.allFinite()) fail(edge, "joint '" + j.name + "': origin has NaN or Inf");
+      if (j.type == urdf::Joint::FIXED) {
+        visit(j.child_link_name, body, origin);
+        continue;
+      }
+      if (j.type != urdf::Joint::REVOLUTE && j.type != urdf::Joint::CONTINUOUS &&
+          j.type != urdf::Joint::PRISMATIC) {
+        fail(edge, "joint '" + j.name + "' has unsupported type '" + edge->type +
+                       "' (supported: revolute, continuous, prismatic, fixed; floating only above "
+                       "the root link)");
+      }
+      const Vector3 axis(j.axis.x, j.axis.y, j.axis.z);
+      if (!axis.allFinite()) fail(edge, "joint '" + j.name + "': axis has NaN or Inf");
+      if (axis.norm() < 1e-9) fail(edge, "joint '" + j.name + "': axis is zero");
+      const auto locked = opts_.locked_joints.find(j.name);
+      if (locked != opts_.locked_joints.end()) {
+        visit(j.child_link_name, body, origin * joint_motion(j, axis.normalized(), locked->second));
+        continue;
+      }
+      if (j.mimic != nullptr) {
+        if (!opts_.lock_mimic) {
+          fail(edge, "joint '" + j.name + "' mimics joint '" + j.mimic->joint_name +
+                         "'; mimic joints are not supported: lock them at their offset with "
+                         "UrdfOptions::lock_mimic (rbdc-model --lock-mimic)");
+        }
+        visit(j.child_link_name, body, origin * joint_motion(j, axis.normalized(), j.mimic->offset));
+        continue;
+      }
+      BodyDraft draft;
+      draft.parent = body;
+      draft.joint.name = j.name;
+      draft.joint.type = j.type == urdf::Joint::PRISMATIC ? JointType::Prismatic : JointType::Revolute;
+      draft.joint.axis = axis;
+      draft.joint.rotation = origin.R.transpose();  // E_T: parent → joint coordinates
+      draft.joint.translation = origin.p;
+      if (j.type != urdf::Joint::CONTINUOUS && j.limits != nullptr) {
+        draft.joint.lower = j.limits->lower;
+        draft.joint.upper = j.limits->upper;
+      }
+      drafts_.push_back(draft);
+      visit(j.child_link_name, static_cast<int>(drafts_.size()) - 1, Pose{});
+    }
+  }
+
+  Foot resolve_foot(const FootSpec& f, const std::string& source) const {
+    const auto it = placement_.find(f.link);
+    if (it == placement_.end()) {
+      throw ModelError(source + ": foot '" + f.name + "': link '" + f.link +
+                       "' is not a link of the model");
+    }
+    const Pose& pose = it->second.pose;
+    return {f.name, it->second.body, pose.R * f.offset + pose.p};
+  }
+
+  // Default feet: one per leaf body, at its last merged massless tip link (toe/foot links) if any,
+  // else at the body origin.
+  std::vector<Foot> default_feet() const {
+    std::vector<bool> has_children(drafts_.size(), false);
+    for (const BodyDraft& d : drafts_) {
+      if (d.parent >= 0) has_children[static_cast<size_t>(d.parent)] = true;
+    }
+    std::vector<Foot> feet;
+    for (size_t b = 0; b < drafts_.size(); ++b) {
+      if (has_children[b]) continue;
+      const std::vector<std::string>& links = drafts_[b].links;
+      Foot foot{links[0], static_cast<int>(b), Vector3::Zero()};
+      for (size_t k = 1; k < links.size(); ++k) {
+        if (child_joints_.count(links[k]) == 0 && massless(links[k])) {
+          foot = {links[k], static_cast<int>(b), placement_.at(links[k]).pose.p};
+        }
+      }
+      feet.push_back(foot);
+    }
+    return feet;
+  }
+
+  // Body order: depth-first (identity), or as the topology file lists the bodies, after checking
+  // that its PRED/SUCC agree with the URDF's parent relations.
+  std::vector<int> numbering(const Topology* topo) const {
+    const int nb = static_cast<int>(drafts_.size());
+    std::vector<int> order(static_cast<size_t>(nb));
+    for (int i = 0; i < nb; ++i) order[static_cast<size_t>(i)] = i;
+    if (topo == nullptr) return order;
+    const std::string& src = topo->source;
+    if (static_cast<int>(topo->bodies.size()) != nb) {
+      throw ModelError(src + ": lists " + std::to_string(topo->bodies.size()) + " bodies, but " +
+                       path_ + " has " + std::to_string(nb) + " after merging fixed joints");
+    }
+    std::map<std::string, int> draft_of;
+    for (int i = 0; i < nb; ++i) draft_of[drafts_[static_cast<size_t>(i)].links[0]] = i;
+    std::vector<bool> used(static_cast<size_t>(nb), false);
+    for (int k = 0; k < nb; ++k) {
+      const std::string& name = topo->bodies[static_cast<size_t>(k)];
+      const auto it = draft_of.find(name);
+      if (it == draft_of.end()) {
+        const auto merged = placement_.find(name);
+        throw ModelError(src + ": body '" + name + "' " +
+                         (merged == placement_.end()
+                              ? "is not a link of " + path_
+                              : "is merged by a fixed joint into body '" +
+                                    drafts_[static_cast<size_t>(merged->second.body)].links[0] + "'"));
+      }
+      if (used[static_cast<size_t>(it->second)]) throw ModelError(src + ": body '" + name + "' is listed twice");
+      used[static_cast<size_t>(it->second)] = true;
+      order[static_cast<size_t>(k)] = it->second;
+    }
+    if (order[0] != 0) {
+      throw ModelError(src + ": body 0 is '" + topo->bodies[0] + "', but the root link is '" +
+                       drafts_[0].links[0] + "'");
+    }
+    for (int i = 1; i < nb; ++i) {
+      const int p = topo->pred[static_cast<size_t>(i - 1)], s = topo->succ[static_cast<size_t>(i - 1)];
+      const std::string joint = "joint " + std::to_string(i) + " (PRED " + std::to_string(p) +
+                                ", SUCC " + std::to_string(s) + ")";
+      if (std::max(p, s) != i || std::min(p, s) < 0) {
+        throw ModelError(src + ": " + joint + ": must join body " + std::to_string(i) +
+                         " to a body with a smaller number (regular numbering, λ(i) < i)");
+      }
+      const int urdf_parent = drafts_[static_cast<size_t>(order[static_cast<size_t>(i)])].parent;
+      if (order[static_cast<size_t>(std::min(p, s))] != urdf_parent) {
+        throw ModelError(src + ": " + joint + " hangs body '" + topo->bodies[static_cast<size_t>(i)] +
+                         "' from '" + topo->bodies[static_cast<size_t>(std::min(p, s))] +
+                         "', but in " + path_ + " its parent is '" +
+                         drafts_[static_cast<size_t>(urdf_parent)].links[0] + "'");
+      }
+    }
+    return order;
+  }
+
+  ModelSpec assemble() const {
+    std::unique_ptr<Topology> topo;
+    if (!opts_.topology_file.empty()) {
+      topo = std::make_unique<Topology>(read_topology(opts_.topology_file));
+    }
+    const std::vector<int> order = numbering(topo.get());
+    std::vector<int> number_of(order.size());
+    for (size_t k = 0; k < order.size(); ++k) number_of[static_cast<size_t>(order[k])] = static_cast<int>(k);
+
+    ModelSpec spec;
+    spec.name = urdf_.getName();
+    spec.source = path_;
+    spec.floating_base = opts_.floating_base;
+    spec.gravity = opts_.gravity;
+    for (size_t k = 0; k < order.size(); ++k) {
+      const BodyDraft& d = drafts_[static_cast<size_t>(order[k])];
+      spec.bodies.push_back(lump(d.links[0], d.parts));
+      if (k == 0) continue;
+      spec.joints.push_back(d.joint);
+      spec.pred.push_back(topo ? topo->pred[k - 1] : number_of[static_cast<size_t>(d.parent)]);
+      spec.succ.push_back(topo ? topo->succ[k - 1] : static_cast<int>(k));
+    }
+    std::vector<Foot> feet;
+    if (!opts_.feet.empty()) {
+      for (const FootSpec& f : opts_.feet) feet.push_back(resolve_foot(f, path_));
+    } else if (topo && !topo->feet.empty()) {
+      for (const FootSpec& f : topo->feet) feet.push_back(resolve_foot(f, topo->source));
+    } else {
+      feet = default_feet();
+    }
+    for (Foot& f : feet) f.body = number_of[static_cast<size_t>(f.body)];
+    spec.feet = feet;
+    return spec;
+  }
+
+  struct LinkPlacement {
+    int body = 0;
+    Pose pose;  ///< link frame in body frame
+  };
+
+  std::string path_;
+  const UrdfOutline& outline_;
+  const urdf::ModelInterface& urdf_;
+  const UrdfOptions& opts_;
+  std::map<std::string, std::vector<const UrdfJointEdge*>> child_joints_;
+  std::map<std::string, const UrdfJointEdge*> parent_joint_;
+  std::vector<BodyDraft> drafts_;
+  std::map<std::string, LinkPlacement> placement_;
+};
+
+}  // namespace
+
+Model load_urdf(const std::string& path, const UrdfOptions& opts, std::vector<std::string>* warnings) {
+  const std::string text = read_text(path);
+  const UrdfOutline outline = read_urdf_outline(path, text);
+  const urdf::ModelInterfaceSharedPtr urdf = parse_with_urdfdom(path, text, warnings);
+  return build_model(UrdfTranslator(path, outline, *urdf, opts).translate(), warnings);
+}
+
+}  // namespace rbdc

@@ -1,0 +1,105 @@
+#include "urdf_outline.hpp"
+
+#include <tinyxml.h>
+
+#include <map>
+#include <set>
+
+#include "rbdc/model_builder.hpp"
+
+namespace rbdc {
+namespace {
+
+std::string attribute(const TiXmlElement* e, const char* name) {
+  const char* value = e->Attribute(name);
+  return value == nullptr ? std::string() : std::string(value);
+}
+
+std::string child_link_attribute(const TiXmlElement* joint, const char* tag) {
+  const TiXmlElement* e = joint->FirstChildElement(tag);
+  return e == nullptr ? std::string() : attribute(e, "link");
+}
+
+}  // namespace
+
+UrdfOutline read_urdf_outline(const std::string& path, const std::string& text) {
+  const auto fail = [&](int line, const std::string& problem) {
+    throw ModelError(path + ":" + (line > 0 ? std::to_string(line) + ":" : std::string()) + " " +
+                     problem);
+  };
+  TiXmlDocument doc;
+  doc.Parse(text.c_str());
+  if (doc.Error()) {
+    fail(doc.ErrorRow(), std::string("malformed XML: ") + doc.ErrorDesc() + " (column " +
+                             std::to_string(doc.ErrorCol()) + ")");
+  }
+  const TiXmlElement* robot = doc.RootElement();
+  if (robot == nullptr || std::string(robot->Value()) != "robot") {
+    fail(robot == nullptr ? 0 : robot->Row(), "the root element is not <robot>");
+  }
+
+  UrdfOutline outline;
+  std::map<std::string, int> link_line;
+  for (const TiXmlElement* e = robot->FirstChildElement("link"); e != nullptr;
+       e = e->NextSiblingElement("link")) {
+    const std::string name = attribute(e, "name");
+    if (name.empty()) fail(e->Row(), "<link> without a name");
+    if (!link_line.emplace(name, e->Row()).second) {
+      fail(e->Row(), "link '" + name + "' is defined twice (first on line " +
+                         std::to_string(link_line[name]) + ")");
+    }
+    outline.links.push_back(name);
+  }
+  if (outline.links.empty()) fail(robot->Row(), "no links: <robot> has no <link> element");
+
+  std::map<std::string, const UrdfJointEdge*> parent_joint;  // child link → its joint
+  for (const TiXmlElement* e = robot->FirstChildElement("joint"); e != nullptr;
+       e = e->NextSiblingElement("joint")) {
+    UrdfJointEdge j{attribute(e, "name"), attribute(e, "type"), child_link_attribute(e, "parent"),
+                    child_link_attribute(e, "child"), e->Row()};
+    const std::string label = "joint '" + j.name + "'";
+    if (j.name.empty()) fail(j.line, "<joint> without a name");
+    if (j.parent.empty() || j.child.empty()) fail(j.line, label + ": missing <parent> or <child> link");
+    for (const std::string* link : {&j.parent, &j.child}) {
+      if (link_line.count(*link) == 0) fail(j.line, label + " names link '" + *link + "', which does not exist");
+    }
+    if (j.parent == j.child) fail(j.line, label + ": joins link '" + j.child + "' to itself (cycle)");
+    outline.joints.push_back(j);
+  }
+  for (const UrdfJointEdge& j : outline.joints) {
+    const auto [it, fresh] = parent_joint.emplace(j.child, &j);
+    if (!fresh) {
+      fail(j.line, "link '" + j.child + "' has two parents: joint '" + it->second->name + "' (line " +
+                       std::to_string(it->second->line) + ") and joint '" + j.name + "'");
+    }
+  }
+
+  std::vector<std::string> roots;
+  for (const std::string& link : outline.links) {
+    if (parent_joint.count(link) == 0) roots.push_back(link);
+  }
+  if (roots.empty()) {
+    fail(robot->Row(), "cycle: every link has a parent joint, so there is no root link");
+  }
+  if (roots.size() > 1) {
+    fail(link_line[roots[1]], "several root links (links without a parent joint): '" + roots[0] +
+                                  "' and '" + roots[1] + "'; a URDF must be one tree");
+  }
+  outline.root = roots[0];
+
+  // With one parent per link and a single root, a link that cannot reach the root lies on a cycle.
+  for (const std::string& link : outline.links) {
+    std::set<std::string> seen;
+    std::string at = link;
+    while (at != outline.root) {
+      if (!seen.insert(at).second) {
+        const UrdfJointEdge* j = parent_joint.at(at);
+        fail(j->line, "cycle through link '" + at + "' (joint '" + j->name + "')");
+      }
+      at = parent_joint.at(at)->parent;
+    }
+  }
+  return outline;
+}
+
+}  // namespace rbdc

@@ -1,0 +1,26 @@
+// Internal: the link/joint graph of a URDF read straight from the XML (tinyxml, as urdfdom uses), in
+// document order. urdfdom keeps joints in a name-sorted map and lets a second parent overwrite the
+// first, so numbering and the tree checks are done here.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rbdc {
+
+struct UrdfJointEdge {
+  std::string name, type, parent, child;
+  int line = 0;
+};
+
+struct UrdfOutline {
+  std::vector<std::string> links;     ///< document order
+  std::vector<UrdfJointEdge> joints;  ///< document order
+  std::string root;                   ///< the one link without a parent
+};
+
+/// Parses `text` (the contents of `path`) and checks it is one tree: well-formed XML, a <robot> with
+/// links, joints naming existing links, one parent per link, one root, no cycles. Throws ModelError.
+UrdfOutline read_urdf_outline(const std::string& path, const std::string& text);
+
+}  // namespace rbdc

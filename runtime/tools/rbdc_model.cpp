@@ -1,0 +1,38 @@
+// rbdc-model: load and validate a robot, write its IR (docs/ir.md) for the generator.
+#include <fstream>
+#include <iostream>
+
+#include "rbdc/ir_json.hpp"
+#include "tool_options.hpp"
+
+int main(int argc, char** argv) {
+  using namespace rbdc::tools;
+  return run_tool([&] {
+    LoadOptions opts;
+    std::string output;
+    const ExtraOption output_option = [&](int n, char** args, int& i) {
+      const std::string arg = args[i];
+      if (arg != "-o" && arg != "--output") return false;
+      if (i + 1 >= n) throw std::invalid_argument(arg + " needs a file name");
+      output = args[++i];
+      return true;
+    };
+    if (!parse_load_options(argc, argv, opts, output_option)) {
+      std::cout << "usage: rbdc-model ROBOT [options] [-o IR.json]\n"
+                   "Loads and validates a robot and writes its IR (rbdc-ir-1 JSON, docs/ir.md).\n"
+                   "Warnings go to stderr as 'warning: …'; errors as 'error: …' with exit code 2.\n\n"
+                << kLoadOptionsHelp << "  -o, --output FILE   write the IR to FILE (default: stdout)\n";
+      return 0;
+    }
+    const std::string ir = rbdc::to_ir_json(load_model(opts));
+    if (output.empty()) {
+      std::cout << ir;
+      return 0;
+    }
+    std::ofstream out(output, std::ios::binary);
+    out << ir;
+    out.close();
+    if (!out) throw std::runtime_error("cannot write '" + output + "'");
+    return 0;
+  });
+}
