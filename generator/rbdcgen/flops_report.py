@@ -1,11 +1,11 @@
 """Operation counts of a compilation, generated vs generic, as a readable table or as JSON."""
 from .flops import count_ops, generic_ops
 
-KINDS = ("mul", "add", "div", "sqrt", "trig", "total")
+KINDS = ("mul", "add", "div", "sqrt", "trig", "neg", "total")
 
 
 def rows(compilation) -> list[dict]:
-    return [{"function": f.name, "generated": count_ops(f), "generic": generic_ops(compilation.robot, f)}
+    return [{"function": f.name, "generated": count_ops(f), "generic": generic_ops(compilation.robot, compilation.scene, f.name)}
             for f in compilation.functions]
 
 

@@ -55,21 +55,21 @@ def input_records(inputs, layout: Layout) -> list[dict]:
     return [{"path": display_path(p, layout), "sha256": sha256_of(p)} for p in inputs]
 
 
-def _dimensions(robot) -> dict[str, int]:
+def _dimensions(robot, scene) -> dict[str, int]:
     return {"nq": robot.nq, "nv": robot.nv, "nb": robot.nb, "n_joints": robot.n_joints,
-            "n_feet": len(robot.feet)}
+            "n_feet": len(scene.feet_for(robot))}
 
 
-def _alias_shapes(robot) -> dict[str, tuple[int, int]]:
-    dims = _dimensions(robot)
+def _alias_shapes(robot, scene) -> dict[str, tuple[int, int]]:
+    dims = _dimensions(robot, scene)
     return {name: (eval(rows, {}, dims), eval(cols, {}, dims)) for name, rows, cols, _ in ALIASES}
 
 
-def eigen_alias(argument, robot) -> str:
+def eigen_alias(argument, robot, scene) -> str:
     """The Eigen alias for an argument of shape rows x cols, or a plain Eigen::Matrix spelling.
 
     The name decides where dimensions cannot (q of a fixed base has the shape of v)."""
-    shapes = _alias_shapes(robot)
+    shapes = _alias_shapes(robot, scene)
     shape = (argument.rows, argument.cols)
     preferred = ALIAS_BY_NAME.get(argument.name)
     if preferred and shapes[preferred] == shape:
@@ -80,8 +80,8 @@ def eigen_alias(argument, robot) -> str:
     return f"Matrix{argument.rows}x{argument.cols}"
 
 
-def _argument_record(argument, is_input: bool, robot) -> dict:
-    alias = eigen_alias(argument, robot)
+def _argument_record(argument, is_input: bool, robot, scene) -> dict:
+    alias = eigen_alias(argument, robot, scene)
     eigen_type = f"Eigen::Matrix<Scalar, {argument.rows}, {argument.cols}>" if alias.startswith("Matrix") \
         else f"{alias}<Scalar>"
     return {"name": argument.name, "rows": argument.rows, "cols": argument.cols, "doc": argument.doc,
@@ -94,34 +94,35 @@ def _unused_inputs(arguments, body: list[str]) -> list[str]:
     return [a["name"] for a in arguments if a["is_input"] and not re.search(rf"\b{a['name']}\b", text)]
 
 
-def function_record(function, robot, robot_id: str, scene_id: str) -> dict:
-    arguments = [_argument_record(a, True, robot) for a in function.inputs] + \
-                [_argument_record(a, False, robot) for a in function.outputs]
+def function_record(function, robot, scene, robot_id: str, scene_id: str) -> dict:
+    arguments = [_argument_record(a, True, robot, scene) for a in function.inputs] + \
+                [_argument_record(a, False, robot, scene) for a in function.outputs]
     body = emit_body(function)
     # An input the scene made irrelevant is still part of the signature; say so to the compiler.
     body = [f"static_cast<void>({name});" for name in _unused_inputs(arguments, body)] + body
     return {"name": function.name, "doc": function.doc, "arguments": arguments, "body": body,
-            "ops": count_ops(function), "generic": generic_ops(robot, function),
+            "ops": count_ops(function), "generic": generic_ops(robot, scene, function.name),
             "include": f"{robot_id}/{scene_id}/{function.name}.hpp"}
 
 
-def robot_record(robot, robot_id: str) -> dict:
+def robot_record(robot, feet, robot_id: str) -> dict:
+    """Names and numbering for the umbrella header; `feet` are the feet the scene keeps."""
     body_ids = unique_identifiers([b.name for b in robot.bodies])
     joint_ids = unique_identifiers([j.name for j in robot.joints])
-    foot_ids = unique_identifiers([f.name for f in robot.feet])
+    foot_ids = unique_identifiers([f.name for f in feet])
     return {
-        "name": robot_id, "floating_base": robot.floating_base, **_dimensions(robot),
+        "name": robot_id, "floating_base": robot.floating_base, "nq": robot.nq, "nv": robot.nv,
+        "nb": robot.nb, "n_joints": robot.n_joints, "n_feet": len(feet),
         "bodies": [{"id": body_ids[i], "index": i, "name": b.name} for i, b in enumerate(robot.bodies)],
         "joints": [{"id": joint_ids[i], "index": i, "name": j.name, "type": j.type,
                     "q_index": j.q_index, "v_index": j.v_index} for i, j in enumerate(robot.joints)],
         "feet": [{"id": foot_ids[k], "index": k, "body": body_ids[f.body],
-                  "offset": [repr(float(x)) for x in f.offset]} for k, f in enumerate(robot.feet)],
+                  "offset": [repr(float(x)) for x in f.offset]} for k, f in enumerate(feet)],
     }
 
 
 def _gravity_text(scene, robot) -> str:
-    gravity = getattr(scene, "gravity", robot.gravity)
-    return "none" if gravity is None else "(" + ", ".join(repr(float(g)) for g in gravity) + ")"
+    return "(" + ", ".join(repr(float(g)) for g in scene.gravity_for(robot)) + ")"
 
 
 def render_robot_scene(robot, scene, functions, robot_name: str, inputs, layout: Layout) -> list[GeneratedFile]:
@@ -131,10 +132,10 @@ def render_robot_scene(robot, scene, functions, robot_name: str, inputs, layout:
     umbrella = f"{robot_id}/{scene_id}.hpp"
     common = {"generator_version": VERSION, "inputs": input_records(inputs, layout),
               "scene_name": scene.name, "scene_gravity": _gravity_text(scene, robot),
-              "robot": robot_record(robot, robot_id), "namespace": f"rbdc_gen::{robot_id}::{scene_id}",
+              "robot": robot_record(robot, scene.feet_for(robot), robot_id), "namespace": f"rbdc_gen::{robot_id}::{scene_id}",
               "umbrella_include": umbrella,
               "aliases": [{"name": n, "rows": r, "cols": c, "doc": d} for n, r, c, d in ALIASES]}
-    records = [function_record(f, robot, robot_id, scene_id) for f in functions]
+    records = [function_record(f, robot, scene, robot_id, scene_id) for f in functions]
     files = [support_file(layout),
              GeneratedFile(umbrella, environment.get_template("robot_scene.hpp.j2").render(
                  **common, functions=records))]
