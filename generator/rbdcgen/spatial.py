@@ -168,6 +168,21 @@ def quaternion_rotation(w, x, y, z):
             (xz - wy, yz + wx, one - (xx + yy)))
 
 
+def snap_rotation(rows):
+    """A constant rotation with entries within 4 ulp of 0 or ±1 made exact. URDF angles such as π
+    leave entries like 1.2e-16 that would cost a multiply each; the change is below round-off."""
+    tolerance = 4 * 2.220446049250313e-16
+
+    def snap(x):
+        if abs(x) <= tolerance:
+            return 0.0
+        if abs(abs(x) - 1.0) <= tolerance:
+            return math.copysign(1.0, x)
+        return x
+
+    return tuple(tuple(snap(float(x)) for x in row) for row in rows)
+
+
 # --- transforms -------------------------------------------------------------------------------
 
 class Transform:

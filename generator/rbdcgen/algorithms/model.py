@@ -86,9 +86,10 @@ class TracedModel:
         key = ("X_up", i)
         if key not in self._cache:
             joint = self.joint(i)
-            E_T = sp.mat(joint.rotation)
-            identity = all(joint.rotation[r][c] == (1.0 if r == c else 0.0)
+            rotation = sp.snap_rotation(joint.rotation)
+            identity = all(rotation[r][c] == (1.0 if r == c else 0.0)
                            for r in range(3) for c in range(3))
+            E_T = sp.mat(rotation)
             r_T = sp.vec(joint.translation) if any(joint.translation) else None
             X_T = sp.Transform(None if identity else E_T, r_T)
             q = self.qi(i)
