@@ -1,0 +1,87 @@
+// The workspace of the runtime algorithms. A Data is sized once from a Model (every vector and
+// matrix is allocated in the constructor) so that no algorithm call touches the heap. Results of
+// the algorithms live here; each algorithm also returns a const reference to its result.
+// Frames and ordering: docs/conventions.md; what each algorithm fills: docs/runtime.md.
+#pragma once
+
+#include <Eigen/Cholesky>
+#include <vector>
+
+#include "rbdc/model.hpp"
+
+namespace rbdc {
+
+using Matrix3X = Eigen::Matrix<double, 3, Eigen::Dynamic>;
+using Matrix6X = Eigen::Matrix<double, 6, Eigen::Dynamic>;
+/// Read-only vector argument: binds to VectorX, segments and maps without a copy.
+using VectorRef = Eigen::Ref<const VectorX>;
+
+/// Trunk operational-space quantities of paper 001 (Eq. 28 / Eq. 48):
+///   Lambda · a_trunk + b = JbarT · τ + f_t,
+/// with a_trunk = a[0:6] = (ω̇_B, R_W^0 p̈_W) and f_t a wrench on the trunk at its origin, all in
+/// trunk coordinates.
+struct OscQuantities {
+  Matrix6 Lambda = Matrix6::Zero();  ///< Λ_t (6 × 6)
+  Matrix6X JbarT;                    ///< J̄_tᵀ restricted to the actuated joints (6 × n_joints)
+  Vector6 b = Vector6::Zero();       ///< b_t (6)
+};
+
+struct Data {
+  explicit Data(const Model& model);
+
+  // --- Kinematics (paper 000 Alg. 1, Eqs. 9-18, 37), index = body ------------------------------
+  std::vector<Matrix6> X_up;     ///< X_λ(i)^i; X_up[0] is the identity
+  std::vector<Matrix6> X_root;   ///< X_0^i (Eq. 12); X_root[0] is the identity
+  std::vector<Matrix6> X_world;  ///< X_W^i (Eq. 15); X_world[0] = X_W^0 (Eq. 14)
+  std::vector<Vector6> v;        ///< body spatial velocities v_i, body coordinates (Eq. 13)
+  Matrix3X feet_position;        ///< column k: foot k's position in the world (Eq. 18)
+  std::vector<Matrix3> world_R_foot;  ///< foot k's orientation: foot → world coordinates (Eq. 17)
+  Matrix3X feet_velocity;        ///< column k: foot k's linear velocity, world coordinates (Eq. 37)
+  Matrix3X feet_bias_acceleration;  ///< column k: J̇_k v, foot k's acceleration at a = 0, world
+
+  // --- Recursive Newton-Euler passes (Algs. 2-4) -----------------------------------------------
+  std::vector<Vector6> a_body;   ///< body spatial accelerations a_i of the current pass
+  std::vector<Vector6> f_body;   ///< body wrenches f_i of the current pass
+  std::vector<Vector6> f_ext;    ///< external wrench on body i at its origin, body coordinates
+  VectorX c;                     ///< quadratic velocity terms (Alg. 2), nv
+  VectorX g;                     ///< gravity terms (Alg. 3), nv
+  VectorX tau_e;                 ///< external wrench terms (Alg. 4), nv
+  VectorX tau;                   ///< inverse dynamics M a + c + g, nv
+
+  // --- Joint-space inertia (Alg. 5) --------------------------------------------------------------
+  std::vector<Matrix6> Ic;       ///< composite-rigid-body inertias I_ci (Eq. 26)
+  MatrixX M;                     ///< joint-space inertia matrix, nv × nv, full symmetric
+
+  // --- Feet Jacobian (Alg. 6, App. B) ------------------------------------------------------------
+  Matrix6X J_foot;               ///< one foot's block row X_j^i S_j in body coordinates (6 × nv)
+  Matrix6X J_foot_at_point;      ///< the same at the foot point, X_i^fk · J_foot (6 × nv)
+  MatrixX J;                     ///< feet Jacobian, world coordinates (3·n_feet × nv)
+  MatrixX J_contact;             ///< feet Jacobian, contact-frame coordinates (3·n_feet × nv)
+
+  // --- Forward dynamics (Eq. 43) -----------------------------------------------------------------
+  VectorX a;                     ///< generalised acceleration, nv
+  Eigen::LLT<MatrixX> M_llt;     ///< Cholesky factor of M, sized nv
+
+  // --- Operational space (paper 001 Tables 1-2) --------------------------------------------------
+  std::vector<Matrix6> IA;       ///< articulated inertias I_i^A (or Ĩ_i^A)
+  std::vector<Vector6> beta;     ///< articulated bias forces β_i^A (or β̃_i^A)
+  std::vector<Vector6> zeta;     ///< velocity-product accelerations ζ_i (Eq. 29)
+  std::vector<Matrix6X> B;       ///< B_ik: column k-1 holds joint k's coupling (6 × n_joints)
+  OscQuantities osc;             ///< output of osc_open_chain / osc_closed_chain
+  OscQuantities osc_reference;   ///< output of the closed-form references (Eqs. 10-13, 20-26)
+
+  // --- Closed-form reference workspace -----------------------------------------------------------
+  MatrixX M_inv;                 ///< H⁻¹ (nv × nv)
+  Matrix6X J_t;                  ///< task Jacobian [1₆ 0] (6 × nv)
+  Matrix6X J_t_M_inv;            ///< J_t H⁻¹ (6 × nv)
+  Matrix6X JbarT_full;           ///< J̄_tᵀ over all of v (6 × nv)
+  MatrixX J_c;                   ///< contact Jacobian rows, world (top 3·n_contacts rows used)
+  MatrixX J_c_M_inv;             ///< J_c H⁻¹, then J̄_cᵀ = Λ_c J_c H⁻¹ (top rows used)
+  MatrixX A_c;                   ///< Λ_c⁻¹ = J_c H⁻¹ J_cᵀ (top-left block used)
+  MatrixX N_cT;                  ///< N_cᵀ = 1 - J_cᵀ J̄_cᵀ (nv × nv)
+  MatrixX M_inv_N_cT;            ///< H⁻¹ N_cᵀ (nv × nv)
+  VectorX contact_bias;          ///< J̇_c v, then Λ_c J̇_c v (top rows used)
+  VectorX work_nv;               ///< an nv-vector of scratch
+};
+
+}  // namespace rbdc

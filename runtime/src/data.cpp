@@ -1,0 +1,59 @@
+#include "rbdc/data.hpp"
+
+namespace rbdc {
+
+Data::Data(const Model& model) {
+  const size_t nb = static_cast<size_t>(model.nb);
+  const Eigen::Index nv = model.nv;
+  const Eigen::Index n_feet = static_cast<Eigen::Index>(model.feet.size());
+  const Eigen::Index n_joints = model.num_joints();
+
+  X_up.assign(nb, Matrix6::Identity());
+  X_root.assign(nb, Matrix6::Identity());
+  X_world.assign(nb, Matrix6::Identity());
+  v.assign(nb, Vector6::Zero());
+  feet_position = Matrix3X::Zero(3, n_feet);
+  world_R_foot.assign(static_cast<size_t>(n_feet), Matrix3::Identity());
+  feet_velocity = Matrix3X::Zero(3, n_feet);
+  feet_bias_acceleration = Matrix3X::Zero(3, n_feet);
+
+  a_body.assign(nb, Vector6::Zero());
+  f_body.assign(nb, Vector6::Zero());
+  f_ext.assign(nb, Vector6::Zero());
+  c = VectorX::Zero(nv);
+  g = VectorX::Zero(nv);
+  tau_e = VectorX::Zero(nv);
+  tau = VectorX::Zero(nv);
+
+  Ic.assign(nb, Matrix6::Zero());
+  M = MatrixX::Zero(nv, nv);
+
+  J_foot = Matrix6X::Zero(6, nv);
+  J_foot_at_point = Matrix6X::Zero(6, nv);
+  J = MatrixX::Zero(3 * n_feet, nv);
+  J_contact = MatrixX::Zero(3 * n_feet, nv);
+
+  a = VectorX::Zero(nv);
+  M_llt = Eigen::LLT<MatrixX>(nv);
+
+  IA.assign(nb, Matrix6::Zero());
+  beta.assign(nb, Vector6::Zero());
+  zeta.assign(nb, Vector6::Zero());
+  B.assign(nb, Matrix6X::Zero(6, n_joints));
+  osc.JbarT = Matrix6X::Zero(6, n_joints);
+  osc_reference.JbarT = Matrix6X::Zero(6, n_joints);
+
+  M_inv = MatrixX::Zero(nv, nv);
+  J_t = Matrix6X::Zero(6, nv);
+  J_t_M_inv = Matrix6X::Zero(6, nv);
+  JbarT_full = Matrix6X::Zero(6, nv);
+  J_c = MatrixX::Zero(3 * n_feet, nv);
+  J_c_M_inv = MatrixX::Zero(3 * n_feet, nv);
+  A_c = MatrixX::Zero(3 * n_feet, 3 * n_feet);
+  N_cT = MatrixX::Zero(nv, nv);
+  M_inv_N_cT = MatrixX::Zero(nv, nv);
+  contact_bias = VectorX::Zero(3 * n_feet);
+  work_nv = VectorX::Zero(nv);
+}
+
+}  // namespace rbdc
