@@ -1,0 +1,34 @@
+// The few dynamics calls the simulator needs, behind one small interface so that the runtime
+// (any robot, read from URDF) and generated code (one robot, compiled in) are interchangeable.
+// Coordinates follow docs/conventions.md: q = (p_W, quaternion wxyz, joints), v = (ω_B, v_B, q̇),
+// a = (ω̇_B, R_W^0 p̈_W, q̈); foot quantities are 3 × n_feet, column-major, world frame.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "rbdc/model.hpp"
+
+namespace rbdc::sim {
+
+class DynamicsModel {
+ public:
+  virtual ~DynamicsModel() = default;
+  virtual int nq() const = 0;
+  virtual int nv() const = 0;
+  virtual int n_feet() const = 0;
+  /// Foot positions and velocities (each 3 × n_feet, world frame).
+  virtual void feet_state(const double* q, const double* v, double* p_feet, double* v_feet) = 0;
+  /// a = M⁻¹(Sᵀτ + Jᵀf − c − g) (Eq. 30); τ has nv − 6 entries, f is 3 × n_feet.
+  virtual void forward_dynamics(const double* q, const double* v, const double* tau,
+                                const double* f_feet, double* a) = 0;
+  virtual std::string name() const = 0;
+};
+
+/// Dynamics from the runtime's reference algorithms on `model` (copied).
+std::unique_ptr<DynamicsModel> make_runtime_dynamics(const Model& model);
+
+/// Dynamics from generated/mini_cheetah/full.hpp; nullptr when this build has no generated code.
+std::unique_ptr<DynamicsModel> make_generated_dynamics();
+
+}  // namespace rbdc::sim

@@ -1,0 +1,26 @@
+// CSV time series of a run: t, x, y, z, roll, pitch, yaw, joint angles, joint velocities, then per
+// foot its contact activation and world contact force. Used for both our simulator and MuJoCo.
+#pragma once
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "rbdc/model.hpp"
+#include "rbdc/sim/contact.hpp"
+
+namespace rbdc::sim {
+
+class TrajectoryCsv {
+ public:
+  /// Opens `path` and writes the header; throws std::runtime_error if the file cannot be written.
+  TrajectoryCsv(const std::string& path, const Model& model);
+  /// One row: q, v in docs/conventions.md layout, contacts in foot order.
+  void write(double t, const VectorX& q, const VectorX& v, const std::vector<FootContact>& contacts);
+
+ private:
+  std::ofstream out_;
+  int n_joints_;
+};
+
+}  // namespace rbdc::sim

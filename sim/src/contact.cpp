@@ -1,0 +1,66 @@
+#include "rbdc/sim/contact.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "rbdc/sim/smoothstep.hpp"
+
+namespace rbdc::sim {
+
+GroundPlane::GroundPlane(const Vector3& point, const Vector3& normal) : point_(point) {
+  if (!(normal.norm() > 0)) throw std::invalid_argument("GroundPlane: the normal must be non-zero");
+  const Vector3 z = normal.normalized();
+  // x: the world x axis projected onto the plane (world y when the normal is along x).
+  const Vector3 seed = std::abs(z.x()) < 0.9 ? Vector3::UnitX() : Vector3::UnitY();
+  const Vector3 x = (seed - seed.dot(z) * z).normalized();
+  W_R_C_.col(0) = x;
+  W_R_C_.col(1) = z.cross(x);
+  W_R_C_.col(2) = z;
+}
+
+GroundPlane GroundPlane::tilted_about_x(double angle) {
+  return GroundPlane(Vector3::Zero(), Vector3(0, -std::sin(angle), std::cos(angle)));
+}
+
+double friction_coefficient(const ContactParameters& p, double v) {
+  const double speed = std::abs(v);
+  double mu;
+  if (speed <= p.v_static)  // −μ_s → μ_s through v = 0
+    mu = p.mu_static * (2 * smoothstep(-p.v_static, p.v_static, speed) - 1);
+  else  // static → sliding
+    mu = p.mu_static + (p.mu_dynamic - p.mu_static) * smoothstep(p.v_static, p.v_dynamic, speed);
+  return v < 0 ? -mu : mu;
+}
+
+FootContact foot_contact(const ContactParameters& p, const GroundPlane& ground, const Vector3& p_W,
+                         const Vector3& v_W) {
+  FootContact c;
+  const Vector3 n = ground.normal();
+  // Eq. 31: d_f = ẑ_Cᵀ r_{P,f}, δ = d_c = d_f − r.
+  c.penetration = n.dot(p_W - ground.point()) - p.foot_radius;
+  if (c.penetration > 0) return c;
+  // Eq. 36: δ̇ = ẑ_Cᵀ v_f (the sphere's contact point moves with the foot point: no rolling term,
+  // as in the paper's point-contact model).
+  const double penetration_rate = n.dot(v_W);
+  // Eq. 34: Hertz spring, pushing out of the ground: f_s = K |δ|^e (δ in `length_unit`).
+  const double f_spring = p.stiffness * std::pow(-c.penetration / p.length_unit, p.exponent);
+  // Eq. 35: f_d = −c δ̇ with c ramping 0 → c_max over δ ∈ [−w, 0].
+  const double c_eff = p.damping * smoothstep(0, p.ramp_distance, -c.penetration);
+  const double f_normal = f_spring - c_eff * penetration_rate;
+  if (f_normal <= 0) return c;  // the ground pushes, never pulls
+  // Eq. 38 on the slip velocity v_C (contact-frame x, y).
+  const Vector3 v_C = ground.W_R_C().transpose() * v_W;
+  const double slip = std::hypot(v_C.x(), v_C.y());
+  Vector3 force_C(0, 0, f_normal);
+  if (slip > 0) {
+    const double scale = -friction_coefficient(p, slip) * f_normal / slip;
+    force_C.x() = scale * v_C.x();
+    force_C.y() = scale * v_C.y();
+  }
+  c.active = true;
+  c.force_C = force_C;
+  c.force_W = ground.W_R_C() * force_C;
+  return c;
+}
+
+}  // namespace rbdc::sim
