@@ -25,7 +25,7 @@ def random_state(robot, nf, seed):
         "a": [rng.uniform(-3.0, 3.0) for _ in range(robot.nv)],
         "tau": [rng.uniform(-5.0, 5.0) for _ in range(robot.n_joints)],
         "f": [rng.uniform(-20.0, 20.0) for _ in range(3 * nf)],
-        "ground_mass": [rng.uniform(1e2, 1e4)],
+        "ground_mass": [rng.uniform(10.0, 1e3)],
     }
 
 

@@ -283,3 +283,19 @@ class Reference:
                 add(r1, r2) for r1, r2 in zip(extra[foot.body], pm)]
         bias = self.rnea(q, v, [0.0] * self.robot.nv, self.gravity, extra_inertia=extra)
         return self._osc(self.mass_matrix(q, extra_inertia=extra), bias)
+
+
+def constrained_osc(ref, q):
+    """Λ̃_t and J̃_tᵀ of the exactly constrained system (paper 001 Eqs. 20-24), all feet pinned."""
+    H = ref.mass_matrix(q)
+    Hinv = inverse(H)
+    Jc = ref.feet_jacobian(q)
+    Lam_c = inverse(matmul(matmul(Jc, Hinv), transpose(Jc)))
+    JbarT_c = matmul(matmul(Lam_c, Jc), Hinv)                       # J̄_cᵀ
+    n = len(H)
+    NcT = [[(1.0 if i == j else 0.0) - x for j, x in enumerate(row)]
+           for i, row in enumerate(matmul(transpose(Jc), JbarT_c))]  # N_cᵀ = 1 − J_cᵀ J̄_cᵀ
+    HinvNcT = matmul(Hinv, NcT)
+    Lam = inverse([row[:6] for row in HinvNcT[:6]])
+    JtildeT = matmul(Lam, HinvNcT[:6])
+    return Lam, [row[6:] for row in JtildeT[:6]] if n > 6 else []

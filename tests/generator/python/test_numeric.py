@@ -4,16 +4,17 @@
 import os
 import unittest
 
+import mini_cheetah
 from numeric_check import DATA, evaluate, flatten_columns, flatten_matrix, max_relative_error, \
     random_state
-from reference import Reference
+from reference import Reference, constrained_osc
 
 from rbdcgen.ir import load_ir
 from rbdcgen.scene import default_scene
 from rbdcgen.trace import trace_function
 
 TOLERANCE = 1e-12
-# The reference inverts the mass matrix augmented by ground masses up to 1e4 kg; its condition
+# The reference inverts the mass matrix augmented by ground masses up to 1e3 kg; its condition
 # number, not the traced code, limits the agreement there.
 CLOSED_CHAIN_TOLERANCE = 1e-10
 SEEDS = (1, 2, 3)
@@ -50,14 +51,14 @@ def expected(ref, name, s, nf):
 
 
 class TracedEqualsReference(unittest.TestCase):
-    def check_robot(self, path):
-        robot = load_ir(os.path.join(DATA, path))
+    def check_robot(self, path, robot=None, seeds=SEEDS):
+        robot = robot or load_ir(os.path.join(DATA, path))
         scene = default_scene()
         ref = Reference(robot)
         nf = len(robot.feet)
         for name in scene.quantities_for(robot):
             fn = trace_function(robot, scene, name)
-            for seed in SEEDS:
+            for seed in seeds:
                 state = random_state(robot, nf, seed)
                 got = evaluate(fn, state)
                 want = expected(ref, name, state, nf)
@@ -74,6 +75,31 @@ class TracedEqualsReference(unittest.TestCase):
     def test_fixed_base(self):
         self.check_robot("tiny_fixed.json")
 
+    @unittest.skipIf(mini_cheetah.skip_reason(), mini_cheetah.skip_reason())
+    def test_mini_cheetah(self):
+        self.check_robot("mini_cheetah", mini_cheetah.load("floating"), seeds=(11,))
+        self.check_robot("mini_cheetah (fixed base)", mini_cheetah.load("fixed"), seeds=(12,))
+
+
+class BigGroundInertiaLimit(unittest.TestCase):
+    """Paper 001 App. A: with a very large ground mass the closed-chain recursion tends to the
+    exactly constrained operational-space quantities (Eqs. 20-24). Needs a robot whose trunk stays
+    free with every foot pinned (three joints per leg): the Mini Cheetah."""
+
+    @unittest.skipIf(mini_cheetah.skip_reason(), mini_cheetah.skip_reason())
+    def test_closed_chain_tends_to_the_constrained_dynamics(self):
+        robot = mini_cheetah.load()
+        fn = trace_function(robot, default_scene(), "osc_closed_chain")
+        state = random_state(robot, len(robot.feet), 5)
+        Lam, JtildeT = constrained_osc(Reference(robot), state["q"])
+        errors = {}
+        for mass in (1e2, 1e8):
+            state["ground_mass"] = [mass]
+            got = evaluate(fn, state)
+            errors[mass] = (max_relative_error(got["Lambda"], flatten_matrix(Lam)),
+                            max_relative_error(got["JbarT"], flatten_matrix(JtildeT)))
+        self.assertLess(max(errors[1e8]), 1e-5)
+        self.assertGreater(max(errors[1e2]), 100 * max(errors[1e8]))
 
 if __name__ == "__main__":
     unittest.main()
