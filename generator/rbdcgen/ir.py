@@ -224,7 +224,11 @@ def load_ir(source) -> Robot:
         raw = r.get(data, key, "top level")
         if not isinstance(raw, list) or len(raw) != nb:
             r.fail(key, "expected a list of nb = %d lists" % nb)
-        return tuple(tuple(r.integer(x, key) for x in entry) for entry in raw)
+        for i, entry in enumerate(raw):
+            if not isinstance(entry, list):
+                r.fail("%s[%d]" % (key, i), "expected a list of body indices")
+        return tuple(tuple(r.integer(x, "%s[%d]" % (key, i)) for x in entry)
+                     for i, entry in enumerate(raw))
 
     return Robot(
         name=r.string(r.get(data, "name", "top level"), "name"),
