@@ -1,0 +1,74 @@
+// The runtime (rbdc::runtime, dense reference algorithms) on every benchmark robot.
+#include "rbdc/bias_terms.hpp"
+#include "rbdc/crba.hpp"
+#include "rbdc/forward_dynamics.hpp"
+#include "rbdc/inverse_dynamics.hpp"
+#include "rbdc/jacobian.hpp"
+#include "rbdc/kinematics.hpp"
+#include "registry.hpp"
+#include "robot_states.hpp"
+
+namespace rbdc_bench {
+namespace {
+
+struct RuntimeContext {
+  explicit RuntimeContext(const LoadedRobot& loaded)
+      : model(loaded.model), data(model), states(loaded.states),
+        zero_a(rbdc::VectorX::Zero(model.nv)), ground_mass(loaded.ground_mass) {}
+  rbdc::Model model;
+  rbdc::Data data;
+  std::vector<State> states;
+  rbdc::VectorX zero_a;
+  double ground_mass;
+};
+
+RuntimeContext& context(void* p) { return *static_cast<RuntimeContext*>(p); }
+const State& state(RuntimeContext& c, int k) { return c.states[static_cast<size_t>(k)]; }
+
+void provide() {
+  for_each_loaded_robot("runtime", [](const LoadedRobot& loaded) {
+    auto ctx = std::make_shared<RuntimeContext>(loaded);
+    auto add = [&](const char* quantity, CallFn call) {
+      add_case(loaded.robot.name, quantity, "runtime", ctx, call);
+    };
+    add("kinematics", [](void* p, int k) {
+      RuntimeContext& c = context(p);
+      rbdc::feet_velocities(c.model, c.data, state(c, k).q, state(c, k).v);
+    });
+    add("feet_positions_jacobian", [](void* p, int k) {
+      RuntimeContext& c = context(p);
+      rbdc::feet_positions(c.model, c.data, state(c, k).q);
+      rbdc::feet_jacobian(c.model, c.data, state(c, k).q);
+    });
+    add("quadratic_velocity_terms", [](void* p, int k) {
+      RuntimeContext& c = context(p);
+      rbdc::quadratic_velocity_terms(c.model, c.data, state(c, k).q, state(c, k).v);
+    });
+    add("gravity_terms", [](void* p, int k) {
+      RuntimeContext& c = context(p);
+      rbdc::gravity_terms(c.model, c.data, state(c, k).q);
+    });
+    add("bias", [](void* p, int k) {  // c + g as one RNEA with a = 0
+      RuntimeContext& c = context(p);
+      rbdc::inverse_dynamics(c.model, c.data, state(c, k).q, state(c, k).v, c.zero_a);
+    });
+    add("inverse_dynamics", [](void* p, int k) {
+      RuntimeContext& c = context(p);
+      rbdc::inverse_dynamics(c.model, c.data, state(c, k).q, state(c, k).v, state(c, k).a);
+    });
+    add("mass_matrix", [](void* p, int k) {
+      RuntimeContext& c = context(p);
+      rbdc::mass_matrix(c.model, c.data, state(c, k).q);
+    });
+    add("forward_dynamics", [](void* p, int k) {
+      RuntimeContext& c = context(p);
+      const State& s = state(c, k);
+      rbdc::forward_dynamics(c.model, c.data, s.q, s.v, s.tau, s.f);
+    });
+  });
+}
+
+const bool registered = register_provider(provide);
+
+}  // namespace
+}  // namespace rbdc_bench

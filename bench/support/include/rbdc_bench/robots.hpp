@@ -1,0 +1,34 @@
+// The robots the benchmarks and stress tests run on, loaded from the project's own robots/ folder
+// exactly as the generator loads them (default URDF options: one foot per leaf body), so runtime,
+// generated code and MuJoCo see the same model: the Mini Cheetah (floating base), arm7 (fixed base)
+// and humanoid32 (floating base, 32 joints).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rbdc/model.hpp"
+
+namespace rbdc_bench {
+
+struct BenchRobot {
+  std::string name;        ///< also the generated namespace rbdc_gen::<name>
+  std::string urdf;        ///< absolute path
+  bool floating_base;
+};
+
+/// The bundled benchmark robots, with paths below `source_dir` (the project root).
+std::vector<BenchRobot> bench_robots(const std::string& source_dir);
+
+/// The named robot of bench_robots(); throws std::invalid_argument for an unknown name.
+BenchRobot bench_robot(const std::string& source_dir, const std::string& name);
+
+/// Loads the robot's URDF with its base type and, when robots/<name>.topology.yaml exists, that
+/// overlay (as the generator does). Throws rbdc::ModelError on a bad file.
+rbdc::Model load_bench_robot(const BenchRobot& robot);
+
+/// Σ body masses, and the smallest mass among the non-root bodies (m_min of paper 001 Eq. 58).
+double total_mass(const rbdc::Model& model);
+double smallest_body_mass(const rbdc::Model& model);
+
+}  // namespace rbdc_bench

@@ -1,0 +1,46 @@
+#include "rbdc_bench/robots.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <stdexcept>
+
+#include "rbdc/urdf_loader.hpp"
+
+namespace rbdc_bench {
+
+std::vector<BenchRobot> bench_robots(const std::string& source_dir) {
+  const std::string dir = source_dir + "/robots/";
+  return {{"mini_cheetah", dir + "mini_cheetah.urdf", true},
+          {"arm7", dir + "arm7.urdf", false},
+          {"humanoid32", dir + "humanoid32.urdf", true}};
+}
+
+BenchRobot bench_robot(const std::string& source_dir, const std::string& name) {
+  for (const BenchRobot& robot : bench_robots(source_dir))
+    if (robot.name == name) return robot;
+  throw std::invalid_argument("rbdc_bench: unknown benchmark robot '" + name + "'");
+}
+
+rbdc::Model load_bench_robot(const BenchRobot& robot) {
+  rbdc::UrdfOptions options;
+  options.floating_base = robot.floating_base;
+  // The overlay next to the URDF fixes numbering and feet, as it does for the generator.
+  const std::string overlay = robot.urdf.substr(0, robot.urdf.size() - 5) + ".topology.yaml";
+  if (std::ifstream(overlay).good()) options.topology_file = overlay;
+  return rbdc::load_urdf(robot.urdf, options);
+}
+
+double total_mass(const rbdc::Model& model) {
+  double sum = 0;
+  for (const rbdc::Body& body : model.bodies) sum += body.mass;
+  return sum;
+}
+
+double smallest_body_mass(const rbdc::Model& model) {
+  double smallest = total_mass(model);
+  for (int i = 1; i < model.nb; ++i)
+    smallest = std::min(smallest, model.bodies[static_cast<size_t>(i)].mass);
+  return smallest;
+}
+
+}  // namespace rbdc_bench
