@@ -5,6 +5,7 @@
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -37,9 +38,9 @@ class UrdfdomLog : public console_bridge::OutputHandler {
   UrdfdomLog(const UrdfdomLog&) = delete;
   UrdfdomLog& operator=(const UrdfdomLog&) = delete;
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
-    (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR ? errors : warnings).push_back(text);
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR) errors.push_back(text);
   }
-  std::vector<std::string> errors, warnings;
+  std::vector<std::string> errors;
 };
 
 std::string read_text(const std::string& path) {
@@ -56,8 +57,8 @@ std::string read_text(const std::string& path) {
   return s;
 }
 
-urdf::ModelInterfaceSharedPtr parse_with_urdfdom(const std::string& path, const std::string& text,
-                                                 std::vector<std::string>* warnings) {
+// urdfdom's own warnings concern visuals (e.g. undefined materials) and are dropped.
+urdf::ModelInterfaceSharedPtr parse_with_urdfdom(const std::string& path, const std::string& text) {
   UrdfdomLog log;
   urdf::ModelInterfaceSharedPtr model;
   try {
@@ -65,10 +66,8 @@ urdf::ModelInterfaceSharedPtr parse_with_urdfdom(const std::string& path, const 
   } catch (const std::exception& e) {
     log.errors.push_back(e.what());
   }
-  if (warnings != nullptr) {
-    for (const std::string& w : log.warnings) warnings->push_back(path + ": urdfdom: " + w);
-  }
-  if (model == nullptr) {
+  // urdfdom logs some errors (e.g. an unparsable mass) and still returns a model: refuse those too.
+  if (model == nullptr || !log.errors.empty()) {
     std::string why;
     for (const std::string& e : log.errors) why += (why.empty() ? "" : "; ") + e;
     throw ModelError(path + ": urdfdom refused the file: " + (why.empty() ? "no reason given" : why));
@@ -129,6 +128,11 @@ class UrdfTranslator {
   [[noreturn]] void fail(const UrdfJointEdge* j, const std::string& problem) const {
     const std::string line = j == nullptr ? std::string() : std::to_string(j->line) + ":";
     throw ModelError(path_ + ":" + line + " " + problem);
+  }
+
+  bool unlimited(const std::string& joint) const {
+    const std::vector<std::string>& v = outline_.joints_without_limits;
+    return std::find(v.begin(), v.end(), joint) != v.end();
   }
 
   bool massless(const std::string& link) const {
@@ -233,7 +237,7 @@ class UrdfTranslator {
       draft.joint.axis = axis;
       draft.joint.rotation = origin.R.transpose();  // E_T: parent → joint coordinates
       draft.joint.translation = origin.p;
-      if (j.type != urdf::Joint::CONTINUOUS && j.limits != nullptr) {
+      if (j.type != urdf::Joint::CONTINUOUS && j.limits != nullptr && !unlimited(j.name)) {
         draft.joint.lower = j.limits->lower;
         draft.joint.upper = j.limits->upper;
       }
@@ -382,7 +386,12 @@ class UrdfTranslator {
 Model load_urdf(const std::string& path, const UrdfOptions& opts, std::vector<std::string>* warnings) {
   const std::string text = read_text(path);
   const UrdfOutline outline = read_urdf_outline(path, text);
-  const urdf::ModelInterfaceSharedPtr urdf = parse_with_urdfdom(path, text, warnings);
+  const urdf::ModelInterfaceSharedPtr urdf = parse_with_urdfdom(path, outline.urdfdom_text);
+  if (warnings != nullptr) {
+    for (const std::string& j : outline.joints_without_limits) {
+      warnings->push_back(path + ": joint '" + j + "' has no <limit>; loaded without position limits");
+    }
+  }
   return build_model(UrdfTranslator(path, outline, *urdf, opts).translate(), warnings);
 }
 

@@ -33,7 +33,7 @@ UrdfOutline read_urdf_outline(const std::string& path, const std::string& text) 
     fail(doc.ErrorRow(), std::string("malformed XML: ") + doc.ErrorDesc() + " (column " +
                              std::to_string(doc.ErrorCol()) + ")");
   }
-  const TiXmlElement* robot = doc.RootElement();
+  TiXmlElement* robot = doc.RootElement();
   if (robot == nullptr || std::string(robot->Value()) != "robot") {
     fail(robot == nullptr ? 0 : robot->Row(), "the root element is not <robot>");
   }
@@ -53,7 +53,7 @@ UrdfOutline read_urdf_outline(const std::string& path, const std::string& text) 
   if (outline.links.empty()) fail(robot->Row(), "no links: <robot> has no <link> element");
 
   std::map<std::string, const UrdfJointEdge*> parent_joint;  // child link → its joint
-  for (const TiXmlElement* e = robot->FirstChildElement("joint"); e != nullptr;
+  for (TiXmlElement* e = robot->FirstChildElement("joint"); e != nullptr;
        e = e->NextSiblingElement("joint")) {
     UrdfJointEdge j{attribute(e, "name"), attribute(e, "type"), child_link_attribute(e, "parent"),
                     child_link_attribute(e, "child"), e->Row()};
@@ -64,7 +64,21 @@ UrdfOutline read_urdf_outline(const std::string& path, const std::string& text) 
       if (link_line.count(*link) == 0) fail(j.line, label + " names link '" + *link + "', which does not exist");
     }
     if (j.parent == j.child) fail(j.line, label + ": joins link '" + j.child + "' to itself (cycle)");
+    if ((j.type == "revolute" || j.type == "prismatic") && e->FirstChildElement("limit") == nullptr) {
+      outline.joints_without_limits.push_back(j.name);
+      TiXmlElement limit("limit");  // urdfdom refuses these joints without it; its values are unused
+      limit.SetAttribute("effort", "0");
+      limit.SetAttribute("velocity", "0");
+      e->InsertEndChild(limit);
+    }
     outline.joints.push_back(j);
+  }
+  if (outline.joints_without_limits.empty()) {
+    outline.urdfdom_text = text;
+  } else {
+    TiXmlPrinter printer;
+    doc.Accept(&printer);
+    outline.urdfdom_text = printer.CStr();
   }
   for (const UrdfJointEdge& j : outline.joints) {
     const auto [it, fresh] = parent_joint.emplace(j.child, &j);

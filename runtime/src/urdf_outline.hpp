@@ -17,6 +17,11 @@ struct UrdfOutline {
   std::vector<std::string> links;     ///< document order
   std::vector<UrdfJointEdge> joints;  ///< document order
   std::string root;                   ///< the one link without a parent
+  /// Revolute/prismatic joints written without <limit> (the URDF spec requires one; Drake-made files
+  /// omit it). They are loaded as unlimited.
+  std::vector<std::string> joints_without_limits;
+  /// The text to give urdfdom: the input, or a copy where those joints carry a placeholder <limit>.
+  std::string urdfdom_text;
 };
 
 /// Parses `text` (the contents of `path`) and checks it is one tree: well-formed XML, a <robot> with

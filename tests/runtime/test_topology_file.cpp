@@ -1,0 +1,106 @@
+// Topology files: the Mini Cheetah overlay and standalone forms give the URDF's model; bad files are
+// refused with messages naming the file and the problem.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "model_test_support.hpp"
+#include "rbdc/ir_json.hpp"
+#include "rbdc/topology_file.hpp"
+#include "rbdc/urdf_loader.hpp"
+
+namespace rbdc {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+using test::data_path;
+using test::model_error;
+using test::source_path;
+
+const std::string kMiniCheetah = source_path("robots/mini_cheetah.urdf");
+
+Model mini_cheetah_with_overlay(const std::string& topology) {
+  UrdfOptions opts;
+  opts.topology_file = topology;
+  return load_urdf(kMiniCheetah, opts);
+}
+
+void expect_same_model(const Model& a, const Model& b) {
+  ASSERT_EQ(a.nb, b.nb);
+  EXPECT_EQ(a.pred, b.pred);
+  EXPECT_EQ(a.succ, b.succ);
+  EXPECT_EQ(a.parent, b.parent);
+  EXPECT_EQ(a.support, b.support);
+  EXPECT_EQ(a.children, b.children);
+  EXPECT_EQ(a.subtree, b.subtree);
+  for (size_t i = 0; i < static_cast<size_t>(a.nb); ++i) {
+    EXPECT_EQ(a.bodies[i].name, b.bodies[i].name);
+    EXPECT_EQ(a.joints[i].name, b.joints[i].name);
+    EXPECT_LT((a.inertia[i] - b.inertia[i]).cwiseAbs().maxCoeff(), 1e-15) << "body " << i;
+    EXPECT_LT((a.X_tree[i] - b.X_tree[i]).cwiseAbs().maxCoeff(), 1e-15) << "joint " << i;
+    EXPECT_EQ(a.motion_subspace[i], b.motion_subspace[i]);
+  }
+  ASSERT_EQ(a.feet.size(), b.feet.size());
+  for (size_t k = 0; k < a.feet.size(); ++k) {
+    EXPECT_EQ(a.feet[k].name, b.feet[k].name);
+    EXPECT_EQ(a.feet[k].body, b.feet[k].body);
+    EXPECT_EQ(a.feet[k].offset, b.feet[k].offset);
+  }
+}
+
+TEST(TopologyFile, MiniCheetahOverlayReadsEquation1AndTheFeet) {
+  const Topology t = read_topology(source_path("robots/mini_cheetah.topology.yaml"));
+  EXPECT_EQ(t.pred, (std::vector<int>{0, 1, 2, 0, 4, 5, 0, 7, 8, 0, 10, 11}));
+  EXPECT_EQ(t.succ, (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}));
+  ASSERT_EQ(t.feet.size(), 4u);
+  EXPECT_EQ(t.feet[1].link, "RF_knee");
+  EXPECT_EQ(t.feet[1].offset, Vector3(0, 0.004, -0.195));
+}
+
+TEST(TopologyFile, UrdfWithOverlayEqualsUrdfAloneAndStandalone) {
+  const Model urdf_only = load_urdf(kMiniCheetah);
+  const Model overlay = mini_cheetah_with_overlay(source_path("robots/mini_cheetah.topology.yaml"));
+  const Model standalone = load_topology(data_path("mini_cheetah_standalone.yaml"));
+  expect_same_model(urdf_only, overlay);
+  expect_same_model(overlay, standalone);
+  EXPECT_EQ(to_ir_json(overlay), to_ir_json(standalone));
+}
+
+TEST(TopologyFile, OverlayRenumbersBodiesAndPlacesFeetOnMergedLinks) {
+  const Model m = mini_cheetah_with_overlay(data_path("topology_reordered.yaml"));
+  EXPECT_EQ(m.bodies[1].name, "LH_abad");
+  EXPECT_EQ(m.bodies[12].name, "RF_knee");
+  EXPECT_EQ(m.joints[1].translation, Vector3(-0.19, 0.049, 0));
+  ASSERT_EQ(m.feet.size(), 1u);
+  EXPECT_EQ(m.feet[0].body, 3);  // LH_foot is merged into LH_knee, body 3 in this numbering
+  EXPECT_EQ(m.feet[0].offset, Vector3(0, -0.004, -0.195));
+}
+
+TEST(TopologyFile, OverlayDisagreeingWithTheUrdfIsRefused) {
+  EXPECT_THAT(model_error([] { mini_cheetah_with_overlay(data_path("topology_wrong_parent.yaml")); }),
+              AllOf(HasSubstr("topology_wrong_parent.yaml"), HasSubstr("joint 3 (PRED 0, SUCC 3)"),
+                    HasSubstr("hangs body 'LF_knee' from 'trunk'"), HasSubstr("its parent is 'LF_hip'")));
+  EXPECT_THAT(model_error([] { mini_cheetah_with_overlay(data_path("topology_merged_link.yaml")); }),
+              HasSubstr("body 'LF_foot' is merged by a fixed joint into body 'LF_knee'"));
+  EXPECT_THAT(model_error([] { mini_cheetah_with_overlay(data_path("topology_irregular.yaml")); }),
+              HasSubstr("joint 3 (PRED 2, SUCC 4): must join body 3"));
+}
+
+TEST(TopologyFile, BadStandaloneFilesAreRefused) {
+  EXPECT_THAT(model_error([] { load_topology(data_path("standalone_missing_inertia.yaml")); }),
+              AllOf(HasSubstr("standalone_missing_inertia.yaml"), HasSubstr("no entry for body 'arm'")));
+  EXPECT_THAT(model_error([] { load_topology(data_path("standalone_bad_type.yaml")); }),
+              HasSubstr("joint 'shoulder': unsupported type 'planar'"));
+  EXPECT_THAT(model_error([] { load_topology(data_path("malformed.yaml")); }),
+              AllOf(HasSubstr("malformed.yaml:"), HasSubstr("malformed YAML")));
+  EXPECT_THAT(model_error([] { load_topology(data_path("no_such_file.yaml")); }), HasSubstr("cannot open file"));
+}
+
+TEST(TopologyFile, DetectedByExtension) {
+  EXPECT_TRUE(is_topology_path("robots/mini_cheetah.topology.yaml"));
+  EXPECT_TRUE(is_topology_path("a.yml"));
+  EXPECT_FALSE(is_topology_path("robots/mini_cheetah.urdf"));
+}
+
+}  // namespace
+}  // namespace rbdc
