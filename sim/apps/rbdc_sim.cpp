@@ -1,6 +1,7 @@
 // rbdc-sim: the 10 s Mini Cheetah trot of paper 000 on generated (or runtime) dynamics.
 #include <cstdio>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -40,10 +41,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "rbdc-sim: %s dynamics, %s, %s state, dt = %g s, %g s\n",
                  dynamics->name().c_str(), to_string(cli.sim.integrator), to_string(cli.sim.state),
                  cli.sim.dt, cli.run.duration);
-    if (!csv) cli.run.sample_interval = 0;
-    const RunSummary summary = run_trot(simulator, controller, cli.run, [&](Simulator& s) {
-      csv->write(s.time(), s.q(), s.v(), s.contacts());
-    });
+    std::function<void(Simulator&)> sample;
+    if (csv) sample = [&](Simulator& s) { csv->write(s.time(), s.q(), s.v(), s.contacts()); };
+    const RunSummary summary = run_trot(simulator, controller, cli.run, sample);
     const double simulated = summary.steps * cli.sim.dt;
     std::printf("simulated %.3f s in %.3f s wall: real-time factor %.1f (%ld steps, %.2f us/step)\n",
                 simulated, summary.wall_seconds, simulated / summary.wall_seconds, summary.steps,

@@ -10,7 +10,7 @@ namespace rbdc::sim {
 /// robots/mini_cheetah.urdf of this source tree (compiled in).
 std::string default_urdf();
 
-/// Loads a floating-base URDF whose feet come from its topology/foot rules (runtime load_urdf);
+/// Loads a floating-base URDF with the topology file next to it (<name>.topology.yaml) if any;
 /// throws rbdc::ModelError naming the file when it cannot.
 Model load_robot(const std::string& urdf_path);
 

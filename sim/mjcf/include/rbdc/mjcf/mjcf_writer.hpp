@@ -63,7 +63,7 @@ struct InertiaChange {
 
 /// Copies the masses, COMs and inertias MuJoCo compiled back into `model` (rebuilding its spatial
 /// inertias) so that our side of a comparison simulates exactly MuJoCo's robot.
-/// Returns the bodies whose inertia changed by more than 1e-12 relative.
+/// Returns the bodies whose inertia changed by more than 1e-9 relative (not round-off).
 std::vector<InertiaChange> adopt_mujoco_inertias(Model& model, const mjModel* m);
 
 }  // namespace rbdc::mjcf
