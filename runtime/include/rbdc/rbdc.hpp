@@ -1,0 +1,15 @@
+// Umbrella header of the rbdc runtime: the model, its loaders and every reference algorithm.
+#pragma once
+
+#include "rbdc/bias_terms.hpp"
+#include "rbdc/check_finite.hpp"
+#include "rbdc/crba.hpp"
+#include "rbdc/data.hpp"
+#include "rbdc/forward_dynamics.hpp"
+#include "rbdc/inverse_dynamics.hpp"
+#include "rbdc/jacobian.hpp"
+#include "rbdc/kinematics.hpp"
+#include "rbdc/model.hpp"
+#include "rbdc/model_builder.hpp"
+#include "rbdc/osc.hpp"
+#include "rbdc/spatial.hpp"
