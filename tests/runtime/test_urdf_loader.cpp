@@ -156,11 +156,28 @@ TEST(UrdfLoader, MimicJointIsRefusedUnlessLocked) {
   EXPECT_TRUE(m.bodies[0].com.isApprox((Vector3(0, 0, -0.1) + b_com) / 2, 1e-14));
 }
 
-TEST(UrdfLoader, RootLinkOption) {
+TEST(UrdfLoader, MasslessWorldRootIsDroppedOrMerged) {
+  const Model floating = load_urdf(data_path("world_floating.urdf"));  // world -floating-> base
+  EXPECT_EQ(floating.bodies[0].name, "base");
+  EXPECT_EQ(floating.joints[1].axis, Vector3(0, 0, -1));
+  UrdfOptions opts;
+  opts.floating_base = false;
+  const Model welded = load_urdf(data_path("world_fixed.urdf"), opts);  // world -fixed-> base, merged
+  EXPECT_EQ(welded.bodies[0].name, "world");
+  EXPECT_EQ(welded.bodies[0].com, Vector3(0, 0, 0.5));
+  EXPECT_EQ(welded.nv, 1);
+  opts.root_link = "base";  // drops the massless world above it
+  const Model rerooted = load_urdf(data_path("world_fixed.urdf"), opts);
+  EXPECT_EQ(rerooted.bodies[0].name, "base");
+  EXPECT_EQ(rerooted.bodies[0].com, Vector3::Zero());
+}
+
+TEST(UrdfLoader, RootLinkBelowAMovingJointIsRefused) {
   UrdfOptions opts;
   opts.root_link = "upper";
   EXPECT_THAT(model_error([&] { load_urdf(data_path("split_body.urdf"), opts); }),
-              HasSubstr("cannot use link 'upper' as the root"));
+              AllOf(HasSubstr("split_body.urdf:"), HasSubstr("cannot use link 'upper' as the root"),
+                    HasSubstr("'hinge'")));
   opts.root_link = "missing";
   EXPECT_THAT(model_error([&] { load_urdf(data_path("split_body.urdf"), opts); }),
               HasSubstr("root link 'missing' does not exist"));
