@@ -13,9 +13,9 @@ bool check_finite(const Eigen::DenseBase<Derived>& x) {
   return x.allFinite();
 }
 
-template <class First, class... Rest>
-bool check_finite(const First& first, const Rest&... rest) {
-  return check_finite(first) && check_finite(rest...);
+template <class First, class Second, class... Rest>
+bool check_finite(const First& first, const Second& second, const Rest&... rest) {
+  return check_finite(first) && check_finite(second, rest...);
 }
 
 }  // namespace rbdc

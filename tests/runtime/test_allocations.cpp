@@ -1,0 +1,129 @@
+// No algorithm call touches the heap. This binary interposes the C allocator (malloc, calloc,
+// realloc and the aligned variants) with counting versions: that sees Eigen's buffers (Eigen
+// calls malloc directly) as well as operator new (libstdc++ forwards it to malloc), so std
+// containers count too. Every call then runs between two reads of the counter with a Data that
+// was sized once. Sanitizer builds bring their own allocator, so the test skips there.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstddef>
+
+#include "rbdc/rbdc.hpp"
+#include "test_robots.hpp"
+
+#if defined(__SANITIZE_ADDRESS__)
+#define RBDC_COUNT_ALLOCATIONS 0
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define RBDC_COUNT_ALLOCATIONS 0
+#endif
+#endif
+#ifndef RBDC_COUNT_ALLOCATIONS
+#define RBDC_COUNT_ALLOCATIONS 1
+#endif
+
+namespace {
+std::atomic<long> allocations{0};
+}
+
+#if RBDC_COUNT_ALLOCATIONS
+extern "C" {
+void* __libc_malloc(std::size_t);
+void* __libc_calloc(std::size_t, std::size_t);
+void* __libc_realloc(void*, std::size_t);
+void* __libc_memalign(std::size_t, std::size_t);
+void __libc_free(void*);
+
+void* malloc(std::size_t size) noexcept {
+  ++allocations;
+  return __libc_malloc(size);
+}
+void* calloc(std::size_t count, std::size_t size) noexcept {
+  ++allocations;
+  return __libc_calloc(count, size);
+}
+void* realloc(void* p, std::size_t size) noexcept {
+  ++allocations;
+  return __libc_realloc(p, size);
+}
+void* aligned_alloc(std::size_t alignment, std::size_t size) noexcept {
+  ++allocations;
+  return __libc_memalign(alignment, size);
+}
+void* memalign(std::size_t alignment, std::size_t size) noexcept {
+  ++allocations;
+  return __libc_memalign(alignment, size);
+}
+int posix_memalign(void** out, std::size_t alignment, std::size_t size) noexcept {
+  ++allocations;
+  *out = __libc_memalign(alignment, size);
+  return *out ? 0 : ENOMEM;
+}
+void free(void* p) noexcept { __libc_free(p); }
+}
+#endif
+
+namespace rbdc {
+namespace {
+
+template <class Call>
+long allocations_during(Call&& call) {
+  const long before = allocations.load();
+  call();
+  return allocations.load() - before;
+}
+
+TEST(Allocations, CounterSeesEigenAndStdAllocations) {
+  if (!RBDC_COUNT_ALLOCATIONS) GTEST_SKIP() << "sanitizer build: allocator not interposed";
+  EXPECT_GT(allocations_during([] { VectorX x(100); x.setZero(); }), 0);
+  EXPECT_GT(allocations_during([] { std::vector<int> v(3); (void)v; }), 0);
+}
+
+class Allocations : public ::testing::TestWithParam<int> {
+ protected:
+  Model model = test::all_robots()[static_cast<size_t>(GetParam())];
+};
+
+TEST_P(Allocations, NoAlgorithmCallAllocates) {
+  if (!RBDC_COUNT_ALLOCATIONS) GTEST_SKIP() << "sanitizer build: allocator not interposed";
+  test::RandomState random(5);
+  Data data(model);
+  const VectorX q = random.configuration(model);
+  const VectorX v = random.vector(model.nv);
+  const VectorX a = random.vector(model.nv);
+  const VectorX tau = random.vector(model.num_joints());
+  const Matrix3X f = random.forces(model);
+  const std::vector<Vector6> f_ext(static_cast<size_t>(model.nb), Vector6::Ones());
+  const std::vector<Matrix3> world_R_contact(model.feet.size(), Matrix3::Identity());
+  std::vector<int> contacts;
+  for (int k = 0; k < static_cast<int>(model.feet.size()); ++k) contacts.push_back(k);
+  const std::vector<int> some_contacts(contacts.begin(), contacts.begin() + 1);
+
+  EXPECT_EQ(allocations_during([&] { kinematics(model, data, q, v); }), 0);
+  EXPECT_EQ(allocations_during([&] { world_transforms(model, data, q); }), 0);
+  EXPECT_EQ(allocations_during([&] { feet_positions(model, data, q); }), 0);
+  EXPECT_EQ(allocations_during([&] { feet_velocities(model, data, q, v); }), 0);
+  EXPECT_EQ(allocations_during([&] { feet_bias_accelerations(model, data, q, v); }), 0);
+  EXPECT_EQ(allocations_during([&] { quadratic_velocity_terms(model, data, q, v); }), 0);
+  EXPECT_EQ(allocations_during([&] { gravity_terms(model, data, q); }), 0);
+  EXPECT_EQ(allocations_during([&] { external_wrench_terms(model, data, q, f_ext); }), 0);
+  EXPECT_EQ(allocations_during([&] { feet_force_terms(model, data, q, f); }), 0);
+  EXPECT_EQ(allocations_during([&] { inverse_dynamics(model, data, q, v, a); }), 0);
+  EXPECT_EQ(allocations_during([&] { mass_matrix(model, data, q); }), 0);
+  EXPECT_EQ(allocations_during([&] { feet_jacobian(model, data, q); }), 0);
+  EXPECT_EQ(allocations_during([&] { feet_jacobian_contact(model, data, q, world_R_contact); }), 0);
+  EXPECT_EQ(allocations_during([&] { forward_dynamics(model, data, q, v, tau, f); }), 0);
+  if (!model.floating_base) return;
+  EXPECT_EQ(allocations_during([&] { osc_open_chain(model, data, q, v, f); }), 0);
+  EXPECT_EQ(allocations_during([&] { osc_closed_chain(model, data, q, v, contacts); }), 0);
+  EXPECT_EQ(allocations_during([&] { osc_closed_chain(model, data, q, v, some_contacts, 1e6); }), 0);
+  EXPECT_EQ(allocations_during([&] { osc_closed_form(model, data, q, v, f); }), 0);
+  EXPECT_EQ(allocations_during([&] { osc_closed_form_constrained(model, data, q, v, contacts); }), 0);
+  EXPECT_EQ(allocations_during([&] { osc_closed_form_constrained(model, data, q, v, some_contacts); }), 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Robots, Allocations, ::testing::Values(0, 1, 2));
+
+}  // namespace
+}  // namespace rbdc
