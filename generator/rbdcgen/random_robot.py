@@ -1,0 +1,90 @@
+"""Random robots for testing: URDF text for a seed, covering what the loader and generator must get
+right. Branching trees, oblique and negative axes, rotated joint origins and inertial frames, fixed
+joints (some to massless links, merged away), prismatic joints, 1 to 40 moving bodies.
+
+    python3 -m rbdcgen.random_robot SEED [-o FILE]
+"""
+import argparse
+import math
+import random
+import sys
+
+AXES = ((1, 0, 0), (0, 1, 0), (0, 0, 1), (-1, 0, 0), (0, -1, 0), (0, 0, -1))
+
+
+def _numbers(values) -> str:
+    return " ".join(repr(round(float(v), 12)) for v in values)
+
+
+def _oblique_or_signed_axis(rng: random.Random):
+    if rng.random() < 0.5:
+        return rng.choice(AXES)
+    while True:
+        axis = [rng.uniform(-1, 1) for _ in range(3)]
+        norm = math.sqrt(sum(a * a for a in axis))
+        if norm > 0.2:
+            return [a / norm for a in axis]
+
+
+def _inertial(rng: random.Random) -> str:
+    """A body with mass, a shifted and rotated inertial frame and box-like (physical) inertia."""
+    mass = rng.uniform(0.1, 5.0)
+    x, y, z = (rng.uniform(0.02, 0.4) for _ in range(3))
+    ixx, iyy, izz = mass / 12 * (y * y + z * z), mass / 12 * (x * x + z * z), mass / 12 * (x * x + y * y)
+    com = [rng.uniform(-0.1, 0.1) for _ in range(3)]
+    rpy = [rng.uniform(-math.pi, math.pi) for _ in range(3)]
+    return (f'    <inertial>\n      <origin xyz="{_numbers(com)}" rpy="{_numbers(rpy)}"/>\n'
+            f'      <mass value="{_numbers([mass])}"/>\n'
+            f'      <inertia ixx="{_numbers([ixx])}" ixy="0" ixz="0" iyy="{_numbers([iyy])}" iyz="0" '
+            f'izz="{_numbers([izz])}"/>\n    </inertial>\n')
+
+
+def random_urdf(seed: int, max_links: int = 40) -> str:
+    """URDF text of the random robot for `seed`: sizes mostly small, sometimes up to max_links."""
+    rng = random.Random(seed)
+    n_links = rng.choice((rng.randint(1, 8), rng.randint(1, 16), rng.randint(1, max_links)))
+    links = ['  <link name="base">\n' + _inertial(rng) + "  </link>\n"]
+    joints = []
+    for k in range(1, n_links + 1):
+        # Mostly extend a recent link (chains), sometimes branch from any earlier one.
+        parent = k - 1 if rng.random() < 0.6 else rng.randint(0, k - 1)
+        parent_name = "base" if parent == 0 else f"link{parent}"
+        # The first joint moves, so that even a fixed-base robot has a degree of freedom.
+        kind = rng.choices(("revolute", "continuous", "prismatic", "fixed"), (5, 2, 2, 0 if k == 1 else 2))[0]
+        # Only links on fixed joints may be massless: they merge into their parent, while a massless
+        # moving leaf would make M singular.
+        is_massless = kind == "fixed" and rng.random() < 0.5
+        name = f"link{k}"
+        links.append(f'  <link name="{name}">\n' + ("" if is_massless else _inertial(rng)) + "  </link>\n")
+        xyz = [rng.uniform(-0.3, 0.3) for _ in range(3)]
+        rpy = [rng.uniform(-math.pi, math.pi) if rng.random() < 0.7 else 0.0 for _ in range(3)]
+        text = (f'  <joint name="joint{k}" type="{kind}">\n    <parent link="{parent_name}"/>\n'
+                f'    <child link="{name}"/>\n    <origin xyz="{_numbers(xyz)}" rpy="{_numbers(rpy)}"/>\n')
+        if kind != "fixed":
+            text += f'    <axis xyz="{_numbers(_oblique_or_signed_axis(rng))}"/>\n'
+        if kind == "revolute":
+            lower = rng.uniform(-3.0, 0.0)
+            text += f'    <limit lower="{_numbers([lower])}" upper="{_numbers([lower + rng.uniform(0.2, 3.0)])}" effort="50" velocity="10"/>\n'
+        if kind == "prismatic":
+            text += '    <limit lower="-0.2" upper="0.3" effort="100" velocity="1"/>\n'
+        joints.append(text + "  </joint>\n")
+    return (f'<?xml version="1.0"?>\n<!-- rbdc random robot, seed {seed} -->\n'
+            f'<robot name="random_{seed}">\n' + "".join(links) + "".join(joints) + "</robot>\n")
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="python3 -m rbdcgen.random_robot", description=__doc__.split("\n\n")[0])
+    parser.add_argument("seed", type=int)
+    parser.add_argument("-o", "--output", help="write here instead of stdout")
+    args = parser.parse_args(argv)
+    text = random_urdf(args.seed)
+    if args.output:
+        with open(args.output, "w", encoding="utf-8") as handle:
+            handle.write(text)
+    else:
+        sys.stdout.write(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
