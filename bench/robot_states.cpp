@@ -10,8 +10,10 @@
 namespace rbdc_bench {
 
 void for_each_loaded_robot(const std::string& implementation,
-                           const std::function<void(const LoadedRobot&)>& use) {
+                           const std::function<void(const LoadedRobot&)>& use,
+                           const std::string& only) {
   for (const BenchRobot& robot : bench_robots(RBDC_SOURCE_DIR)) {
+    if (!only.empty() && robot.name != only) continue;
     LoadedRobot loaded{robot, {}, {}, 0.0};
     try {
       loaded.model = load_bench_robot(robot);

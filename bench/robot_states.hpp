@@ -18,8 +18,10 @@ struct LoadedRobot {
   double ground_mass;         ///< paper 001 Eq. 58 with double's ε: m_min / √ε
 };
 
-/// Calls `use` for every benchmark robot that loads; prints why a robot is skipped otherwise.
+/// Calls `use` for every benchmark robot (or only the one named `only`) that loads; a robot that
+/// does not load, or that `use` refuses by throwing, is skipped with a message naming the reason.
 void for_each_loaded_robot(const std::string& implementation,
-                           const std::function<void(const LoadedRobot&)>& use);
+                           const std::function<void(const LoadedRobot&)>& use,
+                           const std::string& only = "");
 
 }  // namespace rbdc_bench
