@@ -11,6 +11,10 @@ from .algorithms import crba, forward_dynamics, jacobian, kinematics, osc, rnea
 from .algorithms.model import TracedModel
 
 
+class TraceError(ValueError):
+    """The robot cannot be traced for a function (e.g. a structurally singular mass matrix)."""
+
+
 @dataclass(frozen=True)
 class Argument:
     name: str
@@ -47,9 +51,9 @@ def _columns(vectors):
     return tuple(x for col in vectors for x in col)
 
 
-def _matrix(rows):
-    """Column-major flattening of a matrix given as rows."""
-    return tuple(rows[r][c] for c in range(len(rows[0])) for r in range(len(rows)))
+def _matrix(rows, cols):
+    """Column-major flattening of a matrix given as rows (cols given: there may be no rows)."""
+    return tuple(rows[r][c] for c in range(cols) for r in range(len(rows)))
 
 
 def _input_args(robot, nf):
@@ -73,7 +77,7 @@ def _spec(robot, nf):
 
     def osc_outputs(result):
         Lam, JbarT, b = result
-        return {"Lambda": _matrix(Lam), "JbarT": _matrix(JbarT), "b": tuple(b)}
+        return {"Lambda": _matrix(Lam, 6), "JbarT": _matrix(JbarT, nj), "b": tuple(b)}
 
     osc_out = [("Lambda", 6, 6, "operational-space inertia Λ_t of the trunk task"),
                ("JbarT", 6, nj, "dynamically consistent J̄_tᵀ (joint columns)"),
@@ -90,7 +94,7 @@ def _spec(robot, nf):
         "feet_jacobian": (
             "Stacked feet Jacobian J (paper 000 Alg. 6, App. B).", ("q",),
             [("J", 3 * nf, nv, "feet Jacobian, world-frame foot velocities from v")],
-            lambda m: {"J": _matrix(jacobian.feet_jacobian(m))}),
+            lambda m: {"J": _matrix(jacobian.feet_jacobian(m), nv)}),
         "quadratic_velocity_terms": (
             "Quadratic velocity terms c (paper 000 Alg. 2).", ("q", "v"),
             [("c", nv, 1, "Coriolis and centrifugal terms")],
@@ -110,7 +114,7 @@ def _spec(robot, nf):
         "mass_matrix": (
             "Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).", ("q",),
             [("M", nv, nv, "mass matrix, full symmetric")],
-            lambda m: {"M": _matrix(crba.mass_matrix(m))}),
+            lambda m: {"M": _matrix(crba.mass_matrix(m), nv)}),
         "forward_dynamics": (
             "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).",
             ("q", "v", "tau", "f"),
@@ -138,7 +142,13 @@ def trace_function(robot, scene, name):
     zero = tuple(n for n in scene.zero_inputs if n in input_names)
     with ex.Graph() as graph:
         m = TracedModel(robot, scene, zero_inputs=zero)
-        values = build(m)
+        try:
+            values = build(m)
+        except ZeroDivisionError:
+            raise TraceError(
+                "robot '%s': %s divides by a pivot that is exactly zero: a joint moves no mass "
+                "(a massless body, or a massless subtree, on a moving joint)" % (robot.name, name)
+            ) from None
     outputs = tuple(Argument(n, r, c, d) for n, r, c, d in output_specs)
     for arg in outputs:
         if len(values[arg.name]) != arg.size:

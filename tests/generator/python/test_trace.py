@@ -1,0 +1,70 @@
+"""Traced signatures follow docs/generated_api.md; degenerate robots trace or fail clearly."""
+
+import copy
+import json
+import os
+import unittest
+
+from numeric_check import DATA
+from rbdcgen.emit import emit_body
+from rbdcgen.ir import load_ir
+from rbdcgen.scene import default_scene
+from rbdcgen.trace import TraceError, trace_function, trace_scene
+
+with open(os.path.join(DATA, "tiny_floating.json"), encoding="utf-8") as handle:
+    RAW = json.load(handle)
+
+SIGNATURES = {
+    "feet_positions": (["q"], [("p", 3, 2)]),
+    "feet_velocities": (["q", "v"], [("pdot", 3, 2)]),
+    "feet_jacobian": (["q"], [("J", 6, 9)]),
+    "quadratic_velocity_terms": (["q", "v"], [("c", 9, 1)]),
+    "gravity_terms": (["q"], [("g", 9, 1)]),
+    "feet_force_terms": (["q", "f"], [("tau_e", 9, 1)]),
+    "inverse_dynamics": (["q", "v", "a"], [("tau", 9, 1)]),
+    "mass_matrix": (["q"], [("M", 9, 9)]),
+    "forward_dynamics": (["q", "v", "tau", "f"], [("a", 9, 1)]),
+    "osc_open_chain": (["q", "v", "f"], [("Lambda", 6, 6), ("JbarT", 6, 3), ("b", 6, 1)]),
+    "osc_closed_chain": (["q", "v", "ground_mass"],
+                         [("Lambda", 6, 6), ("JbarT", 6, 3), ("b", 6, 1)]),
+}
+
+
+class Signatures(unittest.TestCase):
+    def test_every_function_has_the_documented_signature(self):
+        functions = trace_scene(load_ir(RAW), default_scene())
+        self.assertEqual([fn.name for fn in functions], list(SIGNATURES))
+        for fn in functions:
+            inputs, outputs = SIGNATURES[fn.name]
+            self.assertEqual([a.name for a in fn.inputs], inputs, fn.name)
+            self.assertEqual([(a.name, a.rows, a.cols) for a in fn.outputs], outputs, fn.name)
+            self.assertTrue(fn.doc)
+
+
+class DegenerateRobots(unittest.TestCase):
+    def test_a_single_welded_body_has_empty_joint_space_functions(self):
+        data = copy.deepcopy(RAW)
+        data.update(nb=1, nq=0, nv=0, floating_base=False, PRED=[], SUCC=[], kappa=[[]], mu=[[]],
+                    nu=[[0]], bodies=data["bodies"][:1], joints=data["joints"][:1],
+                    feet=[{"name": "f", "body": 0, "offset": [0, 0, -0.1]}])
+        data["lambda"] = []
+        data["joints"][0]["type"] = "fixed"
+        robot = load_ir(data)
+        for fn in trace_scene(robot, default_scene()):
+            self.assertEqual(len(emit_body(fn)), sum(a.size for a in fn.outputs), fn.name)
+        self.assertEqual(emit_body(trace_function(robot, default_scene(), "feet_positions"))[2],
+                         "p[2] = Scalar(-0.10000000000000001);")
+
+    def test_a_massless_moving_body_is_a_clear_error_where_a_pivot_vanishes(self):
+        data = copy.deepcopy(RAW)
+        data["bodies"][2].update(mass=0.0, inertia_com=[[0, 0, 0], [0, 0, 0], [0, 0, 0]])
+        robot = load_ir(data)
+        trace_function(robot, default_scene(), "mass_matrix")
+        with self.assertRaises(TraceError) as caught:
+            trace_function(robot, default_scene(), "forward_dynamics")
+        self.assertIn("forward_dynamics", str(caught.exception))
+        self.assertIn("massless", str(caught.exception))
+
+
+if __name__ == "__main__":
+    unittest.main()
