@@ -1,12 +1,11 @@
 #!/usr/bin/python3
-"""Writes robots/humanoid32.urdf and its topology overlay robots/humanoid32.topology.yaml:
-rbdc's own 32-DoF floating-base humanoid for the benchmarks.
+"""Writes robots/humanoid32.urdf: rbdc's own 32-DoF floating-base humanoid for the benchmarks.
 
 The robot is authored here (no public model is copied): a pelvis, two 6-DoF legs, a 3-DoF waist, a
 torso, a 3-DoF neck and two 7-DoF arms. Every link is a solid box whose inertia follows from its
 mass and size, so the numbers are physically consistent. Each sole carries a foot point (a massless
-link on a fixed joint, named *_foot). The overlay keeps the depth-first numbering and declares the
-two soles as the only feet (without it every leaf, hands and head included, would be a foot).
+link on a fixed joint, named *_foot); by the loader's default (one foot per leaf body, docs/model.md)
+the hands and the head are contact points too, so the robot has 5 feet: a multi-contact benchmark.
 The output is byte-stable: run it again and diff.
 
 Usage: tools/make_humanoid.py [OUTPUT_DIR]   (default: robots/ next to this script's folder)
@@ -33,13 +32,9 @@ class Urdf:
 
     def __init__(self, name):
         self.robot = ET.Element("robot", name=name)
-        self.bodies = []   # links with mass, in depth-first order (the declaration order)
-        self.parents = []  # for bodies[1:], the index of the parent body (PRED of Eq. 1)
-        self.feet = []     # (foot name, body link, offset)
 
     def box_link(self, name, mass, size, com):
         """A link whose inertia is that of a solid box of `size` (x, y, z) centred at `com`."""
-        self.bodies.append(name)
         link = ET.SubElement(self.robot, "link", name=name)
         inertial = ET.SubElement(link, "inertial")
         ET.SubElement(inertial, "origin", xyz=triple(com), rpy="0 0 0")
@@ -51,7 +46,6 @@ class Urdf:
                       izz=number(mass * (a * a + b * b) / 12))
 
     def revolute(self, name, parent, child, xyz, axis, limit, rpy=(0, 0, 0)):
-        self.parents.append(self.bodies.index(parent))
         joint = ET.SubElement(self.robot, "joint", name=name, type="revolute")
         ET.SubElement(joint, "parent", link=parent)
         ET.SubElement(joint, "child", link=child)
@@ -62,7 +56,6 @@ class Urdf:
 
     def foot(self, name, parent, xyz):
         """A contact point: a massless link on a fixed joint (merged into `parent` by the loader)."""
-        self.feet.append((name, parent, xyz))
         ET.SubElement(self.robot, "link", name=name)
         joint = ET.SubElement(self.robot, "joint", name=name + "_joint", type="fixed")
         ET.SubElement(joint, "parent", link=parent)
@@ -72,20 +65,6 @@ class Urdf:
     def text(self):
         ET.indent(self.robot, space="  ")
         return '<?xml version="1.0"?>\n' + ET.tostring(self.robot, encoding="unicode") + "\n"
-
-    def topology(self):
-        """The overlay (docs/model.md): body order, PRED/SUCC (Eq. 1) and the feet."""
-        name = self.robot.get("name")
-        lines = [f"# {name}: depth-first numbering and the two soles as feet. Written by",
-                 "# tools/make_humanoid.py; do not edit.",
-                 f"name: {name}",
-                 "bodies: [" + ", ".join(self.bodies) + "]",
-                 "PRED: [" + ", ".join(str(p) for p in self.parents) + "]",
-                 "SUCC: [" + ", ".join(str(i) for i in range(1, len(self.bodies))) + "]",
-                 "feet:"]
-        for foot, body, offset in self.feet:
-            lines.append(f"  - {{name: {foot}, body: {body}, offset: [{', '.join(number(x) for x in offset)}]}}")
-        return "\n".join(lines) + "\n"
 
 
 def add_leg(urdf, prefix, side):
@@ -165,7 +144,6 @@ def main(argv):
     output = pathlib.Path(argv[1]) if len(argv) > 1 else default
     urdf = humanoid()
     (output / "humanoid32.urdf").write_text(urdf.text())
-    (output / "humanoid32.topology.yaml").write_text(urdf.topology())
     return 0
 
 

@@ -1,7 +1,6 @@
 #include "rbdc_bench/robots.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <stdexcept>
 
 #include "rbdc/urdf_loader.hpp"
@@ -24,9 +23,6 @@ BenchRobot bench_robot(const std::string& source_dir, const std::string& name) {
 rbdc::Model load_bench_robot(const BenchRobot& robot) {
   rbdc::UrdfOptions options;
   options.floating_base = robot.floating_base;
-  // The overlay next to the URDF fixes numbering and feet, as it does for the generator.
-  const std::string overlay = robot.urdf.substr(0, robot.urdf.size() - 5) + ".topology.yaml";
-  if (std::ifstream(overlay).good()) options.topology_file = overlay;
   return rbdc::load_urdf(robot.urdf, options);
 }
 

@@ -23,8 +23,7 @@ std::vector<BenchRobot> bench_robots(const std::string& source_dir);
 /// The named robot of bench_robots(); throws std::invalid_argument for an unknown name.
 BenchRobot bench_robot(const std::string& source_dir, const std::string& name);
 
-/// Loads the robot's URDF with its base type and, when robots/<name>.topology.yaml exists, that
-/// overlay (as the generator does). Throws rbdc::ModelError on a bad file.
+/// Loads the robot's URDF with its base type, as tools/regenerate does. Throws rbdc::ModelError.
 rbdc::Model load_bench_robot(const BenchRobot& robot);
 
 /// Σ body masses, and the smallest mass among the non-root bodies (m_min of paper 001 Eq. 58).
