@@ -168,19 +168,27 @@ def quaternion_rotation(w, x, y, z):
             (xz - wy, yz + wx, one - (xx + yy)))
 
 
+_SNAP_TOLERANCE = 4 * 2.220446049250313e-16
+
+
+def _snap(x):
+    x = float(x)
+    if abs(x) <= _SNAP_TOLERANCE:
+        return 0.0
+    if abs(abs(x) - 1.0) <= _SNAP_TOLERANCE:
+        return math.copysign(1.0, x)
+    return x
+
+
 def snap_rotation(rows):
     """A constant rotation with entries within 4 ulp of 0 or ±1 made exact. URDF angles such as π
     leave entries like 1.2e-16 that would cost a multiply each; the change is below round-off."""
-    tolerance = 4 * 2.220446049250313e-16
+    return tuple(tuple(_snap(x) for x in row) for row in rows)
 
-    def snap(x):
-        if abs(x) <= tolerance:
-            return 0.0
-        if abs(abs(x) - 1.0) <= tolerance:
-            return math.copysign(1.0, x)
-        return x
 
-    return tuple(tuple(snap(float(x)) for x in row) for row in rows)
+def snap_axis(axis):
+    """A unit joint axis with the same snapping, so (1e-17, 0, 1) is recognised as e_z."""
+    return tuple(_snap(x) for x in axis)
 
 
 # --- transforms -------------------------------------------------------------------------------

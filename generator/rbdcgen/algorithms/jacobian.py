@@ -25,7 +25,7 @@ def feet_jacobian(m):
                 cols[3 + c] = Rt[c]                # v_B enters as R v_B
         for j in robot.support[foot.body]:
             R_j, p_j = frames[j]
-            axis = sp.matvec(R_j, sp.vec(m.joint(j).axis))
+            axis = sp.matvec(R_j, sp.vec(m.axis(j)))
             if m.joint(j).type == "revolute":
                 cols[m.joint(j).v_index] = sp.cross(axis, sp.vsub(p_foot, p_j))
             else:

@@ -65,10 +65,14 @@ class TracedModel:
     def joint(self, i):
         return self.robot.joints[i]
 
+    def axis(self, i):
+        """The unit joint axis in the joint (= child body) frame, round-off entries snapped."""
+        return sp.snap_axis(self.joint(i).axis)
+
     def motion_subspace(self, i):
         """S_i (paper 000 Eq. 13): (axis; 0) for revolute, (0; axis) for prismatic joints."""
         joint = self.joint(i)
-        axis = list(joint.axis)
+        axis = list(self.axis(i))
         zero = [0.0, 0.0, 0.0]
         return sp.vec(axis + zero if joint.type == "revolute" else zero + axis)
 
@@ -94,9 +98,9 @@ class TracedModel:
             X_T = sp.Transform(None if identity else E_T, r_T)
             q = self.qi(i)
             if joint.type == "revolute":
-                X_J = sp.Transform(sp.coordinate_rotation(joint.axis, ex.cos(q), ex.sin(q)), None)
+                X_J = sp.Transform(sp.coordinate_rotation(self.axis(i), ex.cos(q), ex.sin(q)), None)
             else:
-                X_J = sp.Transform(None, tuple(q * a for a in sp.vec(joint.axis)))
+                X_J = sp.Transform(None, tuple(q * a for a in sp.vec(self.axis(i))))
             self._cache[key] = sp.Chain(X_T, X_J)
         return self._cache[key]
 

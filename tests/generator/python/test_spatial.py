@@ -67,6 +67,8 @@ class DenseAgreement(unittest.TestCase):
         self.assertEqual(sp.snap_rotation(rotation), ((-1.0, 0.0, 0.0), (0.0, -1.0, 0.0),
                                                       (0.0, 0.0, 1.0)))
         self.assertEqual(sp.snap_rotation(ROTATION), tuple(tuple(r) for r in ROTATION))
+        self.assertEqual(sp.snap_axis((1e-17, 0.0, -1.0000000000000002)), (0.0, 0.0, -1.0))
+        self.assertEqual(sp.snap_axis((0.6, 0.0, 0.8)), (0.6, 0.0, 0.8))
 
 
 if __name__ == "__main__":
