@@ -68,7 +68,7 @@ std::vector<InertiaChange> adopt_mujoco_inertias(Model& model, const mjModel* m)
                             m->body_inertia[3 * b + 2]);
     const Matrix3 after = R * principal.asDiagonal() * R.transpose();
     const double change = (after - body.inertia_com).norm() / body.inertia_com.norm();
-    if (change > 1e-9) changes.push_back({body.name, body.inertia_com, after, change});
+    if (change > 1e-6) changes.push_back({body.name, body.inertia_com, after, change});
     body.mass = m->body_mass[b];
     body.com = Vector3(m->body_ipos[3 * b], m->body_ipos[3 * b + 1], m->body_ipos[3 * b + 2]);
     body.inertia_com = after;

@@ -63,7 +63,8 @@ struct InertiaChange {
 
 /// Copies the masses, COMs and inertias MuJoCo compiled back into `model` (rebuilding its spatial
 /// inertias) so that our side of a comparison simulates exactly MuJoCo's robot.
-/// Returns the bodies whose inertia changed by more than 1e-9 relative (not round-off).
+/// Returns the bodies whose inertia changed by more than 1e-6 relative (MuJoCo re-diagonalises
+/// every inertia, which alone moves entries by ~1e-9).
 std::vector<InertiaChange> adopt_mujoco_inertias(Model& model, const mjModel* m);
 
 }  // namespace rbdc::mjcf
