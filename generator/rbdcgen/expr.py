@@ -272,6 +272,62 @@ def reachable(outputs):
     return order
 
 
+def absorb_negations(outputs):
+    """Final peephole after tracing: a negation whose operand is a single-use product or sum that
+    can take the sign for free disappears: −(c·y) = (−c)·y, −(x·y) = (−x)·y, −(x/y) = (−x)/y,
+    −(x + y) = (−x) − y,
+    recursively, where −x is itself free (a constant, a negation, a single-use subtraction, …).
+    Folding keeps constants positive so that c·y and −c·y share one product; only once the DAG is
+    complete do we know which products are used under a negation alone. Sign flips are exact."""
+    order = reachable(outputs)
+    uses = {}
+    for node in order:
+        for arg in node.args:
+            uses[arg.id] = uses.get(arg.id, 0) + 1
+    for node in outputs:
+        uses[node.id] = uses.get(node.id, 0) + 1
+    new = {}
+
+    def intern(op, args, value=None):
+        return args[0].graph.intern(op, args, value) if args else const(value)
+
+    def free_negation(node):
+        """The rewritten −node if it costs no operation, else None (node already rewritten)."""
+        if node.op == "const":
+            return const(-node.value)
+        if node.op == "neg":
+            return node.args[0]
+        if uses[node.id] != 1:
+            return None
+        if node.op == "sub":
+            return intern("sub", (node.args[1], node.args[0]))
+        if node.op not in ("mul", "div", "add"):
+            return None
+        for k in (0, 1):
+            negated = free_negation(node.args[k])
+            if negated is None:
+                continue
+            other = node.args[1 - k]
+            if node.op == "mul":
+                return _node("mul", negated, other)
+            if node.op == "div":
+                return intern("div", (negated, other) if k == 0 else (other, negated))
+            if node.op == "add":
+                return intern("sub", (negated, other))
+        return None
+
+    for node in order:
+        args = tuple(new[a.id] for a in node.args)
+        rewritten = free_negation(args[0]) if node.op == "neg" else None
+        if rewritten is not None:
+            new[node.id] = rewritten
+        elif any(a is not b for a, b in zip(args, node.args)):
+            new[node.id] = intern(node.op, args, node.value)
+        else:
+            new[node.id] = node
+    return [new[node.id] for node in outputs]
+
+
 _EVAL = {
     "neg": lambda a: -a,
     "add": lambda a, b: a + b,

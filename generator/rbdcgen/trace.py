@@ -149,11 +149,13 @@ def trace_function(robot, scene, name):
                 "robot '%s': %s divides by a pivot that is exactly zero: a joint moves no mass "
                 "(a massless body, or a massless subtree, on a moving joint)" % (robot.name, name)
             ) from None
-    outputs = tuple(Argument(n, r, c, d) for n, r, c, d in output_specs)
-    for arg in outputs:
-        if len(values[arg.name]) != arg.size:
-            raise AssertionError("%s: output %s has %d entries, expected %d"
-                                 % (name, arg.name, len(values[arg.name]), arg.size))
+        outputs = tuple(Argument(n, r, c, d) for n, r, c, d in output_specs)
+        for arg in outputs:
+            if len(values[arg.name]) != arg.size:
+                raise AssertionError("%s: output %s has %d entries, expected %d"
+                                     % (name, arg.name, len(values[arg.name]), arg.size))
+        flat = iter(ex.absorb_negations([e for arg in outputs for e in values[arg.name]]))
+        values = {arg.name: tuple(next(flat) for _ in range(arg.size)) for arg in outputs}
     inputs = tuple(args[n] for n in input_names if n not in zero)
     return Function(name=name, doc=doc, inputs=inputs, outputs=outputs, values=values, graph=graph)
 

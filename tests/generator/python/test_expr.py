@@ -90,6 +90,21 @@ class SharingAndReachability(unittest.TestCase):
             got = ex.evaluate(out, {"q": [0.3, 4.0]})
         self.assertEqual(got, [math.sin(0.3) * 4.0 - 0.3 / 4.0, 2.0])
 
+    def test_final_negations_are_absorbed_where_free(self):
+        with ex.Graph():
+            x, y, z = ex.symbol("q", 0), ex.symbol("q", 1), ex.symbol("q", 2)
+            (product,) = ex.absorb_negations([-(2.0 * x)])
+            self.assertEqual((product.op, product.args[0].value), ("mul", -2.0))
+            outputs = [-(x * y + 3.0 * z)]
+            (rewritten,) = ex.absorb_negations(outputs)
+            self.assertEqual(rewritten.op, "sub")
+            self.assertFalse(any(n.op == "neg" for n in ex.reachable([rewritten])))
+            state = {"q": [0.3, -1.2, 2.5]}
+            self.assertEqual(ex.evaluate([rewritten], state), ex.evaluate(outputs, state))
+            shared = 2.0 * x
+            kept = ex.absorb_negations([-shared, shared * y])
+            self.assertEqual(kept[0].op, "neg")  # the product has another user: keep one multiply
+
     def test_nodes_need_a_graph(self):
         with self.assertRaises(RuntimeError):
             ex.symbol("q", 0)
