@@ -45,6 +45,8 @@ struct SharedRobot {
   int dofs;  ///< 1-DoF joints after merging fixed and locked joints
 };
 
+void PrintTo(const SharedRobot& r, std::ostream* os) { *os << r.file; }
+
 class SharedRobotFile : public ::testing::TestWithParam<SharedRobot> {};
 
 TEST_P(SharedRobotFile, LoadsWithItsDofsAndMass) {

@@ -188,6 +188,8 @@ struct BadUrdf {
   const char* message;
 };
 
+void PrintTo(const BadUrdf& b, std::ostream* os) { *os << b.file; }
+
 class BadUrdfFile : public ::testing::TestWithParam<BadUrdf> {};
 
 TEST_P(BadUrdfFile, IsRefusedWithAClearMessage) {
