@@ -10,7 +10,7 @@ from numeric_check import DATA, evaluate, flatten_columns, flatten_matrix, max_r
 from reference import Reference, constrained_osc
 
 from rbdcgen.ir import load_ir
-from rbdcgen.scene import default_scene
+from rbdcgen.scene import default_scene, scene_from_dict
 from rbdcgen.trace import trace_function
 
 TOLERANCE = 1e-12
@@ -79,6 +79,25 @@ class TracedEqualsReference(unittest.TestCase):
     def test_mini_cheetah(self):
         self.check_robot("mini_cheetah", mini_cheetah.load("floating"), seeds=(11,))
         self.check_robot("mini_cheetah (fixed base)", mini_cheetah.load("fixed"), seeds=(12,))
+
+
+class SceneSubsets(unittest.TestCase):
+    def test_kept_feet_and_contacts_subsets(self):
+        robot = load_ir(os.path.join(DATA, "tiny_floating.json"))
+        scene = scene_from_dict({"name": "x", "feet": ["slider_foot", "lower_foot"],
+                                 "contacts": ["slider_foot"]})
+        state = random_state(robot, 2, 9)
+        got = evaluate(trace_function(robot, scene, "osc_closed_chain"), state)
+        ref = Reference(robot)
+        Lam, JbarT, b = ref.osc_closed_chain(state["q"], state["v"], state["ground_mass"][0],
+                                             contacts=[robot.foot("slider_foot")])
+        self.assertLess(max_relative_error(got["Lambda"], flatten_matrix(Lam)), 1e-10)
+        self.assertLess(max_relative_error(got["b"], b), 1e-10)
+        one_foot = scene_from_dict({"name": "x", "feet": ["slider_foot"]})
+        state = random_state(robot, 1, 10)
+        got = evaluate(trace_function(robot, one_foot, "feet_jacobian"), state)
+        want = Reference(robot, feet=[robot.foot("slider_foot")]).feet_jacobian(state["q"])
+        self.assertLess(max_relative_error(got["J"], flatten_matrix(want)), TOLERANCE)
 
 
 class BigGroundInertiaLimit(unittest.TestCase):
