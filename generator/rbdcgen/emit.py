@@ -5,13 +5,17 @@ The statements are the body of
 Inputs are read as `q[k]`, each output entry is written exactly once as `M[k] = …;` (column-major,
 zeros and mirrored entries included). sin/cos of the joint angles come first, in one block; then
 every node used more than once becomes `const Scalar tN = …;` in topological order, and nodes used
-once are inlined into their single user. Same DAG in, same text out."""
+once are inlined into their single user, up to MAX_INLINE_OPS operations per expression. Same DAG
+in, same text out."""
 
 from __future__ import annotations
 
 from . import expr as ex
 
 _BINARY_SYMBOL = {"add": "+", "sub": "-", "mul": "*", "div": "/"}
+# A single-use node whose inlined text would hold more operations than this gets a temporary
+# anyway: readable lines and bounded recursion for long chains (e.g. sums over many children).
+MAX_INLINE_OPS = 12
 
 
 def format_constant(value):
@@ -35,8 +39,21 @@ def schedule(fn):
         uses[node.id] = uses.get(node.id, 0) + 1
     trig = sorted((n for n in order if _is_joint_trig(n)),
                   key=lambda n: (n.args[0].value, n.op == "cos"))
-    temps = [n for n in order if n.op not in ("const", "sym") and not _is_joint_trig(n)
-             and uses[n.id] > 1]
+    temp_ids = set()
+    size = {}  # operations in a node's inlined text
+    for n in order:
+        if n.op in ("const", "sym") or _is_joint_trig(n):
+            size[n.id] = 0
+            continue
+        while 1 + sum(size[a.id] for a in n.args) > MAX_INLINE_OPS:
+            largest = max(n.args, key=lambda a: size[a.id])  # give it its own statement
+            temp_ids.add(largest.id)
+            size[largest.id] = 0
+        size[n.id] = 1 + sum(size[a.id] for a in n.args)
+        if uses[n.id] > 1:
+            temp_ids.add(n.id)
+            size[n.id] = 0
+    temps = [n for n in order if n.id in temp_ids]
     return trig, temps, uses
 
 

@@ -3,6 +3,7 @@
 import math
 import os
 import random
+import re
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -50,3 +51,12 @@ def flatten_matrix(rows):
 def max_relative_error(got, want):
     scale = max(1.0, max(abs(x) for x in want))
     return max(abs(g - w) for g, w in zip(got, want)) / scale
+
+
+_CONSTANT = re.compile(r"Scalar\([^)]*\)")
+_OPERATOR = re.compile(r" [-+*/] |(?:^|[(\s])-(?=[\w(])|\b(?:sin|cos|sqrt)\(")
+
+
+def operator_count(statement):
+    """Operations on the right-hand side of one emitted statement."""
+    return len(_OPERATOR.findall(_CONSTANT.sub("C", statement.split("=", 1)[1])))

@@ -7,9 +7,9 @@ import subprocess
 import sys
 import unittest
 
-from numeric_check import DATA, HERE
+from numeric_check import DATA, HERE, operator_count
 from rbdcgen import expr as ex
-from rbdcgen.emit import emit_body, format_constant
+from rbdcgen.emit import MAX_INLINE_OPS, emit_body, format_constant
 from rbdcgen.ir import load_ir
 from rbdcgen.scene import default_scene
 from rbdcgen.trace import Argument, Function, trace_function, trace_scene
@@ -55,6 +55,11 @@ class Emission(unittest.TestCase):
                 writes = [l for l in lines if l.startswith(arg.name + "[")]
                 indices = sorted(int(l[len(arg.name) + 1:l.index("]")]) for l in writes)
                 self.assertEqual(indices, list(range(arg.size)), fn.name + " " + arg.name)
+
+    def test_inlined_expressions_stay_short(self):
+        for fn in trace_scene(ROBOT, default_scene()):
+            for line in emit_body(fn):
+                self.assertLessEqual(operator_count(line), MAX_INLINE_OPS, line)
 
     def test_joint_trig_comes_first_and_once(self):
         fn = trace_function(ROBOT, default_scene(), "inverse_dynamics")
