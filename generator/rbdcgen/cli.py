@@ -9,6 +9,7 @@ from .errors import RbdcError
 from .ir import IRError
 from .layout import find_layout
 from .scene import SceneError
+from .trace import TraceError
 
 DESCRIPTION = """rbdc: a rigid-body dynamics compiler. Turns a robot (URDF, topology YAML or rbdc IR JSON)
 and a scene (which quantities, feet, gravity, base, zero inputs, locked joints) into header-only,
@@ -81,11 +82,15 @@ def build_parser() -> argparse.ArgumentParser:
         "eval", help="the runtime's M, c, g and feet Jacobian at one state, as JSON",
         description="Runs the runtime (rbdc-eval) at the given state and prints its JSON, keyed by "
                     "joint names, for comparison with other libraries.")
-    evaluate.add_argument("robot", type=Path, help="robot URDF")
-    evaluate.add_argument("--q", help="configuration, comma-separated (nq values; default zero)")
+    evaluate.add_argument("robot", type=Path, help="robot file: .urdf or topology .yaml")
+    evaluate.add_argument("--q", help="configuration, comma-separated (nq values; default: zero, identity quaternion)")
     evaluate.add_argument("--v", help="velocity, comma-separated (nv values; default zero)")
-    evaluate.add_argument("extra", nargs=argparse.REMAINDER,
-                          help="further options passed to rbdc-eval unchanged (after --)")
+    evaluate.add_argument("--a", help="acceleration, comma-separated (nv values); adds inverse dynamics as tau")
+    evaluate.add_argument("--topology", type=Path, metavar="FILE", help="topology YAML applied to the URDF")
+    base = evaluate.add_mutually_exclusive_group()
+    base.add_argument("--floating-base", dest="base", action="store_const", const="floating")
+    base.add_argument("--fixed-base", dest="base", action="store_const", const="fixed")
+    evaluate.add_argument("--lock-mimic", action="store_true", help="lock each URDF mimic joint at its offset")
     return parser
 
 
@@ -94,7 +99,7 @@ def main(argv=None) -> int:
     layout = find_layout()
     try:
         return commands.COMMANDS[args.command](args, layout)
-    except (RbdcError, IRError, SceneError) as error:
+    except (RbdcError, IRError, SceneError, TraceError) as error:
         print(f"error: {error}", file=sys.stderr)
         return 2
     except OSError as error:

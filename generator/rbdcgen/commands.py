@@ -68,11 +68,15 @@ def evaluate(args, layout: Layout) -> int:
     if not layout.eval_tool.exists():
         raise RbdcError(f"{layout.eval_tool}: rbdc-eval is not built (cmake --build build --target rbdc-eval)")
     command = [str(layout.eval_tool), str(args.robot)]
-    if args.q:
-        command += ["--q", args.q]
-    if args.v:
-        command += ["--v", args.v]
-    command += [a for a in args.extra if a != "--"]
+    for option in ("q", "v", "a"):
+        if getattr(args, option):
+            command += [f"--{option}", getattr(args, option)]
+    if args.topology:
+        command += ["--topology", str(args.topology)]
+    if args.base:
+        command.append(f"--{args.base}-base")
+    if args.lock_mimic:
+        command.append("--lock-mimic")
     result = subprocess.run(command, capture_output=True, text=True)
     sys.stdout.write(result.stdout)
     if result.returncode != 0:

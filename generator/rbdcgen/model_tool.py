@@ -1,5 +1,5 @@
 """Front end: runs the C++ tool rbdc-model, the one place that parses, validates and numbers a robot,
-and returns its IR (docs/ir.md) as JSON text. An IR JSON file is accepted as input directly."""
+and reads its IR (docs/ir.md). An IR JSON file is accepted as input directly."""
 import json
 import subprocess
 import sys
@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .errors import RbdcError
+from .ir import Robot, load_ir
 from .layout import Layout
 
 
@@ -37,12 +38,16 @@ def model_command(request: ModelRequest, layout: Layout) -> list[str]:
     return command
 
 
-def load_ir_text(request: ModelRequest, layout: Layout) -> str:
-    """The IR JSON text for the request; raises RbdcError with rbdc-model's own message on bad input."""
+def load_robot(request: ModelRequest, layout: Layout) -> Robot:
+    """The IR for the request; raises RbdcError with rbdc-model's own message on bad input (IRError
+    naming the file for a malformed IR file)."""
     if not request.robot.is_file():
         raise RbdcError(f"{request.robot}: no such file")
     if request.robot.suffix == ".json":
-        return _checked_ir_file(request)
+        if request.topology or request.locks or request.lock_mimic:
+            raise RbdcError(f"{request.robot}: an IR file is already numbered; --topology, --lock-mimic "
+                            "and locked joints apply only to URDF or topology input")
+        return load_ir(request.robot)
     if not layout.model_tool.exists():
         raise RbdcError(f"{layout.model_tool}: rbdc-model is not built (cmake --build build --target rbdc-model)")
     result = subprocess.run(model_command(request, layout), capture_output=True, text=True)
@@ -54,19 +59,5 @@ def load_ir_text(request: ModelRequest, layout: Layout) -> str:
         message = "\n".join(line.removeprefix("error: ") for line in errors) or \
             f"rbdc-model failed with exit code {result.returncode}"
         raise RbdcError(message)
-    return result.stdout
+    return load_ir(json.loads(result.stdout))
 
-
-def _checked_ir_file(request: ModelRequest) -> str:
-    if request.topology or request.locks or request.lock_mimic:
-        raise RbdcError(f"{request.robot}: an IR file is already numbered; --topology and locked joints "
-                        "apply only to URDF or topology input")
-    text = request.robot.read_text()
-    try:
-        floating = json.loads(text).get("floating_base")
-    except (json.JSONDecodeError, AttributeError) as error:
-        raise RbdcError(f"{request.robot}: not an IR JSON object ({error})") from None
-    if request.base and floating != (request.base == "floating"):
-        raise RbdcError(f"{request.robot}: the IR has a {'floating' if floating else 'fixed'} base, "
-                        f"but a {request.base} base was asked for")
-    return text

@@ -1,12 +1,10 @@
 """One robot and one scene through the whole compiler: rbdc-model → IR → traced functions → files."""
-import json
 from dataclasses import dataclass
 from pathlib import Path
 
 from .errors import RbdcError
-from .ir import load_ir
 from .layout import Layout
-from .model_tool import ModelRequest, load_ir_text
+from .model_tool import ModelRequest, load_robot
 from .names import cpp_identifier
 from .render import GeneratedFile, render_robot_scene
 from .scene import Scene, default_scene, load_scene
@@ -36,7 +34,12 @@ def compile_robot(robot_path: Path, scene_path: Path | None = None, topology: Pa
     scene = resolve_scene(scene_path, base)
     request = ModelRequest(robot=Path(robot_path), topology=Path(topology) if topology else None,
                            base=scene.base, locks=dict(scene.locked_joints), lock_mimic=lock_mimic)
-    robot = load_ir(json.loads(load_ir_text(request, layout)))
+    robot = load_robot(request, layout)
+    ir_base = "floating" if robot.floating_base else "fixed"
+    if base and base != ir_base:
+        raise RbdcError(f"{robot_path}: the IR has a {ir_base} base, but a {base} base was asked for")
+    if ir_base != scene.base:  # an IR file brings its own base
+        scene = Scene(**{**scene.__dict__, "base": ir_base})
     robot_name = name or robot.name
     if not robot_name:
         raise RbdcError(f"{robot_path}: the robot has no name; give one with --name")

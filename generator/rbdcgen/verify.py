@@ -76,7 +76,7 @@ def compile_harness(directory: Path, layout: Layout) -> Path:
         raise RbdcError(f"{layout.runtime_library}: the runtime library is not built "
                         "(cmake --build build --target rbdc_runtime)")
     executable = directory / "harness"
-    command = [toolchain["cxx"], "-std=c++17", "-O1", "-o", str(executable), str(directory / "harness.cpp"),
+    command = [toolchain["cxx"], "-std=c++17", "-O0", "-o", str(executable), str(directory / "harness.cpp"),
                "-I", str(directory / "generated"), "-I", str(layout.runtime_include)]
     command += [flag for d in toolchain["include_dirs"] for flag in ("-isystem", d)]
     command += [str(layout.runtime_library)] + toolchain["libraries"]
@@ -107,7 +107,7 @@ def run(args, layout: Layout) -> int:
                                           lock_mimic=args.lock_mimic))
     directory = Path(args.keep) if args.keep else Path(tempfile.mkdtemp(prefix="rbdc-verify-"))
     try:
-        return _generate_build_run(paths, compilations, directory, args, layout)
+        return build_and_run(paths, compilations, directory, args, layout)
     finally:
         if not args.keep:
             shutil.rmtree(directory, ignore_errors=True)
@@ -119,7 +119,7 @@ def _batch_names(paths) -> list:
     return unique_identifiers([p.stem for p in paths]) if len(paths) > 1 else [None]
 
 
-def _generate_build_run(paths, compilations, directory: Path, args, layout: Layout) -> int:
+def build_and_run(paths, compilations, directory: Path, args, layout: Layout) -> int:
     generated = directory / "generated"
     for compilation in compilations:
         for f in render(compilation, layout):

@@ -1,0 +1,71 @@
+# rbdc_generate(TARGET name URDF file [SCENE file] [TOPOLOGY file] [NAME robot]
+#               [FIXED_BASE | FLOATING_BASE] [LOCK_MIMIC])
+#
+# Generates the robot's C++ headers at build time into ${CMAKE_CURRENT_BINARY_DIR}/rbdc/<name> and
+# creates the INTERFACE target `name` whose include root is that directory:
+#   #include "<robot>/<scene>.hpp"   // namespace rbdc_gen::<robot>::<scene>, docs/generated_api.md
+# The list of headers is asked from the generator at configure time (rbdc generate --list-outputs);
+# they are regenerated when the URDF, scene, topology, templates or generator sources change.
+# Needs RBDC_LAUNCHER (the `rbdc` command) and RBDC_SHARE_DIR, both set by find_package(rbdc).
+function(rbdc_generate)
+  cmake_parse_arguments(PARSE_ARGV 0 ARG "FIXED_BASE;FLOATING_BASE;LOCK_MIMIC" "TARGET;URDF;SCENE;TOPOLOGY;NAME" "")
+  if(NOT ARG_TARGET OR NOT ARG_URDF)
+    message(FATAL_ERROR "rbdc_generate: TARGET and URDF are required")
+  endif()
+  if(ARG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "rbdc_generate: unknown arguments: ${ARG_UNPARSED_ARGUMENTS}")
+  endif()
+  if(NOT RBDC_LAUNCHER)
+    message(FATAL_ERROR "rbdc_generate: RBDC_LAUNCHER is not set (use find_package(rbdc))")
+  endif()
+  set(inputs "")
+  foreach(file_argument URDF SCENE TOPOLOGY)
+    if(ARG_${file_argument})
+      get_filename_component(ARG_${file_argument} "${ARG_${file_argument}}" ABSOLUTE)
+      list(APPEND inputs "${ARG_${file_argument}}")
+    endif()
+  endforeach()
+  set(out "${CMAKE_CURRENT_BINARY_DIR}/rbdc/${ARG_TARGET}")
+  set(arguments "${ARG_URDF}" -o "${out}")
+  if(ARG_SCENE)
+    list(APPEND arguments --scene "${ARG_SCENE}")
+  endif()
+  if(ARG_TOPOLOGY)
+    list(APPEND arguments --topology "${ARG_TOPOLOGY}")
+  endif()
+  if(ARG_NAME)
+    list(APPEND arguments --name "${ARG_NAME}")
+  endif()
+  if(ARG_FIXED_BASE)
+    list(APPEND arguments --fixed-base)
+  elseif(ARG_FLOATING_BASE)
+    list(APPEND arguments --floating-base)
+  endif()
+  if(ARG_LOCK_MIMIC)
+    list(APPEND arguments --lock-mimic)
+  endif()
+
+  execute_process(COMMAND "${RBDC_LAUNCHER}" generate ${arguments} --list-outputs
+                  OUTPUT_VARIABLE outputs ERROR_VARIABLE errors RESULT_VARIABLE result
+                  OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(NOT result EQUAL 0)
+    message(FATAL_ERROR "rbdc_generate(${ARG_TARGET}): ${errors}")
+  endif()
+  string(REPLACE "\n" ";" outputs "${outputs}")
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${inputs})
+
+  file(GLOB_RECURSE generator_sources "${RBDC_SHARE_DIR}/generator/rbdcgen/*.py" "${RBDC_SHARE_DIR}/templates/*.j2")
+  set(stamp "${out}.stamp")
+  # Unchanged headers are not rewritten, so a stamp records the run and the headers are byproducts.
+  add_custom_command(OUTPUT "${stamp}" BYPRODUCTS ${outputs}
+                     COMMAND "${RBDC_LAUNCHER}" generate ${arguments}
+                     COMMAND "${CMAKE_COMMAND}" -E touch "${stamp}"
+                     DEPENDS ${inputs} ${generator_sources}
+                     COMMENT "rbdc: generating ${ARG_TARGET} from ${ARG_URDF}" VERBATIM)
+  add_custom_target(${ARG_TARGET}_generate DEPENDS "${stamp}")
+  add_library(${ARG_TARGET} INTERFACE)
+  add_dependencies(${ARG_TARGET} ${ARG_TARGET}_generate)
+  target_include_directories(${ARG_TARGET} INTERFACE "${out}")
+  target_link_libraries(${ARG_TARGET} INTERFACE Eigen3::Eigen)
+  target_compile_features(${ARG_TARGET} INTERFACE cxx_std_17)
+endfunction()

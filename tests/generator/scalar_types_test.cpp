@@ -1,0 +1,101 @@
+// The generated Mini Cheetah code instantiated with float, long double and __float128 (through the
+// Eigen surface) agrees with double to the precision of the narrower type. The constants are
+// written as double literals, so the wide types compute the same function as double, more exactly.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "mini_cheetah/full.hpp"
+
+namespace {
+
+namespace mc = rbdc_gen::mini_cheetah::full;
+using LongMatrix = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+
+struct State {
+  mc::ConfigVector<double> q;
+  mc::TangentVector<double> v, a;
+  mc::JointVector<double> tau;
+  mc::FeetMatrix<double> f;
+};
+
+State random_state(unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  State s;
+  for (int k = 0; k < mc::nq; ++k) s.q[k] = u(rng);
+  s.q.segment<4>(3).normalize();
+  for (int k = 0; k < mc::nv; ++k) s.v[k] = 2 * u(rng), s.a[k] = 5 * u(rng);
+  for (int k = 0; k < mc::n_joints; ++k) s.tau[k] = 10 * u(rng);
+  for (int k = 0; k < 3 * mc::n_feet; ++k) s.f.data()[k] = 50 * u(rng);
+  return s;
+}
+
+/// Every output of the functions under test, in one long-double matrix per function.
+struct Outputs {
+  LongMatrix M, tau, a, J, Lambda;
+};
+
+template <class T>
+Outputs evaluate(const State& s) {
+  const mc::ConfigVector<T> q = s.q.cast<T>();
+  const mc::TangentVector<T> v = s.v.cast<T>(), acc = s.a.cast<T>();
+  const mc::JointVector<T> tau = s.tau.cast<T>();
+  const mc::FeetMatrix<T> f = s.f.cast<T>();
+  mc::MassMatrix<T> M;
+  mc::TangentVector<T> id, fd;
+  mc::FeetJacobian<T> J;
+  mc::OscInertia<T> Lambda;
+  mc::OscJacobianT<T> JbarT;
+  mc::Wrench<T> b;
+  mc::mass_matrix(q, M);
+  mc::inverse_dynamics(q, v, acc, id);
+  mc::forward_dynamics(q, v, tau, f, fd);
+  mc::feet_jacobian(q, J);
+  mc::osc_closed_chain(q, v, T(50), Lambda, JbarT, b);
+  return {M.template cast<long double>(), id.template cast<long double>(), fd.template cast<long double>(),
+          J.template cast<long double>(), Lambda.template cast<long double>()};
+}
+
+/// Largest entry difference relative to the largest entry of the reference.
+long double relative_difference(const LongMatrix& x, const LongMatrix& reference) {
+  return (x - reference).cwiseAbs().maxCoeff() / reference.cwiseAbs().maxCoeff();
+}
+
+template <class T>
+void expect_agreement(long double tolerance, unsigned seed) {
+  const State s = random_state(seed);
+  const Outputs wide = evaluate<double>(s), narrow = evaluate<T>(s);
+  EXPECT_LT(relative_difference(narrow.M, wide.M), tolerance);
+  EXPECT_LT(relative_difference(narrow.tau, wide.tau), tolerance);
+  EXPECT_LT(relative_difference(narrow.a, wide.a), tolerance);
+  EXPECT_LT(relative_difference(narrow.J, wide.J), tolerance);
+  EXPECT_LT(relative_difference(narrow.Lambda, wide.Lambda), tolerance);
+}
+
+TEST(GeneratedScalarTypes, FloatAgreesWithDoubleToFloatPrecision) {
+  for (unsigned seed = 0; seed < 10; ++seed) expect_agreement<float>(1e-4L, seed);
+}
+
+TEST(GeneratedScalarTypes, LongDoubleAgreesWithDouble) {
+  for (unsigned seed = 0; seed < 10; ++seed) expect_agreement<long double>(1e-12L, seed);
+}
+
+#if defined(RBDC_HAS_FLOAT128)
+TEST(GeneratedScalarTypes, Float128AgreesWithDouble) {
+  for (unsigned seed = 0; seed < 10; ++seed) expect_agreement<rbdc_gen::float128>(1e-12L, seed);
+}
+
+// Quad is really computed wider than double: it matches long double far below double round-off.
+TEST(GeneratedScalarTypes, Float128AgreesWithLongDoubleBeyondDoublePrecision) {
+  for (unsigned seed = 0; seed < 10; ++seed) {
+    const State s = random_state(seed);
+    const Outputs quad = evaluate<rbdc_gen::float128>(s), extended = evaluate<long double>(s);
+    EXPECT_LT(relative_difference(extended.M, quad.M), 1e-16L);
+    EXPECT_LT(relative_difference(extended.a, quad.a), 1e-15L);
+    EXPECT_LT(relative_difference(extended.Lambda, quad.Lambda), 1e-15L);
+  }
+}
+#endif
+
+}  // namespace
