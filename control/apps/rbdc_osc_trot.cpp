@@ -1,0 +1,157 @@
+// rbdc-osc-trot: the Mini Cheetah trot of paper 001 Sec. 6.2 in rbdc's simulator under the
+// operational-space controllers (closed chain, open chain with measured forces) and the
+// Raibert-style hip-torque controller; prints one table row per controller.
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "rbdc/control/trot_experiment.hpp"
+#include "rbdc/sim/robot.hpp"
+
+using namespace rbdc;
+using namespace rbdc::control;
+
+namespace {
+
+struct Options {
+  std::vector<StanceControl> controllers = {StanceControl::OperationalSpace,
+                                            StanceControl::OperationalSpaceOpenChain,
+                                            StanceControl::HipTorque};
+  ExperimentOptions experiment;
+  std::string out;
+};
+
+const char* kUsage =
+    "usage: rbdc-osc-trot [--controller osc|osc-open|raibert|all] [--duration S] [--speed M/S]\n"
+    "                     [--control-period S] [--set NAME=VALUE]... [--out DIR]\n"
+    "Runs the Mini Cheetah trot under each controller and reports roll/pitch tracking during\n"
+    "stance, falls and the controller's cost per call. --out writes DIR/<controller>.csv traces\n"
+    "and DIR/summary.md.\n";
+
+double number(const char* option, const char* text) {
+  char* end = nullptr;
+  const double value = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !(value > 0))
+    throw std::invalid_argument(std::string(option) + ": expected a positive number, got '" + text + "'");
+  return value;
+}
+
+// --set NAME=VALUE for the scalar trot parameters (tuning without recompiling).
+void set_parameter(TrotParameters& p, const std::string& assignment) {
+  const std::size_t eq = assignment.find('=');
+  const std::string name = assignment.substr(0, eq);
+  const std::vector<std::pair<const char*, double*>> table = {
+      {"step_duration", &p.step_duration}, {"leg_length", &p.leg_length},
+      {"leg_stiffness", &p.leg_stiffness}, {"leg_damping", &p.leg_damping},
+      {"swing_height", &p.swing_height},   {"velocity_gain", &p.velocity_gain},
+      {"yaw_gain", &p.yaw_gain},           {"velocity_integral_gain", &p.velocity_integral_gain},
+      {"force_filter_time", &p.force_filter_time},
+               {"swing_kp", &p.swing_kp},
+      {"swing_kd", &p.swing_kd},           {"speed_ramp", &p.speed_ramp},
+      {"ground_mass", &p.ground_mass},
+      {"osc_kp", &p.osc_gains.roll_kp},    {"osc_kd", &p.osc_gains.roll_kd},
+      {"hip_kp", &p.hip_gains.roll_kp},    {"hip_kd", &p.hip_gains.roll_kd}};
+  for (const auto& [key, target] : table)
+    if (eq != std::string::npos && name == key) {
+      char* end = nullptr;
+      const double value = std::strtod(assignment.c_str() + eq + 1, &end);
+      if (*end != '\0') break;
+      *target = value;
+      // One gain pair for roll and pitch.
+      p.osc_gains.pitch_kp = p.osc_gains.roll_kp, p.osc_gains.pitch_kd = p.osc_gains.roll_kd;
+      p.hip_gains.pitch_kp = p.hip_gains.roll_kp, p.hip_gains.pitch_kd = p.hip_gains.roll_kd;
+      return;
+    }
+  throw std::invalid_argument("--set: expected NAME=NUMBER with a trot parameter name, got '" +
+                              assignment + "'");
+}
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      std::fputs(kUsage, stdout);
+      std::exit(0);
+    }
+    if (i + 1 >= argc) throw std::invalid_argument("unknown option or missing value: '" + arg + "'");
+    const char* value = argv[++i];
+    if (arg == "--controller") {
+      if (std::strcmp(value, "all") != 0) o.controllers = {parse_stance_control(value)};
+    } else if (arg == "--duration") {
+      o.experiment.duration = number("--duration", value);
+    } else if (arg == "--speed") {
+      o.experiment.trot.speed = number("--speed", value);
+    } else if (arg == "--control-period") {
+      o.experiment.control_period = number("--control-period", value);
+    } else if (arg == "--set") {
+      set_parameter(o.experiment.trot, value);
+    } else if (arg == "--out") {
+      o.out = value;
+    } else {
+      throw std::invalid_argument("unknown option '" + arg + "'");
+    }
+  }
+  return o;
+}
+
+std::string row(StanceControl control, const ExperimentResult& r) {
+  char fall[64];
+  if (r.fell)
+    std::snprintf(fall, sizeof fall, "at %.2f s", r.fall_time);
+  else
+    std::snprintf(fall, sizeof fall, "no");
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "| %-8s | %6.3f / %6.3f | %6.3f / %6.3f | %6.3f / %6.3f | %6.3f / %6.3f | %-10s | %5.2f | %6.2f |",
+                to_string(control), r.roll_error.mean(), r.roll_error.max, r.pitch_error.mean(),
+                r.pitch_error.max, r.roll.mean(), r.roll.max, r.pitch.mean(), r.pitch.max, fall,
+                r.mean_speed, 1e6 * r.controller_seconds / std::max(1L, r.controller_calls));
+  return line;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    Options o = parse(argc, argv);
+    const Model model = sim::load_robot(sim::default_urdf());
+    std::unique_ptr<sim::DynamicsModel> dynamics = sim::make_generated_dynamics();
+    if (!dynamics) dynamics = sim::make_runtime_dynamics(model);
+    if (!o.out.empty()) std::filesystem::create_directories(o.out);
+    const TrotParameters& trot = o.experiment.trot;
+    char header[512];
+    std::snprintf(header, sizeof header,
+                  "Mini Cheetah trot at %.2f m/s desired (step %.3f s, duty 0.5), %.1f s, %s dynamics, "
+                  "dt = %g s, control every %g s\n\n"
+                  "| control  | roll err mean/max (deg) | pitch err mean/max (deg) | |roll| mean/max (deg) "
+                  "| |pitch| mean/max (deg) | fell       | v (m/s) | us/call |\n"
+                  "|---|---|---|---|---|---|---|---|\n",
+                  trot.speed, trot.step_duration, o.experiment.duration, dynamics->name().c_str(),
+                  o.experiment.sim.dt, o.experiment.control_period);
+    std::string table = header;
+    std::fputs(header, stdout);
+    for (StanceControl control : o.controllers) {
+      ExperimentOptions e = o.experiment;
+      e.control = control;
+      if (!o.out.empty()) e.trace_csv = o.out + "/" + to_string(control) + ".csv";
+      const ExperimentResult r = run_trot_experiment(model, *dynamics, e);
+      const std::string line = row(control, r);
+      std::printf("%s\n", line.c_str());
+      std::fflush(stdout);
+      table += line + "\n";
+      if (r.fell) std::fprintf(stderr, "rbdc-osc-trot: %s fell at %.3f s: %s\n", to_string(control),
+                               r.fall_time, r.fall_reason.c_str());
+    }
+    if (!o.out.empty()) std::ofstream(o.out + "/summary.md") << table;
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "rbdc-osc-trot: %s\n", e.what());
+    return 1;
+  }
+}
