@@ -43,8 +43,9 @@ const MatrixX& mass_matrix(const Model& model, Data& data, const VectorRef& q) {
       H.block<1, 6>(col(i), 0) = F_i0.transpose();
     }
   }
-  // Floating base: the trunk block is the composite inertia of the whole tree, I_c0 (Eq. 29).
-  if (model.floating_base) H.topLeftCorner<6, 6>() = data.Ic[0];
+  // Floating base: the trunk block is the composite inertia of the whole tree, I_c0 (Eq. 29),
+  // symmetrised so that M is exactly symmetric (the sums above leave round-off asymmetry).
+  if (model.floating_base) H.topLeftCorner<6, 6>() = 0.5 * (data.Ic[0] + data.Ic[0].transpose());
   return H;
 }
 

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "print_dynamics.hpp"
 #include "tool_options.hpp"
 
 namespace {
@@ -93,12 +94,12 @@ int main(int argc, char** argv) {
     if (!parse_load_options(argc, argv, opts, q_option)) {
       std::cout << "usage: rbdc-info ROBOT [options] [--q Q0 Q1 …]\n"
                    "Prints a summary of the robot model: sizes, mass, topology arrays, κ, μ, ν, feet.\n\n"
-                << kLoadOptionsHelp << "  --q Q0 Q1 …         configuration (nq numbers; default: neutral)\n";
+                << kLoadOptionsHelp << "  --q Q0 Q1 …         configuration (nq numbers; default: the documented\n"
+                   "                      standing state of docs/runtime.md)\n";
       return 0;
     }
     const Model model = load_model(opts);
-    rbdc::VectorX q = rbdc::VectorX::Zero(model.nq);
-    if (model.floating_base) q(3) = 1;  // identity quaternion (w x y z)
+    rbdc::VectorX q = documented_configuration(model);
     if (!q_values.empty()) {
       if (static_cast<int>(q_values.size()) != model.nq) {
         throw std::invalid_argument("--q has " + std::to_string(q_values.size()) + " numbers, the model needs nq = " +
@@ -112,6 +113,7 @@ int main(int argc, char** argv) {
     print_topology(model, out);
     print_feet(model, out);
     print_state(q, out);
+    print_dynamics(model, q, documented_velocity(model), out);
     return 0;
   });
 }

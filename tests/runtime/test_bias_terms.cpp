@@ -116,7 +116,7 @@ TEST(BiasTermsFixedBase, OnlyJointEntriesAndGravityOfAWeldedRoot) {
   EXPECT_EQ(quadratic_velocity_terms(model, data, VectorX::Ones(model.nq), VectorX::Zero(model.nv)).norm(), 0.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Robots, BiasTerms, ::testing::Values(0, 1, 2));
+INSTANTIATE_TEST_SUITE_P(Robots, BiasTerms, ::testing::Range(0, 4));
 
 }  // namespace
 }  // namespace rbdc

@@ -23,7 +23,7 @@ TEST_P(Crba, MassMatrixIsSymmetricPositiveDefinite) {
   for (int trial = 0; trial < 50; ++trial) {
     const VectorX q = random.configuration(model);
     const MatrixX M = mass_matrix(model, data, q);
-    EXPECT_LE((M - M.transpose()).cwiseAbs().maxCoeff(), 1e-14 * M.cwiseAbs().maxCoeff());
+    EXPECT_EQ((M - M.transpose()).cwiseAbs().maxCoeff(), 0.0);
     Eigen::SelfAdjointEigenSolver<MatrixX> eigen(M);
     EXPECT_GT(eigen.eigenvalues().minCoeff(), 0.0) << "q = " << q.transpose();
   }
@@ -66,7 +66,7 @@ TEST_P(Crba, TrunkBlockIsTheTotalCompositeInertia) {
   EXPECT_NEAR(M(3, 4), 0.0, 1e-12);
 }
 
-INSTANTIATE_TEST_SUITE_P(Robots, Crba, ::testing::Values(0, 1, 2));
+INSTANTIATE_TEST_SUITE_P(Robots, Crba, ::testing::Range(0, 4));
 
 }  // namespace
 }  // namespace rbdc

@@ -18,7 +18,7 @@ double relative(const MatrixX& a, const MatrixX& b) { return (a - b).norm() / b.
 
 class OpenChain : public ::testing::TestWithParam<int> {
  protected:
-  // floating-base robots only: the quadruped (0) and the branched robot (2)
+  // floating-base robots only: the Mini Cheetah (0) and the branched robots (2, 3)
   Model model = test::all_robots()[static_cast<size_t>(GetParam())];
   Data data{model};
   test::RandomState random{99u + static_cast<unsigned>(GetParam())};
@@ -61,14 +61,14 @@ TEST_P(OpenChain, ClosedChainWithoutContactsIsTheOpenChainWithoutForces) {
   EXPECT_LE(relative(closed.b, open.b), 1e-14);
 }
 
-INSTANTIATE_TEST_SUITE_P(FloatingBaseRobots, OpenChain, ::testing::Values(0, 2));
+INSTANTIATE_TEST_SUITE_P(FloatingBaseRobots, OpenChain, ::testing::Values(0, 2, 3));
 
 TEST(OscArguments, FixedBaseAndBadContactsAreRefused) {
   const Model arm = test::arm7();
   Data arm_data(arm);
   EXPECT_THROW(osc_closed_chain(arm, arm_data, VectorX::Zero(arm.nq), VectorX::Zero(arm.nv), {}),
                std::invalid_argument);
-  const Model quad = test::quadruped();
+  const Model quad = test::mini_cheetah();
   Data data(quad);
   const VectorX q = test::RandomState(1).configuration(quad);
   EXPECT_THROW(osc_closed_chain(quad, data, q, VectorX::Zero(quad.nv), {0, 4}), std::invalid_argument);
@@ -96,7 +96,7 @@ Stance stance_state(const Model& model, Data& data, test::RandomState& random) {
 }
 
 TEST(ClosedChain, ErrorFallsThenRisesWithMinimumNearTheGroundMassHeuristic) {
-  const Model model = test::quadruped();
+  const Model model = test::mini_cheetah();
   Data data(model);
   test::RandomState random(2015);
   const std::vector<int> contacts = {0, 1, 2, 3};

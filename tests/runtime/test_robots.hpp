@@ -1,10 +1,11 @@
-// Test robots and random states shared by the runtime algorithm tests.
-//  - quadruped(): a Mini-Cheetah-like floating-base quadruped (Eq. 1 numbering) built from arrays;
-//  - arm7(): a fixed-base 7-DoF arm with oblique and negative axes and rotated joint origins;
-//  - branched(): a floating-base tree with two branches, oblique axes, rotated origins, rotated
-//    inertial frames, a prismatic joint and three feet.
-// When robots/mini_cheetah.urdf and the URDF loader are present, mini_cheetah() loads the product's
-// model; the URDF fixture tests/data/branched_robot.urdf adds fixed joints (merged by the loader).
+// Test robots and random states shared by the runtime algorithm tests (all_robots() order):
+//  0 mini_cheetah(): the product's robots/mini_cheetah.urdf through the URDF loader;
+//  1 arm7(): a fixed-base 7-DoF arm with oblique and negative axes and rotated joint origins;
+//  2 branched(): a floating-base tree built from PRED/SUCC arrays with oblique axes, rotated
+//    origins, rotated inertial frames, a prismatic joint and three feet;
+//  3 branched_urdf(): tests/data/branched_robot.urdf, the same ingredients plus fixed joints that
+//    the loader merges (inertia lumping), and a foot on a merged link.
+// quadruped() builds a Mini-Cheetah-like model from arrays (paper 000 Eq. 1) without the loader.
 #pragma once
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "rbdc/model_builder.hpp"
+#include "rbdc/urdf_loader.hpp"
 
 namespace rbdc::test {
 
@@ -138,8 +140,21 @@ inline Model branched() {
   return build_model(s);
 }
 
-/// Robots that every identity test runs on.
-inline std::vector<Model> all_robots() { return {quadruped(), arm7(), branched()}; }
+inline Model mini_cheetah() {
+  std::vector<std::string> warnings;  // the MIT thigh inertia breaks the triangle inequality
+  return load_urdf(RBDC_SOURCE_DIR "/robots/mini_cheetah.urdf", UrdfOptions{}, &warnings);
+}
+
+inline Model branched_urdf() {
+  UrdfOptions options;
+  options.feet = {{"footA", "a_foot", Vector3(0.01, 0, -0.02)},
+                  {"footB", "b_foot", Vector3(0.02, -0.01, -0.05)},
+                  {"footC", "c_arm", Vector3(0.1, 0.02, 0)}};
+  return load_urdf(RBDC_SOURCE_DIR "/tests/data/branched_robot.urdf", options);
+}
+
+/// Robots that every identity test runs on (see the list at the top).
+inline std::vector<Model> all_robots() { return {mini_cheetah(), arm7(), branched(), branched_urdf()}; }
 
 struct RandomState {
   explicit RandomState(unsigned seed) : rng(seed) {}

@@ -1,0 +1,149 @@
+// rbdc-eval: the runtime's M, c, g, feet positions and feet Jacobian at one state, as JSON keyed by
+// velocity-coordinate names (a floating base's first six are root_wx … root_vz), numbers with 17
+// significant digits. With --a it also prints inverse_dynamics(q, v, a) as "tau". Used by
+// `rbdc eval` to compare the runtime with other libraries. Bad input exits with code 2.
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "rbdc/rbdc.hpp"
+#include "tool_options.hpp"
+
+namespace {
+
+using rbdc::MatrixX;
+using rbdc::Model;
+using rbdc::VectorX;
+
+/// "v1,v2,…" → numbers; refuses empty items and trailing garbage, naming the option.
+std::vector<double> parse_list(const std::string& option, const std::string& text) {
+  std::vector<double> values;
+  std::stringstream items(text);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != item.size()) {
+      throw std::invalid_argument(option + ": '" + item + "' is not a number");
+    }
+    values.push_back(x);
+  }
+  return values;
+}
+
+/// The vector given by `option` (or `fallback` when absent), checked for length and finiteness.
+VectorX state_vector(const std::string& option, const std::vector<double>* given, Eigen::Index size,
+                     const VectorX& fallback) {
+  if (given == nullptr) return fallback;
+  if (static_cast<Eigen::Index>(given->size()) != size) {
+    throw std::invalid_argument(option + " has " + std::to_string(given->size()) +
+                                " values, the model needs " + std::to_string(size));
+  }
+  const VectorX x = Eigen::Map<const VectorX>(given->data(), size);
+  if (!rbdc::check_finite(x)) throw std::invalid_argument(option + " has a NaN or Inf value");
+  return x;
+}
+
+std::vector<std::string> velocity_names(const Model& model) {
+  std::vector<std::string> names;
+  if (model.floating_base) names = {"root_wx", "root_wy", "root_wz", "root_vx", "root_vy", "root_vz"};
+  for (int i = 1; i < model.nb; ++i) names.push_back(model.joints[static_cast<size_t>(i)].name);
+  return names;
+}
+
+void write_strings(std::ostream& out, const std::vector<std::string>& names) {
+  out << "[";
+  for (size_t k = 0; k < names.size(); ++k) out << (k ? ", " : "") << std::quoted(names[k]);
+  out << "]";
+}
+
+template <class Vector>
+void write_vector(std::ostream& out, const Vector& x) {
+  out << "[";
+  for (Eigen::Index k = 0; k < x.size(); ++k) out << (k ? ", " : "") << x[k];
+  out << "]";
+}
+
+template <class Matrix>
+void write_rows(std::ostream& out, const Matrix& m, const char* indent) {
+  out << "[";
+  for (Eigen::Index r = 0; r < m.rows(); ++r) {
+    out << (r ? ",\n" : "\n") << indent << "  ";
+    write_vector(out, m.row(r));
+  }
+  out << "\n" << indent << "]";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace rbdc::tools;
+  return run_tool([&] {
+    LoadOptions opts;
+    std::vector<double> q_values, v_values, a_values;
+    bool has_q = false, has_v = false, has_a = false;
+    const ExtraOption state_options = [&](int n, char** args, int& i) {
+      const std::string arg = args[i];
+      std::vector<double>* target = arg == "--q" ? &q_values : arg == "--v" ? &v_values
+                                  : arg == "--a" ? &a_values : nullptr;
+      if (target == nullptr) return false;
+      if (i + 1 >= n) throw std::invalid_argument(arg + " expects comma-separated numbers");
+      *target = parse_list(arg, args[++i]);
+      (arg == "--q" ? has_q : arg == "--v" ? has_v : has_a) = true;
+      return true;
+    };
+    if (!parse_load_options(argc, argv, opts, state_options)) {
+      std::cout << "usage: rbdc-eval ROBOT [options] [--q Q0,Q1,…] [--v V0,V1,…] [--a A0,A1,…]\n"
+                   "Prints the runtime's M, c, g, feet positions and feet Jacobian (and with --a the\n"
+                   "inverse dynamics tau) at one state as JSON. Defaults: q neutral (identity\n"
+                   "quaternion), v zero.\n\n"
+                << kLoadOptionsHelp;
+      return 0;
+    }
+    const Model model = load_model(opts);
+    VectorX neutral = VectorX::Zero(model.nq);
+    if (model.floating_base) neutral[3] = 1;  // quaternion (w, x, y, z) = identity
+    const VectorX q = state_vector("--q", has_q ? &q_values : nullptr, model.nq, neutral);
+    const VectorX v = state_vector("--v", has_v ? &v_values : nullptr, model.nv, VectorX::Zero(model.nv));
+    const VectorX a = state_vector("--a", has_a ? &a_values : nullptr, model.nv, VectorX::Zero(model.nv));
+
+    rbdc::Data data(model);
+    const MatrixX M = rbdc::mass_matrix(model, data, q);
+    const VectorX c = rbdc::quadratic_velocity_terms(model, data, q, v);
+    const VectorX g = rbdc::gravity_terms(model, data, q);
+    const rbdc::Matrix3X feet = rbdc::feet_positions(model, data, q);
+    const MatrixX J = rbdc::feet_jacobian(model, data, q);
+    std::vector<std::string> feet_names;
+    for (const rbdc::Foot& f : model.feet) feet_names.push_back(f.name);
+
+    std::ostream& out = std::cout;
+    out << std::setprecision(17);
+    out << "{\n  \"joint_names\": ";
+    write_strings(out, velocity_names(model));
+    out << ",\n  \"nq\": " << model.nq << ",\n  \"nv\": " << model.nv << ",\n  \"M\": ";
+    write_rows(out, M, "  ");
+    out << ",\n  \"c\": ";
+    write_vector(out, c);
+    out << ",\n  \"g\": ";
+    write_vector(out, g);
+    if (has_a) {
+      out << ",\n  \"tau\": ";
+      write_vector(out, rbdc::inverse_dynamics(model, data, q, v, a));
+    }
+    out << ",\n  \"feet\": {\n    \"names\": ";
+    write_strings(out, feet_names);
+    out << ",\n    \"positions\": ";
+    write_rows(out, feet.transpose(), "    ");
+    out << ",\n    \"jacobian\": ";
+    write_rows(out, J, "    ");
+    out << "\n  }\n}\n";
+    return 0;
+  });
+}

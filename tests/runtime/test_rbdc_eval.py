@@ -1,0 +1,56 @@
+#!/usr/bin/env python3
+"""rbdc-eval command line: JSON layout, names, sizes, symmetry of M, the --a path, and exit code 2
+with a clear message for wrong lengths, non-numbers and NaN. Usage: test_rbdc_eval.py RBDC_EVAL ROOT"""
+import json
+import subprocess
+import sys
+
+EVAL, ROOT = sys.argv[1], sys.argv[2]
+CHEETAH = f"{ROOT}/robots/mini_cheetah.urdf"
+STANDING = "0,0,0.3,1,0,0,0," + ",".join(["0,-0.8,1.6"] * 4)
+failures = []
+checks = 0
+
+
+def run(*args):
+    return subprocess.run([EVAL, *args], capture_output=True, text=True)
+
+
+def check(condition, what):
+    global checks
+    checks += 1
+    if not condition:
+        failures.append(what)
+
+
+result = run(CHEETAH, "--q", STANDING, "--v", ",".join(["0.1"] * 18))
+check(result.returncode == 0, f"standing state: exit {result.returncode}: {result.stderr}")
+out = json.loads(result.stdout)
+check(out["nq"] == 19 and out["nv"] == 18, "sizes")
+check(out["joint_names"][:6] == ["root_wx", "root_wy", "root_wz", "root_vx", "root_vy", "root_vz"],
+      "floating-base coordinate names")
+check(len(out["joint_names"]) == 18 and len(out["c"]) == 18 and len(out["g"]) == 18, "vector lengths")
+M = out["M"]
+check(len(M) == 18 and all(M[r][k] == M[k][r] for r in range(18) for k in range(18)), "M symmetric")
+check(abs(M[3][3] - 8.252) < 1e-9, "total mass in M[3][3]")
+check(len(out["feet"]["names"]) == 4 and len(out["feet"]["positions"]) == 4, "four feet")
+check(len(out["feet"]["jacobian"]) == 12 and len(out["feet"]["jacobian"][0]) == 18, "Jacobian shape")
+check(abs(out["g"][5] - 8.252 * 9.81) < 1e-9, "g: the trunk carries the weight upright")
+check("tau" not in out, "no tau without --a")
+
+with_a = json.loads(run(CHEETAH, "--q", STANDING, "--a", ",".join(["0"] * 18)).stdout)
+check(with_a["tau"] == with_a["g"], "tau at v = a = 0 equals g")
+
+for args, message in [
+    (["--q", "1,2"], "--q has 2 values, the model needs 19"),
+    (["--v", "nan" + ",0" * 17], "--v has a NaN or Inf value"),
+    (["--v", "1,x"], "--v: 'x' is not a number"),
+]:
+    bad = run(CHEETAH, *args)
+    check(bad.returncode == 2, f"{args}: exit code {bad.returncode}")
+    check(f"error: {message}" in bad.stderr, f"{args}: message {bad.stderr!r}")
+
+for f in failures:
+    print("FAILED:", f)
+print(f"{checks - len(failures)} passed, {len(failures)} failed")
+sys.exit(1 if failures else 0)
