@@ -12,6 +12,9 @@
 namespace rbdc::control {
 namespace gen = rbdc_gen::mini_cheetah::stance_osc;
 
+// A stance foot counts as loaded above this fraction of its share of the weight (osc-open).
+constexpr double kLoadedFraction = 0.25;
+
 const char* to_string(StanceControl control) {
   switch (control) {
     case StanceControl::OperationalSpace: return "osc";
@@ -144,10 +147,13 @@ void TrotController::attitude_law(double t, const double* q, const double* v) {
     }
     return;
   }
-  if (control_ == StanceControl::OperationalSpace)
+  if (control_ == StanceControl::OperationalSpace) {
     closed_chain_dynamics(q, v, status_.pair, ground_mass_, dynamics_);
-  else
+  } else {  // Eq. 50: open-chain Λ_t, b_t (measured forces), closed-chain J̃_tᵀ
+    closed_chain_dynamics(q, v, status_.pair, ground_mass_, closed_chain_);
     open_chain_dynamics(q, v, filtered_forces_, dynamics_);
+    dynamics_.JbarT = closed_chain_.JbarT;
+  }
   const std::array<int, 6> stance_joints = {3 * feet[0], 3 * feet[0] + 1, 3 * feet[0] + 2,
                                             3 * feet[1], 3 * feet[1] + 1, 3 * feet[1] + 2};
   const Eigen::Vector2d attitude_acceleration = attitude_pd(
@@ -169,8 +175,8 @@ const JointTorques& TrotController::update(double t, const double* q, const doub
   const Vector3 p(q[0], q[1], q[2]);
   const Matrix3 W_R_B = Eigen::Quaterniond(q[3], q[4], q[5], q[6]).normalized().toRotationMatrix();
   status_.attitude = trunk_attitude(q, v);
-  // Measured forces through a first-order low-pass: with stiff ground they answer the stance
-  // torques at once, and the unfiltered loop τ → F → τ of Eq. 50 diverges for light legs.
+  // The stiff simulated ground makes foot forces ring at the contact's own frequency; like a real
+  // force sensor's filter, a first-order low-pass keeps that out of Eq. 50's b_t.
   const double alpha = std::min(1.0, (t - last_update_) / parameters_.force_filter_time);
   filtered_forces_ += alpha * (measured - filtered_forces_);
 
@@ -185,7 +191,12 @@ const JointTorques& TrotController::update(double t, const double* q, const doub
   if (!status_.attitude_control) {
     const std::array<int, 2> feet = stance_feet(status_.pair);
     const double down = foot_radius_ + parameters_.contact_tolerance;
-    if (feet_(2, feet[0]) <= down && feet_(2, feet[1]) <= down) {
+    bool footholds = feet_(2, feet[0]) <= down && feet_(2, feet[1]) <= down;
+    // The open chain also needs the feet loaded: its b_t takes the measured forces as given, and
+    // unloaded feet would ask the legs to hold the trunk against a free fall.
+    if (control_ == StanceControl::OperationalSpaceOpenChain)
+      for (int k : feet) footholds = footholds && filtered_forces_(2, k) > kLoadedFraction * 0.5 * total_mass_ * 9.81;
+    if (footholds) {
       status_.attitude_control = true;
       const double liftoff = step_start_ + parameters_.step_duration;
       roll_spline_ = CubicSetPoint(t, status_.attitude.roll, status_.attitude.roll_rate, liftoff, 0);

@@ -3,8 +3,10 @@
 // Raibert touch-down point with a PD servo on the foot position; stance legs get a passive
 // virtual-leg torque τ_st,p and, once both stance feet are down, a trunk attitude law:
 //   - OperationalSpace: Eqs. 49-55 with the generated closed-chain recursion (no force sensing);
-//   - OperationalSpaceOpenChain: Eq. 50 with the generated open-chain recursion and the measured
-//     contact forces;
+//   - OperationalSpaceOpenChain: Eq. 50 as the paper prints it: Λ_t and b_t from the generated
+//     open-chain recursion with the measured contact forces, J̃_tᵀ from the closed chain (with the
+//     open-chain J̄_tᵀ instead, the loop τ → measured F → τ diverges on the Mini Cheetah:
+//     docs/osc_control.md);
 //   - HipTorque: Eqs. 56-57, roll and pitch PD torques added at the ab/ad and hip joints.
 // The Mini Cheetah has no knee springs, so τ_st,p is a virtual leg spring between hip and foot
 // (with a gravity feed-forward) playing the role of the paper's passive knee spring and thrust.
@@ -36,7 +38,7 @@ struct TrotParameters {
   double swing_height = 0.06;    ///< m, apex of the swing curve above the ground
   double velocity_gain = 0.04;   ///< s, Raibert correction k_v
   double velocity_integral_gain = 0.3;  ///< Raibert correction on ∫(v_d − v) dt, 1/1
-  double force_filter_time = 5e-3;  ///< s, low-pass of the measured forces (osc-open only)
+  double force_filter_time = 2e-2;  ///< s, first-order low-pass of the measured forces (osc-open)
   double yaw_gain = 0.03;        ///< m·s/rad, leg scissoring per yaw rate (paper 001 Sec. 5)
   double swing_kp = 800;         ///< N/m, foot-position servo
   double swing_kd = 20;          ///< N·s/m
@@ -94,7 +96,7 @@ class TrotController {
   Eigen::Matrix<double, 3 * kFeet, kNv> J_;
   Eigen::Matrix<double, 3, kFeet> feet_velocity_;
   JointTorques tau_, tau_swing_, tau_passive_;
-  TrunkTaskDynamics dynamics_;
+  TrunkTaskDynamics dynamics_, closed_chain_;
   // Gait and filter state.
   FeetForces filtered_forces_ = FeetForces::Zero();
   Eigen::Vector2d velocity_error_integral_ = Eigen::Vector2d::Zero();
