@@ -55,38 +55,35 @@ def input_records(inputs, layout: Layout) -> list[dict]:
     return [{"path": display_path(p, layout), "sha256": sha256_of(p)} for p in inputs]
 
 
-def _dimensions(robot, scene) -> dict[str, int]:
-    return {"nq": robot.nq, "nv": robot.nv, "nb": robot.nb, "n_joints": robot.n_joints,
-            "n_feet": len(scene.feet_for(robot))}
-
-
 def _alias_shapes(robot, scene) -> dict[str, tuple[int, int]]:
-    dims = _dimensions(robot, scene)
-    return {name: (eval(rows, {}, dims), eval(cols, {}, dims)) for name, rows, cols, _ in ALIASES}
+    """The numeric shape of every alias in ALIASES, for this robot and scene."""
+    dims = {"nq": robot.nq, "nv": robot.nv, "n_joints": robot.n_joints, "n_feet": len(scene.feet_for(robot))}
+
+    def value(expression: str) -> int:  # "nv", "6" or "3 * n_feet"
+        factors = [dims.get(f.strip()) or int(f) for f in expression.split("*")]
+        return factors[0] * (factors[1] if len(factors) > 1 else 1)
+
+    return {name: (value(rows), value(cols)) for name, rows, cols, _ in ALIASES}
 
 
-def eigen_alias(argument, robot, scene) -> str:
-    """The Eigen alias for an argument of shape rows x cols, or a plain Eigen::Matrix spelling.
-
-    The name decides where dimensions cannot (q of a fixed base has the shape of v)."""
+def eigen_type(argument, robot, scene) -> str:
+    """The Eigen type of an argument: its alias by shape (the name decides where the shape cannot:
+    q of a fixed base has the shape of v), else a plain fixed-size matrix."""
     shapes = _alias_shapes(robot, scene)
     shape = (argument.rows, argument.cols)
     preferred = ALIAS_BY_NAME.get(argument.name)
     if preferred and shapes[preferred] == shape:
-        return preferred
+        return f"{preferred}<Scalar>"
     for name, *_ in ALIASES:
-        if shapes[name] == shape and name != "ConfigVector":
-            return name
-    return f"Matrix{argument.rows}x{argument.cols}"
+        if shapes[name] == shape and name not in ALIAS_BY_NAME.values():
+            return f"{name}<Scalar>"
+    return f"Eigen::Matrix<Scalar, {argument.rows}, {argument.cols}>"
 
 
 def _argument_record(argument, is_input: bool, robot, scene) -> dict:
-    alias = eigen_alias(argument, robot, scene)
-    eigen_type = f"Eigen::Matrix<Scalar, {argument.rows}, {argument.cols}>" if alias.startswith("Matrix") \
-        else f"{alias}<Scalar>"
     return {"name": argument.name, "rows": argument.rows, "cols": argument.cols, "doc": argument.doc,
             "is_input": is_input, "is_scalar": is_input and argument.rows == 1 and argument.cols == 1,
-            "eigen_type": eigen_type}
+            "eigen_type": eigen_type(argument, robot, scene)}
 
 
 def _unused_inputs(arguments, body: list[str]) -> list[str]:
