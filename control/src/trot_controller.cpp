@@ -158,7 +158,7 @@ void TrotController::attitude_law(double t, const double* q, const double* v) {
                                             3 * feet[1], 3 * feet[1] + 1, 3 * feet[1] + 2};
   const Eigen::Vector2d attitude_acceleration = attitude_pd(
       parameters_.osc_gains, status_.attitude, status_.roll_desired, status_.pitch_desired);
-  operational_space_stance_torques(dynamics_, stance_joints, tau_swing_, tau_passive_,
+  operational_space_stance_torques<6>(dynamics_, stance_joints, tau_swing_, tau_passive_,
                                    attitude_acceleration, parameters_.weights, status_.stance);
   tau_ = tau_swing_ + status_.stance.tau;
 }
