@@ -1,6 +1,7 @@
 """The `rbdc` command line: generate, flops, verify, eval. Bad input ends with "error: ..." on
 stderr and exit code 2, never a traceback; `generate --check` and a failed `verify` exit with 1."""
 import argparse
+import os
 import sys
 from pathlib import Path
 
@@ -102,6 +103,10 @@ def main(argv=None) -> int:
     except (RbdcError, IRError, SceneError, TraceError) as error:
         print(f"error: {error}", file=sys.stderr)
         return 2
+    except BrokenPipeError:
+        # The reader went away (e.g. `rbdc flops ... | head`): stop quietly, as other tools do.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
     except OSError as error:
         print(f"error: {error.filename or ''}: {error.strerror}", file=sys.stderr)
         return 2
