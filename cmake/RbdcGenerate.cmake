@@ -4,9 +4,11 @@
 # Generates the robot's C++ headers at build time into ${CMAKE_CURRENT_BINARY_DIR}/rbdc/<name> and
 # creates the INTERFACE target `name` whose include root is that directory:
 #   #include "<robot>/<scene>.hpp"   // namespace rbdc_gen::<robot>::<scene>, docs/generated_api.md
-# The list of headers is asked from the generator at configure time (rbdc generate --list-outputs);
-# they are regenerated when the URDF, scene, topology, templates or generator sources change.
-# Needs RBDC_LAUNCHER (the `rbdc` command) and RBDC_SHARE_DIR, both set by find_package(rbdc).
+# They are regenerated when the URDF, scene, topology, templates or generator sources change.
+# Needs RBDC_LAUNCHER (the `rbdc` command) and RBDC_SHARE_DIR, both set by find_package(rbdc), or
+# inside the rbdc build itself by cmake/RbdcInTree.cmake. With an installed rbdc the headers are
+# listed at configure time (rbdc generate --list-outputs); in-tree rbdc-model is not built yet at
+# configure time, so the generation runs after it and only the stamp file is a declared output.
 function(rbdc_generate)
   cmake_parse_arguments(PARSE_ARGV 0 ARG "FIXED_BASE;FLOATING_BASE;LOCK_MIMIC" "TARGET;URDF;SCENE;TOPOLOGY;NAME" "")
   if(NOT ARG_TARGET OR NOT ARG_URDF)
@@ -45,22 +47,30 @@ function(rbdc_generate)
     list(APPEND arguments --lock-mimic)
   endif()
 
-  execute_process(COMMAND "${RBDC_LAUNCHER}" generate ${arguments} --list-outputs
-                  OUTPUT_VARIABLE outputs ERROR_VARIABLE errors RESULT_VARIABLE result
-                  OUTPUT_STRIP_TRAILING_WHITESPACE)
-  if(NOT result EQUAL 0)
-    message(FATAL_ERROR "rbdc_generate(${ARG_TARGET}): ${errors}")
+  set(launcher "${RBDC_LAUNCHER}")
+  set(tool_dependency "")
+  set(outputs "")
+  if(TARGET rbdc-model)
+    set(launcher "${CMAKE_COMMAND}" -E env "RBDC_MODEL_TOOL=$<TARGET_FILE:rbdc-model>" "${RBDC_LAUNCHER}")
+    set(tool_dependency rbdc-model)
+  else()
+    execute_process(COMMAND "${RBDC_LAUNCHER}" generate ${arguments} --list-outputs
+                    OUTPUT_VARIABLE outputs ERROR_VARIABLE errors RESULT_VARIABLE result
+                    OUTPUT_STRIP_TRAILING_WHITESPACE)
+    if(NOT result EQUAL 0)
+      message(FATAL_ERROR "rbdc_generate(${ARG_TARGET}): ${errors}")
+    endif()
+    string(REPLACE "\n" ";" outputs "${outputs}")
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${inputs})
   endif()
-  string(REPLACE "\n" ";" outputs "${outputs}")
-  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${inputs})
 
   file(GLOB_RECURSE generator_sources "${RBDC_SHARE_DIR}/generator/rbdcgen/*.py" "${RBDC_SHARE_DIR}/templates/*.j2")
   set(stamp "${out}.stamp")
   # Unchanged headers are not rewritten, so a stamp records the run and the headers are byproducts.
   add_custom_command(OUTPUT "${stamp}" BYPRODUCTS ${outputs}
-                     COMMAND "${RBDC_LAUNCHER}" generate ${arguments}
+                     COMMAND ${launcher} generate ${arguments}
                      COMMAND "${CMAKE_COMMAND}" -E touch "${stamp}"
-                     DEPENDS ${inputs} ${generator_sources}
+                     DEPENDS ${inputs} ${generator_sources} ${tool_dependency}
                      COMMENT "rbdc: generating ${ARG_TARGET} from ${ARG_URDF}" VERBATIM)
   add_custom_target(${ARG_TARGET}_generate DEPENDS "${stamp}")
   add_library(${ARG_TARGET} INTERFACE)
