@@ -5,6 +5,7 @@
 #include "rbdc/inverse_dynamics.hpp"
 #include "rbdc/jacobian.hpp"
 #include "rbdc/kinematics.hpp"
+#include "rbdc/osc.hpp"
 #include "registry.hpp"
 #include "robot_states.hpp"
 
@@ -14,12 +15,15 @@ namespace {
 struct RuntimeContext {
   explicit RuntimeContext(const LoadedRobot& loaded)
       : model(loaded.model), data(model), states(loaded.states),
-        zero_a(rbdc::VectorX::Zero(model.nv)), ground_mass(loaded.ground_mass) {}
+        zero_a(rbdc::VectorX::Zero(model.nv)), ground_mass(loaded.ground_mass) {
+    for (int k = 0; k < static_cast<int>(model.feet.size()); ++k) all_feet.push_back(k);
+  }
   rbdc::Model model;
   rbdc::Data data;
   std::vector<State> states;
   rbdc::VectorX zero_a;
   double ground_mass;
+  std::vector<int> all_feet;  ///< every foot in contact, as the generated full scene has it
 };
 
 RuntimeContext& context(void* p) { return *static_cast<RuntimeContext*>(p); }
@@ -64,6 +68,20 @@ void provide() {
       RuntimeContext& c = context(p);
       const State& s = state(c, k);
       rbdc::forward_dynamics(c.model, c.data, s.q, s.v, s.tau, s.f);
+    });
+    if (!loaded.model.floating_base) return;  // no trunk task
+    add("osc_open_chain", [](void* p, int k) {
+      RuntimeContext& c = context(p);
+      rbdc::osc_open_chain(c.model, c.data, state(c, k).q, state(c, k).v, state(c, k).f);
+    });
+    add("osc_closed_chain", [](void* p, int k) {
+      RuntimeContext& c = context(p);
+      rbdc::osc_closed_chain(c.model, c.data, state(c, k).q, state(c, k).v, c.all_feet,
+                             c.ground_mass);
+    });
+    add("osc_closed_form", [](void* p, int k) {  // the exact constrained quantities (Eqs. 16-26)
+      RuntimeContext& c = context(p);
+      rbdc::osc_closed_form_constrained(c.model, c.data, state(c, k).q, state(c, k).v, c.all_feet);
     });
   });
 }

@@ -50,7 +50,11 @@ std::vector<State> random_states(const rbdc::Model& model, int count, std::uint6
     }
     for (int i = 1; i < model.nb; ++i) {
       const rbdc::Joint& joint = model.joints[static_cast<size_t>(i)];
-      s.q[joint.q_index] = joint_angle(joint, sampler, ranges.within_joint_limits);
+      s.q[joint.q_index] =
+          ranges.joint_ranges.empty()
+              ? joint_angle(joint, sampler, ranges.within_joint_limits)
+              : sampler.uniform(ranges.joint_ranges.at(static_cast<size_t>(i - 1)).first,
+                                ranges.joint_ranges.at(static_cast<size_t>(i - 1)).second);
       s.v[joint.v_index] = sampler.symmetric(ranges.joint_velocity);
     }
     for (Eigen::Index i = 0; i < model.nv; ++i) s.a[i] = sampler.symmetric(ranges.acceleration);

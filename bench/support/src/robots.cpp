@@ -34,8 +34,8 @@ double total_mass(const rbdc::Model& model) {
 
 double smallest_body_mass(const rbdc::Model& model) {
   double smallest = total_mass(model);
-  for (int i = 1; i < model.nb; ++i)
-    smallest = std::min(smallest, model.bodies[static_cast<size_t>(i)].mass);
+  for (const rbdc::Body& body : model.bodies)
+    if (body.mass > 0) smallest = std::min(smallest, body.mass);
   return smallest;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "rbdc/data.hpp"
@@ -23,6 +24,8 @@ struct StateRanges {
   double torque = 20.0;              ///< |τ_i| ≤ this, N·m
   double foot_force = 60.0;          ///< |f| components ≤ this, N (z pushes up: 0 … foot_force)
   bool within_joint_limits = true;   ///< joint angles within URDF limits (else [-π, π])
+  /// When not empty: (lower, upper) per 1-DoF joint (joint i at entry i-1), overriding the above.
+  std::vector<std::pair<double, double>> joint_ranges;
 };
 
 /// `count` states drawn with `seed`: uniform joint angles, a uniformly random unit quaternion, a

@@ -26,7 +26,8 @@ BenchRobot bench_robot(const std::string& source_dir, const std::string& name);
 /// Loads the robot's URDF with its base type, as tools/regenerate does. Throws rbdc::ModelError.
 rbdc::Model load_bench_robot(const BenchRobot& robot);
 
-/// Σ body masses, and the smallest mass among the non-root bodies (m_min of paper 001 Eq. 58).
+/// Σ body masses, and the smallest positive body mass (m_min of paper 001 Eq. 58, as the runtime's
+/// rbdc::default_ground_mass takes it).
 double total_mass(const rbdc::Model& model);
 double smallest_body_mass(const rbdc::Model& model);
 
