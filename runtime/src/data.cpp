@@ -2,7 +2,9 @@
 
 namespace rbdc {
 
-Data::Data(const Model& model) {
+// M_llt is sized in the initialiser list: move-assigning a fresh LLT would copy its
+// not-yet-set status field (undefined behaviour that UBSan reports).
+Data::Data(const Model& model) : M_llt(model.nv) {
   const size_t nb = static_cast<size_t>(model.nb);
   const Eigen::Index nv = model.nv;
   const Eigen::Index n_feet = static_cast<Eigen::Index>(model.feet.size());
@@ -34,7 +36,6 @@ Data::Data(const Model& model) {
   J_contact = MatrixX::Zero(3 * n_feet, nv);
 
   a = VectorX::Zero(nv);
-  M_llt = Eigen::LLT<MatrixX>(nv);
 
   IA.assign(nb, Matrix6::Zero());
   beta.assign(nb, Vector6::Zero());
