@@ -3,7 +3,9 @@
 The statements are the body of
     template <class Scalar> void NAME(const Scalar* q, …, Scalar* out, …) noexcept
 Inputs are read as `q[k]`, each output entry is written exactly once as `M[k] = …;` (column-major,
-zeros and mirrored entries included). sin/cos of the joint angles come first, in one block; then
+zeros and mirrored entries included). sin/cos of the joint angles come first, in one block: the
+angles are gathered into an array and `joint_sincos` (rbdc_gen/support.hpp) computes them all at once
+(a vectorised polynomial for double and float); then
 every node used more than once becomes `const Scalar tN = …;` in topological order, and nodes used
 once are inlined into their single user, up to MAX_INLINE_OPS operations per expression. Same DAG
 in, same text out."""
@@ -16,6 +18,7 @@ _BINARY_SYMBOL = {"add": "+", "sub": "-", "mul": "*", "div": "/"}
 # A single-use node whose inlined text would hold more operations than this gets a temporary
 # anyway: readable lines and bounded recursion for long chains (e.g. sums over many children).
 MAX_INLINE_OPS = 12
+ANGLES_PER_LINE = 8  # entries per line of the joint angle array
 
 
 def format_constant(value):
@@ -57,6 +60,28 @@ def schedule(fn):
     return trig, temps, uses
 
 
+def _trig_block(trig, names, text):
+    """Statements computing the joint sin/cos nodes `trig` in one joint_sincos call; names each node
+    `sin_q_7`-style in `names`."""
+    if not trig:
+        return []
+    slot = {}  # angle symbol id -> its index in joint_angle, in trig order
+    entries = []
+    for node in trig:
+        if node.args[0].id not in slot:
+            slot[node.args[0].id] = len(entries)
+            entries.append(text(node.args[0], False))
+    n = len(entries)
+    rows = [", ".join(entries[i:i + ANGLES_PER_LINE]) for i in range(0, n, ANGLES_PER_LINE)]
+    lines = ["const Scalar joint_angle[%d] = {%s};" % (n, (",\n    ").join(rows)),
+             "const auto joint_trig = joint_sincos(joint_angle);"]
+    for node in trig:
+        name = "%s_%s_%d" % (node.op, node.args[0].value[0], node.args[0].value[1])
+        lines.append("const Scalar %s = joint_trig.%s[%d];" % (name, node.op, slot[node.args[0].id]))
+        names[node.id] = name
+    return lines
+
+
 def emit_body(fn):
     """C++ statements (list of str, no indentation) computing every output of `fn`."""
     trig, temps, uses = schedule(fn)
@@ -79,10 +104,7 @@ def emit_body(fn):
             return "%s(%s)" % (node.op, text(node.args[0], False))
         return "(%s)" % body if nested else body
 
-    for node in trig:
-        name = "%s_%s_%d" % (node.op, node.args[0].value[0], node.args[0].value[1])
-        lines.append("const Scalar %s = %s(%s);" % (name, node.op, text(node.args[0], False)))
-        names[node.id] = name
+    lines += _trig_block(trig, names, text)
     for index, node in enumerate(temps):
         name = "t%d" % index
         lines.append("const Scalar %s = %s;" % (name, text(node, False)))

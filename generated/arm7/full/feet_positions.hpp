@@ -23,18 +23,20 @@ namespace rbdc_gen::arm7::full {
 /// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void feet_positions(const Scalar* q, Scalar* p) noexcept {
-  const Scalar sin_q_0 = sin(q[0]);
-  const Scalar cos_q_0 = cos(q[0]);
-  const Scalar sin_q_1 = sin(q[1]);
-  const Scalar cos_q_1 = cos(q[1]);
-  const Scalar sin_q_2 = sin(q[2]);
-  const Scalar cos_q_2 = cos(q[2]);
-  const Scalar sin_q_3 = sin(q[3]);
-  const Scalar cos_q_3 = cos(q[3]);
-  const Scalar sin_q_4 = sin(q[4]);
-  const Scalar cos_q_4 = cos(q[4]);
-  const Scalar sin_q_5 = sin(q[5]);
-  const Scalar cos_q_5 = cos(q[5]);
+  const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], q[5]};
+  const auto joint_trig = joint_sincos(joint_angle);
+  const Scalar sin_q_0 = joint_trig.sin[0];
+  const Scalar cos_q_0 = joint_trig.cos[0];
+  const Scalar sin_q_1 = joint_trig.sin[1];
+  const Scalar cos_q_1 = joint_trig.cos[1];
+  const Scalar sin_q_2 = joint_trig.sin[2];
+  const Scalar cos_q_2 = joint_trig.cos[2];
+  const Scalar sin_q_3 = joint_trig.sin[3];
+  const Scalar cos_q_3 = joint_trig.cos[3];
+  const Scalar sin_q_4 = joint_trig.sin[4];
+  const Scalar cos_q_4 = joint_trig.cos[4];
+  const Scalar sin_q_5 = joint_trig.sin[5];
+  const Scalar cos_q_5 = joint_trig.cos[5];
   const Scalar t0 = cos_q_0 * sin_q_1;
   const Scalar t1 = cos_q_0 * cos_q_1;
   const Scalar t2 = (t1 * cos_q_2) - (sin_q_0 * sin_q_2);

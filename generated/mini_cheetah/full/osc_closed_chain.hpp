@@ -27,30 +27,33 @@ namespace rbdc_gen::mini_cheetah::full {
 /// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, const Scalar* ground_mass, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
-  const Scalar sin_q_7 = sin(q[7]);
-  const Scalar cos_q_7 = cos(q[7]);
-  const Scalar sin_q_8 = sin(q[8]);
-  const Scalar cos_q_8 = cos(q[8]);
-  const Scalar sin_q_9 = sin(q[9]);
-  const Scalar cos_q_9 = cos(q[9]);
-  const Scalar sin_q_10 = sin(q[10]);
-  const Scalar cos_q_10 = cos(q[10]);
-  const Scalar sin_q_11 = sin(q[11]);
-  const Scalar cos_q_11 = cos(q[11]);
-  const Scalar sin_q_12 = sin(q[12]);
-  const Scalar cos_q_12 = cos(q[12]);
-  const Scalar sin_q_13 = sin(q[13]);
-  const Scalar cos_q_13 = cos(q[13]);
-  const Scalar sin_q_14 = sin(q[14]);
-  const Scalar cos_q_14 = cos(q[14]);
-  const Scalar sin_q_15 = sin(q[15]);
-  const Scalar cos_q_15 = cos(q[15]);
-  const Scalar sin_q_16 = sin(q[16]);
-  const Scalar cos_q_16 = cos(q[16]);
-  const Scalar sin_q_17 = sin(q[17]);
-  const Scalar cos_q_17 = cos(q[17]);
-  const Scalar sin_q_18 = sin(q[18]);
-  const Scalar cos_q_18 = cos(q[18]);
+  const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
+    q[15], q[16], q[17], q[18]};
+  const auto joint_trig = joint_sincos(joint_angle);
+  const Scalar sin_q_7 = joint_trig.sin[0];
+  const Scalar cos_q_7 = joint_trig.cos[0];
+  const Scalar sin_q_8 = joint_trig.sin[1];
+  const Scalar cos_q_8 = joint_trig.cos[1];
+  const Scalar sin_q_9 = joint_trig.sin[2];
+  const Scalar cos_q_9 = joint_trig.cos[2];
+  const Scalar sin_q_10 = joint_trig.sin[3];
+  const Scalar cos_q_10 = joint_trig.cos[3];
+  const Scalar sin_q_11 = joint_trig.sin[4];
+  const Scalar cos_q_11 = joint_trig.cos[4];
+  const Scalar sin_q_12 = joint_trig.sin[5];
+  const Scalar cos_q_12 = joint_trig.cos[5];
+  const Scalar sin_q_13 = joint_trig.sin[6];
+  const Scalar cos_q_13 = joint_trig.cos[6];
+  const Scalar sin_q_14 = joint_trig.sin[7];
+  const Scalar cos_q_14 = joint_trig.cos[7];
+  const Scalar sin_q_15 = joint_trig.sin[8];
+  const Scalar cos_q_15 = joint_trig.cos[8];
+  const Scalar sin_q_16 = joint_trig.sin[9];
+  const Scalar cos_q_16 = joint_trig.cos[9];
+  const Scalar sin_q_17 = joint_trig.sin[10];
+  const Scalar cos_q_17 = joint_trig.cos[10];
+  const Scalar sin_q_18 = joint_trig.sin[11];
+  const Scalar cos_q_18 = joint_trig.cos[11];
   const Scalar t0 = Scalar(0.00048314400000000002) + (Scalar(0.038041000000000005) * ground_mass[0]);
   const Scalar t1 = cos_q_18 * t0;
   const Scalar t2 = Scalar(6.0000000000000002e-06) + (Scalar(1.6000000000002124e-05) * ground_mass[0]);

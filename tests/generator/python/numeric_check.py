@@ -54,7 +54,8 @@ def max_relative_error(got, want):
 
 
 _CONSTANT = re.compile(r"Scalar\([^)]*\)")
-_OPERATOR = re.compile(r" [-+*/] |(?:^|[(\s])-(?=[\w(])|\b(?:sin|cos|sqrt)\(")
+# joint_trig.sin[i] / .cos[i]: one trig operation each (joint_sincos computes them all at once).
+_OPERATOR = re.compile(r" [-+*/] |(?:^|[(\s])-(?=[\w(])|\b(?:sin|cos|sqrt)\(|\bjoint_trig\.(?:sin|cos)\[")
 
 
 def operator_count(statement):

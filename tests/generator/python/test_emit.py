@@ -64,10 +64,13 @@ class Emission(unittest.TestCase):
     def test_joint_trig_comes_first_and_once(self):
         fn = trace_function(ROBOT, default_scene(), "inverse_dynamics")
         lines = emit_body(fn)
-        trig = [l for l in lines if re.search(r"= (sin|cos)\(", l)]
-        self.assertEqual(lines[:len(trig)], trig)
-        self.assertEqual(len(trig), 4)  # two revolute joints; the prismatic one has no angle
-        self.assertEqual(trig[0], "const Scalar sin_q_7 = sin(q[7]);")
+        # two revolute joints; the prismatic one has no angle
+        self.assertEqual(lines[:2], ["const Scalar joint_angle[2] = {q[7], q[8]};",
+                                     "const auto joint_trig = joint_sincos(joint_angle);"])
+        trig = [l for l in lines if "joint_trig." in l]
+        self.assertEqual(lines[2:2 + len(trig)], trig)
+        self.assertEqual(len(trig), 4)
+        self.assertEqual(trig[0], "const Scalar sin_q_7 = joint_trig.sin[0];")
 
     def test_constants_are_exact_and_symmetric_entries_mirrored(self):
         self.assertEqual(format_constant(0.209), "Scalar(0.20899999999999999)")

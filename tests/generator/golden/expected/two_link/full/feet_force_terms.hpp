@@ -23,8 +23,10 @@ namespace rbdc_gen::two_link::full {
 /// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void feet_force_terms(const Scalar* q, const Scalar* f, Scalar* tau_e) noexcept {
-  const Scalar sin_q_0 = sin(q[0]);
-  const Scalar cos_q_0 = cos(q[0]);
+  const Scalar joint_angle[1] = {q[0]};
+  const auto joint_trig = joint_sincos(joint_angle);
+  const Scalar sin_q_0 = joint_trig.sin[0];
+  const Scalar cos_q_0 = joint_trig.cos[0];
   const Scalar t0 = ((cos_q_0 * f[0]) + ((Scalar(0.80000000000000004) * sin_q_0) * f[1])) - ((Scalar(0.59999999999999998) * sin_q_0) * f[2]);
   const Scalar t1 = (Scalar(0.050000000000000003) * t0) - (q[1] * t0);
   const Scalar t2 = Scalar(1) - cos_q_0;

@@ -22,8 +22,10 @@ namespace rbdc_gen::two_link::full {
 /// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void feet_jacobian(const Scalar* q, Scalar* J) noexcept {
-  const Scalar sin_q_0 = sin(q[0]);
-  const Scalar cos_q_0 = cos(q[0]);
+  const Scalar joint_angle[1] = {q[0]};
+  const auto joint_trig = joint_sincos(joint_angle);
+  const Scalar sin_q_0 = joint_trig.sin[0];
+  const Scalar cos_q_0 = joint_trig.cos[0];
   const Scalar t0 = Scalar(1) - cos_q_0;
   const Scalar t1 = cos_q_0 + (Scalar(0.35999999999999999) * t0);
   const Scalar t2 = (Scalar(0.59999999999999998) * t1) + (Scalar(0.38400000000000001) * t0);

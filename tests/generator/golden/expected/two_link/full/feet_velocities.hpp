@@ -23,8 +23,10 @@ namespace rbdc_gen::two_link::full {
 /// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void feet_velocities(const Scalar* q, const Scalar* v, Scalar* pdot) noexcept {
-  const Scalar sin_q_0 = sin(q[0]);
-  const Scalar cos_q_0 = cos(q[0]);
+  const Scalar joint_angle[1] = {q[0]};
+  const auto joint_trig = joint_sincos(joint_angle);
+  const Scalar sin_q_0 = joint_trig.sin[0];
+  const Scalar cos_q_0 = joint_trig.cos[0];
   const Scalar t0 = (Scalar(0.52654953713422359) * v[0]) + (Scalar(0.38354043088336254) * v[0]);
   const Scalar t1 = ((Scalar(0.17999999999999999) * v[0]) - (q[1] * t0)) + (Scalar(0.050000000000000003) * t0);
   const Scalar t2 = Scalar(1) - cos_q_0;

@@ -22,8 +22,10 @@ namespace rbdc_gen::two_link::full {
 /// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept {
-  const Scalar sin_q_0 = sin(q[0]);
-  const Scalar cos_q_0 = cos(q[0]);
+  const Scalar joint_angle[1] = {q[0]};
+  const auto joint_trig = joint_sincos(joint_angle);
+  const Scalar sin_q_0 = joint_trig.sin[0];
+  const Scalar cos_q_0 = joint_trig.cos[0];
   const Scalar t0 = q[1] * (Scalar(2.9430000000000001) * sin_q_0);
   const Scalar t1 = Scalar(0.88290000000000002) * sin_q_0;
   const Scalar t2 = Scalar(1) - cos_q_0;

@@ -1,0 +1,160 @@
+// joint_sincos (rbdc_gen/support.hpp): the vectorised polynomial for double and float against the
+// long double libm (glibc's sinl/cosl, far more accurate than a double ulp) over the range robots
+// use, at the hard points (next to multiples of π/2), at edge values, and the libm fallbacks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "rbdc_gen/support.hpp"
+
+namespace {
+
+constexpr int kBlock = 12;  // as many angles as the Mini Cheetah has joints
+
+/// |value − reference| in units of the last place of the reference rounded to T.
+template <class T>
+double ulp_error(T value, long double reference) {
+  const T rounded = static_cast<T>(reference);
+  T ulp = std::nextafter(std::fabs(rounded), std::numeric_limits<T>::infinity()) - std::fabs(rounded);
+  if (rounded == T(0)) ulp = std::numeric_limits<T>::denorm_min();
+  return static_cast<double>(std::fabs(static_cast<long double>(value) - reference) / ulp);
+}
+
+struct MaxError {
+  double sin = 0, cos = 0;
+};
+
+/// Largest sin and cos errors of joint_sincos<T> over `angles`, evaluated kBlock at a time.
+template <class T>
+MaxError max_error(const std::vector<T>& angles) {
+  MaxError worst;
+  for (size_t first = 0; first + kBlock <= angles.size(); first += kBlock) {
+    T block[kBlock];
+    for (int i = 0; i < kBlock; ++i) block[i] = angles[first + i];
+    const auto trig = rbdc_gen::joint_sincos(block);
+    for (int i = 0; i < kBlock; ++i) {
+      const long double x = block[i];
+      worst.sin = std::max(worst.sin, ulp_error(trig.sin[i], std::sin(x)));
+      worst.cos = std::max(worst.cos, ulp_error(trig.cos[i], std::cos(x)));
+    }
+  }
+  return worst;
+}
+
+std::vector<double> uniform_angles(double limit, int count, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uniform(-limit, limit);
+  std::vector<double> angles(static_cast<size_t>(count));
+  for (double& x : angles) x = uniform(rng);
+  return angles;
+}
+
+/// The doubles nearest to k·π/2 and their two neighbours on each side, k = 0 … kmax: there the
+/// reduced argument is tiny and every bit of the three-part π/2 counts.
+std::vector<double> near_multiples_of_half_pi(long kmax) {
+  const long double half_pi = 1.570796326794896619231321691639751442L;
+  std::vector<double> angles;
+  for (long k = 0; k <= kmax; ++k) {
+    const double centre = static_cast<double>(static_cast<long double>(k) * half_pi);
+    double below = centre, above = centre;
+    angles.push_back(centre);
+    angles.push_back(-centre);
+    for (int step = 0; step < 2; ++step) {
+      below = std::nextafter(below, -1e300);
+      above = std::nextafter(above, 1e300);
+      angles.push_back(below);
+      angles.push_back(above);
+    }
+  }
+  while (angles.size() % kBlock != 0) angles.push_back(0.5);
+  return angles;
+}
+
+#if defined(RBDC_HAS_VECTOR_SINCOS)
+TEST(JointSincos, DoubleWithinOneUlpOverTheRobotRange) {
+  for (double limit : {1.0, 10.0, 1e3, rbdc_gen::simd::kMaxAngle}) {
+    const MaxError e = max_error(uniform_angles(limit, 120000, 7));
+    EXPECT_LE(e.sin, 1.0) << "|x| <= " << limit;
+    EXPECT_LE(e.cos, 1.0) << "|x| <= " << limit;
+  }
+}
+
+TEST(JointSincos, DoubleWithinOneUlpNextToMultiplesOfHalfPi) {
+  const long kmax = static_cast<long>(rbdc_gen::simd::kMaxAngle / 1.5707963267948966);
+  const MaxError e = max_error(near_multiples_of_half_pi(kmax));
+  EXPECT_LE(e.sin, 1.0);
+  EXPECT_LE(e.cos, 1.0);
+}
+
+TEST(JointSincos, DoubleEdgeValues) {
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const double max_angle = rbdc_gen::simd::kMaxAngle;
+  const double quarter_pi = 0.78539816339744831;
+  std::vector<double> edges = {0.0, -0.0, tiny, -tiny, 1e-300, -1e-300, 1e-8, -1e-8,
+                               quarter_pi, -quarter_pi, std::nextafter(quarter_pi, 1.0),
+                               std::nextafter(quarter_pi, 0.0), max_angle, -max_angle};
+  while (edges.size() % kBlock != 0) edges.push_back(2.0);
+  const MaxError e = max_error(edges);
+  EXPECT_LE(e.sin, 1.0);
+  EXPECT_LE(e.cos, 1.0);
+  double zeros[kBlock] = {};
+  const auto at_zero = rbdc_gen::joint_sincos(zeros);
+  for (int i = 0; i < kBlock; ++i) {
+    EXPECT_EQ(at_zero.sin[i], 0.0);
+    EXPECT_EQ(at_zero.cos[i], 1.0);
+  }
+}
+
+TEST(JointSincos, OutOfRangeAndNonFiniteFallBackToLibm) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  double block[kBlock] = {0.3, 2e5, -3e9, 1e300, inf, -inf, nan, 7.0, -7.0, 0.0, 1e6, -1.5};
+  const auto trig = rbdc_gen::joint_sincos(block);
+  for (int i = 0; i < kBlock; ++i) {
+    if (std::isnan(block[i]) || std::isinf(block[i])) {
+      EXPECT_TRUE(std::isnan(trig.sin[i]) && std::isnan(trig.cos[i])) << block[i];
+    } else {
+      EXPECT_EQ(trig.sin[i], std::sin(block[i])) << block[i];
+      EXPECT_EQ(trig.cos[i], std::cos(block[i])) << block[i];
+    }
+  }
+}
+
+TEST(JointSincos, FloatWithinOneUlp) {
+  const std::vector<double> wide = uniform_angles(1e3, 60000, 11);
+  const std::vector<float> angles(wide.begin(), wide.end());
+  const MaxError e = max_error(angles);
+  EXPECT_LE(e.sin, 1.0);
+  EXPECT_LE(e.cos, 1.0);
+}
+
+TEST(JointSincos, EveryBlockSizeMatchesTheBlockOfTwelve) {
+  // Zero-padded tails: sizes 1 … 12 give the same values as the full block.
+  double block[kBlock];
+  for (int i = 0; i < kBlock; ++i) block[i] = 0.7 * i - 3.1;
+  const auto full = rbdc_gen::joint_sincos(block);
+  double one[1] = {block[0]};
+  double five[5] = {block[0], block[1], block[2], block[3], block[4]};
+  const auto trig_one = rbdc_gen::joint_sincos(one);
+  const auto trig_five = rbdc_gen::joint_sincos(five);
+  EXPECT_EQ(trig_one.sin[0], full.sin[0]);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(trig_five.sin[i], full.sin[i]);
+    EXPECT_EQ(trig_five.cos[i], full.cos[i]);
+  }
+}
+#endif
+
+TEST(JointSincos, LongDoubleTakesLibm) {
+  long double block[3] = {0.5L, -2.0L, 123.25L};
+  const auto trig = rbdc_gen::joint_sincos(block);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(trig.sin[i], std::sin(block[i]));
+    EXPECT_EQ(trig.cos[i], std::cos(block[i]));
+  }
+}
+
+}  // namespace
