@@ -18,6 +18,7 @@ from .names import cpp_identifier, unique_identifiers
 from .version import VERSION
 
 SUPPORT_HEADER = "rbdc_gen/support.hpp"
+BATCH_HEADER = "rbdc_gen/batch.hpp"  # SIMD packs of states (docs/performance.md)
 
 # The Eigen type aliases of docs/generated_api.md: name, rows, cols (as C++ expressions), doc.
 ALIASES = (
@@ -133,7 +134,7 @@ def render_robot_scene(robot, scene, functions, robot_name: str, inputs, layout:
               "umbrella_include": umbrella,
               "aliases": [{"name": n, "rows": r, "cols": c, "doc": d} for n, r, c, d in ALIASES]}
     records = [function_record(f, robot, scene, robot_id, scene_id) for f in functions]
-    files = [support_file(layout),
+    files = [support_file(layout), batch_file(layout),
              GeneratedFile(umbrella, environment.get_template("robot_scene.hpp.j2").render(
                  **common, functions=records))]
     function_template = environment.get_template("function.hpp.j2")
@@ -145,3 +146,9 @@ def support_file(layout: Layout) -> GeneratedFile:
     text = template_environment(layout).get_template("support.hpp.j2").render(
         generator_version=VERSION, inputs=[])
     return GeneratedFile(SUPPORT_HEADER, text)
+
+
+def batch_file(layout: Layout) -> GeneratedFile:
+    text = template_environment(layout).get_template("batch.hpp.j2").render(
+        generator_version=VERSION, inputs=[])
+    return GeneratedFile(BATCH_HEADER, text)

@@ -81,9 +81,11 @@ using Vector = typename VectorOf<T, W>::type;
 /// Lanes per vector for joint angles: 4 doubles (one AVX register; SSE splits it in two).
 constexpr int kAngleLanes = 4;
 
-/// Largest |x| the polynomial below takes; beyond it (or for inf) libm is used. Max error
-/// over |x| <= kMaxAngle: 0.84 ulp (tests/generator/sincos_test.cpp, docs/performance.md).
+/// Largest |x| the polynomial below takes; angles beyond it (and inf, NaN) go through libm, so the
+/// result for an angle never depends on its neighbours. Max error over |x| <= kMaxAngle: 0.84 ulp
+/// (tests/generator/sincos_test.cpp, docs/performance.md).
 constexpr double kMaxAngle = 1e5;
+
 
 /// sin and cos of W doubles, branch-free. Range reduction: x = k·π/2 + r with |r| <= π/4, k the
 /// nearest integer (rounded by adding 1.5·2^52, whose low mantissa bits then hold k) and r from a
@@ -121,12 +123,23 @@ inline void sincos(const Vector<double, W>& x, Vector<double, W>& s, Vector<doub
   c = ((quadrant + 1) & 2) != 0 ? -cos_abs : cos_abs;
 }
 
-/// True when every angle is finite and within kMaxAngle (one predictable branch per block).
-template <class T, int N>
-inline bool in_polynomial_range(const T (&angle)[N]) noexcept {
-  bool in_range = true;
-  for (int i = 0; i < N; ++i) in_range &= std::fabs(static_cast<double>(angle[i])) <= kMaxAngle;
-  return in_range;
+/// sincos above, then libm for the lanes out of its range (one vector test; the fix-up loop runs
+/// only when some lane is out of range, inf or NaN).
+template <int W>
+inline void sincos_checked(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
+  sincos<W>(x, s, c);
+  const Vector<std::int64_t, W> outside = (x > kMaxAngle) | (x < -kMaxAngle) | (x != x);
+  std::int64_t lanes[W];
+  std::memcpy(lanes, &outside, sizeof lanes);
+  std::int64_t any = 0;
+  for (int k = 0; k < W; ++k) any |= lanes[k];
+  if (any == 0) return;
+  for (int k = 0; k < W; ++k) {
+    if (lanes[k] != 0) {
+      s[k] = std::sin(x[k]);
+      c[k] = std::cos(x[k]);
+    }
+  }
 }
 
 }  // namespace simd
@@ -134,14 +147,13 @@ inline bool in_polynomial_range(const T (&angle)[N]) noexcept {
 /// double: the angles in vectors of kAngleLanes (the last one zero-padded), one polynomial call each.
 template <int N>
 inline JointTrig<double, N> joint_sincos(const double (&angle)[N]) noexcept {
-  if (!simd::in_polynomial_range(angle)) return sincos_each(angle);
   using V = simd::Vector<double, simd::kAngleLanes>;
   constexpr int n_vectors = (N + simd::kAngleLanes - 1) / simd::kAngleLanes;
   V x[n_vectors] = {};
   V s[n_vectors];
   V c[n_vectors];
   std::memcpy(x, angle, sizeof angle);
-  for (int i = 0; i < n_vectors; ++i) simd::sincos<simd::kAngleLanes>(x[i], s[i], c[i]);
+  for (int i = 0; i < n_vectors; ++i) simd::sincos_checked<simd::kAngleLanes>(x[i], s[i], c[i]);
   JointTrig<double, N> trig;
   std::memcpy(trig.sin, s, sizeof trig.sin);
   std::memcpy(trig.cos, c, sizeof trig.cos);
