@@ -2,6 +2,7 @@
 // state (qpos, qvel, … copied into mjData, as our functions take q and v) and runs the pipeline
 // stages the quantity needs. Before any case is added, M and c + g are checked against the runtime
 // on this robot (1e-9); a mismatch aborts the MuJoCo benchmarks with the failing figures.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
