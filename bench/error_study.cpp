@@ -19,15 +19,7 @@
 #include "rbdc/jacobian.hpp"
 #include "rbdc_bench/accuracy.hpp"
 #include "robot_states.hpp"
-#if defined(RBDC_HAVE_GEN_MINI_CHEETAH)
-#include "rbdc_bench/generated/mini_cheetah.hpp"
-#endif
-#if defined(RBDC_HAVE_GEN_ARM7)
-#include "rbdc_bench/generated/arm7.hpp"
-#endif
-#if defined(RBDC_HAVE_GEN_HUMANOID32)
-#include "rbdc_bench/generated/humanoid32.hpp"
-#endif
+#include "rbdc_bench/generated_robots.hpp"
 
 namespace rbdc_bench {
 namespace {
@@ -146,21 +138,12 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--states") == 0) n_states = std::atoi(argv[i + 1]);
   bool first_row = true;
   std::printf("{\"states\": %d, \"reference\": \"generated code in __float128; closed chain: exact closed form in long double\", \"rows\": [", n_states);
-#if defined(RBDC_HAVE_GEN_MINI_CHEETAH)
-  for_each_loaded_robot("error study", [&](const LoadedRobot& r) {
-    study<GeneratedMiniCheetah>(r, n_states, first_row);
-  }, "mini_cheetah");
-#endif
-#if defined(RBDC_HAVE_GEN_ARM7)
-  for_each_loaded_robot("error study", [&](const LoadedRobot& r) {
-    study<GeneratedArm7>(r, n_states, first_row);
-  }, "arm7");
-#endif
-#if defined(RBDC_HAVE_GEN_HUMANOID32)
-  for_each_loaded_robot("error study", [&](const LoadedRobot& r) {
-    study<GeneratedHumanoid32>(r, n_states, first_row);
-  }, "humanoid32");
-#endif
+  for_each_generated_robot([&](auto tag) {
+    using Api = typename decltype(tag)::type;
+    for_each_loaded_robot("error study", [&](const LoadedRobot& r) {
+      study<Api>(r, n_states, first_row);
+    }, Api::name);
+  });
   std::printf("\n]}\n");
   return 0;
 }

@@ -19,13 +19,13 @@
 
 #include "rbdc/jacobian.hpp"
 #include "rbdc_bench/accuracy.hpp"
+#include "rbdc_bench/generated/mini_cheetah.hpp"
 #include "stress_support.hpp"
 
 namespace rbdc_stress {
 namespace {
 
-#if defined(RBDC_HAVE_GEN_MINI_CHEETAH)
-using Api = rbdc_bench::GeneratedMiniCheetah;
+using Api = rbdc_bench::generated::mini_cheetah;
 using rbdc_bench::Quantity;
 
 // Joint ranges of a trot (MIT sign convention: abad, hip, knee per leg; standing at (0, -0.8, 1.6)).
@@ -128,9 +128,6 @@ TEST(StressGroundMass, TwelveDecadesStayFiniteAndTheHeuristicBeatsTheEnds) {
   EXPECT_LT(median(at_heuristic), median(at_low_end));
   EXPECT_LT(median(at_heuristic), median(at_high_end));
 }
-#else
-TEST(StressGroundMass, NeedsTheGeneratedMiniCheetah) { GTEST_SKIP() << "rbdc_gen_mini_cheetah_full not built"; }
-#endif
 
 }  // namespace
 }  // namespace rbdc_stress

@@ -8,10 +8,17 @@
 namespace rbdc_bench {
 
 std::vector<BenchRobot> bench_robots(const std::string& source_dir) {
-  const std::string dir = source_dir + "/robots/";
-  return {{"mini_cheetah", dir + "mini_cheetah.urdf", true},
-          {"arm7", dir + "arm7.urdf", false},
-          {"humanoid32", dir + "humanoid32.urdf", true}};
+  struct Entry {
+    const char* name;
+    const char* urdf;
+    bool floating_base;
+  };
+  static const Entry entries[] = {
+#include "rbdc_bench/bundled_robots.inc"
+  };
+  std::vector<BenchRobot> robots;
+  for (const Entry& e : entries) robots.push_back({e.name, source_dir + "/" + e.urdf, e.floating_base});
+  return robots;
 }
 
 BenchRobot bench_robot(const std::string& source_dir, const std::string& name) {

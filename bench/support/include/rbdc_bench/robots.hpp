@@ -1,7 +1,6 @@
 // The robots the benchmarks and stress tests run on, loaded from the project's own robots/ folder
 // exactly as the generator loads them (default URDF options: one foot per leaf body), so runtime,
-// generated code and MuJoCo see the same model: the Mini Cheetah (floating base), arm7 (fixed base)
-// and humanoid32 (floating base, 32 joints).
+// generated code and MuJoCo see the same model: the robots of robots/bundled.json.
 #pragma once
 
 #include <string>
@@ -17,7 +16,7 @@ struct BenchRobot {
   bool floating_base;
 };
 
-/// The bundled benchmark robots, with paths below `source_dir` (the project root).
+/// The bundled robots (robots/bundled.json), with paths below `source_dir` (the project root).
 std::vector<BenchRobot> bench_robots(const std::string& source_dir);
 
 /// The named robot of bench_robots(); throws std::invalid_argument for an unknown name.
