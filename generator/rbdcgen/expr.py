@@ -15,10 +15,15 @@ unfolded one up to round-off of the constants combined:
     c1 op c2, sin(c), cos(c), sqrt(c) evaluate to constants.
 Commutative operands (+, *) are ordered (constants first, then by node id) so that a + b and
 b + a are one node.
+
+`Graph(fold=False)` turns folding and sharing off: every operation the algorithm performs is a new
+node, so counting nodes counts the operations of the algorithm run literally (flops.unfolded_ops).
+Nodes carry the graph's `label` at their creation (set_label), which the emitter prints as markers.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 import threading
 
@@ -33,9 +38,11 @@ _state = threading.local()
 class Graph:
     """The node table of one traced function. Use as a context manager around tracing."""
 
-    def __init__(self):
+    def __init__(self, fold=True):
         self._table = {}
         self.nodes = []
+        self.fold = fold
+        self.label = None  # where in the algorithm new nodes come from (set_label)
 
     def __enter__(self):
         self._outer = getattr(_state, "graph", None)
@@ -50,9 +57,13 @@ class Graph:
         key = (op, tuple(a.id for a in args), value)
         node = self._table.get(key)
         if node is None:
-            node = Expr(op, args, value, len(self.nodes), self)
+            node = self.new_node(op, args, value)
             self._table[key] = node
-            self.nodes.append(node)
+        return node
+
+    def new_node(self, op, args, value):
+        node = Expr(op, args, value, len(self.nodes), self, self.label)
+        self.nodes.append(node)
         return node
 
 
@@ -63,17 +74,23 @@ def current_graph():
     return graph
 
 
+def set_label(label):
+    """Tags the nodes created from now on with `label` (e.g. "outward pass: body 3 LF_knee")."""
+    current_graph().label = label
+
+
 class Expr:
     """One node. `value` is the float of a constant or the (array, index) of a symbol."""
 
-    __slots__ = ("op", "args", "value", "id", "graph")
+    __slots__ = ("op", "args", "value", "id", "graph", "label")
 
-    def __init__(self, op, args, value, node_id, graph):
+    def __init__(self, op, args, value, node_id, graph, label=None):
         self.op = op
         self.args = args
         self.value = value
         self.id = node_id
         self.graph = graph
+        self.label = label
 
     def __repr__(self):
         if self.op == "const":
@@ -147,6 +164,18 @@ def _node(op, *args):
     return args[0].graph.intern(op, args, None)
 
 
+def _folding(op):
+    """Marks a folding constructor of `op`; in a Graph(fold=False) it builds a plain new node."""
+    def wrap(rules):
+        @functools.wraps(rules)
+        def build(*args):
+            graph = args[0].graph
+            return rules(*args) if graph.fold else graph.new_node(op, args, None)
+        return build
+    return wrap
+
+
+@_folding("neg")
 def neg(x):
     if x.op == "const":
         return const(-x.value)
@@ -157,6 +186,7 @@ def neg(x):
     return _node("neg", x)
 
 
+@_folding("add")
 def add(x, y):
     if x.op == "const" and y.op == "const":
         return const(x.value + y.value)
@@ -171,6 +201,7 @@ def add(x, y):
     return _node("add", x, y)
 
 
+@_folding("sub")
 def sub(x, y):
     if x.op == "const" and y.op == "const":
         return const(x.value - y.value)
@@ -187,6 +218,7 @@ def sub(x, y):
     return _node("sub", x, y)
 
 
+@_folding("mul")
 def mul(x, y):
     if x.op == "const" and y.op == "const":
         return const(x.value * y.value)
@@ -215,6 +247,7 @@ def mul(x, y):
     return _node("mul", x, y)
 
 
+@_folding("div")
 def div(x, y):
     if y.op == "const":
         if y.value == 0.0:
@@ -234,14 +267,17 @@ def div(x, y):
     return _node("div", x, y)
 
 
+@_folding("sin")
 def sin(x):
     return const(math.sin(x.value)) if x.op == "const" else _node("sin", x)
 
 
+@_folding("cos")
 def cos(x):
     return const(math.cos(x.value)) if x.op == "const" else _node("cos", x)
 
 
+@_folding("sqrt")
 def sqrt(x):
     if x.op == "const":
         return const(math.sqrt(x.value))

@@ -1,5 +1,5 @@
 """One robot and one scene through the whole compiler: rbdc-model → IR → traced functions → files."""
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from .errors import RbdcError
@@ -20,26 +20,24 @@ class Compilation:
     inputs: list[Path]       # the files the output depends on
 
 
-def resolve_scene(scene_path: Path | None, base: str | None) -> Scene:
-    """The scene from its file (or the default one), with the command line's base taking precedence."""
-    scene = load_scene(scene_path) if scene_path else default_scene()
-    if base and base != scene.base:
-        scene = Scene(**{**scene.__dict__, "base": base})
-    return scene
+def resolve_base(scene: Scene, flag: str | None, robot, robot_path: Path) -> Scene:
+    """The scene with its final base, decided once: the command line's flag overrides the scene file
+    (that is the base asked of rbdc-model), and the loaded IR has the last word, since an IR file
+    brings its own base; a flag the IR contradicts is an error."""
+    ir_base = "floating" if robot.floating_base else "fixed"
+    if flag and flag != ir_base:
+        raise RbdcError(f"{robot_path}: the IR has a {ir_base} base, but a {flag} base was asked for")
+    return scene if scene.base == ir_base else replace(scene, base=ir_base)
 
 
 def compile_robot(robot_path: Path, scene_path: Path | None = None, topology: Path | None = None,
                   base: str | None = None, name: str | None = None, layout: Layout = None,
                   lock_mimic: bool = False) -> Compilation:
-    scene = resolve_scene(scene_path, base)
+    scene = load_scene(scene_path) if scene_path else default_scene()
     request = ModelRequest(robot=Path(robot_path), topology=Path(topology) if topology else None,
-                           base=scene.base, locks=dict(scene.locked_joints), lock_mimic=lock_mimic)
+                           base=base or scene.base, locks=dict(scene.locked_joints), lock_mimic=lock_mimic)
     robot = load_robot(request, layout)
-    ir_base = "floating" if robot.floating_base else "fixed"
-    if base and base != ir_base:
-        raise RbdcError(f"{robot_path}: the IR has a {ir_base} base, but a {base} base was asked for")
-    if ir_base != scene.base:  # an IR file brings its own base
-        scene = Scene(**{**scene.__dict__, "base": ir_base})
+    scene = resolve_base(scene, base, robot, robot_path)
     robot_name = name or robot.name
     if not robot_name:
         raise RbdcError(f"{robot_path}: the robot has no name; give one with --name")
