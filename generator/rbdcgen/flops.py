@@ -167,6 +167,8 @@ class _Tally:
 
 def generic_ops(robot, scene, name):
     """Operation count of the runtime's generic dense algorithm for function `name`."""
+    if name in _DERIVATIVE_DIRECTIONS:
+        return _generic_derivative_ops(robot, scene, name)
     nf = len(scene.feet_for(robot))
     nv = robot.nv
     t = _Tally()
@@ -221,4 +223,34 @@ def generic_ops(robot, scene, name):
               closed=name == "osc_closed_chain")
     else:
         raise KeyError("unknown function '%s'" % name)
+    return _result(t.c)
+
+
+# Derivatives in the runtime (runtime/src/*derivatives*.cpp): the primal pass, then one dense
+# tangent pass per direction. A tangent pass repeats the primal's products with the product rule,
+# counted here as twice the primal's arithmetic without the joint transforms (computed once, then
+# reused); forward dynamics adds dense
+# triangular solves (n² each) of every right-hand side with the Cholesky factor.
+_DERIVATIVE_DIRECTIONS = {   # name → (primal, directions as a function of (nv, n_joints, n_feet))
+    "inverse_dynamics_derivatives": ("inverse_dynamics", lambda nv, nj, nf: 2 * nv),
+    "bias_derivatives": ("inverse_dynamics", lambda nv, nj, nf: 2 * nv),
+    "gravity_derivatives": ("gravity_terms", lambda nv, nj, nf: nv),
+    "forward_dynamics_derivatives": ("forward_dynamics", lambda nv, nj, nf: 2 * nv),
+    "feet_velocity_derivatives": ("feet_velocities", lambda nv, nj, nf: nv),
+    "feet_force_term_derivatives": ("feet_force_terms", lambda nv, nj, nf: nv),
+}
+
+
+def _generic_derivative_ops(robot, scene, name):
+    primal_name, directions = _DERIVATIVE_DIRECTIONS[name]
+    nv, nj, nf = robot.nv, robot.n_joints, len(scene.feet_for(robot))
+    primal = generic_ops(robot, scene, primal_name)
+    transforms = _Tally()
+    transforms.joint_transforms(robot)
+    t = _Tally()
+    t.add(**{k: primal[k] for k in ("mul", "add", "div", "sqrt", "trig")})
+    t.add(mul=2 * (primal["mul"] - transforms.c["mul"]), add=2 * (primal["add"] - transforms.c["add"]),
+          times=directions(nv, nj, nf))
+    if name == "forward_dynamics_derivatives":
+        t.add(nv * nv, nv * nv, times=2 * nv + nj + 3 * nf)
     return _result(t.c)

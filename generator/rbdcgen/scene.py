@@ -30,7 +30,13 @@ QUANTITIES = (
 FEET_QUANTITIES = ("feet_positions", "feet_velocities", "feet_jacobian", "feet_force_terms")
 OSC_QUANTITIES = ("osc_open_chain", "osc_closed_chain")
 ZERO_INPUTS = ("v", "a", "tau", "f")
-KEYS = ("name", "quantities", "gravity", "base", "locked_joints", "feet", "contacts", "zero_inputs")
+# Derivative quantities (rbdcgen/derivatives.py), emitted after the quantities, in this order.
+DERIVATIVES = ("inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives",
+               "forward_dynamics_derivatives", "feet_velocity_derivatives",
+               "feet_force_term_derivatives")
+FEET_DERIVATIVES = ("feet_velocity_derivatives", "feet_force_term_derivatives")
+KEYS = ("name", "quantities", "gravity", "base", "locked_joints", "feet", "contacts", "zero_inputs",
+        "derivatives")
 
 
 class SceneError(ValueError):
@@ -47,6 +53,7 @@ class Scene:
     feet: Optional[Tuple[str, ...]] = None          # None: all feet of the robot
     contacts: Optional[Tuple[str, ...]] = None      # None: all kept feet
     zero_inputs: Tuple[str, ...] = ()
+    derivatives: Tuple[str, ...] = ()               # none unless the scene lists them
     source: str = "<default>"
 
     # --- resolution against a robot -------------------------------------------------------
@@ -97,6 +104,15 @@ class Scene:
                     name, robot.name,
                     "fixed base" if name in OSC_QUANTITIES else "no feet"))
         return tuple(q for q in QUANTITIES if q in self.quantities)
+
+    def derivatives_for(self, robot):
+        """The derivative functions to emit, in DERIVATIVES order; feet ones need feet."""
+        if not self.feet_for(robot):
+            for name in self.derivatives:
+                if name in FEET_DERIVATIVES:
+                    self.fail("derivatives", "'%s' does not apply to robot '%s' (no feet)"
+                              % (name, robot.name))
+        return tuple(d for d in DERIVATIVES if d in self.derivatives)
 
 
 def default_scene() -> Scene:
@@ -152,10 +168,11 @@ def scene_from_dict(data, source="<scene>") -> Scene:
     contacts = (None if data.get("contacts") is None
                 else _string_list(fail, "contacts", data["contacts"]))
     zero = _string_list(fail, "zero_inputs", data.get("zero_inputs") or [], ZERO_INPUTS)
+    derivatives = _string_list(fail, "derivatives", data.get("derivatives") or [], DERIVATIVES)
     return Scene(name=data["name"], quantities=quantities, gravity=gravity, base=base,
                  locked_joints=tuple((k, float(v)) for k, v in sorted(locked.items())), feet=feet,
                  contacts=contacts, zero_inputs=tuple(x for x in ZERO_INPUTS if x in zero),
-                 source=source)
+                 derivatives=tuple(d for d in DERIVATIVES if d in derivatives), source=source)
 
 
 def load_scene(path) -> Scene:

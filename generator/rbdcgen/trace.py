@@ -6,6 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Dict, Tuple
 
+from . import derivatives
 from . import expr as ex
 from .algorithms import crba, forward_dynamics, jacobian, kinematics, osc, rnea
 from .algorithms.model import TracedModel
@@ -134,7 +135,7 @@ def _spec(robot, nf):
 def trace_function(robot, scene, name):
     """Traces one function of the scene into a fresh graph."""
     nf = len(scene.feet_for(robot))
-    spec = _spec(robot, nf)
+    spec = {**_spec(robot, nf), **derivatives.spec(robot, nf)}
     if name not in spec:
         raise KeyError("unknown function '%s'" % name)
     doc, input_names, output_specs, build = spec[name]
@@ -161,5 +162,7 @@ def trace_function(robot, scene, name):
 
 
 def trace_scene(robot, scene):
-    """All functions of the scene, in the order of scene.QUANTITIES."""
-    return [trace_function(robot, scene, name) for name in scene.quantities_for(robot)]
+    """All functions of the scene: its quantities in the order of scene.QUANTITIES, then its
+    derivatives in the order of scene.DERIVATIVES."""
+    names = scene.quantities_for(robot) + scene.derivatives_for(robot)
+    return [trace_function(robot, scene, name) for name in names]
