@@ -143,7 +143,7 @@ std::string json_number(double x) {
 }
 
 std::string to_ir_json(const Model& m) {
-  JsonArray bodies, joints, feet;
+  JsonArray bodies, joints, feet, couplings;
   for (const Body& b : m.bodies) {
     bodies.push_back(JsonObject{{"name", b.name}, {"mass", b.mass}, {"com", vector_json(b.com)},
                                 {"inertia_com", matrix_json(b.inertia_com)}});
@@ -164,6 +164,10 @@ std::string to_ir_json(const Model& m) {
   for (const Foot& f : m.feet) {
     feet.push_back(JsonObject{{"name", f.name}, {"body", f.body}, {"offset", vector_json(f.offset)}});
   }
+  for (const Coupling& c : m.couplings) {
+    couplings.push_back(JsonObject{{"follower", c.follower}, {"leader", c.leader},
+                                   {"multiplier", c.multiplier}, {"offset", c.offset}});
+  }
   const JsonObject ir{{"format", "rbdc-ir-1"},
                       {"name", m.name},
                       {"floating_base", m.floating_base},
@@ -179,7 +183,8 @@ std::string to_ir_json(const Model& m) {
                       {"nu", int_lists(m.subtree)},
                       {"bodies", std::move(bodies)},
                       {"joints", std::move(joints)},
-                      {"feet", std::move(feet)}};
+                      {"feet", std::move(feet)},
+                      {"couplings", std::move(couplings)}};
   std::string out;
   write(ir, 0, out);
   return out + "\n";

@@ -13,8 +13,9 @@ namespace {
 // Tolerances, relative to the size of the quantity checked.
 constexpr double kAxisNormMin = 1e-9;
 constexpr double kOrthonormalTol = 1e-9;
-constexpr double kSymmetryTol = 1e-9;
-constexpr double kEigenTol = 1e-12;
+constexpr double kTriangleTol = 1e-9;
+// Relative size of a defect that is plain floating-point round-off (repaired silently).
+constexpr double kRoundOff = 1e-14;
 // A body lighter than this is almost certainly a placeholder (e.g. a 1e-6 kg dummy link); it is kept
 // but reported because it makes M badly conditioned.
 constexpr double kTinyMass = 1e-4;
@@ -126,23 +127,30 @@ Vector3 principal_moments(const Matrix3& I) {
   return Eigen::SelfAdjointEigenSolver<Matrix3>(I, Eigen::EigenvaluesOnly).eigenvalues();
 }
 
-void check_body(const ModelSpec& spec, int i, std::vector<std::string>* warnings) {
-  const Body& b = spec.bodies[static_cast<size_t>(i)];
-  const std::string label = body_label(spec, i);
-  check_mass_properties(b, spec.source + ": " + label);
+// "<source>[:<line>]: body '<name>' (i)", the prefix of a body's messages.
+std::string body_where(const ModelSpec& spec, int i) {
+  const size_t ui = static_cast<size_t>(i);
+  const bool line = ui < spec.body_lines.size() && spec.body_lines[ui] > 0;
+  return spec.source + (line ? ":" + std::to_string(spec.body_lines[ui]) : "") + ": " + body_label(spec, i);
+}
+
+void check_body(ModelSpec& spec, int i, std::vector<std::string>* warnings) {
+  Body& b = spec.bodies[static_cast<size_t>(i)];
+  const std::string label = body_where(spec, i);
+  b = repair_mass_properties(b, label, warnings);
   if (warnings == nullptr || b.mass == 0) return;
   const Vector3 moments = principal_moments(b.inertia_com);
-  if (moments(0) + moments(1) < moments(2) * (1 - kSymmetryTol)) {
+  if (moments(0) + moments(1) < moments(2) * (1 - kTriangleTol)) {
     std::ostringstream s;
     s.precision(6);
-    s << spec.source << ": " << label << ": rotational inertia breaks the triangle inequality ("
+    s << label << ": rotational inertia breaks the triangle inequality ("
       << moments(0) << " + " << moments(1) << " < " << moments(2)
       << "); kept as given, but no real mass distribution has it";
     warnings->push_back(s.str());
   }
   if (b.mass < kTinyMass) {
     std::ostringstream s;
-    s << spec.source << ": " << label << ": tiny mass " << b.mass
+    s << label << ": tiny mass " << b.mass
       << " kg (placeholder?); the mass matrix may be badly conditioned";
     warnings->push_back(s.str());
   }
@@ -186,6 +194,32 @@ void derive_sets(Model& m) {
   }
 }
 
+// q_follower = multiplier · q_leader + offset: both 1-DoF joints, each follower coupled once, leaders
+// independent (the loader resolves chains of mimics), finite numbers.
+void check_couplings(const ModelSpec& spec) {
+  const int nb = static_cast<int>(spec.bodies.size());
+  std::vector<bool> follows(static_cast<size_t>(nb), false);
+  for (const Coupling& c : spec.couplings) {
+    if (c.follower < 1 || c.follower >= nb || c.leader < 1 || c.leader >= nb) {
+      fail(spec, "coupling of joint " + std::to_string(c.follower) + " to joint " +
+                     std::to_string(c.leader) + ": joint index out of range 1 … " + std::to_string(nb - 1));
+    }
+    const std::string label = joint_label(spec, c.follower) + " coupled to " + joint_label(spec, c.leader);
+    if (c.follower == c.leader) fail(spec, label + ": a joint cannot follow itself");
+    if (!std::isfinite(c.multiplier) || !std::isfinite(c.offset)) {
+      fail(spec, label + ": multiplier or offset is NaN or Inf");
+    }
+    if (follows[static_cast<size_t>(c.follower)]) fail(spec, label + ": the joint is coupled twice");
+    follows[static_cast<size_t>(c.follower)] = true;
+  }
+  for (const Coupling& c : spec.couplings) {
+    if (follows[static_cast<size_t>(c.leader)]) {
+      fail(spec, joint_label(spec, c.follower) + " follows " + joint_label(spec, c.leader) +
+                     ", which itself follows another joint; couple it to that joint directly");
+    }
+  }
+}
+
 // A joint whose subtree carries no inertia about its axis gives M a zero diagonal entry
 // (d_i = S_iᵀ I^c_i S_i = 0), e.g. a massless leaf: refuse it.
 void check_moving_inertia(const ModelSpec& spec, const Model& m) {
@@ -208,26 +242,58 @@ void check_moving_inertia(const ModelSpec& spec, const Model& m) {
 
 }  // namespace
 
-void check_mass_properties(const Body& b, const std::string& where) {
+Body repair_mass_properties(const Body& body, const std::string& where,
+                            std::vector<std::string>* warnings) {
   const auto refuse = [&](const std::string& problem) { throw ModelError(where + ": " + problem); };
-  if (!std::isfinite(b.mass)) refuse("mass is NaN or Inf");
-  if (!all_finite(b.com)) refuse("COM has NaN or Inf");
-  if (!all_finite(b.inertia_com)) refuse("inertia has NaN or Inf");
-  if (b.mass < 0) refuse("mass is negative");
-  const Matrix3& I = b.inertia_com;
-  const double scale = std::max(I.norm(), 1e-300);
-  if ((I - I.transpose()).norm() > kSymmetryTol * scale) refuse("rotational inertia is not symmetric");
-  if (b.mass == 0) {
-    if (I.norm() != 0) refuse("zero mass but non-zero rotational inertia");
-    return;
-  }
-  const Vector3 moments = principal_moments(I);
-  if (moments(0) < -kEigenTol * scale) {
+  const auto warn = [&](const std::string& problem) {
+    if (warnings != nullptr) warnings->push_back(where + ": " + problem);
+  };
+  if (!std::isfinite(body.mass)) refuse("mass is NaN or Inf");
+  if (!all_finite(body.com)) refuse("COM has NaN or Inf");
+  if (!all_finite(body.inertia_com)) refuse("inertia has NaN or Inf");
+  if (body.mass < 0) refuse("mass is negative");
+  Body b = body;
+  Matrix3& I = b.inertia_com;
+  const double trace = std::abs(I.trace());
+  // Beyond `repairable` a defect is refused; up to `silent` it is plain floating-point round-off
+  // (e.g. of lumping fixed links) and repaired without a word.
+  const double repairable = kInertiaRepairTolerance * trace + kInertiaRepairFloor;
+  const double silent = kRoundOff * trace;
+  const double asymmetry = (I - I.transpose()).cwiseAbs().maxCoeff();
+  if (asymmetry > repairable) {
     std::ostringstream s;
-    s << "rotational inertia is not positive semi-definite (principal moments "
-      << moments.transpose() << ")";
+    s << "rotational inertia is not symmetric (largest |I - Iᵀ| entry " << asymmetry << ")";
     refuse(s.str());
   }
+  if (asymmetry > 0) {
+    I = 0.5 * (I + I.transpose()).eval();
+    if (asymmetry > silent) {
+      std::ostringstream s;
+      s << "rotational inertia is not symmetric by " << asymmetry << " kg·m² (round-off); symmetrised";
+      warn(s.str());
+    }
+  }
+  const Eigen::SelfAdjointEigenSolver<Matrix3> eigen(I);
+  const Vector3 moments = eigen.eigenvalues();
+  if (moments(0) < -repairable) {
+    std::ostringstream s;
+    s << "rotational inertia is not positive semi-definite (principal moments " << moments.transpose()
+      << ")";
+    refuse(s.str());
+  }
+  if (moments(0) < 0) {
+    I = eigen.eigenvectors() * moments.cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
+    if (-moments(0) > silent) {
+      std::ostringstream s;
+      s << "rotational inertia has principal moments (" << moments.transpose()
+        << "), negative by " << -moments(0) << " kg·m² (round-off); clipped to zero";
+      warn(s.str());
+    }
+  }
+  if (b.mass == 0 && I.cwiseAbs().maxCoeff() > 0) {
+    warn("zero mass but non-zero rotational inertia; kept as a pure rotational inertia");
+  }
+  return b;
 }
 
 Model build_model(const ModelSpec& spec_in, std::vector<std::string>* warnings) {
@@ -238,6 +304,7 @@ Model build_model(const ModelSpec& spec_in, std::vector<std::string>* warnings) 
   const int nb = static_cast<int>(spec.bodies.size());
   for (int i = 1; i < nb; ++i) check_joint(spec, i, spec.joints[static_cast<size_t>(i - 1)]);
   for (int i = 0; i < nb; ++i) check_body(spec, i, warnings);
+  check_couplings(spec);
   for (const Foot& f : spec.feet) {
     const std::string label = "foot '" + f.name + "'";
     if (f.body < 0 || f.body >= nb) {
@@ -260,6 +327,9 @@ Model build_model(const ModelSpec& spec_in, std::vector<std::string>* warnings) 
   m.parent = parent;
   m.bodies = spec.bodies;
   m.feet = spec.feet;
+  m.couplings = spec.couplings;
+  std::sort(m.couplings.begin(), m.couplings.end(),
+            [](const Coupling& a, const Coupling& b) { return a.follower < b.follower; });
 
   m.joints.push_back(root_joint(spec.floating_base));
   const int q0 = spec.floating_base ? 7 : 0;

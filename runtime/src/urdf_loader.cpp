@@ -39,8 +39,9 @@ class UrdfdomLog : public console_bridge::OutputHandler {
   UrdfdomLog& operator=(const UrdfdomLog&) = delete;
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
     if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR) errors.push_back(text);
+    if (level == console_bridge::CONSOLE_BRIDGE_LOG_WARN) warnings.push_back(text);
   }
-  std::vector<std::string> errors;
+  std::vector<std::string> errors, warnings;
 };
 
 std::string read_text(const std::string& path) {
@@ -57,8 +58,10 @@ std::string read_text(const std::string& path) {
   return s;
 }
 
-// urdfdom's own warnings concern visuals (e.g. undefined materials) and are dropped.
-urdf::ModelInterfaceSharedPtr parse_with_urdfdom(const std::string& path, const std::string& text) {
+// urdfdom reads the text without visuals, collisions and materials (read_urdf_outline), so what it
+// still calls an error concerns the dynamics; its warnings are passed on.
+urdf::ModelInterfaceSharedPtr parse_with_urdfdom(const std::string& path, const std::string& text,
+                                                 std::vector<std::string>* warnings) {
   UrdfdomLog log;
   urdf::ModelInterfaceSharedPtr model;
   try {
@@ -71,6 +74,9 @@ urdf::ModelInterfaceSharedPtr parse_with_urdfdom(const std::string& path, const 
     std::string why;
     for (const std::string& e : log.errors) why += (why.empty() ? "" : "; ") + e;
     throw ModelError(path + ": urdfdom refused the file: " + (why.empty() ? "no reason given" : why));
+  }
+  if (warnings != nullptr) {
+    for (const std::string& w : log.warnings) warnings->push_back(path + ": urdfdom: " + w);
   }
   return model;
 }
@@ -105,8 +111,8 @@ Body lump(const std::string& name, const std::vector<Body>& parts) {
 class UrdfTranslator {
  public:
   UrdfTranslator(std::string path, const UrdfOutline& outline, const urdf::ModelInterface& urdf,
-                 const UrdfOptions& opts)
-      : path_(std::move(path)), outline_(outline), urdf_(urdf), opts_(opts) {
+                 const UrdfOptions& opts, std::vector<std::string>* warnings)
+      : path_(std::move(path)), outline_(outline), urdf_(urdf), opts_(opts), warnings_(warnings) {
     for (const UrdfJointEdge& j : outline_.joints) {
       child_joints_[j.parent].push_back(&j);
       parent_joint_[j.child] = &j;
@@ -119,6 +125,7 @@ class UrdfTranslator {
         throw ModelError(path_ + ": locked joint '" + name + "' does not exist");
       }
     }
+    resolve_mimics();
     drafts_.emplace_back();  // body 0, the root
     visit(choose_root(), 0, Pose{});
     return assemble();
@@ -128,6 +135,43 @@ class UrdfTranslator {
   [[noreturn]] void fail(const UrdfJointEdge* j, const std::string& problem) const {
     const std::string line = j == nullptr ? std::string() : std::to_string(j->line) + ":";
     throw ModelError(path_ + ":" + line + " " + problem);
+  }
+
+  void warn(const UrdfJointEdge* j, const std::string& problem) const {
+    if (warnings_ != nullptr) warnings_->push_back(path_ + ":" + std::to_string(j->line) + ": " + problem);
+  }
+
+  /// "<file>:<line>: link '<name>'", the prefix of a link's warnings and refusals.
+  std::string link_where(const std::string& link) const {
+    return path_ + ":" + std::to_string(outline_.link_lines.at(link)) + ": link '" + link + "'";
+  }
+
+  // Each mimic joint's final leader and coefficients, following chains of mimics
+  // (q_c = m_c (m_b q_a + o_b) + o_c). Missing, unmovable or circular leaders are refused.
+  void resolve_mimics() {
+    for (const UrdfJointEdge& edge : outline_.joints) {
+      const urdf::JointConstSharedPtr j = urdf_.getJoint(edge.name);
+      if (j->mimic == nullptr) continue;
+      Mimic rule{j->mimic->joint_name, j->mimic->multiplier, j->mimic->offset};
+      std::vector<std::string> chain{j->name};
+      for (;;) {
+        const urdf::JointConstSharedPtr leader = urdf_.getJoint(rule.leader);
+        const std::string label = "joint '" + j->name + "' mimics joint '" + rule.leader + "'";
+        if (leader == nullptr) fail(&edge, label + ", which does not exist");
+        if (std::find(chain.begin(), chain.end(), rule.leader) != chain.end()) {
+          fail(&edge, label + ": the mimic joints form a cycle");
+        }
+        if (leader->type != urdf::Joint::REVOLUTE && leader->type != urdf::Joint::CONTINUOUS &&
+            leader->type != urdf::Joint::PRISMATIC) {
+          fail(&edge, label + ", which cannot move (only revolute, continuous and prismatic joints lead)");
+        }
+        if (leader->mimic == nullptr) break;
+        chain.push_back(rule.leader);
+        rule = {leader->mimic->joint_name, rule.multiplier * leader->mimic->multiplier,
+                rule.multiplier * leader->mimic->offset + rule.offset};
+      }
+      mimics_[j->name] = rule;
+    }
   }
 
   bool unlimited(const std::string& joint) const {
@@ -164,6 +208,10 @@ class UrdfTranslator {
                     "' above it would have to be dropped, but it has mass, other children or a "
                     "moving joint ('" + j->name + "')");
       }
+      if (j->type == "floating" && !opts_.floating_base) {
+        warn(j, "floating joint '" + j->name + "' from link '" + j->parent + "' is dropped: the fixed "
+                "base welds link '" + root + "' to the world");
+      }
       at = j->parent;
     }
     return root;
@@ -179,7 +227,16 @@ class UrdfTranslator {
     I << in->ixx, in->ixy, in->ixz, in->ixy, in->iyy, in->iyz, in->ixz, in->iyz, in->izz;
     part.com = inertial.p;
     part.inertia_com = inertial.R * I * inertial.R.transpose();  // inertial frame → link frame
-    check_mass_properties(part, path_ + ": link '" + link + "'");
+    // A massless link with inertia that cannot move changes nothing: drop its inertia.
+    if (part.mass == 0 && body == 0 && !opts_.floating_base && I.cwiseAbs().maxCoeff() > 0 &&
+        I.allFinite()) {
+      part.inertia_com.setZero();
+      if (warnings_ != nullptr) {
+        warnings_->push_back(link_where(link) + ": zero mass but non-zero rotational inertia; welded to "
+                             "the world (it cannot move), so the inertia is ignored");
+      }
+    }
+    part = repair_mass_properties(part, link_where(link), warnings_);
     part.com = pose.R * part.com + pose.p;  // link frame → body frame
     part.inertia_com = pose.R * part.inertia_com * pose.R.transpose();
     drafts_[static_cast<size_t>(body)].parts.push_back(part);
@@ -221,14 +278,19 @@ class UrdfTranslator {
         visit(j.child_link_name, body, origin * joint_motion(j, axis.normalized(), locked->second));
         continue;
       }
-      if (j.mimic != nullptr) {
-        if (!opts_.lock_mimic) {
-          fail(edge, "joint '" + j.name + "' mimics joint '" + j.mimic->joint_name +
-                         "'; mimic joints are not supported: lock them at their offset with "
-                         "UrdfOptions::lock_mimic (rbdc-model --lock-mimic)");
-        }
+      if (j.mimic != nullptr && opts_.mimic == MimicMode::Lock) {
         visit(j.child_link_name, body, origin * joint_motion(j, axis.normalized(), j.mimic->offset));
         continue;
+      }
+      if (j.mimic != nullptr && opts_.mimic == MimicMode::Couple) {
+        const Mimic& rule = mimics_.at(j.name);
+        const auto leader_lock = opts_.locked_joints.find(rule.leader);
+        if (leader_lock != opts_.locked_joints.end()) {  // a locked leader locks its followers
+          const double q = rule.multiplier * leader_lock->second + rule.offset;
+          visit(j.child_link_name, body, origin * joint_motion(j, axis.normalized(), q));
+          continue;
+        }
+        couplings_.push_back({j.name, rule});
       }
       BodyDraft draft;
       draft.parent = body;
@@ -348,10 +410,16 @@ class UrdfTranslator {
     for (size_t k = 0; k < order.size(); ++k) {
       const BodyDraft& d = drafts_[static_cast<size_t>(order[k])];
       spec.bodies.push_back(lump(d.links[0], d.parts));
+      spec.body_lines.push_back(outline_.link_lines.at(d.links[0]));
       if (k == 0) continue;
       spec.joints.push_back(d.joint);
       spec.pred.push_back(topo ? topo->pred[k - 1] : number_of[static_cast<size_t>(d.parent)]);
       spec.succ.push_back(topo ? topo->succ[k - 1] : static_cast<int>(k));
+    }
+    std::map<std::string, int> joint_number;
+    for (size_t k = 0; k < spec.joints.size(); ++k) joint_number[spec.joints[k].name] = static_cast<int>(k) + 1;
+    for (const auto& [follower, rule] : couplings_) {
+      spec.couplings.push_back({joint_number.at(follower), joint_number.at(rule.leader), rule.multiplier, rule.offset});
     }
     std::vector<Foot> feet;
     if (!opts_.feet.empty()) {
@@ -371,11 +439,20 @@ class UrdfTranslator {
     Pose pose;  ///< link frame in body frame
   };
 
+  /// q_follower = multiplier · q_leader + offset, the leader being a joint that mimics none.
+  struct Mimic {
+    std::string leader;
+    double multiplier = 1, offset = 0;
+  };
+
   std::string path_;
   const UrdfOutline& outline_;
   const urdf::ModelInterface& urdf_;
   const UrdfOptions& opts_;
+  std::vector<std::string>* warnings_;
   std::map<std::string, std::vector<const UrdfJointEdge*>> child_joints_;
+  std::map<std::string, Mimic> mimics_;
+  std::vector<std::pair<std::string, Mimic>> couplings_;  ///< coupled followers, in visiting order
   std::map<std::string, const UrdfJointEdge*> parent_joint_;
   std::vector<BodyDraft> drafts_;
   std::map<std::string, LinkPlacement> placement_;
@@ -386,13 +463,15 @@ class UrdfTranslator {
 Model load_urdf(const std::string& path, const UrdfOptions& opts, std::vector<std::string>* warnings) {
   const std::string text = read_text(path);
   const UrdfOutline outline = read_urdf_outline(path, text);
-  const urdf::ModelInterfaceSharedPtr urdf = parse_with_urdfdom(path, outline.urdfdom_text);
   if (warnings != nullptr) {
+    warnings->insert(warnings->end(), outline.warnings.begin(), outline.warnings.end());
     for (const std::string& j : outline.joints_without_limits) {
-      warnings->push_back(path + ": joint '" + j + "' has no <limit>; loaded without position limits");
+      warnings->push_back(path + ":" + std::to_string(outline.joint_line(j)) + ": joint '" + j +
+                          "' has no <limit>; loaded without position limits");
     }
   }
-  return build_model(UrdfTranslator(path, outline, *urdf, opts).translate(), warnings);
+  const urdf::ModelInterfaceSharedPtr urdf = parse_with_urdfdom(path, outline.urdfdom_text, warnings);
+  return build_model(UrdfTranslator(path, outline, *urdf, opts, warnings).translate(), warnings);
 }
 
 }  // namespace rbdc

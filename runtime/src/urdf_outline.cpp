@@ -20,7 +20,39 @@ std::string child_link_attribute(const TiXmlElement* joint, const char* tag) {
   return e == nullptr ? std::string() : attribute(e, "link");
 }
 
+// <visual> and <collision> without <geometry>, and a <material> (of the robot, or of a visual)
+// neither named nor described, are faults outside the dynamics: warn, then drop every such element.
+void strip_appearance(const std::string& path, TiXmlElement* robot, std::vector<std::string>& warnings) {
+  const auto warn = [&](const TiXmlElement* e, const std::string& problem) {
+    warnings.push_back(path + ":" + std::to_string(e->Row()) + ": " + problem + "; ignored (not used for dynamics)");
+  };
+  std::vector<TiXmlElement*> dropped;
+  for (TiXmlElement* link = robot->FirstChildElement("link"); link != nullptr;
+       link = link->NextSiblingElement("link")) {
+    for (const char* tag : {"visual", "collision"}) {
+      for (TiXmlElement* e = link->FirstChildElement(tag); e != nullptr; e = e->NextSiblingElement(tag)) {
+        if (e->FirstChildElement("geometry") == nullptr) {
+          warn(e, "link '" + attribute(link, "name") + "': <" + tag + "> without <geometry>");
+        }
+        dropped.push_back(e);
+      }
+    }
+  }
+  for (TiXmlElement* e = robot->FirstChildElement("material"); e != nullptr; e = e->NextSiblingElement("material")) {
+    if (attribute(e, "name").empty()) warn(e, "<material> without a name");
+    dropped.push_back(e);
+  }
+  for (TiXmlElement* e : dropped) e->Parent()->RemoveChild(e);
+}
+
 }  // namespace
+
+int UrdfOutline::joint_line(const std::string& joint) const {
+  for (const UrdfJointEdge& j : joints) {
+    if (j.name == joint) return j.line;
+  }
+  return 0;
+}
 
 UrdfOutline read_urdf_outline(const std::string& path, const std::string& text) {
   const auto fail = [&](int line, const std::string& problem) {
@@ -39,7 +71,7 @@ UrdfOutline read_urdf_outline(const std::string& path, const std::string& text) 
   }
 
   UrdfOutline outline;
-  std::map<std::string, int> link_line;
+  std::map<std::string, int>& link_line = outline.link_lines;
   for (const TiXmlElement* e = robot->FirstChildElement("link"); e != nullptr;
        e = e->NextSiblingElement("link")) {
     const std::string name = attribute(e, "name");
@@ -73,13 +105,10 @@ UrdfOutline read_urdf_outline(const std::string& path, const std::string& text) 
     }
     outline.joints.push_back(j);
   }
-  if (outline.joints_without_limits.empty()) {
-    outline.urdfdom_text = text;
-  } else {
-    TiXmlPrinter printer;
-    doc.Accept(&printer);
-    outline.urdfdom_text = printer.CStr();
-  }
+  strip_appearance(path, robot, outline.warnings);
+  TiXmlPrinter printer;
+  doc.Accept(&printer);
+  outline.urdfdom_text = printer.CStr();
   for (const UrdfJointEdge& j : outline.joints) {
     const auto [it, fresh] = parent_joint.emplace(j.child, &j);
     if (!fresh) {

@@ -3,6 +3,7 @@
 // first, so numbering and the tree checks are done here.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,13 +16,20 @@ struct UrdfJointEdge {
 
 struct UrdfOutline {
   std::vector<std::string> links;     ///< document order
+  std::map<std::string, int> link_lines;  ///< line of each <link>
   std::vector<UrdfJointEdge> joints;  ///< document order
   std::string root;                   ///< the one link without a parent
   /// Revolute/prismatic joints written without <limit> (the URDF spec requires one; Drake-made files
   /// omit it). They are loaded as unlimited.
   std::vector<std::string> joints_without_limits;
-  /// The text to give urdfdom: the input, or a copy where those joints carry a placeholder <limit>.
+  /// The text to give urdfdom: the input without what the dynamics never read (<visual>,
+  /// <collision>, <material>), so that a fault there cannot stop the load, and with a placeholder
+  /// <limit> in the joints above.
   std::string urdfdom_text;
+  /// Faults found in the dropped elements ("<path>:<line>: …"), reported as warnings.
+  std::vector<std::string> warnings;
+
+  int joint_line(const std::string& joint) const;  ///< 0 when unknown
 };
 
 /// Parses `text` (the contents of `path`) and checks it is one tree: well-formed XML, a <robot> with

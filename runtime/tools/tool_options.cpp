@@ -14,7 +14,8 @@ const char* const kLoadOptionsHelp =
     "  --floating-base     root link on a 6-DoF floating joint (default)\n"
     "  --fixed-base        root link welded to the world\n"
     "  --root LINK         use LINK as the root link (links above it must be massless)\n"
-    "  --lock-mimic        lock each mimic joint at its offset instead of refusing it\n"
+    "  --lock-mimic        lock each mimic joint at its offset (default: couple it to its leader)\n"
+    "  --independent-mimic load mimic joints as independent joints (ignore <mimic>)\n"
     "  --lock NAME=VALUE   lock joint NAME at VALUE (rad or m); repeatable\n"
     "  -h, --help          show this help\n";
 
@@ -47,7 +48,9 @@ bool parse_load_options(int argc, char** argv, LoadOptions& out, const ExtraOpti
     } else if (arg == "--root") {
       out.urdf.root_link = next_argument(argc, argv, i);
     } else if (arg == "--lock-mimic") {
-      out.urdf.lock_mimic = true;
+      out.urdf.mimic = MimicMode::Lock;
+    } else if (arg == "--independent-mimic") {
+      out.urdf.mimic = MimicMode::Independent;
     } else if (arg == "--lock") {
       const std::string spec = next_argument(argc, argv, i);
       const size_t eq = spec.find('=');

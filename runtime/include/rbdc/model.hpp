@@ -33,6 +33,16 @@ struct Body {
   Matrix3 inertia_com = Matrix3::Zero();      ///< about the COM, body axes
 };
 
+/// A mimic coupling (URDF <mimic>): q_follower = multiplier · q_leader + offset, joint indices.
+/// The follower keeps its place in the tree but not its own coordinate (docs/model.md, "Mimic
+/// joints"; rbdc/coupling.hpp maps between the tree's and the independent coordinates).
+struct Coupling {
+  int follower = 0;
+  int leader = 0;
+  double multiplier = 1;
+  double offset = 0;
+};
+
 /// A foot is a point on a body (Eq. 16): φ(k) = body.
 struct Foot {
   std::string name;
@@ -57,6 +67,7 @@ struct Model {
   std::vector<Body> bodies;
   std::vector<Joint> joints;
   std::vector<Foot> feet;
+  std::vector<Coupling> couplings;  ///< ascending followers; leaders are never followers
 
   // Derived constants, filled by ModelBuilder.
   std::vector<Matrix6> X_tree;   ///< X_T(i) = motion_transform(rotation, translation)

@@ -36,11 +36,24 @@ struct ModelSpec {
   std::vector<JointSpec> joints;   ///< joints 1 … nb-1, same order as pred/succ
   std::vector<Body> bodies;        ///< nb bodies in final numbering, body 0 = root
   std::vector<Foot> feet;
+  std::vector<Coupling> couplings;  ///< joint indices in the final numbering
+  /// Optional: the line of each body's (first) definition in `source`, for messages (nb entries).
+  std::vector<int> body_lines;
 };
 
-/// Checks one body's mass properties: finite, mass ≥ 0, rotational inertia symmetric and positive
-/// semi-definite, zero inertia when the mass is zero. Throws ModelError("<where>: <problem>").
-void check_mass_properties(const Body& body, const std::string& where);
+/// One body's mass properties, checked and repaired (table in docs/model.md): NaN/Inf and negative
+/// mass are refused; an asymmetric or indefinite rotational inertia is symmetrised / clipped to its
+/// nearest positive semi-definite matrix when the defect is within round-off of its size
+/// (kInertiaRepairTolerance), with a warning giving its size, and refused beyond. A massless body
+/// with rotational inertia is kept with a warning. Throws ModelError("<where>: <problem>");
+/// warnings start with `where`.
+Body repair_mass_properties(const Body& body, const std::string& where,
+                            std::vector<std::string>* warnings);
+
+/// Relative tolerance of the inertia repairs: the defect may reach this times the trace (plus
+/// kInertiaRepairFloor kg·m², so that an inertia made only of round-off is repaired, not refused).
+constexpr double kInertiaRepairTolerance = 1e-9;
+constexpr double kInertiaRepairFloor = 1e-12;
 
 /// Validates the spec, derives λ (Eq. 2), κ, μ, ν, q/v indices and the spatial constants.
 /// Throws ModelError on bad input; appends non-fatal findings (e.g. an inertia that breaks the

@@ -3,6 +3,7 @@
 
 #include "rbdc/bias_terms.hpp"
 #include "rbdc/check_finite.hpp"
+#include "rbdc/coupling.hpp"
 #include "rbdc/crba.hpp"
 #include "rbdc/data.hpp"
 #include "rbdc/forward_dynamics.hpp"
