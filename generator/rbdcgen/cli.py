@@ -33,8 +33,18 @@ def _robot_arguments(parser, multiple=False):
                       help="6-DoF floating root joint (overrides the scene)")
     base.add_argument("--fixed-base", dest="base", action="store_const", const="fixed",
                       help="root welded to the world (overrides the scene)")
-    parser.add_argument("--lock-mimic", action="store_true",
-                        help="lock each URDF mimic joint at its offset (rbdc-model refuses mimic joints otherwise)")
+    _mimic_arguments(parser)
+
+
+def _mimic_arguments(parser):
+    """What URDF mimic joints become (docs/model.md, "Mimic joints"); args.mimic."""
+    mimic = parser.add_mutually_exclusive_group()
+    mimic.set_defaults(mimic="couple")
+    mimic.add_argument("--lock-mimic", dest="mimic", action="store_const", const="lock",
+                       help="lock each mimic joint at its offset (default: couple it to its leader, "
+                            "q = multiplier * q_leader + offset, which removes its coordinate)")
+    mimic.add_argument("--independent-mimic", dest="mimic", action="store_const", const="independent",
+                       help="load mimic joints as independent joints (the <mimic> tag is ignored)")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -91,7 +101,7 @@ def build_parser() -> argparse.ArgumentParser:
     base = evaluate.add_mutually_exclusive_group()
     base.add_argument("--floating-base", dest="base", action="store_const", const="floating")
     base.add_argument("--fixed-base", dest="base", action="store_const", const="fixed")
-    evaluate.add_argument("--lock-mimic", action="store_true", help="lock each URDF mimic joint at its offset")
+    _mimic_arguments(evaluate)
     return parser
 
 

@@ -12,7 +12,7 @@ from .pipeline import compile_robot, render
 
 def _compile(args, layout: Layout):
     return compile_robot(args.robot, args.scene, args.topology, args.base, getattr(args, "name", None), layout,
-                         lock_mimic=args.lock_mimic)
+                         mimic=args.mimic)
 
 
 def generate(args, layout: Layout) -> int:
@@ -75,8 +75,8 @@ def evaluate(args, layout: Layout) -> int:
         command += ["--topology", str(args.topology)]
     if args.base:
         command.append(f"--{args.base}-base")
-    if args.lock_mimic:
-        command.append("--lock-mimic")
+    if args.mimic != "couple":
+        command.append(f"--{args.mimic}-mimic")
     result = subprocess.run(command, capture_output=True, text=True)
     sys.stdout.write(result.stdout)
     if result.returncode != 0:

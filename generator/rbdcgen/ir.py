@@ -10,6 +10,8 @@ import json
 from dataclasses import dataclass
 from typing import Optional, Tuple
 
+from .coupling import independent_view
+
 FORMAT = "rbdc-ir-1"
 ROOT_TYPES = ("floating", "fixed")
 JOINT_TYPES = ("revolute", "prismatic")
@@ -52,6 +54,15 @@ class Foot:
 
 
 @dataclass(frozen=True)
+class Coupling:
+    """A mimic joint: q_follower = multiplier · q_leader + offset (joint indices)."""
+    follower: int
+    leader: int
+    multiplier: float
+    offset: float
+
+
+@dataclass(frozen=True)
 class Robot:
     name: str
     floating_base: bool
@@ -68,11 +79,12 @@ class Robot:
     bodies: Tuple[Body, ...]
     joints: Tuple[Joint, ...]
     feet: Tuple[Foot, ...]
+    couplings: Tuple[Coupling, ...] = ()   # nq, nv and joint indices count only independent ones
 
     @property
     def n_joints(self) -> int:
-        """1-DoF joints (the actuated ones)."""
-        return self.nb - 1
+        """Independent 1-DoF joints (the actuated ones): the followers of couplings excluded."""
+        return self.nb - 1 - len(self.couplings)
 
     @property
     def root_dofs(self) -> int:
@@ -230,7 +242,23 @@ def load_ir(source) -> Robot:
         return tuple(tuple(r.integer(x, "%s[%d]" % (key, i)) for x in entry)
                      for i, entry in enumerate(raw))
 
-    return Robot(
+    couplings = []
+    raw_couplings = data.get("couplings", [])
+    if not isinstance(raw_couplings, list):
+        r.fail("couplings", "expected a list")
+    for k, c in enumerate(raw_couplings):
+        where = "couplings[%d]" % k
+        ends = [r.integer(r.get(c, key, where), "%s.%s" % (where, key)) for key in ("follower", "leader")]
+        if not all(1 <= e < nb for e in ends) or ends[0] == ends[1]:
+            r.fail(where, "follower and leader must be two joints 1 … %d, got %r" % (nb - 1, ends))
+        couplings.append(Coupling(follower=ends[0], leader=ends[1],
+                                  multiplier=r.number(r.get(c, "multiplier", where), where + ".multiplier"),
+                                  offset=r.number(r.get(c, "offset", where), where + ".offset")))
+    followers = {c.follower for c in couplings}
+    if len(followers) != len(couplings) or any(c.leader in followers for c in couplings):
+        r.fail("couplings", "a joint follows twice, or a leader follows another joint")
+
+    return independent_view(Robot(
         name=r.string(r.get(data, "name", "top level"), "name"),
         floating_base=floating,
         gravity=r.vec3(r.get(data, "gravity", "top level"), "gravity"),
@@ -239,4 +267,4 @@ def load_ir(source) -> Robot:
         succ=r.int_list(r.get(data, "SUCC", "top level"), nb - 1, "SUCC"),
         parent=parent,
         support=sets("kappa"), children=sets("mu"), subtree=sets("nu"),
-        bodies=tuple(bodies), joints=tuple(joints), feet=tuple(feet))
+        bodies=tuple(bodies), joints=tuple(joints), feet=tuple(feet), couplings=tuple(couplings)))

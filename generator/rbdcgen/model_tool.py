@@ -18,7 +18,7 @@ class ModelRequest:
     topology: Path | None = None
     base: str | None = None                      # 'floating', 'fixed' or None for the file's own
     locks: dict[str, float] = field(default_factory=dict)
-    lock_mimic: bool = False                     # lock each mimic joint at its offset
+    mimic: str = "couple"                        # couple | lock | independent (docs/model.md)
 
     def inputs(self) -> list[Path]:
         """The files the IR depends on, for banners (hashes) and build-system dependencies."""
@@ -31,8 +31,8 @@ def model_command(request: ModelRequest, layout: Layout) -> list[str]:
         command += ["--topology", str(request.topology)]
     if request.base:
         command.append(f"--{request.base}-base")
-    if request.lock_mimic:
-        command.append("--lock-mimic")
+    if request.mimic != "couple":
+        command.append(f"--{request.mimic}-mimic")
     for name, value in sorted(request.locks.items()):
         command += ["--lock", f"{name}={value!r}"]
     return command
@@ -44,9 +44,9 @@ def load_robot(request: ModelRequest, layout: Layout) -> Robot:
     if not request.robot.is_file():
         raise RbdcError(f"{request.robot}: no such file")
     if request.robot.suffix == ".json":
-        if request.topology or request.locks or request.lock_mimic:
-            raise RbdcError(f"{request.robot}: an IR file is already numbered; --topology, --lock-mimic "
-                            "and locked joints apply only to URDF or topology input")
+        if request.topology or request.locks or request.mimic != "couple":
+            raise RbdcError(f"{request.robot}: an IR file is already numbered; --topology, the mimic "
+                            "options and locked joints apply only to URDF or topology input")
         return load_ir(request.robot)
     if not layout.model_tool.exists():
         raise RbdcError(f"{layout.model_tool}: rbdc-model is not built (cmake --build build --target rbdc-model)")

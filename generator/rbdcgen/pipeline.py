@@ -32,10 +32,10 @@ def resolve_base(scene: Scene, flag: str | None, robot, robot_path: Path) -> Sce
 
 def compile_robot(robot_path: Path, scene_path: Path | None = None, topology: Path | None = None,
                   base: str | None = None, name: str | None = None, layout: Layout = None,
-                  lock_mimic: bool = False) -> Compilation:
+                  mimic: str = "couple") -> Compilation:
     scene = load_scene(scene_path) if scene_path else default_scene()
     request = ModelRequest(robot=Path(robot_path), topology=Path(topology) if topology else None,
-                           base=base or scene.base, locks=dict(scene.locked_joints), lock_mimic=lock_mimic)
+                           base=base or scene.base, locks=dict(scene.locked_joints), mimic=mimic)
     robot = load_robot(request, layout)
     scene = resolve_base(scene, base, robot, robot_path)
     robot_name = name or robot.name

@@ -92,8 +92,8 @@ class Scene:
         has_feet = bool(self.feet_for(robot))
 
         def applies(name):
-            if name in OSC_QUANTITIES and not robot.floating_base:
-                return False
+            if name in OSC_QUANTITIES and (not robot.floating_base or robot.couplings):
+                return False  # OSC of a coupled model is not implemented (docs/model.md)
             return has_feet or name not in FEET_QUANTITIES
 
         if self.quantities is None:
@@ -102,7 +102,8 @@ class Scene:
             if not applies(name):
                 self.fail("quantities", "'%s' does not apply to robot '%s' (%s)" % (
                     name, robot.name,
-                    "fixed base" if name in OSC_QUANTITIES else "no feet"))
+                    ("mimic couplings: use --lock-mimic or --independent-mimic" if robot.couplings
+                     else "fixed base") if name in OSC_QUANTITIES else "no feet"))
         return tuple(q for q in QUANTITIES if q in self.quantities)
 
     def derivatives_for(self, robot):

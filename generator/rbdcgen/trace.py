@@ -6,7 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Dict, Tuple
 
-from . import derivatives
+from . import coupling, derivatives
 from . import expr as ex
 from .algorithms import crba, forward_dynamics, jacobian, kinematics, osc, rnea
 from .algorithms.model import TracedModel
@@ -139,12 +139,15 @@ def trace_function(robot, scene, name):
     if name not in spec:
         raise KeyError("unknown function '%s'" % name)
     doc, input_names, output_specs, build = spec[name]
+    tree = coupling.tree_view(robot)
+    if tree is not robot:  # mimic couplings: trace on the tree, then project (coupling.py)
+        build = {**_spec(tree, nf), **derivatives.spec(tree, nf)}[name][3]
     args = _input_args(robot, nf)
     zero = tuple(n for n in scene.zero_inputs if n in input_names)
     with ex.Graph() as graph:
         m = TracedModel(robot, scene, zero_inputs=zero)
         try:
-            values = build(m)
+            values = coupling.traced_values(robot, name, m, build, output_specs)
         except ZeroDivisionError:
             raise TraceError(
                 "robot '%s': %s divides by a pivot that is exactly zero: a joint moves no mass "

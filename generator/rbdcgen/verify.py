@@ -50,7 +50,7 @@ def _robot_record(compilation, robot_path: Path, args) -> dict:
         "namespace": f"rbdc_gen::{compilation.robot_name}::{scene.name}",
         "umbrella": f"{compilation.robot_name}/{scene.name}.hpp",
         "loader": {"kind": kind, "path": str(robot_path.resolve()), "floating_base": scene.base == "floating",
-                   "lock_mimic": args.lock_mimic, "locks": list(scene.locked_joints),
+                   "mimic": args.mimic, "locks": list(scene.locked_joints),
                    "topology": str(args.topology.resolve()) if args.topology else ""},
         "gravity": list(scene.gravity_for(robot)),
         "feet": [foot.name for foot in scene.feet_for(robot)],
@@ -104,7 +104,7 @@ def run(args, layout: Layout) -> int:
         raise RbdcError("--topology applies to one robot; verify the robots one by one")
     for path, name in zip(paths, _batch_names(paths)):
         compilations.append(compile_robot(path, args.scene, args.topology, args.base, name, layout,
-                                          lock_mimic=args.lock_mimic))
+                                          mimic=args.mimic))
     directory = Path(args.keep) if args.keep else Path(tempfile.mkdtemp(prefix="rbdc-verify-"))
     try:
         return build_and_run(paths, compilations, directory, args, layout)

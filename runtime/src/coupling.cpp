@@ -87,6 +87,19 @@ VectorX independent_configuration(const Model& model, const VectorRef& q_tree) {
   return q;
 }
 
+VectorX independent_velocity(const Model& model, const VectorRef& v_tree) {
+  const CoupledCoordinates c = coupled_coordinates(model);
+  check_size("v", v_tree.size(), model.nv);
+  VectorX v(c.nv);
+  v.head(model.root_dofs()) = v_tree.head(model.root_dofs());
+  for (int i = 1; i < model.nb; ++i) {
+    if (!c.follower[static_cast<size_t>(i)]) {
+      v[c.v_index[static_cast<size_t>(i)]] = v_tree[model.joints[static_cast<size_t>(i)].v_index];
+    }
+  }
+  return v;
+}
+
 VectorX coupled_forward_dynamics(const Model& model, Data& data, const VectorRef& q, const VectorRef& v,
                                  const VectorRef& tau, const Matrix3X& f_world) {
   const CoupledCoordinates c = coupled_coordinates(model);

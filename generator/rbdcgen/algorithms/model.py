@@ -5,6 +5,7 @@ Section 3 (X_T, X_J, S_i, I_i) built once per traced function."""
 from __future__ import annotations
 
 
+from .. import coupling
 from .. import expr as ex
 from .. import spatial as sp
 
@@ -16,7 +17,8 @@ class TracedModel:
     scene declares zero is all constant zeros, so everything depending on it folds away."""
 
     def __init__(self, robot, scene, zero_inputs=()):
-        self.robot = robot
+        self.robot = coupling.tree_view(robot)  # the algorithms see the tree (coupling.py)
+        self.coupled = robot                     # the inputs have its independent coordinates
         self.scene = scene
         self.feet = scene.feet_for(robot)
         self.contacts = scene.contacts_for(robot)
@@ -34,21 +36,28 @@ class TracedModel:
                 self._cache[key] = tuple(ex.symbol(name, k) for k in range(size))
         return self._cache[key]
 
+    def tree_input(self, name, size):
+        """Input `name` of `size` independent coordinates, expanded to the tree's (coupling.py)."""
+        key = ("tree", name)
+        if key not in self._cache:
+            self._cache[key] = coupling.expand(self.coupled, name, self.input(name, size))
+        return self._cache[key]
+
     @property
     def q(self):
-        return self.input("q", self.robot.nq)
+        return self.tree_input("q", self.coupled.nq)
 
     @property
     def v(self):
-        return self.input("v", self.robot.nv)
+        return self.tree_input("v", self.coupled.nv)
 
     @property
     def a(self):
-        return self.input("a", self.robot.nv)
+        return self.tree_input("a", self.coupled.nv)
 
     @property
     def tau(self):
-        return self.input("tau", self.robot.n_joints)
+        return self.input("tau", self.coupled.n_joints)
 
     @property
     def f(self):

@@ -33,6 +33,9 @@ VectorX expand_configuration(const Model& model, const VectorRef& q);
 /// The independent configuration of a tree configuration (drops the followers' entries).
 VectorX independent_configuration(const Model& model, const VectorRef& q_tree);
 
+/// The independent velocity (or acceleration) of a tree one (drops the followers' entries).
+VectorX independent_velocity(const Model& model, const VectorRef& v_tree);
+
 /// Forward dynamics of the coupled model: a' = M'⁻¹(S'ᵀτ' + Gᵀτ_e − Gᵀ(c + g)), q: nq', v: nv',
 /// tau: the independent joints' efforts, f_world: 3 × n_feet. NaN when M' is not positive
 /// definite. Uses data for the tree quantities.

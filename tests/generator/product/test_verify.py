@@ -25,7 +25,7 @@ class VerifyDetectsMismatchTest(unittest.TestCase):
             heavier = Path(directory) / "two_link.urdf"
             heavier.write_text(GOLDEN_ROBOT.read_text().replace('<mass value="0.5"/>', '<mass value="0.6"/>'))
             compilation = compile_robot(GOLDEN_ROBOT, base="fixed", layout=layout)
-            args = argparse.Namespace(states=5, seed=1, tolerance=1e-10, lock_mimic=False, topology=None)
+            args = argparse.Namespace(states=5, seed=1, tolerance=1e-10, mimic="couple", topology=None)
             report = io.StringIO()
             with redirect_stdout(report):
                 status = verify.build_and_run([heavier], [compilation], Path(directory) / "work", args, layout)
