@@ -1,4 +1,4 @@
-"""The `rbdc` command line: generate, flops, verify, eval. Bad input ends with "error: ..." on
+"""The `rbdc` command line: generate, flops, verify, eval, check. Bad input ends with "error: ..." on
 stderr and exit code 2, never a traceback; `generate --check` and a failed `verify` exit with 1."""
 import argparse
 import os
@@ -88,6 +88,19 @@ def build_parser() -> argparse.ArgumentParser:
                         help="largest accepted relative error (default 1e-9)")
     verify.add_argument("--keep", type=Path, metavar="DIR",
                         help="write the generated code and harness here instead of a temporary dir")
+
+    check = sub.add_parser(
+        "check", help="lint a robot file: every warning and error with file:line, the resulting topology",
+        description="Loads the robot with the one C++ loader (rbdc-model --check) and lists every "
+                    "warning (repairs, ignored faults) and the refusal, if any, each with file:line, then "
+                    "PRED, SUCC, lambda, the DoF, couplings and the mass. Exit 0 unless the robot is "
+                    "refused (exit 2). Checks and tolerances: docs/model.md.")
+    check.add_argument("robot", type=Path, help="robot file: .urdf or topology .yaml")
+    check.add_argument("--topology", type=Path, metavar="FILE", help="topology YAML applied to the URDF")
+    base = check.add_mutually_exclusive_group()
+    base.add_argument("--floating-base", dest="base", action="store_const", const="floating")
+    base.add_argument("--fixed-base", dest="base", action="store_const", const="fixed")
+    _mimic_arguments(check)
 
     evaluate = sub.add_parser(
         "eval", help="the runtime's M, c, g and feet Jacobian at one state, as JSON",

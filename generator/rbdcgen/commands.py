@@ -6,7 +6,9 @@ from pathlib import Path
 
 from . import flops_report, verify
 from .errors import RbdcError
+from . import model_tool
 from .layout import Layout
+from .model_tool import ModelRequest
 from .pipeline import compile_robot, render
 
 
@@ -86,4 +88,11 @@ def evaluate(args, layout: Layout) -> int:
     return 0
 
 
-COMMANDS = {"generate": generate, "flops": flops, "verify": verify_command, "eval": evaluate}
+def check(args, layout: Layout) -> int:
+    request = ModelRequest(robot=args.robot, topology=args.topology, base=args.base, mimic=args.mimic)
+    if not request.robot.is_file():
+        raise RbdcError(f"{request.robot}: no such file")
+    return model_tool.check(request, layout)
+
+
+COMMANDS = {"generate": generate, "flops": flops, "verify": verify_command, "eval": evaluate, "check": check}

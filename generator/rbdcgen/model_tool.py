@@ -38,6 +38,17 @@ def model_command(request: ModelRequest, layout: Layout) -> list[str]:
     return command
 
 
+def check(request: ModelRequest, layout: Layout) -> int:
+    """`rbdc check`: rbdc-model's lint report (every warning and the refusal with file:line, then the
+    topology) on stdout; its exit code, 0 unless the robot is refused."""
+    if not layout.model_tool.exists():
+        raise RbdcError(f"{layout.model_tool}: rbdc-model is not built (cmake --build build --target rbdc-model)")
+    result = subprocess.run(model_command(request, layout) + ["--check"], capture_output=True, text=True)
+    sys.stdout.write(result.stdout)
+    sys.stderr.write(result.stderr)
+    return result.returncode
+
+
 def load_robot(request: ModelRequest, layout: Layout) -> Robot:
     """The IR for the request; raises RbdcError with rbdc-model's own message on bad input (IRError
     naming the file for a malformed IR file)."""

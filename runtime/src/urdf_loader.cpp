@@ -125,7 +125,7 @@ class UrdfTranslator {
         throw ModelError(path_ + ": locked joint '" + name + "' does not exist");
       }
     }
-    resolve_mimics();
+    if (opts_.mimic == MimicMode::Couple) resolve_mimics();
     drafts_.emplace_back();  // body 0, the root
     visit(choose_root(), 0, Pose{});
     return assemble();
@@ -159,7 +159,9 @@ class UrdfTranslator {
         const std::string label = "joint '" + j->name + "' mimics joint '" + rule.leader + "'";
         if (leader == nullptr) fail(&edge, label + ", which does not exist");
         if (std::find(chain.begin(), chain.end(), rule.leader) != chain.end()) {
-          fail(&edge, label + ": the mimic joints form a cycle");
+          std::string cycle;
+          for (const std::string& name : chain) cycle += "'" + name + "' → ";
+          fail(&edge, "joint '" + j->name + "': its mimic joints form a cycle (" + cycle + "'" + rule.leader + "')");
         }
         if (leader->type != urdf::Joint::REVOLUTE && leader->type != urdf::Joint::CONTINUOUS &&
             leader->type != urdf::Joint::PRISMATIC) {
