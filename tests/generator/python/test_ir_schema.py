@@ -60,10 +60,14 @@ class Reader(unittest.TestCase):
 
     def test_what_the_schema_refuses_the_reader_refuses(self):
         data = load_json(os.path.join(DATA, "tiny_floating.json"))
+        data["couplings"] = [{"follower": 2, "leader": 1, "multiplier": 0.5, "offset": 0.0}]
+        self.assertEqual(errors(data, SCHEMA), [])
+        load_ir(data)
         # (container inside the document, its schema) for the top level and one of each element.
         places = [(lambda d: d, SCHEMA)] + [
             (lambda d, key=key: d[key][0], SCHEMA["$defs"][element])
-            for key, element in (("bodies", "body"), ("joints", "joint"), ("feet", "foot"))]
+            for key, element in (("bodies", "body"), ("joints", "joint"), ("feet", "foot"),
+                                 ("couplings", "coupling"))]
         for container, schema in places:
             for key in schema["required"]:
                 for change in ("remove", "retype"):
