@@ -14,10 +14,6 @@ inline std::string source_path(const std::string& relative) {
 
 inline std::string data_path(const std::string& name) { return source_path("tests/data/" + name); }
 
-inline std::string shared_robot_path(const std::string& name) {
-  return std::string(RBDC_SHARED_DIR) + "/robots/" + name;
-}
-
 /// The ModelError message thrown by `load`, or "no error".
 inline std::string model_error(const std::function<void()>& load) {
   try {

@@ -1,8 +1,9 @@
 // URDF loading: the bundled Mini Cheetah (paper 000 Eqs. 1-3), fixed-joint lumping, rotated inertial
-// frames, feet, locking, mimic policy and every refusal of bad input.
+// frames, feet, locking, mimic policy, every repair with its warning and every refusal of bad input.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 
 #include "model_test_support.hpp"
@@ -12,6 +13,7 @@ namespace rbdc {
 namespace {
 
 using ::testing::AllOf;
+using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using test::data_path;
 using test::model_error;
@@ -144,16 +146,101 @@ TEST(UrdfLoader, LockedJointIsMergedAtItsPosition) {
               HasSubstr("locked joint 'no_such_joint' does not exist"));
 }
 
-TEST(UrdfLoader, MimicJointIsRefusedUnlessLocked) {
+TEST(UrdfLoader, MimicJointIsCoupledByDefaultLockedOrIndependentOnRequest) {
   const std::string path = data_path("mimic.urdf");
-  EXPECT_THAT(model_error([&] { load_urdf(path); }),
-              AllOf(HasSubstr("mimic.urdf:6"), HasSubstr("joint 'jb' mimics joint 'ja'"), HasSubstr("lock_mimic")));
+  const Model coupled = load_urdf(path);
+  EXPECT_EQ(coupled.nb, 3);
+  ASSERT_EQ(coupled.couplings.size(), 1u);
+  EXPECT_EQ(coupled.joints[static_cast<size_t>(coupled.couplings[0].follower)].name, "jb");
+  EXPECT_EQ(coupled.joints[static_cast<size_t>(coupled.couplings[0].leader)].name, "ja");
+  EXPECT_EQ(coupled.couplings[0].multiplier, -1);
+  EXPECT_EQ(coupled.couplings[0].offset, 0.25);
   UrdfOptions opts;
-  opts.lock_mimic = true;
+  opts.mimic = MimicMode::Independent;
+  const Model independent = load_urdf(path, opts);
+  EXPECT_EQ(independent.nb, 3);
+  EXPECT_TRUE(independent.couplings.empty());
+  opts.mimic = MimicMode::Lock;
   const Model m = load_urdf(path, opts);
   EXPECT_EQ(m.nb, 2);  // jb locked at its offset 0.25 about y: b's COM (0,0,-0.1) swings to x < 0
   const Vector3 b_com = Vector3(0, 0, -0.2) + Eigen::AngleAxisd(0.25, Vector3::UnitY()) * Vector3(0, 0, -0.1);
   EXPECT_TRUE(m.bodies[0].com.isApprox((Vector3(0, 0, -0.1) + b_com) / 2, 1e-14));
+}
+
+TEST(UrdfLoader, ChainsOfMimicJointsCoupleToTheFirstLeader) {
+  const Model m = load_urdf(data_path("mimic_chain.urdf"));
+  ASSERT_EQ(m.couplings.size(), 2u);  // jb = -ja + 0.25, jc = 3 jb + 0.5 = -3 ja + 1.25
+  EXPECT_EQ(m.joints[static_cast<size_t>(m.couplings[1].follower)].name, "jc");
+  EXPECT_EQ(m.joints[static_cast<size_t>(m.couplings[1].leader)].name, "ja");
+  EXPECT_DOUBLE_EQ(m.couplings[1].multiplier, -3);
+  EXPECT_DOUBLE_EQ(m.couplings[1].offset, 1.25);
+}
+
+TEST(UrdfLoader, ALockedLeaderLocksItsFollowers) {
+  UrdfOptions opts;
+  opts.locked_joints = {{"ja", 0.5}};
+  const Model m = load_urdf(data_path("mimic.urdf"), opts);
+  EXPECT_EQ(m.nb, 1);  // jb locked at -0.5 + 0.25
+  const Vector3 b_com = Vector3(0, 0, -0.2) + Eigen::AngleAxisd(-0.25, Vector3::UnitY()) * Vector3(0, 0, -0.1);
+  const Vector3 a_com = Vector3(0, 0, -0.2) + Eigen::AngleAxisd(0.5, Vector3::UnitY()) * Vector3(0, 0, -0.1);
+  EXPECT_TRUE(m.bodies[0].com.isApprox((Vector3(0, 0, -0.1) + a_com + b_com) / 3, 1e-14));
+}
+
+// Warnings name the file and line; the robot loads with the repair applied.
+std::vector<std::string> warnings_of(const std::string& file, const UrdfOptions& opts = {}) {
+  std::vector<std::string> warnings;
+  load_urdf(data_path(file), opts, &warnings);
+  return warnings;
+}
+
+TEST(UrdfLoaderRepairs, RoundOffIndefiniteInertiaIsClippedWithAWarning) {
+  std::vector<std::string> warnings;
+  const Model m = load_urdf(data_path("round_off_inertia.urdf"), {}, &warnings);
+  ASSERT_FALSE(warnings.empty());
+  EXPECT_THAT(warnings[0], AllOf(HasSubstr("round_off_inertia.urdf:6: link 'arm'"),
+                                 HasSubstr("negative by 1.4e-20"), HasSubstr("clipped")));
+  const Eigen::SelfAdjointEigenSolver<Matrix3> eigen(m.bodies[1].inertia_com);
+  EXPECT_GE(eigen.eigenvalues().minCoeff(), 0.0);
+  EXPECT_NEAR(eigen.eigenvalues().maxCoeff(), 1.4e-20, 1e-30);
+}
+
+TEST(UrdfLoaderRepairs, IndefiniteInertiaBeyondRoundOffIsRefused) {
+  EXPECT_THAT(model_error([] { load_urdf(data_path("slightly_indefinite.urdf")); }),
+              AllOf(HasSubstr("slightly_indefinite.urdf:5: link 'arm'"), HasSubstr("not positive semi-definite")));
+}
+
+TEST(UrdfLoaderRepairs, VisualCollisionAndMaterialFaultsAreWarnings) {
+  EXPECT_THAT(warnings_of("appearance_faults.urdf"),
+              ElementsAre(HasSubstr("appearance_faults.urdf:8: link 'base': <visual> without <geometry>"),
+                          HasSubstr("appearance_faults.urdf:12: link 'arm': <collision> without <geometry>"),
+                          HasSubstr("appearance_faults.urdf:5: <material> without a name")));
+}
+
+TEST(UrdfLoaderRepairs, MasslessLinksWithInertiaAreDroppedWhereWeldedElseKept) {
+  UrdfOptions opts;
+  opts.floating_base = false;
+  std::vector<std::string> warnings;
+  const Model m = load_urdf(data_path("massless_inertia.urdf"), opts, &warnings);
+  EXPECT_THAT(warnings, ElementsAre(HasSubstr(":6: link 'world': zero mass but non-zero rotational inertia; welded"),
+                                    HasSubstr(":7: link 'mount': zero mass but non-zero rotational inertia; welded"),
+                                    HasSubstr(":10: link 'sensor': zero mass but non-zero rotational inertia; kept")));
+  EXPECT_EQ(m.bodies[0].inertia_com, Matrix3::Identity() * 0.01);  // base only
+  EXPECT_TRUE(m.bodies[1].inertia_com.isApprox(Matrix3::Identity() * 0.012, 1e-14));  // arm + sensor
+}
+
+TEST(UrdfLoaderRepairs, JointWithoutLimitLoadsUnlimitedWithAWarning) {
+  std::vector<std::string> warnings;
+  const Model m = load_urdf(data_path("unlimited.urdf"), {}, &warnings);
+  EXPECT_TRUE(std::isinf(m.joints[1].upper));
+  EXPECT_THAT(warnings, ElementsAre(HasSubstr("unlimited.urdf:6: joint 'hinge' has no <limit>")));
+}
+
+TEST(UrdfLoaderRepairs, FixedBaseWarnsWhenItDropsTheFilesFloatingJoint) {
+  EXPECT_TRUE(warnings_of("world_floating.urdf").empty());
+  UrdfOptions opts;
+  opts.floating_base = false;
+  EXPECT_THAT(warnings_of("world_floating.urdf", opts),
+              ElementsAre(HasSubstr("world_floating.urdf:5: floating joint 'free' from link 'world' is dropped")));
 }
 
 TEST(UrdfLoader, MasslessWorldRootIsDroppedOrMerged) {
@@ -215,7 +302,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadUrdf{"inf_mass.urdf", "Could not parse inertial element for Link [heavy]"},
         BadUrdf{"negative_mass.urdf", "link 'light': mass is negative"},
         BadUrdf{"non_psd.urdf", "link 'wobbly': rotational inertia is not positive semi-definite"},
-        BadUrdf{"massless_leaf.urdf", "body 'ghost' (1) is a moving leaf with zero mass"}),
+        BadUrdf{"massless_leaf.urdf", "body 'ghost' (1) is a moving leaf with zero mass"},
+        BadUrdf{"slightly_indefinite.urdf", "link 'arm': rotational inertia is not positive semi-definite"},
+        BadUrdf{"mimic_missing_leader.urdf", ":6: joint 'jb' mimics joint 'nowhere', which does not exist"},
+        BadUrdf{"mimic_cycle.urdf", ":7: joint 'ja': its mimic joints form a cycle ('ja' → 'jb' → 'ja')"},
+        BadUrdf{"mimic_fixed_leader.urdf", ":8: joint 'jb' mimics joint 'ja', which cannot move"}),
     [](const ::testing::TestParamInfo<BadUrdf>& info) {
       std::string name = info.param.file;
       return name.substr(0, name.find('.'));
