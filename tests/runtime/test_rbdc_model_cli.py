@@ -51,13 +51,17 @@ class RbdcModelCli(unittest.TestCase):
         self.assertEqual((fixed["nq"], fixed["joints"][0]["type"]), (12, "fixed"))
         locked = json.loads(run(RBDC_MODEL, os.path.join(DATA, "split_body.urdf"), "--lock", "elbow=0.5").stdout)
         self.assertEqual(locked["nb"], 2)
-        mimic = json.loads(run(RBDC_MODEL, os.path.join(DATA, "mimic.urdf"), "--lock-mimic").stdout)
-        self.assertEqual(mimic["nb"], 2)
+        mimic = os.path.join(DATA, "mimic.urdf")
+        coupled = json.loads(run(RBDC_MODEL, mimic).stdout)
+        self.assertEqual((coupled["nb"], coupled["nv"]), (3, 8))  # the IR keeps the tree
+        self.assertEqual(coupled["couplings"], [{"follower": 2, "leader": 1, "multiplier": -1, "offset": 0.25}])
+        self.assertEqual(json.loads(run(RBDC_MODEL, mimic, "--lock-mimic").stdout)["nb"], 2)
+        self.assertEqual(json.loads(run(RBDC_MODEL, mimic, "--independent-mimic").stdout)["couplings"], [])
 
     def test_errors_exit_2_with_one_message(self):
         for args, message in [
             ((os.path.join(DATA, "two_parents.urdf"),), "link 'b' has two parents"),
-            ((os.path.join(DATA, "mimic.urdf"),), "--lock-mimic"),
+            ((os.path.join(DATA, "mimic_cycle.urdf"),), "its mimic joints form a cycle"),
             ((MINI_CHEETAH, "--bogus"), "unknown option '--bogus'"),
             ((MINI_CHEETAH, "--lock", "nothing"), "--lock expects NAME=VALUE"),
             ((), "no robot file given"),
@@ -71,7 +75,8 @@ class RbdcModelCli(unittest.TestCase):
     def test_help(self):
         r = run(RBDC_MODEL, "--help")
         self.assertEqual(r.returncode, 0)
-        self.assertIn("--lock-mimic", r.stdout)
+        for option in ("--lock-mimic", "--independent-mimic", "--check"):
+            self.assertIn(option, r.stdout)
 
 
 class RbdcInfoCli(unittest.TestCase):
