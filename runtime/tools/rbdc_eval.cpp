@@ -108,6 +108,11 @@ int main(int argc, char** argv) {
       return 0;
     }
     const Model model = load_model(opts);
+    if (!model.couplings.empty()) {  // its output is keyed by tree coordinates (one per joint)
+      throw std::invalid_argument(opts.input + ": " + std::to_string(model.couplings.size()) +
+                                  " mimic joints are coupled; rbdc-eval reports one coordinate per joint: "
+                                  "use --independent-mimic or --lock-mimic");
+    }
     VectorX neutral = VectorX::Zero(model.nq);
     if (model.floating_base) neutral[3] = 1;  // quaternion (w, x, y, z) = identity
     const VectorX q = state_vector("--q", has_q ? &q_values : nullptr, model.nq, neutral);

@@ -50,6 +50,15 @@ for args, message in [
     check(bad.returncode == 2, f"{args}: exit code {bad.returncode}")
     check(f"error: {message}" in bad.stderr, f"{args}: message {bad.stderr!r}")
 
+# Coupled mimic joints have no coordinate of their own: refused, naming the options that give one.
+MIMIC = f"{ROOT}/tests/data/mimic.urdf"
+coupled = run(MIMIC)
+check(coupled.returncode == 2 and "use --independent-mimic or --lock-mimic" in coupled.stderr,
+      f"coupled mimic: {coupled.stderr!r}")
+independent = run(MIMIC, "--independent-mimic")
+check(independent.returncode == 0 and json.loads(independent.stdout)["joint_names"][-2:] == ["ja", "jb"],
+      f"independent mimic: {independent.stderr!r}")
+
 for f in failures:
     print("FAILED:", f)
 print(f"{checks - len(failures)} passed, {len(failures)} failed")
