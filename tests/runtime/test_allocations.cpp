@@ -123,6 +123,27 @@ TEST_P(Allocations, NoAlgorithmCallAllocates) {
   EXPECT_EQ(allocations_during([&] { osc_closed_form_constrained(model, data, q, v, some_contacts); }), 0);
 }
 
+TEST_P(Allocations, NoDerivativeCallAllocates) {
+  if (!RBDC_COUNT_ALLOCATIONS) GTEST_SKIP() << "sanitizer build: allocator not interposed";
+  test::RandomState random(6);
+  Data data(model);
+  DerivativeData derivatives(model);
+  const VectorX q = random.configuration(model);
+  const VectorX v = random.vector(model.nv);
+  const VectorX a = random.vector(model.nv);
+  const VectorX tau = random.vector(model.num_joints());
+  const Matrix3X f = random.forces(model);
+  VectorX q_next(model.nq);
+  DerivativeData& d = derivatives;
+  EXPECT_EQ(allocations_during([&] { inverse_dynamics_derivatives(model, data, d, q, v, a); }), 0);
+  EXPECT_EQ(allocations_during([&] { bias_derivatives(model, data, d, q, v); }), 0);
+  EXPECT_EQ(allocations_during([&] { gravity_derivatives(model, data, d, q); }), 0);
+  EXPECT_EQ(allocations_during([&] { forward_dynamics_derivatives(model, data, d, q, v, tau, f); }), 0);
+  EXPECT_EQ(allocations_during([&] { feet_velocity_derivatives(model, data, d, q, v); }), 0);
+  EXPECT_EQ(allocations_during([&] { feet_force_term_derivatives(model, data, d, q, f); }), 0);
+  EXPECT_EQ(allocations_during([&] { integrate(model, q, v, q_next); }), 0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Robots, Allocations, ::testing::Range(0, 4));
 
 }  // namespace
