@@ -46,13 +46,14 @@ TEST(IrJson, KeysAreSortedAndValuesComeFromTheModel) {
   for (std::string line; std::getline(lines, line);) {
     if (line.rfind("  \"", 0) == 0) keys.push_back(line.substr(3, line.find('"', 3) - 3));
   }
-  const std::vector<std::string> expected = {"PRED", "SUCC", "bodies", "feet", "floating_base", "format",
-                                             "gravity", "joints", "kappa", "lambda", "mu", "name",
+  const std::vector<std::string> expected = {"PRED", "SUCC", "bodies", "couplings", "feet", "floating_base",
+                                             "format", "gravity", "joints", "kappa", "lambda", "mu", "name",
                                              "nb", "nq", "nu", "nv"};
   EXPECT_EQ(keys, expected);
   EXPECT_THAT(ir, HasSubstr("\"format\": \"rbdc-ir-1\""));
   EXPECT_THAT(ir, HasSubstr("\"PRED\": [0, 1, 2, 0, 4, 5, 0, 7, 8, 0, 10, 11]"));
   EXPECT_THAT(ir, HasSubstr("\"lower\": null"));
+  EXPECT_THAT(ir, HasSubstr("\"couplings\": []"));
   // Every body mass reads back exactly, in order.
   const std::string tag = "\"mass\": ";
   size_t i = 0;

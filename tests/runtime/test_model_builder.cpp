@@ -161,9 +161,45 @@ TEST(ModelBuilder, RefusesBadInertias) {
   spec = quadruped_spec();
   spec.bodies[2].com.y() = std::numeric_limits<double>::infinity();
   EXPECT_THAT(error_of(spec), HasSubstr("COM has NaN or Inf"));
-  spec = quadruped_spec();
-  spec.bodies[2].mass = 0;
-  EXPECT_THAT(error_of(spec), HasSubstr("zero mass but non-zero rotational inertia"));
+}
+
+TEST(ModelBuilder, RepairsInertiaDefectsWithinRoundOffWithAWarning) {
+  ModelSpec spec = quadruped_spec();
+  const double tr = spec.bodies[2].inertia_com.trace();
+  spec.bodies[2].inertia_com(0, 1) = 1e-10 * tr;  // asymmetric by 1e-10 tr: within 1e-9 tr
+  spec.bodies[3].inertia_com = Vector3(-5e-12, 0.01, 0.01).asDiagonal();  // within 1e-9 tr + 1e-12
+  spec.bodies[4].mass = 0;  // keeps its rotational inertia
+  std::vector<std::string> warnings;
+  const Model m = build_model(spec, &warnings);
+  ASSERT_EQ(warnings.size(), 3u);
+  EXPECT_THAT(warnings[0], HasSubstr("'LF_hip' (2): rotational inertia is not symmetric by"));
+  EXPECT_THAT(warnings[1], HasSubstr("'LF_knee' (3): rotational inertia has principal moments"));
+  EXPECT_THAT(warnings[1], HasSubstr("clipped to zero"));
+  EXPECT_THAT(warnings[2], HasSubstr("(4): zero mass but non-zero rotational inertia; kept"));
+  EXPECT_EQ(m.bodies[2].inertia_com, m.bodies[2].inertia_com.transpose());
+  EXPECT_DOUBLE_EQ(m.bodies[2].inertia_com(0, 1), 0.5e-10 * tr);
+  EXPECT_NEAR(m.bodies[3].inertia_com(0, 0), 0.0, 1e-18);
+  EXPECT_EQ(m.bodies[4].inertia_com, spec.bodies[4].inertia_com);
+  spec.bodies[2].inertia_com(0, 1) = 1e-8 * tr;  // beyond: refused as before
+  EXPECT_THAT(error_of(spec), HasSubstr("'LF_hip' (2): rotational inertia is not symmetric"));
+}
+
+TEST(ModelBuilder, ChecksCouplings) {
+  ModelSpec spec = quadruped_spec();
+  spec.couplings = {{5, 2, -1.0, 0.5}};
+  const Model m = build_model(spec);
+  ASSERT_EQ(m.couplings.size(), 1u);
+  EXPECT_EQ(m.couplings[0].leader, 2);
+  spec.couplings = {{5, 5, 1.0, 0.0}};
+  EXPECT_THAT(error_of(spec), HasSubstr("a joint cannot follow itself"));
+  spec.couplings = {{5, 2, 1.0, 0.0}, {5, 3, 1.0, 0.0}};
+  EXPECT_THAT(error_of(spec), HasSubstr("the joint is coupled twice"));
+  spec.couplings = {{5, 2, 1.0, 0.0}, {2, 3, 1.0, 0.0}};
+  EXPECT_THAT(error_of(spec), HasSubstr("which itself follows another joint"));
+  spec.couplings = {{5, 13, 1.0, 0.0}};
+  EXPECT_THAT(error_of(spec), HasSubstr("joint index out of range"));
+  spec.couplings = {{5, 2, std::numeric_limits<double>::quiet_NaN(), 0.0}};
+  EXPECT_THAT(error_of(spec), HasSubstr("multiplier or offset is NaN"));
 }
 
 TEST(ModelBuilder, RefusesAMasslessMovingLeaf) {
