@@ -1,13 +1,17 @@
 // rbdc-eval: the runtime's M, c, g, feet positions and feet Jacobian at one state, as JSON keyed by
 // velocity-coordinate names (a floating base's first six are root_wx … root_vz), numbers with 17
-// significant digits. With --a it also prints inverse_dynamics(q, v, a) as "tau". Used by
-// `rbdc eval` to compare the runtime with other libraries. Bad input exits with code 2.
+// significant digits. With --a it also prints inverse_dynamics(q, v, a) as "tau"; with --derivatives
+// the analytic derivatives of rbdc/derivatives.hpp (at --a, --tau, --f). Used by `rbdc eval` to
+// compare the runtime with other libraries. Bad input exits with code 2.
 #include <iomanip>
 #include <iostream>
+#include <iterator>
+#include <utility>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "rbdc/derivatives.hpp"
 #include "rbdc/rbdc.hpp"
 #include "tool_options.hpp"
 
@@ -81,29 +85,63 @@ void write_rows(std::ostream& out, const Matrix& m, const char* indent) {
   out << "\n" << indent << "]";
 }
 
+/// "derivatives": every output of rbdc/derivatives.hpp under its own name, as row lists.
+void write_derivatives(std::ostream& out, const Model& model, rbdc::Data& data, const VectorX& q,
+                       const VectorX& v, const VectorX& a, const VectorX& tau, const rbdc::Matrix3X& f) {
+  rbdc::DerivativeData d(model);
+  rbdc::inverse_dynamics_derivatives(model, data, d, q, v, a);
+  const MatrixX dtau_dq = d.dtau_dq, dtau_dv = d.dtau_dv;  // forward dynamics redoes them at its a
+  rbdc::bias_derivatives(model, data, d, q, v);
+  rbdc::gravity_derivatives(model, data, d, q);
+  rbdc::forward_dynamics_derivatives(model, data, d, q, v, tau, f);
+  rbdc::feet_velocity_derivatives(model, data, d, q, v);
+  const std::pair<const char*, const MatrixX*> outputs[] = {
+      {"dtau_dq", &dtau_dq}, {"dtau_dv", &dtau_dv},     {"dbias_dq", &d.dbias_dq},
+      {"dbias_dv", &d.dbias_dv}, {"dg_dq", &d.dg_dq},     {"da_dq", &d.da_dq},
+      {"da_dv", &d.da_dv},   {"da_dtau", &d.da_dtau}, {"da_df", &d.da_df},
+      {"dpdot_dq", &d.dpdot_dq}, {"dtau_e_dq", &d.dtau_e_dq}};
+  out << ",\n  \"derivatives\": {";
+  for (size_t k = 0; k < std::size(outputs); ++k) {
+    out << (k ? ",\n    " : "\n    ") << std::quoted(outputs[k].first) << ": ";
+    write_rows(out, *outputs[k].second, "    ");
+  }
+  out << "\n  }";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace rbdc::tools;
   return run_tool([&] {
     LoadOptions opts;
-    std::vector<double> q_values, v_values, a_values;
-    bool has_q = false, has_v = false, has_a = false;
+    std::vector<double> q_values, v_values, a_values, tau_values, f_values;
+    bool has_q = false, has_v = false, has_a = false, has_tau = false, has_f = false;
+    bool derivatives = false;
     const ExtraOption state_options = [&](int n, char** args, int& i) {
       const std::string arg = args[i];
-      std::vector<double>* target = arg == "--q" ? &q_values : arg == "--v" ? &v_values
-                                  : arg == "--a" ? &a_values : nullptr;
-      if (target == nullptr) return false;
-      if (i + 1 >= n) throw std::invalid_argument(arg + " expects comma-separated numbers");
-      *target = parse_list(arg, args[++i]);
-      (arg == "--q" ? has_q : arg == "--v" ? has_v : has_a) = true;
-      return true;
+      if (arg == "--derivatives") return derivatives = true;
+      const std::pair<const char*, std::pair<std::vector<double>*, bool*>> vectors[] = {
+          {"--q", {&q_values, &has_q}},       {"--v", {&v_values, &has_v}},
+          {"--a", {&a_values, &has_a}},       {"--tau", {&tau_values, &has_tau}},
+          {"--f", {&f_values, &has_f}}};
+      for (const auto& [name, target] : vectors) {
+        if (arg != name) continue;
+        if (i + 1 >= n) throw std::invalid_argument(arg + " expects comma-separated numbers");
+        *target.first = parse_list(arg, args[++i]);
+        *target.second = true;
+        return true;
+      }
+      return false;
     };
     if (!parse_load_options(argc, argv, opts, state_options)) {
       std::cout << "usage: rbdc-eval ROBOT [options] [--q Q0,Q1,…] [--v V0,V1,…] [--a A0,A1,…]\n"
+                   "                 [--derivatives [--tau T0,…] [--f F0x,F0y,F0z,F1x,…]]\n"
                    "Prints the runtime's M, c, g, feet positions and feet Jacobian (and with --a the\n"
                    "inverse dynamics tau) at one state as JSON. Defaults: q neutral (identity\n"
-                   "quaternion), v zero.\n\n"
+                   "quaternion), v, a, tau and the world foot forces f (foot-major) zero.\n"
+                   "--derivatives adds \"derivatives\": dtau_dq, dtau_dv (at a), dbias_dq, dbias_dv,\n"
+                   "dg_dq, da_dq, da_dv, da_dtau, da_df (at tau, f), dpdot_dq, dtau_e_dq (at f), with\n"
+                   "respect to q on the manifold (docs/conventions.md).\n\n"
                 << kLoadOptionsHelp;
       return 0;
     }
@@ -118,6 +156,10 @@ int main(int argc, char** argv) {
     const VectorX q = state_vector("--q", has_q ? &q_values : nullptr, model.nq, neutral);
     const VectorX v = state_vector("--v", has_v ? &v_values : nullptr, model.nv, VectorX::Zero(model.nv));
     const VectorX a = state_vector("--a", has_a ? &a_values : nullptr, model.nv, VectorX::Zero(model.nv));
+    const VectorX tau = state_vector("--tau", has_tau ? &tau_values : nullptr, model.num_joints(),
+                                     VectorX::Zero(model.num_joints()));
+    const Eigen::Index n_forces = 3 * static_cast<Eigen::Index>(model.feet.size());
+    const VectorX f = state_vector("--f", has_f ? &f_values : nullptr, n_forces, VectorX::Zero(n_forces));
 
     rbdc::Data data(model);
     const MatrixX M = rbdc::mass_matrix(model, data, q);
@@ -148,7 +190,12 @@ int main(int argc, char** argv) {
     write_rows(out, feet.transpose(), "    ");
     out << ",\n    \"jacobian\": ";
     write_rows(out, J, "    ");
-    out << "\n  }\n}\n";
+    out << "\n  }";
+    if (derivatives) {
+      write_derivatives(out, model, data, q, v, a, tau,
+                        Eigen::Map<const rbdc::Matrix3X>(f.data(), 3, n_forces / 3));
+    }
+    out << "\n}\n";
     return 0;
   });
 }

@@ -41,6 +41,41 @@ check("tau" not in out, "no tau without --a")
 with_a = json.loads(run(CHEETAH, "--q", STANDING, "--a", ",".join(["0"] * 18)).stdout)
 check(with_a["tau"] == with_a["g"], "tau at v = a = 0 equals g")
 
+# --derivatives: every output of rbdc/derivatives.hpp with its shape; one column of each kind checked
+# against central differences of the plain outputs (joint coordinates: the manifold step is q + δ).
+TAU = ",".join(str(0.5 * k - 3) for k in range(12))
+V = ",".join(str(0.1 * ((k % 5) + 1) * (-1) ** k) for k in range(18))
+derived = run(CHEETAH, "--q", STANDING, "--v", V, "--tau", TAU, "--derivatives")
+check(derived.returncode == 0, f"--derivatives: exit {derived.returncode}: {derived.stderr}")
+d = json.loads(derived.stdout)["derivatives"]
+shapes = {"dtau_dq": (18, 18), "dtau_dv": (18, 18), "dbias_dq": (18, 18), "dbias_dv": (18, 18),
+          "dg_dq": (18, 18), "da_dq": (18, 18), "da_dv": (18, 18), "da_dtau": (18, 12),
+          "da_df": (18, 12), "dpdot_dq": (12, 18), "dtau_e_dq": (18, 18)}
+check({k: (len(m), len(m[0])) for k, m in d.items()} == shapes, "derivative names and shapes")
+check(all(row[3:6] == [0, 0, 0] for row in d["dg_dq"]), "trunk position columns of dg_dq are zero")
+check("derivatives" not in out, "no derivatives without --derivatives")
+H = 1e-6
+JOINT = 7  # the LF knee's column in v (q index 8)
+
+
+def at_knee(delta):
+    q = [float(x) for x in STANDING.split(",")]
+    q[JOINT + 1] += delta
+    return json.loads(run(CHEETAH, "--q", ",".join(map(repr, q)), "--v", V).stdout)
+
+
+plus, minus = at_knee(H), at_knee(-H)
+fd_g = [(p - m) / (2 * H) for p, m in zip(plus["g"], minus["g"])]
+check(max(abs(fd_g[r] - d["dg_dq"][r][JOINT]) for r in range(18)) < 1e-6 * max(1, max(map(abs, fd_g))),
+      "dg_dq knee column vs central differences of g")
+fd_bias = [(pc + pg - mc - mg) / (2 * H)
+           for pc, pg, mc, mg in zip(plus["c"], plus["g"], minus["c"], minus["g"])]
+check(max(abs(fd_bias[r] - d["dbias_dq"][r][JOINT]) for r in range(18)) < 1e-6 * max(1, max(map(abs, fd_bias))),
+      "dbias_dq knee column vs central differences of c + g")
+bad_tau = run(CHEETAH, "--derivatives", "--tau", "1,2")
+check(bad_tau.returncode == 2 and "error: --tau has 2 values, the model needs 12" in bad_tau.stderr,
+      f"--tau length: {bad_tau.stderr!r}")
+
 for args, message in [
     (["--q", "1,2"], "--q has 2 values, the model needs 19"),
     (["--v", "nan" + ",0" * 17], "--v has a NaN or Inf value"),
