@@ -1,5 +1,6 @@
 """What each `rbdc` subcommand does, given its parsed arguments (cli.py owns the parsing)."""
 import json
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -10,6 +11,9 @@ from . import model_tool
 from .layout import Layout
 from .model_tool import ModelRequest
 from .pipeline import compile_robot, render
+from .render import COMMON_DIR
+
+_INCLUDE = re.compile(r'^#include "([^"]+)"', re.MULTILINE)
 
 
 def _compile(args, layout: Layout):
@@ -47,11 +51,20 @@ def generate(args, layout: Layout) -> int:
 
 
 def _stale_files(files, out: Path) -> list[Path]:
-    """Quantity headers left in this robot/scene directory by an earlier run with other quantities."""
+    """Quantity headers left in this robot/scene directory by an earlier run with other quantities,
+    and shared bodies in <robot>/common/ that no scene's header includes any more (this scene's new
+    headers, the other scenes' headers on disk)."""
     umbrella = next(f for f in files if f.path.count("/") == 1 and not f.path.startswith("rbdc_gen/"))
+    robot_dir = out / umbrella.path.split("/")[0]
     directory = out / umbrella.path.removesuffix(".hpp")
     wanted = {out / f.path for f in files}
-    return sorted(p for p in directory.glob("*.hpp") if p not in wanted) if directory.is_dir() else []
+    stale = sorted(p for p in directory.glob("*.hpp") if p not in wanted) if directory.is_dir() else []
+    common = robot_dir / COMMON_DIR
+    if not common.is_dir():
+        return stale
+    others = [p.read_text() for p in robot_dir.glob("*/*.hpp") if p.parent not in (directory, common)]
+    included = {out / m for text in [f.text for f in files] + others for m in _INCLUDE.findall(text)}
+    return stale + sorted(p for p in common.glob("*.hpp") if p not in included)
 
 
 def flops(args, layout: Layout) -> int:

@@ -5,10 +5,13 @@ The statements are the body of
 Inputs are read as `q[k]`, each output entry is written exactly once as `M[k] = …;` (column-major,
 zeros and mirrored entries included). sin/cos of the joint angles come first, in one block: the
 angles are gathered into an array and `joint_sincos` (rbdc_gen/support.hpp) computes them all at once
-(a vectorised polynomial for double and float); then
-every node used more than once becomes `const Scalar tN = …;` in topological order, and nodes used
-once are inlined into their single user, up to MAX_INLINE_OPS operations per expression. Same DAG
-in, same text out."""
+(a vectorised polynomial for double and float), named by joint (`sin_LF_knee`); then
+every node used more than once becomes `const Scalar tN = …;` in the order the algorithm created
+them (expr.Expr.position, kept topological), and nodes used
+once are inlined into their single user, up to MAX_INLINE_OPS operations per expression. A comment
+names the phase of the algorithm (expr labels: `// outward pass: body 3 LF_knee`) where it changes.
+Constants print in their shortest round-trip form and a negative constant operand of + or − flips
+the operator (`x + Scalar(0.5)`, never `x - Scalar(-0.5)`). Same DAG in, same text out."""
 
 from __future__ import annotations
 
@@ -22,8 +25,30 @@ ANGLES_PER_LINE = 8  # entries per line of the joint angle array
 
 
 def format_constant(value):
-    """The double printed exactly (17 significant digits), e.g. Scalar(0.20899999999999999)."""
-    return "Scalar(%s)" % format(value, ".17g")
+    """The double in its shortest form that reads back exactly (Python's repr), whole numbers
+    without a fraction.
+
+    >>> format_constant(0.049), format_constant(1e-05), format_constant(2.0), format_constant(-1e+16)
+    ('Scalar(0.049)', 'Scalar(1e-05)', 'Scalar(2)', 'Scalar(-1e+16)')
+    """
+    return "Scalar(%s)" % repr(value).removesuffix(".0")
+
+
+def _is_negative_const(node):
+    return node.op == "const" and node.value < 0.0
+
+
+def _signed_operands(node):
+    """(left, symbol, right) of a + or − node, the sign of a negative constant operand folded into
+    the operator: x − (−c) → x + c, x + (−c) → x − c, (−c) + x → x − c (right is then the float c).
+    Same value, same cost."""
+    x, y = node.args
+    symbol = _BINARY_SYMBOL[node.op]
+    if node.op == "add" and _is_negative_const(x) and not _is_negative_const(y):
+        x, y = y, x
+    if _is_negative_const(y):
+        return x, "-" if symbol == "+" else "+", -y.value
+    return x, symbol, y
 
 
 def _is_joint_trig(node):
@@ -56,13 +81,20 @@ def schedule(fn):
         if uses[n.id] > 1:
             temp_ids.add(n.id)
             size[n.id] = 0
-    temps = [n for n in order if n.id in temp_ids]
+    # In the order the algorithm created them, so that its phases read top to bottom. A node's place
+    # is its creation position, moved after its operands' places where a rewrite reused a later node;
+    # ties keep the depth-first order, so operands still come first.
+    place = {}
+    for index, n in enumerate(order):
+        operands = [place[a.id][0] for a in n.args if a.op not in ("const", "sym")]
+        place[n.id] = (max([n.position] + operands), index)
+    temps = sorted((n for n in order if n.id in temp_ids), key=lambda n: place[n.id])
     return trig, temps, uses
 
 
-def _trig_block(trig, names, text):
+def _trig_block(trig, names, text, angle_names):
     """Statements computing the joint sin/cos nodes `trig` in one joint_sincos call; names each node
-    `sin_q_7`-style in `names`."""
+    after its joint (`sin_LF_knee`, angle_names: input symbol → identifier), else `sin_q_7`."""
     if not trig:
         return []
     slot = {}  # angle symbol id -> its index in joint_angle, in trig order
@@ -73,17 +105,24 @@ def _trig_block(trig, names, text):
             entries.append(text(node.args[0], False))
     n = len(entries)
     rows = [", ".join(entries[i:i + ANGLES_PER_LINE]) for i in range(0, n, ANGLES_PER_LINE)]
-    lines = ["const Scalar joint_angle[%d] = {%s};" % (n, (",\n    ").join(rows)),
+    lines = ["// sines and cosines of the joint angles",
+             "const Scalar joint_angle[%d] = {%s};" % (n, (",\n    ").join(rows)),
              "const auto joint_trig = joint_sincos(joint_angle);"]
     for node in trig:
-        name = "%s_%s_%d" % (node.op, node.args[0].value[0], node.args[0].value[1])
+        angle = node.args[0].value
+        name = "%s_%s" % (node.op, angle_names.get(angle) or "%s_%d" % angle)
         lines.append("const Scalar %s = joint_trig.%s[%d];" % (name, node.op, slot[node.args[0].id]))
         names[node.id] = name
     return lines
 
 
-def emit_body(fn):
-    """C++ statements (list of str, no indentation) computing every output of `fn`."""
+def _marker(label):
+    return "// " + " ".join(label.split())  # one line, whatever the robot's names hold
+
+
+def emit_body(fn, angle_names=None):
+    """C++ statements (list of str, no indentation) computing every output of `fn`; `angle_names`
+    maps an input symbol such as ("q", 7) to the identifier its sin/cos are named by."""
     trig, temps, uses = schedule(fn)
     names = {}
     lines = []
@@ -97,6 +136,10 @@ def emit_body(fn):
             return "%s[%d]" % node.value
         if node.op == "neg":
             body = "-" + text(node.args[0], True)
+        elif node.op in ("add", "sub"):
+            x, symbol, y = _signed_operands(node)
+            right = format_constant(y) if isinstance(y, float) else text(y, True)
+            body = "%s %s %s" % (text(x, True), symbol, right)
         elif node.op in _BINARY_SYMBOL:
             body = "%s %s %s" % (text(node.args[0], True), _BINARY_SYMBOL[node.op],
                                  text(node.args[1], True))
@@ -104,11 +147,16 @@ def emit_body(fn):
             return "%s(%s)" % (node.op, text(node.args[0], False))
         return "(%s)" % body if nested else body
 
-    lines += _trig_block(trig, names, text)
+    lines += _trig_block(trig, names, text, angle_names or {})
+    label = None
     for index, node in enumerate(temps):
+        if node.label is not None and node.label != label:
+            label = node.label
+            lines.append(_marker(label))
         name = "t%d" % index
         lines.append("const Scalar %s = %s;" % (name, text(node, False)))
         names[node.id] = name
+    lines.append("// outputs")
     for arg in fn.outputs:
         for k, node in enumerate(fn.values[arg.name]):
             lines.append("%s[%d] = %s;" % (arg.name, k, text(node, False)))

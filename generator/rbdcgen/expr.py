@@ -16,14 +16,13 @@ unfolded one up to round-off of the constants combined:
 Commutative operands (+, *) are ordered (constants first, then by node id) so that a + b and
 b + a are one node.
 
-`Graph(fold=False)` turns folding and sharing off: every operation the algorithm performs is a new
-node, so counting nodes counts the operations of the algorithm run literally (flops.unfolded_ops).
-Nodes carry the graph's `label` at their creation (set_label), which the emitter prints as markers.
+Nodes carry the graph's `label` at their creation (set_label), which the emitter prints as markers,
+and a `position`: their id, or for a node rewritten after tracing the id of the node it replaces, so
+that sorting by (position, id) is a topological order that follows the algorithm.
 """
 
 from __future__ import annotations
 
-import functools
 import math
 import threading
 
@@ -38,11 +37,11 @@ _state = threading.local()
 class Graph:
     """The node table of one traced function. Use as a context manager around tracing."""
 
-    def __init__(self, fold=True):
+    def __init__(self):
         self._table = {}
         self.nodes = []
-        self.fold = fold
         self.label = None  # where in the algorithm new nodes come from (set_label)
+        self.position = None  # where a rewritten node stands in creation order (absorb_negations)
 
     def __enter__(self):
         self._outer = getattr(_state, "graph", None)
@@ -63,6 +62,7 @@ class Graph:
 
     def new_node(self, op, args, value):
         node = Expr(op, args, value, len(self.nodes), self, self.label)
+        node.position = node.id if self.position is None else self.position
         self.nodes.append(node)
         return node
 
@@ -82,7 +82,7 @@ def set_label(label):
 class Expr:
     """One node. `value` is the float of a constant or the (array, index) of a symbol."""
 
-    __slots__ = ("op", "args", "value", "id", "graph", "label")
+    __slots__ = ("op", "args", "value", "id", "graph", "label", "position")
 
     def __init__(self, op, args, value, node_id, graph, label=None):
         self.op = op
@@ -164,18 +164,6 @@ def _node(op, *args):
     return args[0].graph.intern(op, args, None)
 
 
-def _folding(op):
-    """Marks a folding constructor of `op`; in a Graph(fold=False) it builds a plain new node."""
-    def wrap(rules):
-        @functools.wraps(rules)
-        def build(*args):
-            graph = args[0].graph
-            return rules(*args) if graph.fold else graph.new_node(op, args, None)
-        return build
-    return wrap
-
-
-@_folding("neg")
 def neg(x):
     if x.op == "const":
         return const(-x.value)
@@ -186,7 +174,6 @@ def neg(x):
     return _node("neg", x)
 
 
-@_folding("add")
 def add(x, y):
     if x.op == "const" and y.op == "const":
         return const(x.value + y.value)
@@ -201,7 +188,6 @@ def add(x, y):
     return _node("add", x, y)
 
 
-@_folding("sub")
 def sub(x, y):
     if x.op == "const" and y.op == "const":
         return const(x.value - y.value)
@@ -218,7 +204,6 @@ def sub(x, y):
     return _node("sub", x, y)
 
 
-@_folding("mul")
 def mul(x, y):
     if x.op == "const" and y.op == "const":
         return const(x.value * y.value)
@@ -247,7 +232,6 @@ def mul(x, y):
     return _node("mul", x, y)
 
 
-@_folding("div")
 def div(x, y):
     if y.op == "const":
         if y.value == 0.0:
@@ -267,17 +251,14 @@ def div(x, y):
     return _node("div", x, y)
 
 
-@_folding("sin")
 def sin(x):
     return const(math.sin(x.value)) if x.op == "const" else _node("sin", x)
 
 
-@_folding("cos")
 def cos(x):
     return const(math.cos(x.value)) if x.op == "const" else _node("cos", x)
 
 
-@_folding("sqrt")
 def sqrt(x):
     if x.op == "const":
         return const(math.sqrt(x.value))
@@ -352,7 +333,9 @@ def absorb_negations(outputs):
                 return intern("sub", (negated, other))
         return None
 
+    graph = outputs[0].graph if outputs else None
     for node in order:
+        graph.label, graph.position = node.label, node.position  # rewrites stand where node stood
         args = tuple(new[a.id] for a in node.args)
         rewritten = free_negation(args[0]) if node.op == "neg" else None
         if rewritten is not None:
@@ -361,6 +344,8 @@ def absorb_negations(outputs):
             new[node.id] = intern(node.op, args, node.value)
         else:
             new[node.id] = node
+    if graph is not None:
+        graph.position = None
     return [new[node.id] for node in outputs]
 
 

@@ -18,6 +18,7 @@ class Compilation:
     functions: list          # rbdcgen.trace Function objects
     robot_name: str          # C++ identifier: directory and namespace
     inputs: list[Path]       # the files the output depends on
+    robot_inputs: list[Path]  # those of them that describe the robot (not the scene)
 
 
 def resolve_base(scene: Scene, flag: str | None, robot, robot_path: Path) -> Scene:
@@ -43,9 +44,9 @@ def compile_robot(robot_path: Path, scene_path: Path | None = None, topology: Pa
         raise RbdcError(f"{robot_path}: the robot has no name; give one with --name")
     inputs = request.inputs() + ([Path(scene_path)] if scene_path else [])
     return Compilation(robot=robot, scene=scene, functions=trace_scene(robot, scene),
-                       robot_name=cpp_identifier(robot_name), inputs=inputs)
+                       robot_name=cpp_identifier(robot_name), inputs=inputs, robot_inputs=request.inputs())
 
 
 def render(compilation: Compilation, layout: Layout) -> list[GeneratedFile]:
     c = compilation
-    return render_robot_scene(c.robot, c.scene, c.functions, c.robot_name, c.inputs, layout)
+    return render_robot_scene(c.robot, c.scene, c.functions, c.robot_name, c.inputs, layout, c.robot_inputs)

@@ -3,8 +3,14 @@
 Templates see only plain data built here (names, dimensions, C++ statement lists, op counts); the
 file layout, banner, namespaces, types and signatures live in templates/. Output is byte-stable:
 no timestamps, sorted inputs, the input files' sha256 in the banner.
+
+A function's body goes into <robot>/common/<function>_<hash>.hpp, named by a hash of everything the
+file holds, so scenes whose function is the same code (feet_jacobian in full, kinematics_only and
+stance_osc) share one file; each scene's <robot>/<scene>/<function>.hpp brings it into the scene's
+namespace with a using-declaration and adds the Eigen overload (docs/generated_api.md).
 """
 import hashlib
+import json
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -12,12 +18,14 @@ from pathlib import Path
 import jinja2
 
 from .emit import emit_body
-from .flops import count_ops, generic_ops
+from .errors import RbdcError
+from .flops import KINDS, count_ops
 from .layout import Layout, display_path
 from .names import cpp_identifier, unique_identifiers
 from .version import VERSION
 
 SUPPORT_HEADER = "rbdc_gen/support.hpp"
+COMMON_DIR = "common"  # <robot>/common/: function bodies shared by the robot's scenes
 BATCH_HEADER = "rbdc_gen/batch.hpp"  # SIMD packs of states (docs/performance.md)
 
 # The Eigen type aliases of docs/generated_api.md: name, rows, cols (as C++ expressions), doc.
@@ -92,14 +100,41 @@ def _unused_inputs(arguments, body: list[str]) -> list[str]:
     return [a["name"] for a in arguments if a["is_input"] and not re.search(rf"\b{a['name']}\b", text)]
 
 
-def function_record(function, robot, scene, robot_id: str, scene_id: str) -> dict:
-    arguments = [_argument_record(a, True, robot, scene) for a in function.inputs] + \
-                [_argument_record(a, False, robot, scene) for a in function.outputs]
-    body = emit_body(function)
+def angle_names(robot) -> dict:
+    """Each joint angle's input symbol ("q", k) → the joint's identifier (as in `enum class Joint`)."""
+    joint_ids = unique_identifiers([j.name for j in robot.joints])
+    return {("q", j.q_index): joint_ids[i] for i, j in enumerate(robot.joints) if i > 0}
+
+
+def ops_table(ops: dict) -> list[str]:
+    """The operation counts as a two-line table with aligned columns."""
+    widths = [max(len(k), len(str(ops[k]))) for k in KINDS + ("total",)]
+    header = "".join(f"  {k:>{w}}" for k, w in zip(KINDS + ("total",), widths))
+    values = "".join(f"  {ops[k]:>{w}}" for k, w in zip(KINDS + ("total",), widths))
+    return [f"operations{header}", f"{'':10}{values}"]
+
+
+def body_record(function, arguments: list[dict], robot, robot_id: str, robot_inputs: list[dict]) -> dict:
+    """The scene-independent part of a function: signature, body, counts. `key` and the file name
+    come from a hash of all of it, so equal functions of different scenes are one file."""
+    body = emit_body(function, angle_names(robot))
     # An input the scene made irrelevant is still part of the signature; say so to the compiler.
     body = [f"static_cast<void>({name});" for name in _unused_inputs(arguments, body)] + body
-    return {"name": function.name, "doc": function.doc, "arguments": arguments, "body": body,
-            "ops": count_ops(function), "generic": generic_ops(robot, scene, function.name),
+    record = {"name": function.name, "doc": function.doc, "body": body, "robot": robot_id,
+              "arguments": [{k: a[k] for k in ("name", "rows", "cols", "doc", "is_input")} for a in arguments],
+              "ops_table": ops_table(count_ops(function)), "inputs": robot_inputs,
+              "generator_version": VERSION}
+    digest = hashlib.sha256(json.dumps(record, sort_keys=True).encode()).hexdigest()
+    key = f"{function.name}_{digest[:12]}"
+    return {**record, "key": key, "include": f"{robot_id}/{COMMON_DIR}/{key}.hpp",
+            "namespace": f"rbdc_gen::{robot_id}::{COMMON_DIR}::{key}"}
+
+
+def function_record(function, robot, scene, robot_id: str, scene_id: str, robot_inputs: list[dict]) -> dict:
+    arguments = [_argument_record(a, True, robot, scene) for a in function.inputs] + \
+                [_argument_record(a, False, robot, scene) for a in function.outputs]
+    return {"name": function.name, "doc": function.doc, "arguments": arguments,
+            "body": body_record(function, arguments, robot, robot_id, robot_inputs),
             "include": f"{robot_id}/{scene_id}/{function.name}.hpp"}
 
 
@@ -123,22 +158,31 @@ def _gravity_text(scene, robot) -> str:
     return "(" + ", ".join(repr(float(g)) for g in scene.gravity_for(robot)) + ")"
 
 
-def render_robot_scene(robot, scene, functions, robot_name: str, inputs, layout: Layout) -> list[GeneratedFile]:
-    """All files for one robot and scene: the support header, the umbrella and one per function."""
+def render_robot_scene(robot, scene, functions, robot_name: str, inputs, layout: Layout,
+                       robot_inputs=None) -> list[GeneratedFile]:
+    """All files for one robot and scene: the support headers, the umbrella, one per function and
+    one shared body per function. `inputs` name every input file, `robot_inputs` those of the robot
+    alone (the bodies' banner; default: all)."""
     environment = template_environment(layout)
     robot_id, scene_id = cpp_identifier(robot_name), cpp_identifier(scene.name)
+    if scene_id == COMMON_DIR:
+        raise RbdcError(f"{scene.source}: name: '{COMMON_DIR}' is reserved for the shared function bodies")
+    robot_inputs = input_records(inputs if robot_inputs is None else robot_inputs, layout)
     umbrella = f"{robot_id}/{scene_id}.hpp"
     common = {"generator_version": VERSION, "inputs": input_records(inputs, layout),
               "scene_name": scene.name, "scene_gravity": _gravity_text(scene, robot),
               "robot": robot_record(robot, scene.feet_for(robot), robot_id), "namespace": f"rbdc_gen::{robot_id}::{scene_id}",
               "umbrella_include": umbrella,
               "aliases": [{"name": n, "rows": r, "cols": c, "doc": d} for n, r, c, d in ALIASES]}
-    records = [function_record(f, robot, scene, robot_id, scene_id) for f in functions]
+    records = [function_record(f, robot, scene, robot_id, scene_id, robot_inputs) for f in functions]
     files = [support_file(layout), batch_file(layout),
              GeneratedFile(umbrella, environment.get_template("robot_scene.hpp.j2").render(
                  **common, functions=records))]
     function_template = environment.get_template("function.hpp.j2")
     files += [GeneratedFile(r["include"], function_template.render(**common, function=r)) for r in records]
+    body_template = environment.get_template("function_body.hpp.j2")
+    files += [GeneratedFile(r["body"]["include"], body_template.render(
+        generator_version=VERSION, inputs=robot_inputs, function=r["body"])) for r in records]
     return files
 
 

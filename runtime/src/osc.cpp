@@ -24,6 +24,11 @@ void check_trunk_task(const char* function, const Model& model) {
     throw std::invalid_argument(std::string("rbdc::") + function + ": model '" + model.name +
                                 "' has a fixed base, so there is no trunk task");
   }
+  if (!model.couplings.empty()) {  // the recursion works in tree coordinates (docs/model.md)
+    throw std::invalid_argument(std::string("rbdc::") + function + ": model '" + model.name +
+                                "' has mimic couplings, which the OSC recursion does not support; "
+                                "load it with MimicMode::Lock or MimicMode::Independent");
+  }
 }
 
 void check_contact_feet(const char* function, const Model& model,

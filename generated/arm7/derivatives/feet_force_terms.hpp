@@ -4,11 +4,14 @@
 // scene: derivatives
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// feet_force_terms for arm7: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// feet_force_terms for arm7, scene "derivatives": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose feet_force_terms is the same code:
+//   arm7/common/feet_force_terms_5364796d7946.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
+#include "arm7/common/feet_force_terms_5364796d7946.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -18,96 +21,9 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param f in  3x1: foot forces, world frame, one column per foot
 /// @param tau_e out 7x1: τ_e = Jᵀ f
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated    140     72      0      0     14      1    227
-/// generic     3481   2924      0      0     14      0   6419
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void feet_force_terms(const Scalar* q, const Scalar* f, Scalar* tau_e) noexcept {
-  const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_0 = joint_trig.sin[0];
-  const Scalar cos_q_0 = joint_trig.cos[0];
-  const Scalar sin_q_1 = joint_trig.sin[1];
-  const Scalar cos_q_1 = joint_trig.cos[1];
-  const Scalar sin_q_2 = joint_trig.sin[2];
-  const Scalar cos_q_2 = joint_trig.cos[2];
-  const Scalar sin_q_3 = joint_trig.sin[3];
-  const Scalar cos_q_3 = joint_trig.cos[3];
-  const Scalar sin_q_4 = joint_trig.sin[4];
-  const Scalar cos_q_4 = joint_trig.cos[4];
-  const Scalar sin_q_5 = joint_trig.sin[5];
-  const Scalar cos_q_5 = joint_trig.cos[5];
-  const Scalar sin_q_6 = joint_trig.sin[6];
-  const Scalar cos_q_6 = joint_trig.cos[6];
-  const Scalar t0 = sin_q_0 * cos_q_1;
-  const Scalar t1 = (cos_q_0 * cos_q_2) - (t0 * sin_q_2);
-  const Scalar t2 = (t0 * cos_q_2) + (cos_q_0 * sin_q_2);
-  const Scalar t3 = sin_q_0 * sin_q_1;
-  const Scalar t4 = (t2 * cos_q_3) + (t3 * sin_q_3);
-  const Scalar t5 = (t1 * cos_q_4) - (t4 * sin_q_4);
-  const Scalar t6 = (t4 * cos_q_4) + (t1 * sin_q_4);
-  const Scalar t7 = (t3 * cos_q_3) - (t2 * sin_q_3);
-  const Scalar t8 = (t6 * cos_q_5) - (t7 * sin_q_5);
-  const Scalar t9 = (t6 * sin_q_5) + (t7 * cos_q_5);
-  const Scalar t10 = (Scalar(0.95533648912560598) * t8) - (Scalar(0.29552020666133966) * t9);
-  const Scalar t11 = cos_q_0 * cos_q_1;
-  const Scalar t12 = (t11 * cos_q_2) - (sin_q_0 * sin_q_2);
-  const Scalar t13 = cos_q_0 * sin_q_1;
-  const Scalar t14 = (t12 * cos_q_3) + (t13 * sin_q_3);
-  const Scalar t15 = (t11 * sin_q_2) + (sin_q_0 * cos_q_2);
-  const Scalar t16 = (t14 * cos_q_4) - (t15 * sin_q_4);
-  const Scalar t17 = (t13 * cos_q_3) - (t12 * sin_q_3);
-  const Scalar t18 = (t16 * cos_q_5) - (t17 * sin_q_5);
-  const Scalar t19 = (t16 * sin_q_5) + (t17 * cos_q_5);
-  const Scalar t20 = (Scalar(0.95533648912560598) * t18) - (Scalar(0.29552020666133966) * t19);
-  const Scalar t21 = (t14 * sin_q_4) + (t15 * cos_q_4);
-  const Scalar t22 = (((t5 * cos_q_6) - (sin_q_6 * t10)) * f[1]) - (((sin_q_6 * t20) + (t21 * cos_q_6)) * f[0]);
-  const Scalar t23 = sin_q_1 * sin_q_2;
-  const Scalar t24 = sin_q_1 * cos_q_2;
-  const Scalar t25 = (cos_q_1 * sin_q_3) - (t24 * cos_q_3);
-  const Scalar t26 = (t23 * cos_q_4) - (t25 * sin_q_4);
-  const Scalar t27 = (t25 * cos_q_4) + (t23 * sin_q_4);
-  const Scalar t28 = (t24 * sin_q_3) + (cos_q_1 * cos_q_3);
-  const Scalar t29 = (t27 * cos_q_5) - (t28 * sin_q_5);
-  const Scalar t30 = (t27 * sin_q_5) + (t28 * cos_q_5);
-  const Scalar t31 = (Scalar(0.95533648912560598) * t29) - (Scalar(0.29552020666133966) * t30);
-  const Scalar t32 = t22 + (((t26 * cos_q_6) - (sin_q_6 * t31)) * f[2]);
-  const Scalar t33 = Scalar(0.11) * t32;
-  const Scalar t34 = (((cos_q_6 * t20) - (t21 * sin_q_6)) * f[0]) + (((cos_q_6 * t10) + (t5 * sin_q_6)) * f[1]);
-  const Scalar t35 = t34 + (((cos_q_6 * t31) + (t26 * sin_q_6)) * f[2]);
-  const Scalar t36 = Scalar(0.11) * t35;
-  const Scalar t37 = (cos_q_6 * t33) + (sin_q_6 * t36);
-  const Scalar t38 = Scalar(0.29552020666133966) * t37;
-  const Scalar t39 = (sin_q_6 * t35) + (cos_q_6 * t32);
-  const Scalar t40 = (Scalar(0.95533648912560598) * t37) + (Scalar(0.080000000000000002) * t39);
-  const Scalar t41 = ((sin_q_5 * t38) - (cos_q_5 * t40)) - (Scalar(0.19) * t39);
-  const Scalar t42 = (cos_q_6 * t35) - (sin_q_6 * t32);
-  const Scalar t43 = (((Scalar(0.29552020666133966) * t18) + (Scalar(0.95533648912560598) * t19)) * f[0]) + (((Scalar(0.29552020666133966) * t8) + (Scalar(0.95533648912560598) * t9)) * f[1]);
-  const Scalar t44 = t43 + (((Scalar(0.29552020666133966) * t29) + (Scalar(0.95533648912560598) * t30)) * f[2]);
-  const Scalar t45 = (Scalar(0.95533648912560598) * t42) + (Scalar(0.29552020666133966) * t44);
-  const Scalar t46 = ((cos_q_6 * t36) - (sin_q_6 * t33)) + (Scalar(0.080000000000000002) * t45);
-  const Scalar t47 = (Scalar(0.95533648912560598) * t44) - (Scalar(0.29552020666133966) * t42);
-  const Scalar t48 = (cos_q_5 * t45) + (sin_q_5 * t47);
-  const Scalar t49 = t46 + (Scalar(0.19) * t48);
-  const Scalar t50 = (sin_q_4 * t48) + (cos_q_4 * t39);
-  const Scalar t51 = Scalar(0.20000000000000001) * t50;
-  const Scalar t52 = ((cos_q_4 * t41) - (sin_q_4 * t49)) - t51;
-  const Scalar t53 = (sin_q_5 * t40) + (cos_q_5 * t38);
-  const Scalar t54 = (sin_q_3 * t52) + (cos_q_3 * t53);
-  const Scalar t55 = ((cos_q_3 * t52) - (sin_q_3 * t53)) - t51;
-  const Scalar t56 = (cos_q_4 * t48) - (sin_q_4 * t39);
-  const Scalar t57 = ((sin_q_4 * t41) + (cos_q_4 * t49)) + (Scalar(0.20000000000000001) * t56);
-  const Scalar t58 = (cos_q_3 * t56) - (sin_q_3 * ((cos_q_5 * t47) - (sin_q_5 * t45)));
-  const Scalar t59 = t57 + (Scalar(0.20000000000000001) * t58);
-  tau_e[0] = (cos_q_1 * t54) - (sin_q_1 * (((cos_q_2 * t55) - (sin_q_2 * t59)) - (Scalar(0.22) * ((sin_q_2 * t58) + (cos_q_2 * t50)))));
-  tau_e[1] = ((sin_q_2 * t55) + (cos_q_2 * t59)) + (Scalar(0.22) * ((cos_q_2 * t58) - (sin_q_2 * t50)));
-  tau_e[2] = t54;
-  tau_e[3] = -t57;
-  tau_e[4] = t53;
-  tau_e[5] = t46;
-  tau_e[6] = Scalar(0);
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///             140   72    0     0    14    1    227
+using ::rbdc_gen::arm7::common::feet_force_terms_5364796d7946::feet_force_terms;
 
 /// feet_force_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -4,11 +4,14 @@
 // scene: derivatives
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// gravity_terms for arm7: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// gravity_terms for arm7, scene "derivatives": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose gravity_terms is the same code:
+//   arm7/common/gravity_terms_a49150157024.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
+#include "arm7/common/gravity_terms_a49150157024.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -17,81 +20,9 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param q in  7x1: joint positions
 /// @param g out 7x1: gravity terms
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated    117     75      0      0     12      1    205
-/// generic     2446   2066      0      0     14      0   4526
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept {
-  const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_1 = joint_trig.sin[0];
-  const Scalar cos_q_1 = joint_trig.cos[0];
-  const Scalar sin_q_2 = joint_trig.sin[1];
-  const Scalar cos_q_2 = joint_trig.cos[1];
-  const Scalar sin_q_3 = joint_trig.sin[2];
-  const Scalar cos_q_3 = joint_trig.cos[2];
-  const Scalar sin_q_4 = joint_trig.sin[3];
-  const Scalar cos_q_4 = joint_trig.cos[3];
-  const Scalar sin_q_5 = joint_trig.sin[4];
-  const Scalar cos_q_5 = joint_trig.cos[4];
-  const Scalar sin_q_6 = joint_trig.sin[5];
-  const Scalar cos_q_6 = joint_trig.cos[5];
-  const Scalar t0 = Scalar(9.8100000000000005) * sin_q_1;
-  const Scalar t1 = t0 * cos_q_2;
-  const Scalar t2 = Scalar(9.8100000000000005) * cos_q_1;
-  const Scalar t3 = (t1 * sin_q_3) + (t2 * cos_q_3);
-  const Scalar t4 = t0 * sin_q_2;
-  const Scalar t5 = (t2 * sin_q_3) - (t1 * cos_q_3);
-  const Scalar t6 = (t4 * cos_q_4) - (t5 * sin_q_4);
-  const Scalar t7 = (t5 * cos_q_4) + (t4 * sin_q_4);
-  const Scalar t8 = (t7 * sin_q_5) + (t3 * cos_q_5);
-  const Scalar t9 = (t7 * cos_q_5) - (t3 * sin_q_5);
-  const Scalar t10 = (Scalar(0.95533648912560598) * t9) - (Scalar(0.29552020666133966) * t8);
-  const Scalar t11 = (t6 * cos_q_6) - (sin_q_6 * t10);
-  const Scalar t12 = Scalar(0.011250000000000001) * t11;
-  const Scalar t13 = (cos_q_6 * t10) + (t6 * sin_q_6);
-  const Scalar t14 = Scalar(0.011250000000000001) * t13;
-  const Scalar t15 = (cos_q_6 * t12) + (sin_q_6 * t14);
-  const Scalar t16 = Scalar(0.45000000000000001) * t13;
-  const Scalar t17 = Scalar(0.45000000000000001) * t11;
-  const Scalar t18 = (sin_q_6 * t16) + (cos_q_6 * t17);
-  const Scalar t19 = ((Scalar(0.00077999999999999999) * t8) - (Scalar(0.00052000000000000006) * t6)) - ((Scalar(0.95533648912560598) * t15) + (Scalar(0.080000000000000002) * t18));
-  const Scalar t20 = (Scalar(0.29552020666133966) * t15) - (Scalar(0.00077999999999999999) * t9);
-  const Scalar t21 = (Scalar(1.3) * t6) + t18;
-  const Scalar t22 = ((Scalar(0.035700000000000003) * t3) - (Scalar(0.12919999999999998) * t6)) + (((cos_q_5 * t19) + (sin_q_5 * t20)) - (Scalar(0.19) * t21));
-  const Scalar t23 = (cos_q_6 * t16) - (sin_q_6 * t17);
-  const Scalar t24 = (Scalar(0.29552020666133966) * t9) + (Scalar(0.95533648912560598) * t8);
-  const Scalar t25 = (Scalar(0.95533648912560598) * t23) + (Scalar(0.13298409299760286) * t24);
-  const Scalar t26 = (Scalar(0.00052000000000000006) * t9) + (((cos_q_6 * t14) - (sin_q_6 * t12)) + (Scalar(0.080000000000000002) * t25));
-  const Scalar t27 = (Scalar(1.3) * t9) + t25;
-  const Scalar t28 = (Scalar(1.3) * t8) + ((Scalar(0.42990142010652271) * t24) - (Scalar(0.29552020666133966) * t23));
-  const Scalar t29 = (cos_q_5 * t27) + (sin_q_5 * t28);
-  const Scalar t30 = ((Scalar(0.12919999999999998) * t7) - (Scalar(0.00017000000000000001) * t3)) + (t26 + (Scalar(0.19) * t29));
-  const Scalar t31 = (Scalar(1.7) * t7) + t29;
-  const Scalar t32 = (Scalar(1.7) * t6) + t21;
-  const Scalar t33 = (sin_q_4 * t31) + (cos_q_4 * t32);
-  const Scalar t34 = (((cos_q_4 * t22) - (sin_q_4 * t30)) - (Scalar(0.20000000000000001) * t33)) - ((Scalar(0.074999999999999997) * t3) + (Scalar(0.21250000000000002) * t4));
-  const Scalar t35 = ((Scalar(0.00017000000000000001) * t6) - (Scalar(0.035700000000000003) * t7)) + ((cos_q_5 * t20) - (sin_q_5 * t19));
-  const Scalar t36 = (Scalar(0.074999999999999997) * t5) + t35;
-  const Scalar t37 = (Scalar(0.075600000000000001) * t1) + ((sin_q_3 * t34) + (cos_q_3 * t36));
-  const Scalar t38 = (Scalar(2.5) * t4) + t33;
-  const Scalar t39 = ((Scalar(0.74163600000000007) * cos_q_1) - (Scalar(0.32400000000000001) * t4)) + (((cos_q_3 * t34) - (sin_q_3 * t36)) - (Scalar(0.20000000000000001) * t38));
-  const Scalar t40 = (cos_q_4 * t31) - (sin_q_4 * t32);
-  const Scalar t41 = (Scalar(0.21250000000000002) * t5) + (((sin_q_4 * t22) + (cos_q_4 * t30)) + (Scalar(0.20000000000000001) * t40));
-  const Scalar t42 = (cos_q_3 * ((Scalar(2.5) * t5) + t40)) - (sin_q_3 * ((Scalar(2.5) * t3) + ((Scalar(1.7) * t3) + ((cos_q_5 * t28) - (sin_q_5 * t27)))));
-  const Scalar t43 = (t41 + (Scalar(0.20000000000000001) * t42)) - (Scalar(0.32400000000000001) * t1);
-  const Scalar t44 = t42 - (Scalar(2.7000000000000002) * t1);
-  const Scalar t45 = (Scalar(2.7000000000000002) * t4) + t38;
-  const Scalar t46 = sin_q_1 * ((Scalar(1.08891) * cos_q_1) + (((cos_q_2 * t39) - (sin_q_2 * t43)) - (Scalar(0.22) * ((sin_q_2 * t44) + (cos_q_2 * t45)))));
-  g[0] = (cos_q_1 * ((Scalar(1.08891) * sin_q_1) + t37)) - t46;
-  g[1] = (((sin_q_2 * t39) + (cos_q_2 * t43)) + (Scalar(0.22) * ((cos_q_2 * t44) - (sin_q_2 * t45)))) - ((Scalar(3.2667300000000004) * sin_q_1) + (Scalar(0.010889099999999999) * cos_q_1));
-  g[2] = t37;
-  g[3] = -t41;
-  g[4] = t35;
-  g[5] = t26;
-  g[6] = Scalar(0);
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///             117   75    0     0    12    1    205
+using ::rbdc_gen::arm7::common::gravity_terms_a49150157024::gravity_terms;
 
 /// gravity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

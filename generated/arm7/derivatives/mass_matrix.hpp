@@ -4,11 +4,14 @@
 // scene: derivatives
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// mass_matrix for arm7: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// mass_matrix for arm7, scene "derivatives": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose mass_matrix is the same code:
+//   arm7/common/mass_matrix_cfd6a58a598e.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
+#include "arm7/common/mass_matrix_cfd6a58a598e.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -17,202 +20,9 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param q in  7x1: joint positions
 /// @param M out 7x7: mass matrix, full symmetric
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated    192    164      0      0     12      2    370
-/// generic     7099   6155      0      0     14      0  13268
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
-  const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_1 = joint_trig.sin[0];
-  const Scalar cos_q_1 = joint_trig.cos[0];
-  const Scalar sin_q_2 = joint_trig.sin[1];
-  const Scalar cos_q_2 = joint_trig.cos[1];
-  const Scalar sin_q_3 = joint_trig.sin[2];
-  const Scalar cos_q_3 = joint_trig.cos[2];
-  const Scalar sin_q_4 = joint_trig.sin[3];
-  const Scalar cos_q_4 = joint_trig.cos[3];
-  const Scalar sin_q_5 = joint_trig.sin[4];
-  const Scalar cos_q_5 = joint_trig.cos[4];
-  const Scalar sin_q_6 = joint_trig.sin[5];
-  const Scalar cos_q_6 = joint_trig.cos[5];
-  const Scalar t0 = Scalar(0.00058125000000000006) * cos_q_6;
-  const Scalar t1 = Scalar(0.00058125000000000006) * sin_q_6;
-  const Scalar t2 = (cos_q_6 * t0) + (sin_q_6 * t1);
-  const Scalar t3 = Scalar(0.0036006759999999997) + ((Scalar(4.3666096272580448e-05) + (Scalar(0.91266780745483911) * t2)) - Scalar(-0.004599605680426091));
-  const Scalar t4 = (Scalar(0.00014116061834875887) - (Scalar(0.28232123669751774) * t2)) - Scalar(0.00026596818599520573);
-  const Scalar t5 = t4 * sin_q_5;
-  const Scalar t6 = t4 * cos_q_5;
-  const Scalar t7 = Scalar(0.0035004680000000001) + (Scalar(0.00045633390372741957) + (Scalar(0.087332192545160905) * t2));
-  const Scalar t8 = Scalar(0.04726753550266307) * cos_q_5;
-  const Scalar t9 = Scalar(0.0033246023249400717) * sin_q_5;
-  const Scalar t10 = t8 - t9;
-  const Scalar t11 = Scalar(0.19) * t10;
-  const Scalar t12 = Scalar(0.33250000000000002) + t10;
-  const Scalar t13 = Scalar(0.19) * t12;
-  const Scalar t14 = Scalar(0.021068899999999995) + (((cos_q_5 * ((t3 * cos_q_5) + t5)) + (sin_q_5 * (t6 + (t7 * sin_q_5)))) + (t11 + t13));
-  const Scalar t15 = (cos_q_6 * t1) - (sin_q_6 * t0);
-  const Scalar t16 = Scalar(0.95533648912560598) * t15;
-  const Scalar t17 = Scalar(-3.1199999999999999e-07) - (Scalar(0.29552020666133966) * t15);
-  const Scalar t18 = (t16 * cos_q_5) + (t17 * sin_q_5);
-  const Scalar t19 = Scalar(-3.5700000000000001e-06) + t18;
-  const Scalar t20 = sin_q_4 * t19;
-  const Scalar t21 = cos_q_4 * t19;
-  const Scalar t22 = Scalar(0.0041002080000000002) + (t2 - Scalar(-0.004599605680426091));
-  const Scalar t23 = Scalar(0.019119216999999994) + (t22 - ((Scalar(0.19) * (t9 - t8)) - t13));
-  const Scalar t24 = Scalar(0.12919999999999998) + t12;
-  const Scalar t25 = Scalar(0.69000000000000006) + t24;
-  const Scalar t26 = (Scalar(0.20000000000000001) * t24) + (Scalar(0.20000000000000001) * t25);
-  const Scalar t27 = Scalar(0.0393125) + (((cos_q_4 * ((cos_q_4 * t14) - t20)) - (sin_q_4 * (t21 - (sin_q_4 * t23)))) + t26);
-  const Scalar t28 = t6 - (t3 * sin_q_5);
-  const Scalar t29 = (t7 * cos_q_5) - t5;
-  const Scalar t30 = (Scalar(0.0033246023249400717) * cos_q_5) + (Scalar(0.04726753550266307) * sin_q_5);
-  const Scalar t31 = Scalar(-1.2919999999999997e-05) + (((cos_q_5 * t28) + (sin_q_5 * t29)) - (Scalar(0.19) * t30));
-  const Scalar t32 = (t17 * cos_q_5) - (t16 * sin_q_5);
-  const Scalar t33 = Scalar(-0.0010131999999999995) + (t32 - Scalar(0.0001482));
-  const Scalar t34 = (cos_q_4 * t31) - (sin_q_4 * t33);
-  const Scalar t35 = Scalar(0.036480000000000005) * sin_q_4;
-  const Scalar t36 = Scalar(0.00017000000000000001) + t30;
-  const Scalar t37 = cos_q_4 * t36;
-  const Scalar t38 = t34 + (Scalar(0.20000000000000001) * (t35 - t37));
-  const Scalar t39 = cos_q_3 * t38;
-  const Scalar t40 = (sin_q_3 * t27) + t39;
-  const Scalar t41 = sin_q_3 * t38;
-  const Scalar t42 = Scalar(0.0041497170000000007) + ((cos_q_5 * t29) - (sin_q_5 * t28));
-  const Scalar t43 = Scalar(0.0083500000000000015) + t42;
-  const Scalar t44 = t41 + (cos_q_3 * t43);
-  const Scalar t45 = Scalar(0.0093168000000000001) + ((sin_q_3 * t40) + (cos_q_3 * t44));
-  const Scalar t46 = Scalar(0.21250000000000002) + t25;
-  const Scalar t47 = sin_q_3 * t46;
-  const Scalar t48 = t37 - t35;
-  const Scalar t49 = cos_q_3 * t48;
-  const Scalar t50 = ((cos_q_3 * t40) - (sin_q_3 * t44)) + (Scalar(0.20000000000000001) * (t47 - t49));
-  const Scalar t51 = (sin_q_4 * t14) + t21;
-  const Scalar t52 = cos_q_4 * t51;
-  const Scalar t53 = t20 + (cos_q_4 * t23);
-  const Scalar t54 = sin_q_4 * t53;
-  const Scalar t55 = t52 - t54;
-  const Scalar t56 = (sin_q_4 * t31) + (cos_q_4 * t33);
-  const Scalar t57 = (sin_q_4 * t36) + (Scalar(0.036480000000000005) * cos_q_4);
-  const Scalar t58 = Scalar(0.20000000000000001) * t57;
-  const Scalar t59 = t56 - t58;
-  const Scalar t60 = Scalar(0.004275000000000001) + t59;
-  const Scalar t61 = cos_q_3 * t60;
-  const Scalar t62 = Scalar(-0.074999999999999997) + t57;
-  const Scalar t63 = Scalar(-0.0065719999999999997) + (((sin_q_3 * t55) + t61) - (Scalar(0.20000000000000001) * t62));
-  const Scalar t64 = (cos_q_2 * t50) - (sin_q_2 * t63);
-  const Scalar t65 = Scalar(0.075600000000000001) + t62;
-  const Scalar t66 = sin_q_2 * t65;
-  const Scalar t67 = t49 - t47;
-  const Scalar t68 = cos_q_2 * t67;
-  const Scalar t69 = Scalar(0.00030010000000000003) + (t64 + (Scalar(0.22) * (t66 - t68)));
-  const Scalar t70 = (sin_q_3 * t48) + (cos_q_3 * t46);
-  const Scalar t71 = Scalar(0.20000000000000001) * t70;
-  const Scalar t72 = Scalar(1.1900000000000002) + t70;
-  const Scalar t73 = t71 + (Scalar(0.20000000000000001) * t72);
-  const Scalar t74 = Scalar(0.062996799999999992) + (((cos_q_3 * ((cos_q_3 * t27) - t41)) - (sin_q_3 * (t39 - (sin_q_3 * t43)))) + t73);
-  const Scalar t75 = sin_q_3 * t60;
-  const Scalar t76 = (cos_q_3 * t55) - t75;
-  const Scalar t77 = sin_q_2 * t76;
-  const Scalar t78 = cos_q_2 * t76;
-  const Scalar t79 = Scalar(0.036062500000000004) + (((sin_q_4 * t51) + (cos_q_4 * t53)) + t26);
-  const Scalar t80 = Scalar(0.059880000000000003) + (t79 + t73);
-  const Scalar t81 = Scalar(0.32400000000000001) + t72;
-  const Scalar t82 = (Scalar(0.22) * t81) + (Scalar(0.22) * (Scalar(1.903) + t81));
-  const Scalar t83 = (cos_q_1 * t69) - (sin_q_1 * (Scalar(0.064299999999999996) + (((cos_q_2 * ((cos_q_2 * t74) - t77)) - (sin_q_2 * (t78 - (sin_q_2 * t80)))) + t82)));
-  const Scalar t84 = ((sin_q_2 * t50) + (cos_q_2 * t63)) - (Scalar(0.22) * ((sin_q_2 * t67) + (cos_q_2 * t65)));
-  const Scalar t85 = (sin_q_2 * t74) + t78;
-  const Scalar t86 = t77 + (cos_q_2 * t80);
-  const Scalar t87 = (cos_q_1 * (Scalar(-0.012789999999999999) + t84)) - (sin_q_1 * (Scalar(-3.3299999999999996e-05) + ((cos_q_2 * t85) - (sin_q_2 * t86))));
-  const Scalar t88 = (cos_q_1 * t45) - (sin_q_1 * (t64 - (Scalar(0.22) * (t68 - t66))));
-  const Scalar t89 = t54 - t52;
-  const Scalar t90 = (sin_q_3 * t89) - t61;
-  const Scalar t91 = t75 + (cos_q_3 * t89);
-  const Scalar t92 = t79 + t71;
-  const Scalar t93 = (cos_q_1 * t90) - (sin_q_1 * (((cos_q_2 * t91) + (sin_q_2 * t92)) + (Scalar(0.22) * (sin_q_2 * t70))));
-  const Scalar t94 = Scalar(0.20000000000000001) * t48;
-  const Scalar t95 = t34 - t94;
-  const Scalar t96 = (sin_q_3 * t95) + (cos_q_3 * t42);
-  const Scalar t97 = ((cos_q_3 * t95) - (sin_q_3 * t42)) - t94;
-  const Scalar t98 = cos_q_3 * t57;
-  const Scalar t99 = t59 - (Scalar(0.20000000000000001) * t98);
-  const Scalar t100 = (cos_q_1 * t96) - (sin_q_1 * (((cos_q_2 * t97) - (sin_q_2 * t99)) - (Scalar(0.22) * ((cos_q_2 * t48) - (sin_q_2 * t98)))));
-  const Scalar t101 = t22 + t11;
-  const Scalar t102 = sin_q_4 * t10;
-  const Scalar t103 = Scalar(0.20000000000000001) * t102;
-  const Scalar t104 = ((cos_q_4 * t18) - (sin_q_4 * t101)) - t103;
-  const Scalar t105 = (sin_q_3 * t104) + (cos_q_3 * t32);
-  const Scalar t106 = ((cos_q_3 * t104) - (sin_q_3 * t32)) - t103;
-  const Scalar t107 = cos_q_4 * t10;
-  const Scalar t108 = ((sin_q_4 * t18) + (cos_q_4 * t101)) + (Scalar(0.20000000000000001) * t107);
-  const Scalar t109 = (cos_q_3 * t107) + (sin_q_3 * t30);
-  const Scalar t110 = t108 + (Scalar(0.20000000000000001) * t109);
-  const Scalar t111 = (cos_q_1 * t105) - (sin_q_1 * (((cos_q_2 * t106) - (sin_q_2 * t110)) - (Scalar(0.22) * ((sin_q_2 * t109) + (cos_q_2 * t102)))));
-  const Scalar t112 = (Scalar(0.00014776010333066982) * cos_q_5) + (Scalar(0.000477668244562803) * sin_q_5);
-  const Scalar t113 = t112 * cos_q_4;
-  const Scalar t114 = (Scalar(0.000477668244562803) * cos_q_5) - (Scalar(0.00014776010333066982) * sin_q_5);
-  const Scalar t115 = (t113 * sin_q_3) + (t114 * cos_q_3);
-  const Scalar t116 = (t113 * cos_q_3) - (t114 * sin_q_3);
-  const Scalar t117 = t112 * sin_q_4;
-  const Scalar t118 = (t115 * cos_q_1) - (((t116 * cos_q_2) - (t117 * sin_q_2)) * sin_q_1);
-  const Scalar t119 = ((sin_q_2 * t91) - (cos_q_2 * t92)) - (Scalar(0.22) * (cos_q_2 * t70));
-  const Scalar t120 = ((sin_q_2 * t97) + (cos_q_2 * t99)) - (Scalar(0.22) * ((cos_q_2 * t98) + (sin_q_2 * t48)));
-  const Scalar t121 = ((sin_q_2 * t106) + (cos_q_2 * t110)) + (Scalar(0.22) * ((cos_q_2 * t109) - (sin_q_2 * t102)));
-  const Scalar t122 = (t116 * sin_q_2) + (t117 * cos_q_2);
-  const Scalar t123 = t58 - t56;
-  const Scalar t124 = -t108;
-  const Scalar t125 = -t117;
-  M[0] = Scalar(0.013250000000000001) + ((cos_q_1 * ((cos_q_1 * (Scalar(0.013330332999999998) + t45)) - (sin_q_1 * t69))) - (sin_q_1 * t83));
-  M[1] = t87;
-  M[2] = t88;
-  M[3] = t93;
-  M[4] = t100;
-  M[5] = t111;
-  M[6] = t118;
-  M[7] = t87;
-  M[8] = Scalar(0.059970333000000001) + (((sin_q_2 * t85) + (cos_q_2 * t86)) + t82);
-  M[9] = t84;
-  M[10] = t119;
-  M[11] = t120;
-  M[12] = t121;
-  M[13] = t122;
-  M[14] = t88;
-  M[15] = t84;
-  M[16] = t45;
-  M[17] = t90;
-  M[18] = t96;
-  M[19] = t105;
-  M[20] = t115;
-  M[21] = t93;
-  M[22] = t119;
-  M[23] = t90;
-  M[24] = t79;
-  M[25] = t123;
-  M[26] = t124;
-  M[27] = t125;
-  M[28] = t100;
-  M[29] = t120;
-  M[30] = t96;
-  M[31] = t123;
-  M[32] = t42;
-  M[33] = t32;
-  M[34] = t114;
-  M[35] = t111;
-  M[36] = t121;
-  M[37] = t105;
-  M[38] = t124;
-  M[39] = t32;
-  M[40] = t22;
-  M[41] = Scalar(0);
-  M[42] = t118;
-  M[43] = t122;
-  M[44] = t115;
-  M[45] = t125;
-  M[46] = t114;
-  M[47] = Scalar(0);
-  M[48] = Scalar(0.00050000000000000001);
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///             192  164    0     0    12    2    370
+using ::rbdc_gen::arm7::common::mass_matrix_cfd6a58a598e::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

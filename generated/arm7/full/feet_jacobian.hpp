@@ -4,11 +4,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// feet_jacobian for arm7: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// feet_jacobian for arm7, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose feet_jacobian is the same code:
+//   arm7/common/feet_jacobian_ac8fb4f605f6.hpp
 #pragma once
 
 #include "arm7/full.hpp"
+#include "arm7/common/feet_jacobian_ac8fb4f605f6.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -17,113 +20,9 @@ namespace rbdc_gen::arm7::full {
 /// @param q in  7x1: joint positions
 /// @param J out 3x7: feet Jacobian, world-frame foot velocities from v
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated    108     74      0      0     12      4    198
-/// generic     5185   4293      0      0     14      0   9492
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void feet_jacobian(const Scalar* q, Scalar* J) noexcept {
-  const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], q[5]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_0 = joint_trig.sin[0];
-  const Scalar cos_q_0 = joint_trig.cos[0];
-  const Scalar sin_q_1 = joint_trig.sin[1];
-  const Scalar cos_q_1 = joint_trig.cos[1];
-  const Scalar sin_q_2 = joint_trig.sin[2];
-  const Scalar cos_q_2 = joint_trig.cos[2];
-  const Scalar sin_q_3 = joint_trig.sin[3];
-  const Scalar cos_q_3 = joint_trig.cos[3];
-  const Scalar sin_q_4 = joint_trig.sin[4];
-  const Scalar cos_q_4 = joint_trig.cos[4];
-  const Scalar sin_q_5 = joint_trig.sin[5];
-  const Scalar cos_q_5 = joint_trig.cos[5];
-  const Scalar t0 = sin_q_0 * sin_q_1;
-  const Scalar t1 = Scalar(0.22) * t0;
-  const Scalar t2 = t1 + (Scalar(0.20000000000000001) * t0);
-  const Scalar t3 = sin_q_0 * cos_q_1;
-  const Scalar t4 = (t3 * cos_q_2) + (cos_q_0 * sin_q_2);
-  const Scalar t5 = (t0 * cos_q_3) - (t4 * sin_q_3);
-  const Scalar t6 = t2 + (Scalar(0.20000000000000001) * t5);
-  const Scalar t7 = t6 + (Scalar(0.19) * t5);
-  const Scalar t8 = (t4 * cos_q_3) + (t0 * sin_q_3);
-  const Scalar t9 = cos_q_0 * cos_q_2;
-  const Scalar t10 = t3 * sin_q_2;
-  const Scalar t11 = t9 - t10;
-  const Scalar t12 = (t8 * cos_q_4) + (t11 * sin_q_4);
-  const Scalar t13 = (t12 * sin_q_5) + (t5 * cos_q_5);
-  const Scalar t14 = t7 + (Scalar(0.080000000000000002) * t13);
-  const Scalar t15 = (Scalar(0.29552020666133966) * ((t12 * cos_q_5) - (t5 * sin_q_5))) + (Scalar(0.95533648912560598) * t13);
-  const Scalar t16 = t14 + (Scalar(0.11) * t15);
-  const Scalar t17 = cos_q_0 * sin_q_1;
-  const Scalar t18 = Scalar(0.22) * t17;
-  const Scalar t19 = t18 + (Scalar(0.20000000000000001) * t17);
-  const Scalar t20 = cos_q_0 * cos_q_1;
-  const Scalar t21 = (t20 * cos_q_2) - (sin_q_0 * sin_q_2);
-  const Scalar t22 = (t17 * cos_q_3) - (t21 * sin_q_3);
-  const Scalar t23 = t19 + (Scalar(0.20000000000000001) * t22);
-  const Scalar t24 = t23 + (Scalar(0.19) * t22);
-  const Scalar t25 = (t21 * cos_q_3) + (t17 * sin_q_3);
-  const Scalar t26 = (t20 * sin_q_2) + (sin_q_0 * cos_q_2);
-  const Scalar t27 = (t25 * cos_q_4) - (t26 * sin_q_4);
-  const Scalar t28 = (t27 * sin_q_5) + (t22 * cos_q_5);
-  const Scalar t29 = t24 + (Scalar(0.080000000000000002) * t28);
-  const Scalar t30 = (Scalar(0.29552020666133966) * ((t27 * cos_q_5) - (t22 * sin_q_5))) + (Scalar(0.95533648912560598) * t28);
-  const Scalar t31 = t29 + (Scalar(0.11) * t30);
-  const Scalar t32 = Scalar(0.33999999999999997) + (Scalar(0.22) * cos_q_1);
-  const Scalar t33 = t32 + (Scalar(0.20000000000000001) * cos_q_1);
-  const Scalar t34 = sin_q_1 * cos_q_2;
-  const Scalar t35 = (t34 * sin_q_3) + (cos_q_1 * cos_q_3);
-  const Scalar t36 = t33 + (Scalar(0.20000000000000001) * t35);
-  const Scalar t37 = t36 + (Scalar(0.19) * t35);
-  const Scalar t38 = (cos_q_1 * sin_q_3) - (t34 * cos_q_3);
-  const Scalar t39 = sin_q_1 * sin_q_2;
-  const Scalar t40 = (t38 * cos_q_4) + (t39 * sin_q_4);
-  const Scalar t41 = (t40 * sin_q_5) + (t35 * cos_q_5);
-  const Scalar t42 = t37 + (Scalar(0.080000000000000002) * t41);
-  const Scalar t43 = (Scalar(0.29552020666133966) * ((t40 * cos_q_5) - (t35 * sin_q_5))) + (Scalar(0.95533648912560598) * t41);
-  const Scalar t44 = t42 + (Scalar(0.11) * t43);
-  const Scalar t45 = t44 - Scalar(0.33999999999999997);
-  const Scalar t46 = t44 - t32;
-  const Scalar t47 = t16 - t1;
-  const Scalar t48 = t31 - t18;
-  const Scalar t49 = t10 - t9;
-  const Scalar t50 = t44 - t33;
-  const Scalar t51 = t16 - t2;
-  const Scalar t52 = t31 - t19;
-  const Scalar t53 = t44 - t36;
-  const Scalar t54 = t16 - t6;
-  const Scalar t55 = t31 - t23;
-  const Scalar t56 = (t11 * cos_q_4) - (t8 * sin_q_4);
-  const Scalar t57 = t44 - t37;
-  const Scalar t58 = (t39 * cos_q_4) - (t38 * sin_q_4);
-  const Scalar t59 = t16 - t7;
-  const Scalar t60 = t31 - t24;
-  const Scalar t61 = (t25 * sin_q_4) + (t26 * cos_q_4);
-  const Scalar t62 = t44 - t42;
-  const Scalar t63 = t16 - t14;
-  const Scalar t64 = t31 - t29;
-  J[0] = -t16;
-  J[1] = t31;
-  J[2] = Scalar(0);
-  J[3] = cos_q_0 * t45;
-  J[4] = sin_q_0 * t45;
-  J[5] = -((sin_q_0 * t16) + (cos_q_0 * t31));
-  J[6] = (t0 * t46) - (cos_q_1 * t47);
-  J[7] = (cos_q_1 * t48) - (t17 * t46);
-  J[8] = (t17 * t47) - (t0 * t48);
-  J[9] = (t49 * t50) + (t39 * t51);
-  J[10] = -((t39 * t52) + (t26 * t50));
-  J[11] = (t26 * t51) - (t49 * t52);
-  J[12] = (t5 * t53) - (t35 * t54);
-  J[13] = (t35 * t55) - (t22 * t53);
-  J[14] = (t22 * t54) - (t5 * t55);
-  J[15] = (t56 * t57) - (t58 * t59);
-  J[16] = (t58 * t60) + (t61 * t57);
-  J[17] = -((t61 * t59) + (t56 * t60));
-  J[18] = (t15 * t62) - (t43 * t63);
-  J[19] = (t43 * t64) - (t30 * t62);
-  J[20] = (t30 * t63) - (t15 * t64);
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///             108   74    0     0    12    4    198
+using ::rbdc_gen::arm7::common::feet_jacobian_ac8fb4f605f6::feet_jacobian;
 
 /// feet_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -4,11 +4,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// feet_positions for arm7: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// feet_positions for arm7, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose feet_positions is the same code:
+//   arm7/common/feet_positions_01a7eb8ebe0e.hpp
 #pragma once
 
 #include "arm7/full.hpp"
+#include "arm7/common/feet_positions_01a7eb8ebe0e.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -17,49 +20,9 @@ namespace rbdc_gen::arm7::full {
 /// @param q in  7x1: joint positions
 /// @param p out 3x1: foot positions, world frame, one column per foot
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated     68     38      0      0     12      0    118
-/// generic     3385   2799      0      0     14      0   6198
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void feet_positions(const Scalar* q, Scalar* p) noexcept {
-  const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], q[5]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_0 = joint_trig.sin[0];
-  const Scalar cos_q_0 = joint_trig.cos[0];
-  const Scalar sin_q_1 = joint_trig.sin[1];
-  const Scalar cos_q_1 = joint_trig.cos[1];
-  const Scalar sin_q_2 = joint_trig.sin[2];
-  const Scalar cos_q_2 = joint_trig.cos[2];
-  const Scalar sin_q_3 = joint_trig.sin[3];
-  const Scalar cos_q_3 = joint_trig.cos[3];
-  const Scalar sin_q_4 = joint_trig.sin[4];
-  const Scalar cos_q_4 = joint_trig.cos[4];
-  const Scalar sin_q_5 = joint_trig.sin[5];
-  const Scalar cos_q_5 = joint_trig.cos[5];
-  const Scalar t0 = cos_q_0 * sin_q_1;
-  const Scalar t1 = cos_q_0 * cos_q_1;
-  const Scalar t2 = (t1 * cos_q_2) - (sin_q_0 * sin_q_2);
-  const Scalar t3 = (t0 * cos_q_3) - (t2 * sin_q_3);
-  const Scalar t4 = (((t2 * cos_q_3) + (t0 * sin_q_3)) * cos_q_4) - (((t1 * sin_q_2) + (sin_q_0 * cos_q_2)) * sin_q_4);
-  const Scalar t5 = (t4 * sin_q_5) + (t3 * cos_q_5);
-  const Scalar t6 = ((((Scalar(0.22) * t0) + (Scalar(0.20000000000000001) * t0)) + (Scalar(0.20000000000000001) * t3)) + (Scalar(0.19) * t3)) + (Scalar(0.080000000000000002) * t5);
-  const Scalar t7 = sin_q_0 * sin_q_1;
-  const Scalar t8 = sin_q_0 * cos_q_1;
-  const Scalar t9 = (t8 * cos_q_2) + (cos_q_0 * sin_q_2);
-  const Scalar t10 = (t7 * cos_q_3) - (t9 * sin_q_3);
-  const Scalar t11 = (((t9 * cos_q_3) + (t7 * sin_q_3)) * cos_q_4) + (((cos_q_0 * cos_q_2) - (t8 * sin_q_2)) * sin_q_4);
-  const Scalar t12 = (t11 * sin_q_5) + (t10 * cos_q_5);
-  const Scalar t13 = ((((Scalar(0.22) * t7) + (Scalar(0.20000000000000001) * t7)) + (Scalar(0.20000000000000001) * t10)) + (Scalar(0.19) * t10)) + (Scalar(0.080000000000000002) * t12);
-  const Scalar t14 = sin_q_1 * cos_q_2;
-  const Scalar t15 = (t14 * sin_q_3) + (cos_q_1 * cos_q_3);
-  const Scalar t16 = (((cos_q_1 * sin_q_3) - (t14 * cos_q_3)) * cos_q_4) + ((sin_q_1 * sin_q_2) * sin_q_4);
-  const Scalar t17 = (t16 * sin_q_5) + (t15 * cos_q_5);
-  const Scalar t18 = ((((Scalar(0.33999999999999997) + (Scalar(0.22) * cos_q_1)) + (Scalar(0.20000000000000001) * cos_q_1)) + (Scalar(0.20000000000000001) * t15)) + (Scalar(0.19) * t15)) + (Scalar(0.080000000000000002) * t17);
-  p[0] = t6 + (Scalar(0.11) * ((Scalar(0.29552020666133966) * ((t4 * cos_q_5) - (t3 * sin_q_5))) + (Scalar(0.95533648912560598) * t5)));
-  p[1] = t13 + (Scalar(0.11) * ((Scalar(0.29552020666133966) * ((t11 * cos_q_5) - (t10 * sin_q_5))) + (Scalar(0.95533648912560598) * t12)));
-  p[2] = t18 + (Scalar(0.11) * ((Scalar(0.29552020666133966) * ((t16 * cos_q_5) - (t15 * sin_q_5))) + (Scalar(0.95533648912560598) * t17)));
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///              68   38    0     0    12    0    118
+using ::rbdc_gen::arm7::common::feet_positions_01a7eb8ebe0e::feet_positions;
 
 /// feet_positions on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -4,11 +4,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// feet_velocities for arm7: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// feet_velocities for arm7, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose feet_velocities is the same code:
+//   arm7/common/feet_velocities_19e15b736c10.hpp
 #pragma once
 
 #include "arm7/full.hpp"
+#include "arm7/common/feet_velocities_19e15b736c10.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -18,92 +21,9 @@ namespace rbdc_gen::arm7::full {
 /// @param v in  7x1: joint velocities
 /// @param pdot out 3x1: foot velocities, world frame, one column per foot
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated    141     75      0      0     14      0    230
-/// generic     3481   2889      0      0     14      0   6384
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void feet_velocities(const Scalar* q, const Scalar* v, Scalar* pdot) noexcept {
-  const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_0 = joint_trig.sin[0];
-  const Scalar cos_q_0 = joint_trig.cos[0];
-  const Scalar sin_q_1 = joint_trig.sin[1];
-  const Scalar cos_q_1 = joint_trig.cos[1];
-  const Scalar sin_q_2 = joint_trig.sin[2];
-  const Scalar cos_q_2 = joint_trig.cos[2];
-  const Scalar sin_q_3 = joint_trig.sin[3];
-  const Scalar cos_q_3 = joint_trig.cos[3];
-  const Scalar sin_q_4 = joint_trig.sin[4];
-  const Scalar cos_q_4 = joint_trig.cos[4];
-  const Scalar sin_q_5 = joint_trig.sin[5];
-  const Scalar cos_q_5 = joint_trig.cos[5];
-  const Scalar sin_q_6 = joint_trig.sin[6];
-  const Scalar cos_q_6 = joint_trig.cos[6];
-  const Scalar t0 = cos_q_0 * cos_q_1;
-  const Scalar t1 = (t0 * cos_q_2) - (sin_q_0 * sin_q_2);
-  const Scalar t2 = cos_q_0 * sin_q_1;
-  const Scalar t3 = (t1 * cos_q_3) + (t2 * sin_q_3);
-  const Scalar t4 = (t0 * sin_q_2) + (sin_q_0 * cos_q_2);
-  const Scalar t5 = (t3 * cos_q_4) - (t4 * sin_q_4);
-  const Scalar t6 = (t2 * cos_q_3) - (t1 * sin_q_3);
-  const Scalar t7 = (t5 * cos_q_5) - (t6 * sin_q_5);
-  const Scalar t8 = (t5 * sin_q_5) + (t6 * cos_q_5);
-  const Scalar t9 = (Scalar(0.95533648912560598) * t7) - (Scalar(0.29552020666133966) * t8);
-  const Scalar t10 = (t3 * sin_q_4) + (t4 * cos_q_4);
-  const Scalar t11 = Scalar(0.22) * v[1];
-  const Scalar t12 = sin_q_1 * v[0];
-  const Scalar t13 = Scalar(0.22) * t12;
-  const Scalar t14 = (sin_q_2 * t12) + (cos_q_2 * v[1]);
-  const Scalar t15 = ((cos_q_2 * t11) + (sin_q_2 * t13)) + (Scalar(0.20000000000000001) * t14);
-  const Scalar t16 = t14 - v[3];
-  const Scalar t17 = (cos_q_3 * t15) + (Scalar(0.20000000000000001) * t16);
-  const Scalar t18 = (sin_q_2 * v[1]) - (cos_q_2 * t12);
-  const Scalar t19 = v[2] + (cos_q_1 * v[0]);
-  const Scalar t20 = (cos_q_3 * t18) + (sin_q_3 * t19);
-  const Scalar t21 = (((cos_q_2 * t13) - (sin_q_2 * t11)) - (Scalar(0.20000000000000001) * t18)) - (Scalar(0.20000000000000001) * t20);
-  const Scalar t22 = (cos_q_4 * t16) - (sin_q_4 * t20);
-  const Scalar t23 = ((cos_q_4 * t17) + (sin_q_4 * t21)) + (Scalar(0.19) * t22);
-  const Scalar t24 = sin_q_3 * t15;
-  const Scalar t25 = v[5] + t22;
-  const Scalar t26 = ((cos_q_5 * t23) + (sin_q_5 * t24)) + (Scalar(0.080000000000000002) * t25);
-  const Scalar t27 = (sin_q_5 * t23) - (cos_q_5 * t24);
-  const Scalar t28 = (Scalar(0.95533648912560598) * t26) - (Scalar(0.29552020666133966) * t27);
-  const Scalar t29 = (cos_q_4 * t20) + (sin_q_4 * t16);
-  const Scalar t30 = v[4] + ((cos_q_3 * t19) - (sin_q_3 * t18));
-  const Scalar t31 = (cos_q_5 * t29) - (sin_q_5 * t30);
-  const Scalar t32 = (((cos_q_4 * t21) - (sin_q_4 * t17)) - (Scalar(0.19) * t29)) - (Scalar(0.080000000000000002) * t31);
-  const Scalar t33 = (Scalar(0.95533648912560598) * t31) - (Scalar(0.29552020666133966) * ((sin_q_5 * t29) + (cos_q_5 * t30)));
-  const Scalar t34 = ((cos_q_6 * t28) + (sin_q_6 * t32)) + (Scalar(0.11) * ((cos_q_6 * t25) - (sin_q_6 * t33)));
-  const Scalar t35 = ((cos_q_6 * t32) - (sin_q_6 * t28)) - (Scalar(0.11) * ((cos_q_6 * t33) + (sin_q_6 * t25)));
-  const Scalar t36 = (((cos_q_6 * t9) - (t10 * sin_q_6)) * t34) - (((sin_q_6 * t9) + (t10 * cos_q_6)) * t35);
-  const Scalar t37 = (Scalar(0.29552020666133966) * t26) + (Scalar(0.95533648912560598) * t27);
-  const Scalar t38 = sin_q_0 * cos_q_1;
-  const Scalar t39 = (t38 * cos_q_2) + (cos_q_0 * sin_q_2);
-  const Scalar t40 = sin_q_0 * sin_q_1;
-  const Scalar t41 = (t39 * cos_q_3) + (t40 * sin_q_3);
-  const Scalar t42 = (cos_q_0 * cos_q_2) - (t38 * sin_q_2);
-  const Scalar t43 = (t41 * cos_q_4) + (t42 * sin_q_4);
-  const Scalar t44 = (t40 * cos_q_3) - (t39 * sin_q_3);
-  const Scalar t45 = (t43 * cos_q_5) - (t44 * sin_q_5);
-  const Scalar t46 = (t43 * sin_q_5) + (t44 * cos_q_5);
-  const Scalar t47 = (Scalar(0.95533648912560598) * t45) - (Scalar(0.29552020666133966) * t46);
-  const Scalar t48 = (t42 * cos_q_4) - (t41 * sin_q_4);
-  const Scalar t49 = (((cos_q_6 * t47) + (t48 * sin_q_6)) * t34) + (((t48 * cos_q_6) - (sin_q_6 * t47)) * t35);
-  const Scalar t50 = sin_q_1 * cos_q_2;
-  const Scalar t51 = (cos_q_1 * sin_q_3) - (t50 * cos_q_3);
-  const Scalar t52 = sin_q_1 * sin_q_2;
-  const Scalar t53 = (t51 * cos_q_4) + (t52 * sin_q_4);
-  const Scalar t54 = (t50 * sin_q_3) + (cos_q_1 * cos_q_3);
-  const Scalar t55 = (t53 * cos_q_5) - (t54 * sin_q_5);
-  const Scalar t56 = (t53 * sin_q_5) + (t54 * cos_q_5);
-  const Scalar t57 = (Scalar(0.95533648912560598) * t55) - (Scalar(0.29552020666133966) * t56);
-  const Scalar t58 = (t52 * cos_q_4) - (t51 * sin_q_4);
-  const Scalar t59 = (((cos_q_6 * t57) + (t58 * sin_q_6)) * t34) + (((t58 * cos_q_6) - (sin_q_6 * t57)) * t35);
-  pdot[0] = t36 + (((Scalar(0.29552020666133966) * t7) + (Scalar(0.95533648912560598) * t8)) * t37);
-  pdot[1] = t49 + (((Scalar(0.29552020666133966) * t45) + (Scalar(0.95533648912560598) * t46)) * t37);
-  pdot[2] = t59 + (((Scalar(0.29552020666133966) * t55) + (Scalar(0.95533648912560598) * t56)) * t37);
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///             141   75    0     0    14    0    230
+using ::rbdc_gen::arm7::common::feet_velocities_19e15b736c10::feet_velocities;
 
 /// feet_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

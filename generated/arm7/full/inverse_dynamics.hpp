@@ -4,11 +4,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// inverse_dynamics for arm7: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// inverse_dynamics for arm7, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose inverse_dynamics is the same code:
+//   arm7/common/inverse_dynamics_e5613d872a25.hpp
 #pragma once
 
 #include "arm7/full.hpp"
+#include "arm7/common/inverse_dynamics_e5613d872a25.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -19,202 +22,9 @@ namespace rbdc_gen::arm7::full {
 /// @param a in  7x1: joint accelerations
 /// @param tau out 7x1: generalised forces M a + c + g
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated    475    365      0      0     12      1    853
-/// generic     3658   3143      0      0     14      0   6815
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
-  const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_1 = joint_trig.sin[0];
-  const Scalar cos_q_1 = joint_trig.cos[0];
-  const Scalar sin_q_2 = joint_trig.sin[1];
-  const Scalar cos_q_2 = joint_trig.cos[1];
-  const Scalar sin_q_3 = joint_trig.sin[2];
-  const Scalar cos_q_3 = joint_trig.cos[2];
-  const Scalar sin_q_4 = joint_trig.sin[3];
-  const Scalar cos_q_4 = joint_trig.cos[3];
-  const Scalar sin_q_5 = joint_trig.sin[4];
-  const Scalar cos_q_5 = joint_trig.cos[4];
-  const Scalar sin_q_6 = joint_trig.sin[5];
-  const Scalar cos_q_6 = joint_trig.cos[5];
-  const Scalar t0 = v[0] * sin_q_1;
-  const Scalar t1 = (a[0] * cos_q_1) - (v[1] * t0);
-  const Scalar t2 = v[0] * cos_q_1;
-  const Scalar t3 = (a[0] * sin_q_1) + (v[1] * t2);
-  const Scalar t4 = ((Scalar(3.3299999999999996e-05) * t0) + (Scalar(0.059970333000000001) * v[1])) - (Scalar(0.012789999999999999) * t2);
-  const Scalar t5 = (Scalar(0.00030010000000000003) * t2) - ((Scalar(0.064299999999999996) * t0) + (Scalar(3.3299999999999996e-05) * v[1]));
-  const Scalar t6 = a[2] + t1;
-  const Scalar t7 = (v[1] * sin_q_2) - (t0 * cos_q_2);
-  const Scalar t8 = ((sin_q_2 * t3) + (a[1] * cos_q_2)) - (v[2] * t7);
-  const Scalar t9 = (Scalar(0.22) * a[1]) - (Scalar(9.8100000000000005) * sin_q_1);
-  const Scalar t10 = Scalar(0.22) * t3;
-  const Scalar t11 = Scalar(0.22) * t0;
-  const Scalar t12 = Scalar(0.22) * v[1];
-  const Scalar t13 = (cos_q_2 * t11) - (sin_q_2 * t12);
-  const Scalar t14 = ((cos_q_2 * t9) + (sin_q_2 * t10)) + (v[2] * t13);
-  const Scalar t15 = (t0 * sin_q_2) + (v[1] * cos_q_2);
-  const Scalar t16 = v[2] + t2;
-  const Scalar t17 = (cos_q_2 * t12) + (sin_q_2 * t11);
-  const Scalar t18 = ((Scalar(0.059880000000000003) * t15) - (Scalar(0.0065719999999999997) * t16)) + (Scalar(0.32400000000000001) * t17);
-  const Scalar t19 = (Scalar(0.062996799999999992) * t7) - (Scalar(0.32400000000000001) * t13);
-  const Scalar t20 = (Scalar(2.7000000000000002) * t13) - (Scalar(0.32400000000000001) * t7);
-  const Scalar t21 = (Scalar(2.7000000000000002) * t17) - ((Scalar(0.075600000000000001) * t16) - (Scalar(0.32400000000000001) * t15));
-  const Scalar t22 = ((t7 * t18) - (t15 * t19)) + ((t17 * t20) - (t13 * t21));
-  const Scalar t23 = ((a[1] * sin_q_2) - (cos_q_2 * t3)) + (v[2] * t15);
-  const Scalar t24 = (t16 * cos_q_3) - (t7 * sin_q_3);
-  const Scalar t25 = ((cos_q_3 * t23) + (sin_q_3 * t6)) + (v[3] * t24);
-  const Scalar t26 = Scalar(9.8100000000000005) * cos_q_1;
-  const Scalar t27 = t14 + (Scalar(0.20000000000000001) * t8);
-  const Scalar t28 = t17 + (Scalar(0.20000000000000001) * t15);
-  const Scalar t29 = cos_q_3 * t28;
-  const Scalar t30 = ((cos_q_3 * t26) - (sin_q_3 * t27)) - (v[3] * t29);
-  const Scalar t31 = ((cos_q_2 * t10) - (sin_q_2 * t9)) - (v[2] * t17);
-  const Scalar t32 = t31 - (Scalar(0.20000000000000001) * t23);
-  const Scalar t33 = t15 - v[3];
-  const Scalar t34 = ((Scalar(0.004275000000000001) * t33) + (Scalar(0.0083500000000000015) * t24)) + (Scalar(0.074999999999999997) * t29);
-  const Scalar t35 = ((Scalar(0.036062500000000004) * t33) + (Scalar(0.004275000000000001) * t24)) + (Scalar(0.21250000000000002) * t29);
-  const Scalar t36 = sin_q_3 * t28;
-  const Scalar t37 = t13 - (Scalar(0.20000000000000001) * t7);
-  const Scalar t38 = (t7 * cos_q_3) + (t16 * sin_q_3);
-  const Scalar t39 = (Scalar(2.5) * t37) - (Scalar(0.21250000000000002) * t38);
-  const Scalar t40 = (Scalar(2.5) * t36) + (Scalar(0.074999999999999997) * t38);
-  const Scalar t41 = ((t33 * t34) - (t24 * t35)) + ((t36 * t39) - (t37 * t40));
-  const Scalar t42 = t8 - a[3];
-  const Scalar t43 = (t33 * cos_q_4) - (t38 * sin_q_4);
-  const Scalar t44 = ((cos_q_4 * t25) + (sin_q_4 * t42)) + (v[4] * t43);
-  const Scalar t45 = (t38 * cos_q_4) + (t33 * sin_q_4);
-  const Scalar t46 = ((cos_q_4 * t42) - (sin_q_4 * t25)) - (v[4] * t45);
-  const Scalar t47 = ((cos_q_3 * t6) - (sin_q_3 * t23)) - (v[3] * t38);
-  const Scalar t48 = a[4] + t47;
-  const Scalar t49 = t32 - (Scalar(0.20000000000000001) * t25);
-  const Scalar t50 = ((cos_q_3 * t27) + (sin_q_3 * t26)) - (v[3] * t36);
-  const Scalar t51 = t50 + (Scalar(0.20000000000000001) * t42);
-  const Scalar t52 = t29 + (Scalar(0.20000000000000001) * t33);
-  const Scalar t53 = t37 - (Scalar(0.20000000000000001) * t38);
-  const Scalar t54 = (cos_q_4 * t52) + (sin_q_4 * t53);
-  const Scalar t55 = ((cos_q_4 * t49) - (sin_q_4 * t51)) - (v[4] * t54);
-  const Scalar t56 = (((Scalar(0.021068899999999995) * t44) - (Scalar(3.5700000000000001e-06) * t46)) - (Scalar(1.2919999999999997e-05) * t48)) + ((Scalar(0.035700000000000003) * t30) - (Scalar(0.12919999999999998) * t55));
-  const Scalar t57 = v[4] + t24;
-  const Scalar t58 = (cos_q_4 * t53) - (sin_q_4 * t52);
-  const Scalar t59 = ((Scalar(0.0041497170000000007) * t57) - ((Scalar(1.2919999999999997e-05) * t45) + (Scalar(0.0010131999999999995) * t43))) + ((Scalar(0.00017000000000000001) * t58) - (Scalar(0.035700000000000003) * t54));
-  const Scalar t60 = (((Scalar(0.019119216999999994) * t43) - (Scalar(3.5700000000000001e-06) * t45)) - (Scalar(0.0010131999999999995) * t57)) + ((Scalar(0.12919999999999998) * t54) + (Scalar(0.00017000000000000001) * t36));
-  const Scalar t61 = (Scalar(1.7) * t58) - ((Scalar(0.12919999999999998) * t45) - (Scalar(0.00017000000000000001) * t57));
-  const Scalar t62 = (Scalar(1.7) * t36) + ((Scalar(0.00017000000000000001) * t43) - (Scalar(0.035700000000000003) * t45));
-  const Scalar t63 = t56 + (((t43 * t59) - (t57 * t60)) + ((t36 * t61) - (t58 * t62)));
-  const Scalar t64 = (t45 * sin_q_5) + (t57 * cos_q_5);
-  const Scalar t65 = ((cos_q_5 * t44) - (sin_q_5 * t48)) - (v[5] * t64);
-  const Scalar t66 = ((cos_q_4 * t51) + (sin_q_4 * t49)) + (v[4] * t58);
-  const Scalar t67 = t66 + (Scalar(0.19) * t46);
-  const Scalar t68 = t54 + (Scalar(0.19) * t43);
-  const Scalar t69 = (cos_q_5 * t68) + (t36 * sin_q_5);
-  const Scalar t70 = ((sin_q_5 * t67) + (cos_q_5 * t30)) + (v[5] * t69);
-  const Scalar t71 = t55 - (Scalar(0.19) * t44);
-  const Scalar t72 = v[5] + t43;
-  const Scalar t73 = ((Scalar(0.0035004680000000001) * t64) - (Scalar(3.1199999999999999e-07) * t72)) - (Scalar(0.00077999999999999999) * t69);
-  const Scalar t74 = ((Scalar(0.0041002080000000002) * t72) - (Scalar(3.1199999999999999e-07) * t64)) + (Scalar(0.00052000000000000006) * t69);
-  const Scalar t75 = t58 - (Scalar(0.19) * t45);
-  const Scalar t76 = (sin_q_5 * t68) - (t36 * cos_q_5);
-  const Scalar t77 = (t45 * cos_q_5) - (t57 * sin_q_5);
-  const Scalar t78 = (Scalar(1.3) * t76) + (Scalar(0.00077999999999999999) * t77);
-  const Scalar t79 = (Scalar(1.3) * t75) - (Scalar(0.00052000000000000006) * t77);
-  const Scalar t80 = ((t72 * t73) - (t64 * t74)) + ((t75 * t78) - (t76 * t79));
-  const Scalar t81 = ((sin_q_5 * t44) + (cos_q_5 * t48)) + (v[5] * t77);
-  const Scalar t82 = (Scalar(0.95533648912560598) * t65) - (Scalar(0.29552020666133966) * t81);
-  const Scalar t83 = a[5] + t46;
-  const Scalar t84 = (Scalar(0.95533648912560598) * t77) - (Scalar(0.29552020666133966) * t64);
-  const Scalar t85 = (t72 * cos_q_6) - (sin_q_6 * t84);
-  const Scalar t86 = ((cos_q_6 * t82) + (sin_q_6 * t83)) + (v[6] * t85);
-  const Scalar t87 = t71 - (Scalar(0.080000000000000002) * t65);
-  const Scalar t88 = ((cos_q_5 * t67) - (sin_q_5 * t30)) - (v[5] * t76);
-  const Scalar t89 = t88 + (Scalar(0.080000000000000002) * t83);
-  const Scalar t90 = (Scalar(0.95533648912560598) * t89) - (Scalar(0.29552020666133966) * t70);
-  const Scalar t91 = t69 + (Scalar(0.080000000000000002) * t72);
-  const Scalar t92 = (Scalar(0.95533648912560598) * t91) - (Scalar(0.29552020666133966) * t76);
-  const Scalar t93 = t75 - (Scalar(0.080000000000000002) * t77);
-  const Scalar t94 = (cos_q_6 * t92) + (sin_q_6 * t93);
-  const Scalar t95 = ((cos_q_6 * t87) - (sin_q_6 * t90)) - (v[6] * t94);
-  const Scalar t96 = v[6] + ((Scalar(0.29552020666133966) * t77) + (Scalar(0.95533648912560598) * t64));
-  const Scalar t97 = Scalar(0.00050000000000000001) * t96;
-  const Scalar t98 = (Scalar(0.00058125000000000006) * t85) + (Scalar(0.011250000000000001) * t94);
-  const Scalar t99 = (cos_q_6 * t93) - (sin_q_6 * t92);
-  const Scalar t100 = (Scalar(0.29552020666133966) * t91) + (Scalar(0.95533648912560598) * t76);
-  const Scalar t101 = Scalar(0.45000000000000001) * t100;
-  const Scalar t102 = (cos_q_6 * t84) + (t72 * sin_q_6);
-  const Scalar t103 = (Scalar(0.45000000000000001) * t99) - (Scalar(0.011250000000000001) * t102);
-  const Scalar t104 = ((Scalar(0.00058125000000000006) * t86) - (Scalar(0.011250000000000001) * t95)) + (((t85 * t97) - (t96 * t98)) + ((t99 * t101) - (t100 * t103)));
-  const Scalar t105 = ((cos_q_6 * t83) - (sin_q_6 * t82)) - (v[6] * t102);
-  const Scalar t106 = ((cos_q_6 * t90) + (sin_q_6 * t87)) + (v[6] * t99);
-  const Scalar t107 = (Scalar(0.00058125000000000006) * t102) - (Scalar(0.011250000000000001) * t99);
-  const Scalar t108 = (Scalar(0.45000000000000001) * t94) + (Scalar(0.011250000000000001) * t85);
-  const Scalar t109 = ((Scalar(0.00058125000000000006) * t105) + (Scalar(0.011250000000000001) * t106)) + (((t96 * t107) - (t102 * t97)) + ((t100 * t108) - (t94 * t101)));
-  const Scalar t110 = (cos_q_6 * t104) - (sin_q_6 * t109);
-  const Scalar t111 = ((t102 * t98) - (t85 * t107)) + ((t94 * t103) - (t99 * t108));
-  const Scalar t112 = (Scalar(0.00050000000000000001) * (a[6] + ((Scalar(0.29552020666133966) * t65) + (Scalar(0.95533648912560598) * t81)))) + t111;
-  const Scalar t113 = ((Scalar(0.45000000000000001) * t106) + (Scalar(0.011250000000000001) * t105)) + ((t85 * t101) - (t96 * t103));
-  const Scalar t114 = ((Scalar(0.45000000000000001) * t95) - (Scalar(0.011250000000000001) * t86)) + ((t96 * t108) - (t102 * t101));
-  const Scalar t115 = (sin_q_6 * t113) + (cos_q_6 * t114);
-  const Scalar t116 = (((Scalar(0.0036006759999999997) * t65) + ((Scalar(0.00077999999999999999) * t70) - (Scalar(0.00052000000000000006) * t71))) + t80) + (((Scalar(0.95533648912560598) * t110) + (Scalar(0.29552020666133966) * t112)) - (Scalar(0.080000000000000002) * t115));
-  const Scalar t117 = (Scalar(0.0036006759999999997) * t77) + ((Scalar(0.00077999999999999999) * t76) - (Scalar(0.00052000000000000006) * t75));
-  const Scalar t118 = (Scalar(1.3) * t69) - ((Scalar(0.00077999999999999999) * t64) - (Scalar(0.00052000000000000006) * t72));
-  const Scalar t119 = ((t77 * t74) - (t72 * t117)) + ((t69 * t79) - (t75 * t118));
-  const Scalar t120 = ((((Scalar(0.0035004680000000001) * t81) - (Scalar(3.1199999999999999e-07) * t83)) - (Scalar(0.00077999999999999999) * t88)) + t119) + ((Scalar(0.95533648912560598) * t112) - (Scalar(0.29552020666133966) * t110));
-  const Scalar t121 = (((Scalar(1.3) * t71) - (Scalar(0.00052000000000000006) * t65)) + ((t64 * t118) - (t77 * t78))) + t115;
-  const Scalar t122 = t63 + (((cos_q_5 * t116) + (sin_q_5 * t120)) - (Scalar(0.19) * t121));
-  const Scalar t123 = (((Scalar(0.019119216999999994) * t46) - (Scalar(3.5700000000000001e-06) * t44)) - (Scalar(0.0010131999999999995) * t48)) + ((Scalar(0.12919999999999998) * t66) - (Scalar(0.00017000000000000001) * t30));
-  const Scalar t124 = (((Scalar(0.021068899999999995) * t45) - (Scalar(3.5700000000000001e-06) * t43)) - (Scalar(1.2919999999999997e-05) * t57)) - ((Scalar(0.035700000000000003) * t36) + (Scalar(0.12919999999999998) * t58));
-  const Scalar t125 = (Scalar(1.7) * t54) - ((Scalar(0.035700000000000003) * t57) - (Scalar(0.12919999999999998) * t43));
-  const Scalar t126 = ((t64 * t117) - (t77 * t73)) + ((t76 * t118) - (t69 * t78));
-  const Scalar t127 = (cos_q_6 * t113) - (sin_q_6 * t114);
-  const Scalar t128 = (Scalar(0.45000000000000001) * ((Scalar(0.29552020666133966) * t89) + (Scalar(0.95533648912560598) * t70))) + ((t102 * t103) - (t85 * t108));
-  const Scalar t129 = (Scalar(0.95533648912560598) * t127) + (Scalar(0.29552020666133966) * t128);
-  const Scalar t130 = ((((Scalar(0.0041002080000000002) * t83) - (Scalar(3.1199999999999999e-07) * t81)) + (Scalar(0.00052000000000000006) * t88)) + t126) + (((sin_q_6 * t104) + (cos_q_6 * t109)) + (Scalar(0.080000000000000002) * t129));
-  const Scalar t131 = (((Scalar(1.3) * t88) - ((Scalar(0.00077999999999999999) * t81) - (Scalar(0.00052000000000000006) * t83))) + ((t72 * t78) - (t64 * t79))) + t129;
-  const Scalar t132 = (((Scalar(1.3) * t70) + (Scalar(0.00077999999999999999) * t65)) + ((t77 * t79) - (t72 * t118))) + ((Scalar(0.95533648912560598) * t128) - (Scalar(0.29552020666133966) * t127));
-  const Scalar t133 = (cos_q_5 * t131) + (sin_q_5 * t132);
-  const Scalar t134 = (t123 + (((t57 * t124) - (t45 * t59)) + ((t54 * t62) - (t36 * t125)))) + (t130 + (Scalar(0.19) * t133));
-  const Scalar t135 = (((Scalar(1.7) * t66) - ((Scalar(0.035700000000000003) * t48) - (Scalar(0.12919999999999998) * t46))) - ((t43 * t62) + (t57 * t61))) + t133;
-  const Scalar t136 = (((Scalar(1.7) * t55) - ((Scalar(0.12919999999999998) * t44) - (Scalar(0.00017000000000000001) * t48))) + ((t57 * t125) + (t45 * t62))) + t121;
-  const Scalar t137 = (sin_q_4 * t135) + (cos_q_4 * t136);
-  const Scalar t138 = (((Scalar(0.0393125) * t25) - ((Scalar(0.074999999999999997) * t30) + (Scalar(0.21250000000000002) * t32))) + t41) + (((cos_q_4 * t122) - (sin_q_4 * t134)) - (Scalar(0.20000000000000001) * t137));
-  const Scalar t139 = (Scalar(0.0393125) * t38) + ((Scalar(0.074999999999999997) * t36) - (Scalar(0.21250000000000002) * t37));
-  const Scalar t140 = (Scalar(2.5) * t29) + ((Scalar(0.074999999999999997) * t24) + (Scalar(0.21250000000000002) * t33));
-  const Scalar t141 = ((t38 * t35) - (t33 * t139)) + ((t29 * t39) - (t37 * t140));
-  const Scalar t142 = ((Scalar(0.0041497170000000007) * t48) - ((Scalar(1.2919999999999997e-05) * t44) + (Scalar(0.0010131999999999995) * t46))) + ((Scalar(0.00017000000000000001) * t55) - (Scalar(0.035700000000000003) * t66));
-  const Scalar t143 = (t142 + (((t45 * t60) - (t43 * t124)) + ((t54 * t61) - (t58 * t125)))) + ((cos_q_5 * t120) - (sin_q_5 * t116));
-  const Scalar t144 = ((((Scalar(0.004275000000000001) * t42) + (Scalar(0.0083500000000000015) * t47)) + (Scalar(0.074999999999999997) * t50)) + t141) + t143;
-  const Scalar t145 = ((((Scalar(0.0093168000000000001) * t6) - (Scalar(0.0065719999999999997) * t8)) - (Scalar(0.075600000000000001) * t14)) + t22) + ((sin_q_3 * t138) + (cos_q_3 * t144));
-  const Scalar t146 = ((((Scalar(0.013330332999999998) * t1) - ((Scalar(0.00030010000000000003) * t3) + (Scalar(0.012789999999999999) * a[1]))) + (Scalar(1.08891) * sin_q_1)) - ((t0 * t4) + (v[1] * t5))) + t145;
-  const Scalar t147 = (Scalar(0.013330332999999998) * t2) - ((Scalar(0.00030010000000000003) * t0) + (Scalar(0.012789999999999999) * v[1]));
-  const Scalar t148 = (((Scalar(0.00030010000000000003) * t1) - ((Scalar(0.064299999999999996) * t3) + (Scalar(3.3299999999999996e-05) * a[1]))) + (Scalar(1.08891) * cos_q_1)) + ((v[1] * t147) - (t2 * t4));
-  const Scalar t149 = ((Scalar(0.0093168000000000001) * t16) - (Scalar(0.0065719999999999997) * t15)) - (Scalar(0.075600000000000001) * t17);
-  const Scalar t150 = Scalar(0.075600000000000001) * t7;
-  const Scalar t151 = ((Scalar(0.062996799999999992) * t23) + ((Scalar(0.74163600000000007) * cos_q_1) - (Scalar(0.32400000000000001) * t31))) + (((t15 * t149) - (t16 * t18)) + (t13 * t150));
-  const Scalar t152 = (((Scalar(2.5) * t32) - (Scalar(0.21250000000000002) * t25)) + ((t24 * t140) + (t38 * t40))) + t137;
-  const Scalar t153 = t151 + (((cos_q_3 * t138) - (sin_q_3 * t144)) - (Scalar(0.20000000000000001) * t152));
-  const Scalar t154 = (((Scalar(0.059880000000000003) * t8) - (Scalar(0.0065719999999999997) * t6)) + (Scalar(0.32400000000000001) * t14)) + (((t16 * t19) - (t7 * t149)) - (t17 * t150));
-  const Scalar t155 = ((t24 * t139) - (t38 * t34)) + ((t29 * t40) - (t36 * t140));
-  const Scalar t156 = (cos_q_4 * t135) - (sin_q_4 * t136);
-  const Scalar t157 = ((((Scalar(0.036062500000000004) * t42) + (Scalar(0.004275000000000001) * t47)) + (Scalar(0.21250000000000002) * t50)) + t155) + (((sin_q_4 * t122) + (cos_q_4 * t134)) + (Scalar(0.20000000000000001) * t156));
-  const Scalar t158 = cos_q_3 * ((((Scalar(2.5) * t50) + ((Scalar(0.074999999999999997) * t47) + (Scalar(0.21250000000000002) * t42))) - ((t33 * t40) + (t24 * t39))) + t156);
-  const Scalar t159 = ((Scalar(1.7) * t30) - ((Scalar(0.00017000000000000001) * t46) - (Scalar(0.035700000000000003) * t44))) + ((t45 * t61) - (t43 * t125));
-  const Scalar t160 = (((Scalar(2.5) * t30) - (Scalar(0.074999999999999997) * t25)) + ((t38 * t39) - (t33 * t140))) + (t159 + ((cos_q_5 * t132) - (sin_q_5 * t131)));
-  const Scalar t161 = t158 - (sin_q_3 * t160);
-  const Scalar t162 = t154 + (t157 + (Scalar(0.20000000000000001) * t161));
-  const Scalar t163 = (((Scalar(2.7000000000000002) * t14) - ((Scalar(0.075600000000000001) * t6) - (Scalar(0.32400000000000001) * t8))) + ((t15 * t150) - (t16 * t20))) + t161;
-  const Scalar t164 = (((Scalar(2.7000000000000002) * t31) - (Scalar(0.32400000000000001) * t23)) + ((t16 * t21) - (t7 * t150))) + t152;
-  const Scalar t165 = (cos_q_1 * t146) - (sin_q_1 * (t148 + (((cos_q_2 * t153) - (sin_q_2 * t162)) - (Scalar(0.22) * ((sin_q_2 * t163) + (cos_q_2 * t164))))));
-  const Scalar t166 = (((Scalar(3.3299999999999996e-05) * t3) + (Scalar(0.059970333000000001) * a[1])) - (Scalar(0.012789999999999999) * t1)) - ((Scalar(3.2667300000000004) * sin_q_1) + (Scalar(0.010889099999999999) * cos_q_1));
-  const Scalar t167 = ((sin_q_2 * t153) + (cos_q_2 * t162)) + (Scalar(0.22) * ((cos_q_2 * t163) - (sin_q_2 * t164)));
-  tau[0] = (Scalar(0.013250000000000001) * a[0]) + t165;
-  tau[1] = (t166 + ((t2 * t5) + (t0 * t147))) + t167;
-  tau[2] = t145;
-  tau[3] = -t157;
-  tau[4] = t143;
-  tau[5] = t130;
-  tau[6] = t112;
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///             475  365    0     0    12    1    853
+using ::rbdc_gen::arm7::common::inverse_dynamics_e5613d872a25::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -4,11 +4,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// quadratic_velocity_terms for arm7: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// quadratic_velocity_terms for arm7, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose quadratic_velocity_terms is the same code:
+//   arm7/common/quadratic_velocity_terms_19cfd7ce3ee6.hpp
 #pragma once
 
 #include "arm7/full.hpp"
+#include "arm7/common/quadratic_velocity_terms_19cfd7ce3ee6.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -18,194 +21,9 @@ namespace rbdc_gen::arm7::full {
 /// @param v in  7x1: joint velocities
 /// @param c out 7x1: Coriolis and centrifugal terms
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated    454    342      0      0     12      1    809
-/// generic     3616   3101      0      0     14      0   6731
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Scalar* v, Scalar* c) noexcept {
-  const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_1 = joint_trig.sin[0];
-  const Scalar cos_q_1 = joint_trig.cos[0];
-  const Scalar sin_q_2 = joint_trig.sin[1];
-  const Scalar cos_q_2 = joint_trig.cos[1];
-  const Scalar sin_q_3 = joint_trig.sin[2];
-  const Scalar cos_q_3 = joint_trig.cos[2];
-  const Scalar sin_q_4 = joint_trig.sin[3];
-  const Scalar cos_q_4 = joint_trig.cos[3];
-  const Scalar sin_q_5 = joint_trig.sin[4];
-  const Scalar cos_q_5 = joint_trig.cos[4];
-  const Scalar sin_q_6 = joint_trig.sin[5];
-  const Scalar cos_q_6 = joint_trig.cos[5];
-  const Scalar t0 = v[0] * sin_q_1;
-  const Scalar t1 = (v[1] * sin_q_2) - (t0 * cos_q_2);
-  const Scalar t2 = (t0 * sin_q_2) + (v[1] * cos_q_2);
-  const Scalar t3 = v[0] * cos_q_1;
-  const Scalar t4 = v[2] + t3;
-  const Scalar t5 = Scalar(0.22) * v[1];
-  const Scalar t6 = Scalar(0.22) * t0;
-  const Scalar t7 = (cos_q_2 * t5) + (sin_q_2 * t6);
-  const Scalar t8 = ((Scalar(0.059880000000000003) * t2) - (Scalar(0.0065719999999999997) * t4)) + (Scalar(0.32400000000000001) * t7);
-  const Scalar t9 = (cos_q_2 * t6) - (sin_q_2 * t5);
-  const Scalar t10 = (Scalar(0.062996799999999992) * t1) - (Scalar(0.32400000000000001) * t9);
-  const Scalar t11 = (Scalar(2.7000000000000002) * t9) - (Scalar(0.32400000000000001) * t1);
-  const Scalar t12 = (Scalar(2.7000000000000002) * t7) - ((Scalar(0.075600000000000001) * t4) - (Scalar(0.32400000000000001) * t2));
-  const Scalar t13 = ((t1 * t8) - (t2 * t10)) + ((t7 * t11) - (t9 * t12));
-  const Scalar t14 = v[1] * t3;
-  const Scalar t15 = (sin_q_2 * t14) - (v[2] * t1);
-  const Scalar t16 = v[1] * t0;
-  const Scalar t17 = Scalar(0.22) * t14;
-  const Scalar t18 = (sin_q_2 * t17) + (v[2] * t9);
-  const Scalar t19 = (v[2] * t2) - (cos_q_2 * t14);
-  const Scalar t20 = (t4 * cos_q_3) - (t1 * sin_q_3);
-  const Scalar t21 = ((cos_q_3 * t19) - (sin_q_3 * t16)) + (v[3] * t20);
-  const Scalar t22 = Scalar(0.20000000000000001) * t15;
-  const Scalar t23 = t18 + t22;
-  const Scalar t24 = t7 + (Scalar(0.20000000000000001) * t2);
-  const Scalar t25 = cos_q_3 * t24;
-  const Scalar t26 = (sin_q_3 * t23) + (v[3] * t25);
-  const Scalar t27 = (cos_q_2 * t17) - (v[2] * t7);
-  const Scalar t28 = t27 - (Scalar(0.20000000000000001) * t19);
-  const Scalar t29 = t2 - v[3];
-  const Scalar t30 = ((Scalar(0.004275000000000001) * t29) + (Scalar(0.0083500000000000015) * t20)) + (Scalar(0.074999999999999997) * t25);
-  const Scalar t31 = ((Scalar(0.036062500000000004) * t29) + (Scalar(0.004275000000000001) * t20)) + (Scalar(0.21250000000000002) * t25);
-  const Scalar t32 = sin_q_3 * t24;
-  const Scalar t33 = t9 - (Scalar(0.20000000000000001) * t1);
-  const Scalar t34 = (t1 * cos_q_3) + (t4 * sin_q_3);
-  const Scalar t35 = (Scalar(2.5) * t33) - (Scalar(0.21250000000000002) * t34);
-  const Scalar t36 = (Scalar(2.5) * t32) + (Scalar(0.074999999999999997) * t34);
-  const Scalar t37 = ((t29 * t30) - (t20 * t31)) + ((t32 * t35) - (t33 * t36));
-  const Scalar t38 = (t29 * cos_q_4) - (t34 * sin_q_4);
-  const Scalar t39 = ((cos_q_4 * t21) + (sin_q_4 * t15)) + (v[4] * t38);
-  const Scalar t40 = (t34 * cos_q_4) + (t29 * sin_q_4);
-  const Scalar t41 = ((cos_q_4 * t15) - (sin_q_4 * t21)) - (v[4] * t40);
-  const Scalar t42 = ((sin_q_3 * t19) + (cos_q_3 * t16)) + (v[3] * t34);
-  const Scalar t43 = t28 - (Scalar(0.20000000000000001) * t21);
-  const Scalar t44 = (cos_q_3 * t23) - (v[3] * t32);
-  const Scalar t45 = t22 + t44;
-  const Scalar t46 = t25 + (Scalar(0.20000000000000001) * t29);
-  const Scalar t47 = t33 - (Scalar(0.20000000000000001) * t34);
-  const Scalar t48 = (cos_q_4 * t46) + (sin_q_4 * t47);
-  const Scalar t49 = ((cos_q_4 * t43) - (sin_q_4 * t45)) - (v[4] * t48);
-  const Scalar t50 = (((Scalar(0.021068899999999995) * t39) - (Scalar(3.5700000000000001e-06) * t41)) + (Scalar(1.2919999999999997e-05) * t42)) - ((Scalar(0.035700000000000003) * t26) + (Scalar(0.12919999999999998) * t49));
-  const Scalar t51 = v[4] + t20;
-  const Scalar t52 = (cos_q_4 * t47) - (sin_q_4 * t46);
-  const Scalar t53 = ((Scalar(0.0041497170000000007) * t51) - ((Scalar(1.2919999999999997e-05) * t40) + (Scalar(0.0010131999999999995) * t38))) + ((Scalar(0.00017000000000000001) * t52) - (Scalar(0.035700000000000003) * t48));
-  const Scalar t54 = (((Scalar(0.019119216999999994) * t38) - (Scalar(3.5700000000000001e-06) * t40)) - (Scalar(0.0010131999999999995) * t51)) + ((Scalar(0.12919999999999998) * t48) + (Scalar(0.00017000000000000001) * t32));
-  const Scalar t55 = (Scalar(1.7) * t52) - ((Scalar(0.12919999999999998) * t40) - (Scalar(0.00017000000000000001) * t51));
-  const Scalar t56 = (Scalar(1.7) * t32) + ((Scalar(0.00017000000000000001) * t38) - (Scalar(0.035700000000000003) * t40));
-  const Scalar t57 = t50 + (((t38 * t53) - (t51 * t54)) + ((t32 * t55) - (t52 * t56)));
-  const Scalar t58 = (t40 * sin_q_5) + (t51 * cos_q_5);
-  const Scalar t59 = ((cos_q_5 * t39) + (sin_q_5 * t42)) - (v[5] * t58);
-  const Scalar t60 = ((cos_q_4 * t45) + (sin_q_4 * t43)) + (v[4] * t52);
-  const Scalar t61 = t60 + (Scalar(0.19) * t41);
-  const Scalar t62 = t48 + (Scalar(0.19) * t38);
-  const Scalar t63 = (cos_q_5 * t62) + (t32 * sin_q_5);
-  const Scalar t64 = ((sin_q_5 * t61) - (cos_q_5 * t26)) + (v[5] * t63);
-  const Scalar t65 = t49 - (Scalar(0.19) * t39);
-  const Scalar t66 = v[5] + t38;
-  const Scalar t67 = ((Scalar(0.0035004680000000001) * t58) - (Scalar(3.1199999999999999e-07) * t66)) - (Scalar(0.00077999999999999999) * t63);
-  const Scalar t68 = ((Scalar(0.0041002080000000002) * t66) - (Scalar(3.1199999999999999e-07) * t58)) + (Scalar(0.00052000000000000006) * t63);
-  const Scalar t69 = t52 - (Scalar(0.19) * t40);
-  const Scalar t70 = (sin_q_5 * t62) - (t32 * cos_q_5);
-  const Scalar t71 = (t40 * cos_q_5) - (t51 * sin_q_5);
-  const Scalar t72 = (Scalar(1.3) * t70) + (Scalar(0.00077999999999999999) * t71);
-  const Scalar t73 = (Scalar(1.3) * t69) - (Scalar(0.00052000000000000006) * t71);
-  const Scalar t74 = ((t66 * t67) - (t58 * t68)) + ((t69 * t72) - (t70 * t73));
-  const Scalar t75 = ((sin_q_5 * t39) - (cos_q_5 * t42)) + (v[5] * t71);
-  const Scalar t76 = (Scalar(0.95533648912560598) * t59) - (Scalar(0.29552020666133966) * t75);
-  const Scalar t77 = (Scalar(0.95533648912560598) * t71) - (Scalar(0.29552020666133966) * t58);
-  const Scalar t78 = (t66 * cos_q_6) - (sin_q_6 * t77);
-  const Scalar t79 = ((cos_q_6 * t76) + (sin_q_6 * t41)) + (v[6] * t78);
-  const Scalar t80 = t65 - (Scalar(0.080000000000000002) * t59);
-  const Scalar t81 = ((cos_q_5 * t61) + (sin_q_5 * t26)) - (v[5] * t70);
-  const Scalar t82 = t81 + (Scalar(0.080000000000000002) * t41);
-  const Scalar t83 = (Scalar(0.95533648912560598) * t82) - (Scalar(0.29552020666133966) * t64);
-  const Scalar t84 = t63 + (Scalar(0.080000000000000002) * t66);
-  const Scalar t85 = (Scalar(0.95533648912560598) * t84) - (Scalar(0.29552020666133966) * t70);
-  const Scalar t86 = t69 - (Scalar(0.080000000000000002) * t71);
-  const Scalar t87 = (cos_q_6 * t85) + (sin_q_6 * t86);
-  const Scalar t88 = ((cos_q_6 * t80) - (sin_q_6 * t83)) - (v[6] * t87);
-  const Scalar t89 = v[6] + ((Scalar(0.29552020666133966) * t71) + (Scalar(0.95533648912560598) * t58));
-  const Scalar t90 = Scalar(0.00050000000000000001) * t89;
-  const Scalar t91 = (Scalar(0.00058125000000000006) * t78) + (Scalar(0.011250000000000001) * t87);
-  const Scalar t92 = (cos_q_6 * t86) - (sin_q_6 * t85);
-  const Scalar t93 = (Scalar(0.29552020666133966) * t84) + (Scalar(0.95533648912560598) * t70);
-  const Scalar t94 = Scalar(0.45000000000000001) * t93;
-  const Scalar t95 = (cos_q_6 * t77) + (t66 * sin_q_6);
-  const Scalar t96 = (Scalar(0.45000000000000001) * t92) - (Scalar(0.011250000000000001) * t95);
-  const Scalar t97 = ((Scalar(0.00058125000000000006) * t79) - (Scalar(0.011250000000000001) * t88)) + (((t78 * t90) - (t89 * t91)) + ((t92 * t94) - (t93 * t96)));
-  const Scalar t98 = ((cos_q_6 * t41) - (sin_q_6 * t76)) - (v[6] * t95);
-  const Scalar t99 = ((cos_q_6 * t83) + (sin_q_6 * t80)) + (v[6] * t92);
-  const Scalar t100 = (Scalar(0.00058125000000000006) * t95) - (Scalar(0.011250000000000001) * t92);
-  const Scalar t101 = (Scalar(0.45000000000000001) * t87) + (Scalar(0.011250000000000001) * t78);
-  const Scalar t102 = ((Scalar(0.00058125000000000006) * t98) + (Scalar(0.011250000000000001) * t99)) + (((t89 * t100) - (t95 * t90)) + ((t93 * t101) - (t87 * t94)));
-  const Scalar t103 = (cos_q_6 * t97) - (sin_q_6 * t102);
-  const Scalar t104 = (Scalar(0.00050000000000000001) * ((Scalar(0.29552020666133966) * t59) + (Scalar(0.95533648912560598) * t75))) + (((t95 * t91) - (t78 * t100)) + ((t87 * t96) - (t92 * t101)));
-  const Scalar t105 = ((Scalar(0.45000000000000001) * t99) + (Scalar(0.011250000000000001) * t98)) + ((t78 * t94) - (t89 * t96));
-  const Scalar t106 = ((Scalar(0.45000000000000001) * t88) - (Scalar(0.011250000000000001) * t79)) + ((t89 * t101) - (t95 * t94));
-  const Scalar t107 = (sin_q_6 * t105) + (cos_q_6 * t106);
-  const Scalar t108 = (((Scalar(0.0036006759999999997) * t59) + ((Scalar(0.00077999999999999999) * t64) - (Scalar(0.00052000000000000006) * t65))) + t74) + (((Scalar(0.95533648912560598) * t103) + (Scalar(0.29552020666133966) * t104)) - (Scalar(0.080000000000000002) * t107));
-  const Scalar t109 = (Scalar(0.0036006759999999997) * t71) + ((Scalar(0.00077999999999999999) * t70) - (Scalar(0.00052000000000000006) * t69));
-  const Scalar t110 = (Scalar(1.3) * t63) - ((Scalar(0.00077999999999999999) * t58) - (Scalar(0.00052000000000000006) * t66));
-  const Scalar t111 = ((t71 * t68) - (t66 * t109)) + ((t63 * t73) - (t69 * t110));
-  const Scalar t112 = ((((Scalar(0.0035004680000000001) * t75) - (Scalar(3.1199999999999999e-07) * t41)) - (Scalar(0.00077999999999999999) * t81)) + t111) + ((Scalar(0.95533648912560598) * t104) - (Scalar(0.29552020666133966) * t103));
-  const Scalar t113 = (((Scalar(1.3) * t65) - (Scalar(0.00052000000000000006) * t59)) + ((t58 * t110) - (t71 * t72))) + t107;
-  const Scalar t114 = t57 + (((cos_q_5 * t108) + (sin_q_5 * t112)) - (Scalar(0.19) * t113));
-  const Scalar t115 = (((Scalar(0.019119216999999994) * t41) - (Scalar(3.5700000000000001e-06) * t39)) + (Scalar(0.0010131999999999995) * t42)) + ((Scalar(0.12919999999999998) * t60) + (Scalar(0.00017000000000000001) * t26));
-  const Scalar t116 = (((Scalar(0.021068899999999995) * t40) - (Scalar(3.5700000000000001e-06) * t38)) - (Scalar(1.2919999999999997e-05) * t51)) - ((Scalar(0.035700000000000003) * t32) + (Scalar(0.12919999999999998) * t52));
-  const Scalar t117 = (Scalar(1.7) * t48) - ((Scalar(0.035700000000000003) * t51) - (Scalar(0.12919999999999998) * t38));
-  const Scalar t118 = ((t58 * t109) - (t71 * t67)) + ((t70 * t110) - (t63 * t72));
-  const Scalar t119 = (cos_q_6 * t105) - (sin_q_6 * t106);
-  const Scalar t120 = (Scalar(0.45000000000000001) * ((Scalar(0.29552020666133966) * t82) + (Scalar(0.95533648912560598) * t64))) + ((t95 * t96) - (t78 * t101));
-  const Scalar t121 = (Scalar(0.95533648912560598) * t119) + (Scalar(0.29552020666133966) * t120);
-  const Scalar t122 = ((((Scalar(0.0041002080000000002) * t41) - (Scalar(3.1199999999999999e-07) * t75)) + (Scalar(0.00052000000000000006) * t81)) + t118) + (((sin_q_6 * t97) + (cos_q_6 * t102)) + (Scalar(0.080000000000000002) * t121));
-  const Scalar t123 = (((Scalar(1.3) * t81) - ((Scalar(0.00077999999999999999) * t75) - (Scalar(0.00052000000000000006) * t41))) + ((t66 * t72) - (t58 * t73))) + t121;
-  const Scalar t124 = (((Scalar(1.3) * t64) + (Scalar(0.00077999999999999999) * t59)) + ((t71 * t73) - (t66 * t110))) + ((Scalar(0.95533648912560598) * t120) - (Scalar(0.29552020666133966) * t119));
-  const Scalar t125 = (cos_q_5 * t123) + (sin_q_5 * t124);
-  const Scalar t126 = (t115 + (((t51 * t116) - (t40 * t53)) + ((t48 * t56) - (t32 * t117)))) + (t122 + (Scalar(0.19) * t125));
-  const Scalar t127 = (((Scalar(1.7) * t60) + ((Scalar(0.035700000000000003) * t42) + (Scalar(0.12919999999999998) * t41))) - ((t38 * t56) + (t51 * t55))) + t125;
-  const Scalar t128 = (((Scalar(1.7) * t49) - ((Scalar(0.12919999999999998) * t39) + (Scalar(0.00017000000000000001) * t42))) + ((t51 * t117) + (t40 * t56))) + t113;
-  const Scalar t129 = (sin_q_4 * t127) + (cos_q_4 * t128);
-  const Scalar t130 = (((Scalar(0.0393125) * t21) + ((Scalar(0.074999999999999997) * t26) - (Scalar(0.21250000000000002) * t28))) + t37) + (((cos_q_4 * t114) - (sin_q_4 * t126)) - (Scalar(0.20000000000000001) * t129));
-  const Scalar t131 = (Scalar(0.0393125) * t34) + ((Scalar(0.074999999999999997) * t32) - (Scalar(0.21250000000000002) * t33));
-  const Scalar t132 = (Scalar(2.5) * t25) + ((Scalar(0.074999999999999997) * t20) + (Scalar(0.21250000000000002) * t29));
-  const Scalar t133 = ((t34 * t31) - (t29 * t131)) + ((t25 * t35) - (t33 * t132));
-  const Scalar t134 = ((Scalar(0.00017000000000000001) * t49) - (Scalar(0.035700000000000003) * t60)) - (((Scalar(1.2919999999999997e-05) * t39) + (Scalar(0.0010131999999999995) * t41)) + (Scalar(0.0041497170000000007) * t42));
-  const Scalar t135 = (t134 + (((t40 * t54) - (t38 * t116)) + ((t48 * t55) - (t52 * t117)))) + ((cos_q_5 * t112) - (sin_q_5 * t108));
-  const Scalar t136 = ((((Scalar(0.004275000000000001) * t15) - (Scalar(0.0083500000000000015) * t42)) + (Scalar(0.074999999999999997) * t44)) + t133) + t135;
-  const Scalar t137 = (t13 - (((Scalar(0.0065719999999999997) * t15) + (Scalar(0.0093168000000000001) * t16)) + (Scalar(0.075600000000000001) * t18))) + ((sin_q_3 * t130) + (cos_q_3 * t136));
-  const Scalar t138 = ((Scalar(3.3299999999999996e-05) * t0) + (Scalar(0.059970333000000001) * v[1])) - (Scalar(0.012789999999999999) * t3);
-  const Scalar t139 = (Scalar(0.00030010000000000003) * t3) - ((Scalar(0.064299999999999996) * t0) + (Scalar(3.3299999999999996e-05) * v[1]));
-  const Scalar t140 = cos_q_1 * (t137 - (((Scalar(0.00030010000000000003) * t14) + (Scalar(0.013330332999999998) * t16)) + ((t0 * t138) + (v[1] * t139))));
-  const Scalar t141 = (Scalar(0.013330332999999998) * t3) - ((Scalar(0.00030010000000000003) * t0) + (Scalar(0.012789999999999999) * v[1]));
-  const Scalar t142 = ((Scalar(0.0093168000000000001) * t4) - (Scalar(0.0065719999999999997) * t2)) - (Scalar(0.075600000000000001) * t7);
-  const Scalar t143 = Scalar(0.075600000000000001) * t1;
-  const Scalar t144 = ((Scalar(0.062996799999999992) * t19) - (Scalar(0.32400000000000001) * t27)) + (((t2 * t142) - (t4 * t8)) + (t9 * t143));
-  const Scalar t145 = (((Scalar(2.5) * t28) - (Scalar(0.21250000000000002) * t21)) + ((t20 * t132) + (t34 * t36))) + t129;
-  const Scalar t146 = t144 + (((cos_q_3 * t130) - (sin_q_3 * t136)) - (Scalar(0.20000000000000001) * t145));
-  const Scalar t147 = (((Scalar(0.059880000000000003) * t15) + (Scalar(0.0065719999999999997) * t16)) + (Scalar(0.32400000000000001) * t18)) + (((t4 * t10) - (t1 * t142)) - (t7 * t143));
-  const Scalar t148 = ((t20 * t131) - (t34 * t30)) + ((t25 * t36) - (t32 * t132));
-  const Scalar t149 = (cos_q_4 * t127) - (sin_q_4 * t128);
-  const Scalar t150 = ((((Scalar(0.036062500000000004) * t15) - (Scalar(0.004275000000000001) * t42)) + (Scalar(0.21250000000000002) * t44)) + t148) + (((sin_q_4 * t114) + (cos_q_4 * t126)) + (Scalar(0.20000000000000001) * t149));
-  const Scalar t151 = cos_q_3 * ((((Scalar(2.5) * t44) - ((Scalar(0.074999999999999997) * t42) - (Scalar(0.21250000000000002) * t15))) - ((t29 * t36) + (t20 * t35))) + t149);
-  const Scalar t152 = ((t40 * t55) - (t38 * t117)) - ((Scalar(1.7) * t26) + ((Scalar(0.00017000000000000001) * t41) - (Scalar(0.035700000000000003) * t39)));
-  const Scalar t153 = (((t34 * t35) - (t29 * t132)) - ((Scalar(2.5) * t26) + (Scalar(0.074999999999999997) * t21))) + (t152 + ((cos_q_5 * t124) - (sin_q_5 * t123)));
-  const Scalar t154 = t151 - (sin_q_3 * t153);
-  const Scalar t155 = t147 + (t150 + (Scalar(0.20000000000000001) * t154));
-  const Scalar t156 = (((Scalar(2.7000000000000002) * t18) + ((Scalar(0.075600000000000001) * t16) + (Scalar(0.32400000000000001) * t15))) + ((t2 * t143) - (t4 * t11))) + t154;
-  const Scalar t157 = (((Scalar(2.7000000000000002) * t27) - (Scalar(0.32400000000000001) * t19)) + ((t4 * t12) - (t1 * t143))) + t145;
-  const Scalar t158 = ((cos_q_2 * t146) - (sin_q_2 * t155)) - (Scalar(0.22) * ((sin_q_2 * t156) + (cos_q_2 * t157)));
-  const Scalar t159 = ((sin_q_2 * t146) + (cos_q_2 * t155)) + (Scalar(0.22) * ((cos_q_2 * t156) - (sin_q_2 * t157)));
-  c[0] = t140 - (sin_q_1 * ((((v[1] * t141) - (t3 * t138)) - ((Scalar(0.064299999999999996) * t14) + (Scalar(0.00030010000000000003) * t16))) + t158));
-  c[1] = (((Scalar(3.3299999999999996e-05) * t14) + (Scalar(0.012789999999999999) * t16)) + ((t3 * t139) + (t0 * t141))) + t159;
-  c[2] = t137;
-  c[3] = -t150;
-  c[4] = t135;
-  c[5] = t122;
-  c[6] = t104;
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///             454  342    0     0    12    1    809
+using ::rbdc_gen::arm7::common::quadratic_velocity_terms_19cfd7ce3ee6::quadratic_velocity_terms;
 
 /// quadratic_velocity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

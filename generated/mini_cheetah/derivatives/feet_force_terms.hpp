@@ -4,11 +4,14 @@
 // scene: derivatives
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// feet_force_terms for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// feet_force_terms for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose feet_force_terms is the same code:
+//   mini_cheetah/common/feet_force_terms_f10d1a8c0d86.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
+#include "mini_cheetah/common/feet_force_terms_f10d1a8c0d86.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -18,199 +21,9 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param f in  3x4: foot forces, world frame, one column per foot
 /// @param tau_e out 18x1: τ_e = Jᵀ f
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated    333    213      0      0     24      9    579
-/// generic     6063   5094      0      0     24      0  11181
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void feet_force_terms(const Scalar* q, const Scalar* f, Scalar* tau_e) noexcept {
-  const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
-    q[15], q[16], q[17], q[18]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_7 = joint_trig.sin[0];
-  const Scalar cos_q_7 = joint_trig.cos[0];
-  const Scalar sin_q_8 = joint_trig.sin[1];
-  const Scalar cos_q_8 = joint_trig.cos[1];
-  const Scalar sin_q_9 = joint_trig.sin[2];
-  const Scalar cos_q_9 = joint_trig.cos[2];
-  const Scalar sin_q_10 = joint_trig.sin[3];
-  const Scalar cos_q_10 = joint_trig.cos[3];
-  const Scalar sin_q_11 = joint_trig.sin[4];
-  const Scalar cos_q_11 = joint_trig.cos[4];
-  const Scalar sin_q_12 = joint_trig.sin[5];
-  const Scalar cos_q_12 = joint_trig.cos[5];
-  const Scalar sin_q_13 = joint_trig.sin[6];
-  const Scalar cos_q_13 = joint_trig.cos[6];
-  const Scalar sin_q_14 = joint_trig.sin[7];
-  const Scalar cos_q_14 = joint_trig.cos[7];
-  const Scalar sin_q_15 = joint_trig.sin[8];
-  const Scalar cos_q_15 = joint_trig.cos[8];
-  const Scalar sin_q_16 = joint_trig.sin[9];
-  const Scalar cos_q_16 = joint_trig.cos[9];
-  const Scalar sin_q_17 = joint_trig.sin[10];
-  const Scalar cos_q_17 = joint_trig.cos[10];
-  const Scalar sin_q_18 = joint_trig.sin[11];
-  const Scalar cos_q_18 = joint_trig.cos[11];
-  const Scalar t0 = q[5] + q[5];
-  const Scalar t1 = q[5] * t0;
-  const Scalar t2 = q[6] + q[6];
-  const Scalar t3 = q[6] * t2;
-  const Scalar t4 = (t1 + t3) - Scalar(1);
-  const Scalar t5 = q[4] * t2;
-  const Scalar t6 = q[3] * t0;
-  const Scalar t7 = t5 + t6;
-  const Scalar t8 = q[4] * t0;
-  const Scalar t9 = q[3] * t2;
-  const Scalar t10 = t8 - t9;
-  const Scalar t11 = (t7 * cos_q_16) - (t10 * sin_q_16);
-  const Scalar t12 = (t4 * cos_q_17) - (t11 * sin_q_17);
-  const Scalar t13 = (t4 * sin_q_17) + (t11 * cos_q_17);
-  const Scalar t14 = q[5] * t2;
-  const Scalar t15 = q[4] + q[4];
-  const Scalar t16 = q[3] * t15;
-  const Scalar t17 = t14 - t16;
-  const Scalar t18 = q[4] * t15;
-  const Scalar t19 = Scalar(1) - (t18 + t3);
-  const Scalar t20 = (t17 * cos_q_16) - (t19 * sin_q_16);
-  const Scalar t21 = t8 + t9;
-  const Scalar t22 = (t20 * cos_q_17) - (t21 * sin_q_17);
-  const Scalar t23 = (t21 * cos_q_17) + (t20 * sin_q_17);
-  const Scalar t24 = (((t12 * sin_q_18) + (t13 * cos_q_18)) * f[9]) + (((t22 * cos_q_18) - (t23 * sin_q_18)) * f[10]);
-  const Scalar t25 = t6 - t5;
-  const Scalar t26 = Scalar(1) - (t18 + t1);
-  const Scalar t27 = t14 + t16;
-  const Scalar t28 = (t26 * cos_q_16) - (t27 * sin_q_16);
-  const Scalar t29 = (t25 * cos_q_17) - (t28 * sin_q_17);
-  const Scalar t30 = (t25 * sin_q_17) + (t28 * cos_q_17);
-  const Scalar t31 = t24 + (((t29 * sin_q_18) + (t30 * cos_q_18)) * f[11]);
-  const Scalar t32 = (((t10 * cos_q_16) + (t7 * sin_q_16)) * f[9]) + (((t19 * cos_q_16) + (t17 * sin_q_16)) * f[10]);
-  const Scalar t33 = t32 + (((t27 * cos_q_16) + (t26 * sin_q_16)) * f[11]);
-  const Scalar t34 = (Scalar(0.0040000000000000001) * t31) - (Scalar(0.19500000000000001) * t33);
-  const Scalar t35 = (((t12 * cos_q_18) - (t13 * sin_q_18)) * f[9]) - (((t23 * cos_q_18) + (t22 * sin_q_18)) * f[10]);
-  const Scalar t36 = t35 + (((t29 * cos_q_18) - (t30 * sin_q_18)) * f[11]);
-  const Scalar t37 = Scalar(0.0040000000000000001) * t36;
-  const Scalar t38 = (sin_q_18 * t34) + (cos_q_18 * t37);
-  const Scalar t39 = ((cos_q_18 * t34) - (sin_q_18 * t37)) - (Scalar(0.20899999999999999) * t33);
-  const Scalar t40 = (cos_q_18 * t31) - (sin_q_18 * t36);
-  const Scalar t41 = (cos_q_18 * t36) + (sin_q_18 * t31);
-  const Scalar t42 = (cos_q_17 * t40) - (sin_q_17 * t41);
-  const Scalar t43 = ((sin_q_17 * t38) - (cos_q_17 * t39)) - (Scalar(0.062) * t42);
-  const Scalar t44 = (sin_q_16 * t33) + (cos_q_16 * t42);
-  const Scalar t45 = (t7 * cos_q_13) - (t10 * sin_q_13);
-  const Scalar t46 = (t4 * cos_q_14) - (t45 * sin_q_14);
-  const Scalar t47 = (t4 * sin_q_14) + (t45 * cos_q_14);
-  const Scalar t48 = (t17 * cos_q_13) - (t19 * sin_q_13);
-  const Scalar t49 = (t48 * cos_q_14) - (t21 * sin_q_14);
-  const Scalar t50 = (t21 * cos_q_14) + (t48 * sin_q_14);
-  const Scalar t51 = (((t46 * sin_q_15) + (t47 * cos_q_15)) * f[6]) + (((t49 * cos_q_15) - (t50 * sin_q_15)) * f[7]);
-  const Scalar t52 = (t26 * cos_q_13) - (t27 * sin_q_13);
-  const Scalar t53 = (t25 * cos_q_14) - (t52 * sin_q_14);
-  const Scalar t54 = (t25 * sin_q_14) + (t52 * cos_q_14);
-  const Scalar t55 = t51 + (((t53 * sin_q_15) + (t54 * cos_q_15)) * f[8]);
-  const Scalar t56 = (((t46 * cos_q_15) - (t47 * sin_q_15)) * f[6]) - (((t50 * cos_q_15) + (t49 * sin_q_15)) * f[7]);
-  const Scalar t57 = t56 + (((t53 * cos_q_15) - (t54 * sin_q_15)) * f[8]);
-  const Scalar t58 = (cos_q_15 * t55) - (sin_q_15 * t57);
-  const Scalar t59 = (cos_q_15 * t57) + (sin_q_15 * t55);
-  const Scalar t60 = (cos_q_14 * t58) - (sin_q_14 * t59);
-  const Scalar t61 = Scalar(0.0040000000000000001) * t57;
-  const Scalar t62 = (((t10 * cos_q_13) + (t7 * sin_q_13)) * f[6]) + (((t19 * cos_q_13) + (t17 * sin_q_13)) * f[7]);
-  const Scalar t63 = t62 + (((t27 * cos_q_13) + (t26 * sin_q_13)) * f[8]);
-  const Scalar t64 = (Scalar(0.0040000000000000001) * t55) + (Scalar(0.19500000000000001) * t63);
-  const Scalar t65 = ((sin_q_15 * t61) - (cos_q_15 * t64)) - (Scalar(0.20899999999999999) * t63);
-  const Scalar t66 = (sin_q_15 * t64) + (cos_q_15 * t61);
-  const Scalar t67 = (Scalar(0.062) * t60) - ((cos_q_14 * t65) + (sin_q_14 * t66));
-  const Scalar t68 = (sin_q_13 * t63) + (cos_q_13 * t60);
-  const Scalar t69 = (t7 * cos_q_10) - (t10 * sin_q_10);
-  const Scalar t70 = (t4 * cos_q_11) - (t69 * sin_q_11);
-  const Scalar t71 = (t4 * sin_q_11) + (t69 * cos_q_11);
-  const Scalar t72 = (t17 * cos_q_10) - (t19 * sin_q_10);
-  const Scalar t73 = (t72 * cos_q_11) - (t21 * sin_q_11);
-  const Scalar t74 = (t21 * cos_q_11) + (t72 * sin_q_11);
-  const Scalar t75 = (((t70 * sin_q_12) + (t71 * cos_q_12)) * f[3]) + (((t73 * cos_q_12) - (t74 * sin_q_12)) * f[4]);
-  const Scalar t76 = (t26 * cos_q_10) - (t27 * sin_q_10);
-  const Scalar t77 = (t25 * cos_q_11) - (t76 * sin_q_11);
-  const Scalar t78 = (t25 * sin_q_11) + (t76 * cos_q_11);
-  const Scalar t79 = t75 + (((t77 * sin_q_12) + (t78 * cos_q_12)) * f[5]);
-  const Scalar t80 = (((t10 * cos_q_10) + (t7 * sin_q_10)) * f[3]) + (((t19 * cos_q_10) + (t17 * sin_q_10)) * f[4]);
-  const Scalar t81 = t80 + (((t27 * cos_q_10) + (t26 * sin_q_10)) * f[5]);
-  const Scalar t82 = (Scalar(0.0040000000000000001) * t79) - (Scalar(0.19500000000000001) * t81);
-  const Scalar t83 = (((t70 * cos_q_12) - (t71 * sin_q_12)) * f[3]) - (((t74 * cos_q_12) + (t73 * sin_q_12)) * f[4]);
-  const Scalar t84 = t83 + (((t77 * cos_q_12) - (t78 * sin_q_12)) * f[5]);
-  const Scalar t85 = Scalar(0.0040000000000000001) * t84;
-  const Scalar t86 = (sin_q_12 * t82) + (cos_q_12 * t85);
-  const Scalar t87 = ((cos_q_12 * t82) - (sin_q_12 * t85)) - (Scalar(0.20899999999999999) * t81);
-  const Scalar t88 = (cos_q_12 * t79) - (sin_q_12 * t84);
-  const Scalar t89 = (cos_q_12 * t84) + (sin_q_12 * t79);
-  const Scalar t90 = (cos_q_11 * t88) - (sin_q_11 * t89);
-  const Scalar t91 = ((sin_q_11 * t86) - (cos_q_11 * t87)) - (Scalar(0.062) * t90);
-  const Scalar t92 = (sin_q_10 * t81) + (cos_q_10 * t90);
-  const Scalar t93 = (t7 * cos_q_7) - (t10 * sin_q_7);
-  const Scalar t94 = (cos_q_8 * t4) - (t93 * sin_q_8);
-  const Scalar t95 = (sin_q_8 * t4) + (t93 * cos_q_8);
-  const Scalar t96 = (t17 * cos_q_7) - (t19 * sin_q_7);
-  const Scalar t97 = (t96 * cos_q_8) - (t21 * sin_q_8);
-  const Scalar t98 = (t21 * cos_q_8) + (t96 * sin_q_8);
-  const Scalar t99 = (((t94 * sin_q_9) + (t95 * cos_q_9)) * f[0]) + (((t97 * cos_q_9) - (t98 * sin_q_9)) * f[1]);
-  const Scalar t100 = (t26 * cos_q_7) - (t27 * sin_q_7);
-  const Scalar t101 = (cos_q_8 * t25) - (t100 * sin_q_8);
-  const Scalar t102 = (sin_q_8 * t25) + (t100 * cos_q_8);
-  const Scalar t103 = t99 + (((t101 * sin_q_9) + (t102 * cos_q_9)) * f[2]);
-  const Scalar t104 = (((t94 * cos_q_9) - (t95 * sin_q_9)) * f[0]) - (((t98 * cos_q_9) + (t97 * sin_q_9)) * f[1]);
-  const Scalar t105 = t104 + (((t101 * cos_q_9) - (t102 * sin_q_9)) * f[2]);
-  const Scalar t106 = (cos_q_9 * t103) - (sin_q_9 * t105);
-  const Scalar t107 = (cos_q_9 * t105) + (sin_q_9 * t103);
-  const Scalar t108 = (cos_q_8 * t106) - (sin_q_8 * t107);
-  const Scalar t109 = Scalar(0.0040000000000000001) * t105;
-  const Scalar t110 = (((t10 * cos_q_7) + (t7 * sin_q_7)) * f[0]) + (((t19 * cos_q_7) + (t17 * sin_q_7)) * f[1]);
-  const Scalar t111 = t110 + (((t27 * cos_q_7) + (t26 * sin_q_7)) * f[2]);
-  const Scalar t112 = (Scalar(0.0040000000000000001) * t103) + (Scalar(0.19500000000000001) * t111);
-  const Scalar t113 = ((sin_q_9 * t109) - (cos_q_9 * t112)) - (Scalar(0.20899999999999999) * t111);
-  const Scalar t114 = (sin_q_9 * t112) + (cos_q_9 * t109);
-  const Scalar t115 = (Scalar(0.062) * t108) - ((cos_q_8 * t113) + (sin_q_8 * t114));
-  const Scalar t116 = (sin_q_7 * t111) + (cos_q_7 * t108);
-  const Scalar t117 = Scalar(0.19500000000000001) * t36;
-  const Scalar t118 = t117 + (Scalar(0.20899999999999999) * t41);
-  const Scalar t119 = (cos_q_17 * t41) + (sin_q_17 * t40);
-  const Scalar t120 = ((sin_q_17 * t39) + (cos_q_17 * t38)) + (Scalar(0.062) * t119);
-  const Scalar t121 = Scalar(0.19500000000000001) * t57;
-  const Scalar t122 = t121 + (Scalar(0.20899999999999999) * t59);
-  const Scalar t123 = (cos_q_14 * t59) + (sin_q_14 * t58);
-  const Scalar t124 = ((cos_q_14 * t66) - (sin_q_14 * t65)) + (Scalar(0.062) * t123);
-  const Scalar t125 = (((cos_q_16 * t118) + (sin_q_16 * t120)) + (Scalar(0.19) * t44)) + (((cos_q_13 * t122) - (sin_q_13 * t124)) + (Scalar(0.19) * t68));
-  const Scalar t126 = Scalar(0.19500000000000001) * t84;
-  const Scalar t127 = t126 + (Scalar(0.20899999999999999) * t89);
-  const Scalar t128 = (cos_q_11 * t89) + (sin_q_11 * t88);
-  const Scalar t129 = ((sin_q_11 * t87) + (cos_q_11 * t86)) + (Scalar(0.062) * t128);
-  const Scalar t130 = Scalar(0.19500000000000001) * t105;
-  const Scalar t131 = t130 + (Scalar(0.20899999999999999) * t107);
-  const Scalar t132 = (cos_q_8 * t107) + (sin_q_8 * t106);
-  const Scalar t133 = ((cos_q_8 * t114) - (sin_q_8 * t113)) + (Scalar(0.062) * t132);
-  const Scalar t134 = (cos_q_16 * t33) - (sin_q_16 * t42);
-  const Scalar t135 = ((sin_q_16 * t118) - (cos_q_16 * t120)) - ((Scalar(0.19) * t134) + (Scalar(0.049000000000000002) * t119));
-  const Scalar t136 = (cos_q_13 * t63) - (sin_q_13 * t60);
-  const Scalar t137 = t135 + (((sin_q_13 * t122) + (cos_q_13 * t124)) + ((Scalar(0.049000000000000002) * t123) - (Scalar(0.19) * t136)));
-  const Scalar t138 = (cos_q_10 * t81) - (sin_q_10 * t90);
-  const Scalar t139 = t137 + (((sin_q_10 * t127) - (cos_q_10 * t129)) + ((Scalar(0.19) * t138) - (Scalar(0.049000000000000002) * t128)));
-  const Scalar t140 = (cos_q_7 * t111) - (sin_q_7 * t108);
-  tau_e[0] = (((t43 - (Scalar(0.049000000000000002) * t44)) + (t67 + (Scalar(0.049000000000000002) * t68))) + (t91 - (Scalar(0.049000000000000002) * t92))) + (t115 + (Scalar(0.049000000000000002) * t116));
-  tau_e[1] = (t125 + (((cos_q_10 * t127) + (sin_q_10 * t129)) - (Scalar(0.19) * t92))) + (((cos_q_7 * t131) - (sin_q_7 * t133)) - (Scalar(0.19) * t116));
-  tau_e[2] = t139 + (((sin_q_7 * t131) + (cos_q_7 * t133)) + ((Scalar(0.19) * t140) + (Scalar(0.049000000000000002) * t132)));
-  tau_e[3] = -(((t119 + t123) + t128) + t132);
-  tau_e[4] = ((t134 + t136) + t138) + t140;
-  tau_e[5] = ((t44 + t68) + t92) + t116;
-  tau_e[6] = t115;
-  tau_e[7] = -t131;
-  tau_e[8] = -t130;
-  tau_e[9] = t91;
-  tau_e[10] = -t127;
-  tau_e[11] = -t126;
-  tau_e[12] = t67;
-  tau_e[13] = -t122;
-  tau_e[14] = -t121;
-  tau_e[15] = t43;
-  tau_e[16] = -t118;
-  tau_e[17] = -t117;
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///             333  213    0     0    24    9    579
+using ::rbdc_gen::mini_cheetah::common::feet_force_terms_f10d1a8c0d86::feet_force_terms;
 
 /// feet_force_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -4,11 +4,14 @@
 // scene: derivatives
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// feet_velocities for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// feet_velocities for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose feet_velocities is the same code:
+//   mini_cheetah/common/feet_velocities_bf3c7a7d6470.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
+#include "mini_cheetah/common/feet_velocities_bf3c7a7d6470.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -18,186 +21,9 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param v in  18x1: velocity (trunk ω, v in trunk coordinates, joint rates)
 /// @param pdot out 3x4: foot velocities, world frame, one column per foot
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated    321    214      0      0     24      0    559
-/// generic     6063   5034      0      0     24      0  11121
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void feet_velocities(const Scalar* q, const Scalar* v, Scalar* pdot) noexcept {
-  const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
-    q[15], q[16], q[17], q[18]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_7 = joint_trig.sin[0];
-  const Scalar cos_q_7 = joint_trig.cos[0];
-  const Scalar sin_q_8 = joint_trig.sin[1];
-  const Scalar cos_q_8 = joint_trig.cos[1];
-  const Scalar sin_q_9 = joint_trig.sin[2];
-  const Scalar cos_q_9 = joint_trig.cos[2];
-  const Scalar sin_q_10 = joint_trig.sin[3];
-  const Scalar cos_q_10 = joint_trig.cos[3];
-  const Scalar sin_q_11 = joint_trig.sin[4];
-  const Scalar cos_q_11 = joint_trig.cos[4];
-  const Scalar sin_q_12 = joint_trig.sin[5];
-  const Scalar cos_q_12 = joint_trig.cos[5];
-  const Scalar sin_q_13 = joint_trig.sin[6];
-  const Scalar cos_q_13 = joint_trig.cos[6];
-  const Scalar sin_q_14 = joint_trig.sin[7];
-  const Scalar cos_q_14 = joint_trig.cos[7];
-  const Scalar sin_q_15 = joint_trig.sin[8];
-  const Scalar cos_q_15 = joint_trig.cos[8];
-  const Scalar sin_q_16 = joint_trig.sin[9];
-  const Scalar cos_q_16 = joint_trig.cos[9];
-  const Scalar sin_q_17 = joint_trig.sin[10];
-  const Scalar cos_q_17 = joint_trig.cos[10];
-  const Scalar sin_q_18 = joint_trig.sin[11];
-  const Scalar cos_q_18 = joint_trig.cos[11];
-  const Scalar t0 = q[5] + q[5];
-  const Scalar t1 = q[5] * t0;
-  const Scalar t2 = q[6] + q[6];
-  const Scalar t3 = q[6] * t2;
-  const Scalar t4 = (t1 + t3) - Scalar(1);
-  const Scalar t5 = q[4] * t2;
-  const Scalar t6 = q[3] * t0;
-  const Scalar t7 = t5 + t6;
-  const Scalar t8 = q[4] * t0;
-  const Scalar t9 = q[3] * t2;
-  const Scalar t10 = t8 - t9;
-  const Scalar t11 = (t7 * cos_q_7) - (t10 * sin_q_7);
-  const Scalar t12 = (cos_q_8 * t4) - (t11 * sin_q_8);
-  const Scalar t13 = (sin_q_8 * t4) + (t11 * cos_q_8);
-  const Scalar t14 = (cos_q_7 * v[2]) - (sin_q_7 * v[1]);
-  const Scalar t15 = Scalar(0.049000000000000002) * v[2];
-  const Scalar t16 = v[3] - t15;
-  const Scalar t17 = (Scalar(0.062) * t14) - t16;
-  const Scalar t18 = Scalar(0.19) * v[1];
-  const Scalar t19 = Scalar(0.049000000000000002) * v[0];
-  const Scalar t20 = v[5] - (t18 - t19);
-  const Scalar t21 = Scalar(0.19) * v[2];
-  const Scalar t22 = v[4] + t21;
-  const Scalar t23 = v[0] + v[6];
-  const Scalar t24 = ((cos_q_7 * t20) - (sin_q_7 * t22)) + (Scalar(0.062) * t23);
-  const Scalar t25 = v[7] - ((cos_q_7 * v[1]) + (sin_q_7 * v[2]));
-  const Scalar t26 = ((cos_q_8 * t17) - (sin_q_8 * t24)) - (Scalar(0.20899999999999999) * t25);
-  const Scalar t27 = (sin_q_8 * t17) + (cos_q_8 * t24);
-  const Scalar t28 = (cos_q_8 * t14) - (sin_q_8 * t23);
-  const Scalar t29 = (cos_q_8 * t23) + (sin_q_8 * t14);
-  const Scalar t30 = ((cos_q_9 * t26) - (sin_q_9 * t27)) + ((Scalar(0.0040000000000000001) * ((cos_q_9 * t28) - (sin_q_9 * t29))) - (Scalar(0.19500000000000001) * (v[8] + t25)));
-  const Scalar t31 = (cos_q_9 * t29) + (sin_q_9 * t28);
-  const Scalar t32 = (((cos_q_7 * t22) + (sin_q_7 * t20)) + (Scalar(0.20899999999999999) * t29)) + (Scalar(0.19500000000000001) * t31);
-  const Scalar t33 = (((t12 * cos_q_9) - (t13 * sin_q_9)) * t30) + (((t10 * cos_q_7) + (t7 * sin_q_7)) * t32);
-  const Scalar t34 = ((sin_q_9 * t26) + (cos_q_9 * t27)) + (Scalar(0.0040000000000000001) * t31);
-  const Scalar t35 = q[4] + q[4];
-  const Scalar t36 = q[4] * t35;
-  const Scalar t37 = Scalar(1) - (t36 + t3);
-  const Scalar t38 = q[5] * t2;
-  const Scalar t39 = q[3] * t35;
-  const Scalar t40 = t38 - t39;
-  const Scalar t41 = t8 + t9;
-  const Scalar t42 = (t40 * cos_q_7) - (t37 * sin_q_7);
-  const Scalar t43 = (t41 * cos_q_8) + (t42 * sin_q_8);
-  const Scalar t44 = (t42 * cos_q_8) - (t41 * sin_q_8);
-  const Scalar t45 = (((t37 * cos_q_7) + (t40 * sin_q_7)) * t32) - (((t43 * cos_q_9) + (t44 * sin_q_9)) * t30);
-  const Scalar t46 = t6 - t5;
-  const Scalar t47 = Scalar(1) - (t36 + t1);
-  const Scalar t48 = t38 + t39;
-  const Scalar t49 = (t47 * cos_q_7) - (t48 * sin_q_7);
-  const Scalar t50 = (cos_q_8 * t46) - (t49 * sin_q_8);
-  const Scalar t51 = (sin_q_8 * t46) + (t49 * cos_q_8);
-  const Scalar t52 = (((t50 * cos_q_9) - (t51 * sin_q_9)) * t30) + (((t48 * cos_q_7) + (t47 * sin_q_7)) * t32);
-  const Scalar t53 = t18 + t19;
-  const Scalar t54 = v[5] - t53;
-  const Scalar t55 = v[0] + v[9];
-  const Scalar t56 = (cos_q_10 * v[2]) - (sin_q_10 * v[1]);
-  const Scalar t57 = (cos_q_11 * t55) + (sin_q_11 * t56);
-  const Scalar t58 = (cos_q_11 * t56) - (sin_q_11 * t55);
-  const Scalar t59 = (cos_q_12 * t57) + (sin_q_12 * t58);
-  const Scalar t60 = (((cos_q_10 * t22) + (sin_q_10 * t54)) + (Scalar(0.20899999999999999) * t57)) + (Scalar(0.19500000000000001) * t59);
-  const Scalar t61 = (t7 * cos_q_10) - (t10 * sin_q_10);
-  const Scalar t62 = (t4 * cos_q_11) - (t61 * sin_q_11);
-  const Scalar t63 = (t4 * sin_q_11) + (t61 * cos_q_11);
-  const Scalar t64 = v[3] + t15;
-  const Scalar t65 = t64 + (Scalar(0.062) * t56);
-  const Scalar t66 = ((cos_q_10 * t54) - (sin_q_10 * t22)) - (Scalar(0.062) * t55);
-  const Scalar t67 = v[10] - ((cos_q_10 * v[1]) + (sin_q_10 * v[2]));
-  const Scalar t68 = ((cos_q_11 * t65) + (sin_q_11 * t66)) + (Scalar(0.20899999999999999) * t67);
-  const Scalar t69 = (cos_q_11 * t66) - (sin_q_11 * t65);
-  const Scalar t70 = ((cos_q_12 * t68) + (sin_q_12 * t69)) + ((Scalar(0.19500000000000001) * (v[11] + t67)) + (Scalar(0.0040000000000000001) * ((cos_q_12 * t58) - (sin_q_12 * t57))));
-  const Scalar t71 = (((t10 * cos_q_10) + (t7 * sin_q_10)) * t60) - (((t62 * cos_q_12) - (t63 * sin_q_12)) * t70);
-  const Scalar t72 = ((cos_q_12 * t69) - (sin_q_12 * t68)) - (Scalar(0.0040000000000000001) * t59);
-  const Scalar t73 = (t40 * cos_q_10) - (t37 * sin_q_10);
-  const Scalar t74 = (t41 * cos_q_11) + (t73 * sin_q_11);
-  const Scalar t75 = (t73 * cos_q_11) - (t41 * sin_q_11);
-  const Scalar t76 = (((t74 * cos_q_12) + (t75 * sin_q_12)) * t70) + (((t37 * cos_q_10) + (t40 * sin_q_10)) * t60);
-  const Scalar t77 = (t47 * cos_q_10) - (t48 * sin_q_10);
-  const Scalar t78 = (t46 * cos_q_11) - (t77 * sin_q_11);
-  const Scalar t79 = (t46 * sin_q_11) + (t77 * cos_q_11);
-  const Scalar t80 = (((t48 * cos_q_10) + (t47 * sin_q_10)) * t60) - (((t78 * cos_q_12) - (t79 * sin_q_12)) * t70);
-  const Scalar t81 = (t7 * cos_q_13) - (t10 * sin_q_13);
-  const Scalar t82 = (t4 * cos_q_14) - (t81 * sin_q_14);
-  const Scalar t83 = (t4 * sin_q_14) + (t81 * cos_q_14);
-  const Scalar t84 = (cos_q_13 * v[2]) - (sin_q_13 * v[1]);
-  const Scalar t85 = (Scalar(0.062) * t84) - t16;
-  const Scalar t86 = v[5] + t53;
-  const Scalar t87 = v[4] - t21;
-  const Scalar t88 = v[0] + v[12];
-  const Scalar t89 = ((cos_q_13 * t86) - (sin_q_13 * t87)) + (Scalar(0.062) * t88);
-  const Scalar t90 = v[13] - ((cos_q_13 * v[1]) + (sin_q_13 * v[2]));
-  const Scalar t91 = ((cos_q_14 * t85) - (sin_q_14 * t89)) - (Scalar(0.20899999999999999) * t90);
-  const Scalar t92 = (sin_q_14 * t85) + (cos_q_14 * t89);
-  const Scalar t93 = (cos_q_14 * t84) - (sin_q_14 * t88);
-  const Scalar t94 = (cos_q_14 * t88) + (sin_q_14 * t84);
-  const Scalar t95 = ((cos_q_15 * t91) - (sin_q_15 * t92)) + ((Scalar(0.0040000000000000001) * ((cos_q_15 * t93) - (sin_q_15 * t94))) - (Scalar(0.19500000000000001) * (v[14] + t90)));
-  const Scalar t96 = (cos_q_15 * t94) + (sin_q_15 * t93);
-  const Scalar t97 = (((cos_q_13 * t87) + (sin_q_13 * t86)) + (Scalar(0.20899999999999999) * t94)) + (Scalar(0.19500000000000001) * t96);
-  const Scalar t98 = (((t82 * cos_q_15) - (t83 * sin_q_15)) * t95) + (((t10 * cos_q_13) + (t7 * sin_q_13)) * t97);
-  const Scalar t99 = ((sin_q_15 * t91) + (cos_q_15 * t92)) + (Scalar(0.0040000000000000001) * t96);
-  const Scalar t100 = (t40 * cos_q_13) - (t37 * sin_q_13);
-  const Scalar t101 = (t41 * cos_q_14) + (t100 * sin_q_14);
-  const Scalar t102 = (t100 * cos_q_14) - (t41 * sin_q_14);
-  const Scalar t103 = (((t37 * cos_q_13) + (t40 * sin_q_13)) * t97) - (((t101 * cos_q_15) + (t102 * sin_q_15)) * t95);
-  const Scalar t104 = (t47 * cos_q_13) - (t48 * sin_q_13);
-  const Scalar t105 = (t46 * cos_q_14) - (t104 * sin_q_14);
-  const Scalar t106 = (t46 * sin_q_14) + (t104 * cos_q_14);
-  const Scalar t107 = (((t105 * cos_q_15) - (t106 * sin_q_15)) * t95) + (((t48 * cos_q_13) + (t47 * sin_q_13)) * t97);
-  const Scalar t108 = v[5] - (t19 - t18);
-  const Scalar t109 = v[0] + v[15];
-  const Scalar t110 = (cos_q_16 * v[2]) - (sin_q_16 * v[1]);
-  const Scalar t111 = (cos_q_17 * t109) + (sin_q_17 * t110);
-  const Scalar t112 = (cos_q_17 * t110) - (sin_q_17 * t109);
-  const Scalar t113 = (cos_q_18 * t111) + (sin_q_18 * t112);
-  const Scalar t114 = (((cos_q_16 * t87) + (sin_q_16 * t108)) + (Scalar(0.20899999999999999) * t111)) + (Scalar(0.19500000000000001) * t113);
-  const Scalar t115 = (t7 * cos_q_16) - (t10 * sin_q_16);
-  const Scalar t116 = (t4 * cos_q_17) - (t115 * sin_q_17);
-  const Scalar t117 = (t4 * sin_q_17) + (t115 * cos_q_17);
-  const Scalar t118 = t64 + (Scalar(0.062) * t110);
-  const Scalar t119 = ((cos_q_16 * t108) - (sin_q_16 * t87)) - (Scalar(0.062) * t109);
-  const Scalar t120 = v[16] - ((cos_q_16 * v[1]) + (sin_q_16 * v[2]));
-  const Scalar t121 = ((cos_q_17 * t118) + (sin_q_17 * t119)) + (Scalar(0.20899999999999999) * t120);
-  const Scalar t122 = (cos_q_17 * t119) - (sin_q_17 * t118);
-  const Scalar t123 = ((cos_q_18 * t121) + (sin_q_18 * t122)) + ((Scalar(0.19500000000000001) * (v[17] + t120)) + (Scalar(0.0040000000000000001) * ((cos_q_18 * t112) - (sin_q_18 * t111))));
-  const Scalar t124 = (((t10 * cos_q_16) + (t7 * sin_q_16)) * t114) - (((t116 * cos_q_18) - (t117 * sin_q_18)) * t123);
-  const Scalar t125 = ((cos_q_18 * t122) - (sin_q_18 * t121)) - (Scalar(0.0040000000000000001) * t113);
-  const Scalar t126 = (t40 * cos_q_16) - (t37 * sin_q_16);
-  const Scalar t127 = (t41 * cos_q_17) + (t126 * sin_q_17);
-  const Scalar t128 = (t126 * cos_q_17) - (t41 * sin_q_17);
-  const Scalar t129 = (((t127 * cos_q_18) + (t128 * sin_q_18)) * t123) + (((t37 * cos_q_16) + (t40 * sin_q_16)) * t114);
-  const Scalar t130 = (t47 * cos_q_16) - (t48 * sin_q_16);
-  const Scalar t131 = (t46 * cos_q_17) - (t130 * sin_q_17);
-  const Scalar t132 = (t46 * sin_q_17) + (t130 * cos_q_17);
-  const Scalar t133 = (((t48 * cos_q_16) + (t47 * sin_q_16)) * t114) - (((t131 * cos_q_18) - (t132 * sin_q_18)) * t123);
-  pdot[0] = t33 + (((t12 * sin_q_9) + (t13 * cos_q_9)) * t34);
-  pdot[1] = t45 + (((t44 * cos_q_9) - (t43 * sin_q_9)) * t34);
-  pdot[2] = t52 + (((t50 * sin_q_9) + (t51 * cos_q_9)) * t34);
-  pdot[3] = t71 + (((t62 * sin_q_12) + (t63 * cos_q_12)) * t72);
-  pdot[4] = t76 + (((t75 * cos_q_12) - (t74 * sin_q_12)) * t72);
-  pdot[5] = t80 + (((t78 * sin_q_12) + (t79 * cos_q_12)) * t72);
-  pdot[6] = t98 + (((t82 * sin_q_15) + (t83 * cos_q_15)) * t99);
-  pdot[7] = t103 + (((t102 * cos_q_15) - (t101 * sin_q_15)) * t99);
-  pdot[8] = t107 + (((t105 * sin_q_15) + (t106 * cos_q_15)) * t99);
-  pdot[9] = t124 + (((t116 * sin_q_18) + (t117 * cos_q_18)) * t125);
-  pdot[10] = t129 + (((t128 * cos_q_18) - (t127 * sin_q_18)) * t125);
-  pdot[11] = t133 + (((t131 * sin_q_18) + (t132 * cos_q_18)) * t125);
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///             321  214    0     0    24    0    559
+using ::rbdc_gen::mini_cheetah::common::feet_velocities_bf3c7a7d6470::feet_velocities;
 
 /// feet_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -4,11 +4,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// gravity_terms for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// gravity_terms for mini_cheetah, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose gravity_terms is the same code:
+//   mini_cheetah/common/gravity_terms_85d2ff593140.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
+#include "mini_cheetah/common/gravity_terms_85d2ff593140.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -17,169 +20,9 @@ namespace rbdc_gen::mini_cheetah::full {
 /// @param q in  19x1: configuration (position, quaternion w x y z, joints)
 /// @param g out 18x1: gravity terms
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated    242    172      0      0     24      0    438
-/// generic     4173   3528      0      0     24      0   7725
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept {
-  const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
-    q[15], q[16], q[17], q[18]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_7 = joint_trig.sin[0];
-  const Scalar cos_q_7 = joint_trig.cos[0];
-  const Scalar sin_q_8 = joint_trig.sin[1];
-  const Scalar cos_q_8 = joint_trig.cos[1];
-  const Scalar sin_q_9 = joint_trig.sin[2];
-  const Scalar cos_q_9 = joint_trig.cos[2];
-  const Scalar sin_q_10 = joint_trig.sin[3];
-  const Scalar cos_q_10 = joint_trig.cos[3];
-  const Scalar sin_q_11 = joint_trig.sin[4];
-  const Scalar cos_q_11 = joint_trig.cos[4];
-  const Scalar sin_q_12 = joint_trig.sin[5];
-  const Scalar cos_q_12 = joint_trig.cos[5];
-  const Scalar sin_q_13 = joint_trig.sin[6];
-  const Scalar cos_q_13 = joint_trig.cos[6];
-  const Scalar sin_q_14 = joint_trig.sin[7];
-  const Scalar cos_q_14 = joint_trig.cos[7];
-  const Scalar sin_q_15 = joint_trig.sin[8];
-  const Scalar cos_q_15 = joint_trig.cos[8];
-  const Scalar sin_q_16 = joint_trig.sin[9];
-  const Scalar cos_q_16 = joint_trig.cos[9];
-  const Scalar sin_q_17 = joint_trig.sin[10];
-  const Scalar cos_q_17 = joint_trig.cos[10];
-  const Scalar sin_q_18 = joint_trig.sin[11];
-  const Scalar cos_q_18 = joint_trig.cos[11];
-  const Scalar t0 = q[4] + q[4];
-  const Scalar t1 = q[5] + q[5];
-  const Scalar t2 = Scalar(1) - ((q[4] * t0) + (q[5] * t1));
-  const Scalar t3 = Scalar(9.8100000000000005) * t2;
-  const Scalar t4 = q[6] + q[6];
-  const Scalar t5 = (q[5] * t4) + (q[3] * t0);
-  const Scalar t6 = Scalar(9.8100000000000005) * t5;
-  const Scalar t7 = (t3 * cos_q_16) - (t6 * sin_q_16);
-  const Scalar t8 = (q[4] * t4) - (q[3] * t1);
-  const Scalar t9 = Scalar(9.8100000000000005) * t8;
-  const Scalar t10 = (t7 * cos_q_17) - (t9 * sin_q_17);
-  const Scalar t11 = (t6 * cos_q_16) + (t3 * sin_q_16);
-  const Scalar t12 = Scalar(0.0039039999999999999) * t11;
-  const Scalar t13 = ((Scalar(0.010144) * t10) + (Scalar(0.01268) * t11)) + ((cos_q_18 * t12) + (Scalar(0.013375999999999999) * t11));
-  const Scalar t14 = (t9 * cos_q_17) + (t7 * sin_q_17);
-  const Scalar t15 = (sin_q_18 * t12) - (Scalar(0.010144) * t14);
-  const Scalar t16 = (t14 * cos_q_18) + (t10 * sin_q_18);
-  const Scalar t17 = Scalar(0.064000000000000001) * t16;
-  const Scalar t18 = Scalar(0.064000000000000001) * ((t10 * cos_q_18) - (t14 * sin_q_18));
-  const Scalar t19 = (Scalar(0.63400000000000001) * t10) + ((sin_q_18 * t17) + (cos_q_18 * t18));
-  const Scalar t20 = (sin_q_18 * t18) - (cos_q_18 * t17);
-  const Scalar t21 = t20 - (Scalar(0.63400000000000001) * t14);
-  const Scalar t22 = (cos_q_17 * t19) - (sin_q_17 * t21);
-  const Scalar t23 = (((cos_q_17 * t13) - (sin_q_17 * t15)) - (Scalar(0.062) * t22)) - (Scalar(0.019439999999999999) * t7);
-  const Scalar t24 = (Scalar(0.54000000000000004) * t11) + ((Scalar(0.63400000000000001) * t11) + (Scalar(0.064000000000000001) * t11));
-  const Scalar t25 = (Scalar(0.54000000000000004) * t7) + t22;
-  const Scalar t26 = (sin_q_16 * t24) + (cos_q_16 * t25);
-  const Scalar t27 = (t3 * cos_q_13) - (t6 * sin_q_13);
-  const Scalar t28 = (t27 * cos_q_14) - (t9 * sin_q_14);
-  const Scalar t29 = (t9 * cos_q_14) + (t27 * sin_q_14);
-  const Scalar t30 = (t29 * cos_q_15) + (t28 * sin_q_15);
-  const Scalar t31 = Scalar(0.064000000000000001) * t30;
-  const Scalar t32 = Scalar(0.064000000000000001) * ((t28 * cos_q_15) - (t29 * sin_q_15));
-  const Scalar t33 = (Scalar(0.63400000000000001) * t28) + ((sin_q_15 * t31) + (cos_q_15 * t32));
-  const Scalar t34 = (sin_q_15 * t32) - (cos_q_15 * t31);
-  const Scalar t35 = t34 - (Scalar(0.63400000000000001) * t29);
-  const Scalar t36 = (cos_q_14 * t33) - (sin_q_14 * t35);
-  const Scalar t37 = (t6 * cos_q_13) + (t3 * sin_q_13);
-  const Scalar t38 = Scalar(0.0039039999999999999) * t37;
-  const Scalar t39 = ((Scalar(0.010144) * t28) - (Scalar(0.01268) * t37)) - ((cos_q_15 * t38) + (Scalar(0.013375999999999999) * t37));
-  const Scalar t40 = (Scalar(0.010144) * t29) + (sin_q_15 * t38);
-  const Scalar t41 = (Scalar(0.019439999999999999) * t27) + ((Scalar(0.062) * t36) - ((cos_q_14 * t39) + (sin_q_14 * t40)));
-  const Scalar t42 = (Scalar(0.54000000000000004) * t37) + ((Scalar(0.63400000000000001) * t37) + (Scalar(0.064000000000000001) * t37));
-  const Scalar t43 = (Scalar(0.54000000000000004) * t27) + t36;
-  const Scalar t44 = (sin_q_13 * t42) + (cos_q_13 * t43);
-  const Scalar t45 = (t3 * cos_q_10) - (t6 * sin_q_10);
-  const Scalar t46 = (t45 * cos_q_11) - (t9 * sin_q_11);
-  const Scalar t47 = (t6 * cos_q_10) + (t3 * sin_q_10);
-  const Scalar t48 = Scalar(0.0039039999999999999) * t47;
-  const Scalar t49 = ((Scalar(0.010144) * t46) + (Scalar(0.01268) * t47)) + ((cos_q_12 * t48) + (Scalar(0.013375999999999999) * t47));
-  const Scalar t50 = (t9 * cos_q_11) + (t45 * sin_q_11);
-  const Scalar t51 = (sin_q_12 * t48) - (Scalar(0.010144) * t50);
-  const Scalar t52 = (t50 * cos_q_12) + (t46 * sin_q_12);
-  const Scalar t53 = Scalar(0.064000000000000001) * t52;
-  const Scalar t54 = Scalar(0.064000000000000001) * ((t46 * cos_q_12) - (t50 * sin_q_12));
-  const Scalar t55 = (Scalar(0.63400000000000001) * t46) + ((sin_q_12 * t53) + (cos_q_12 * t54));
-  const Scalar t56 = (sin_q_12 * t54) - (cos_q_12 * t53);
-  const Scalar t57 = t56 - (Scalar(0.63400000000000001) * t50);
-  const Scalar t58 = (cos_q_11 * t55) - (sin_q_11 * t57);
-  const Scalar t59 = (((cos_q_11 * t49) - (sin_q_11 * t51)) - (Scalar(0.062) * t58)) - (Scalar(0.019439999999999999) * t45);
-  const Scalar t60 = (Scalar(0.54000000000000004) * t47) + ((Scalar(0.63400000000000001) * t47) + (Scalar(0.064000000000000001) * t47));
-  const Scalar t61 = (Scalar(0.54000000000000004) * t45) + t58;
-  const Scalar t62 = (sin_q_10 * t60) + (cos_q_10 * t61);
-  const Scalar t63 = (t3 * cos_q_7) - (t6 * sin_q_7);
-  const Scalar t64 = (t63 * cos_q_8) - (t9 * sin_q_8);
-  const Scalar t65 = (t9 * cos_q_8) + (t63 * sin_q_8);
-  const Scalar t66 = (t65 * cos_q_9) + (t64 * sin_q_9);
-  const Scalar t67 = Scalar(0.064000000000000001) * t66;
-  const Scalar t68 = Scalar(0.064000000000000001) * ((t64 * cos_q_9) - (t65 * sin_q_9));
-  const Scalar t69 = (Scalar(0.63400000000000001) * t64) + ((sin_q_9 * t67) + (cos_q_9 * t68));
-  const Scalar t70 = (sin_q_9 * t68) - (cos_q_9 * t67);
-  const Scalar t71 = t70 - (Scalar(0.63400000000000001) * t65);
-  const Scalar t72 = (cos_q_8 * t69) - (sin_q_8 * t71);
-  const Scalar t73 = (t6 * cos_q_7) + (t3 * sin_q_7);
-  const Scalar t74 = Scalar(0.0039039999999999999) * t73;
-  const Scalar t75 = ((Scalar(0.010144) * t64) - (Scalar(0.01268) * t73)) - ((cos_q_9 * t74) + (Scalar(0.013375999999999999) * t73));
-  const Scalar t76 = (Scalar(0.010144) * t65) + (sin_q_9 * t74);
-  const Scalar t77 = (Scalar(0.019439999999999999) * t63) + ((Scalar(0.062) * t72) - ((cos_q_8 * t75) + (sin_q_8 * t76)));
-  const Scalar t78 = (Scalar(0.54000000000000004) * t73) + ((Scalar(0.63400000000000001) * t73) + (Scalar(0.064000000000000001) * t73));
-  const Scalar t79 = (Scalar(0.54000000000000004) * t63) + t72;
-  const Scalar t80 = (sin_q_7 * t78) + (cos_q_7 * t79);
-  const Scalar t81 = Scalar(0.0039039999999999999) * t16;
-  const Scalar t82 = (Scalar(0.01268) * t14) + (t81 - (Scalar(0.20899999999999999) * t20));
-  const Scalar t83 = Scalar(0.1907064) * t8;
-  const Scalar t84 = (cos_q_17 * t21) + (sin_q_17 * t19);
-  const Scalar t85 = t83 + (((sin_q_17 * t13) + (cos_q_17 * t15)) - (Scalar(0.062) * t84));
-  const Scalar t86 = Scalar(0.0039039999999999999) * t30;
-  const Scalar t87 = (Scalar(0.01268) * t29) + (t86 - (Scalar(0.20899999999999999) * t34));
-  const Scalar t88 = (cos_q_14 * t35) + (sin_q_14 * t33);
-  const Scalar t89 = (((cos_q_14 * t40) - (sin_q_14 * t39)) + (Scalar(0.062) * t88)) - t83;
-  const Scalar t90 = ((Scalar(0.19) * t26) - ((cos_q_16 * t82) + (sin_q_16 * t85))) + ((Scalar(0.19) * t44) - ((cos_q_13 * t87) + (sin_q_13 * t89)));
-  const Scalar t91 = Scalar(0.0039039999999999999) * t52;
-  const Scalar t92 = (Scalar(0.01268) * t50) + (t91 - (Scalar(0.20899999999999999) * t56));
-  const Scalar t93 = (cos_q_11 * t57) + (sin_q_11 * t55);
-  const Scalar t94 = t83 + (((sin_q_11 * t49) + (cos_q_11 * t51)) - (Scalar(0.062) * t93));
-  const Scalar t95 = Scalar(0.0039039999999999999) * t66;
-  const Scalar t96 = (Scalar(0.01268) * t65) + (t95 - (Scalar(0.20899999999999999) * t70));
-  const Scalar t97 = (cos_q_8 * t71) + (sin_q_8 * t69);
-  const Scalar t98 = (((cos_q_8 * t76) - (sin_q_8 * t75)) + (Scalar(0.062) * t97)) - t83;
-  const Scalar t99 = Scalar(5.2974000000000006) * t8;
-  const Scalar t100 = t99 - t84;
-  const Scalar t101 = (cos_q_16 * t24) - (sin_q_16 * t25);
-  const Scalar t102 = ((cos_q_16 * t85) - (sin_q_16 * t82)) + ((Scalar(0.049000000000000002) * t100) - (Scalar(0.19) * t101));
-  const Scalar t103 = (cos_q_13 * t42) - (sin_q_13 * t43);
-  const Scalar t104 = t99 - t88;
-  const Scalar t105 = t102 + (((cos_q_13 * t89) - (sin_q_13 * t87)) - ((Scalar(0.19) * t103) + (Scalar(0.049000000000000002) * t104)));
-  const Scalar t106 = (cos_q_10 * t60) - (sin_q_10 * t61);
-  const Scalar t107 = t99 - t93;
-  const Scalar t108 = t105 + (((cos_q_10 * t94) - (sin_q_10 * t92)) + ((Scalar(0.19) * t106) + (Scalar(0.049000000000000002) * t107)));
-  const Scalar t109 = (cos_q_7 * t78) - (sin_q_7 * t79);
-  const Scalar t110 = t99 - t97;
-  g[0] = (((t23 - (Scalar(0.049000000000000002) * t26)) + (t41 + (Scalar(0.049000000000000002) * t44))) + (t59 - (Scalar(0.049000000000000002) * t62))) + (t77 + (Scalar(0.049000000000000002) * t80));
-  g[1] = (t90 - (((cos_q_10 * t92) + (sin_q_10 * t94)) + (Scalar(0.19) * t62))) - (((cos_q_7 * t96) + (sin_q_7 * t98)) + (Scalar(0.19) * t80));
-  g[2] = t108 + (((cos_q_7 * t98) - (sin_q_7 * t96)) + ((Scalar(0.19) * t109) - (Scalar(0.049000000000000002) * t110)));
-  g[3] = ((((Scalar(32.372999999999998) * t8) + t100) + t104) + t107) + t110;
-  g[4] = ((((Scalar(32.372999999999998) * t5) + t101) + t103) + t106) + t109;
-  g[5] = ((((Scalar(32.372999999999998) * t2) + t26) + t44) + t62) + t80;
-  g[6] = t77;
-  g[7] = t96;
-  g[8] = t95;
-  g[9] = t59;
-  g[10] = t92;
-  g[11] = t91;
-  g[12] = t41;
-  g[13] = t87;
-  g[14] = t86;
-  g[15] = t23;
-  g[16] = t82;
-  g[17] = t81;
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///             242  172    0     0    24    0    438
+using ::rbdc_gen::mini_cheetah::common::gravity_terms_85d2ff593140::gravity_terms;
 
 /// gravity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -4,11 +4,14 @@
 // scene: stance_osc
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// feet_positions for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// feet_positions for mini_cheetah, scene "stance_osc": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose feet_positions is the same code:
+//   mini_cheetah/common/feet_positions_0dff411a3862.hpp
 #pragma once
 
 #include "mini_cheetah/stance_osc.hpp"
+#include "mini_cheetah/common/feet_positions_0dff411a3862.hpp"
 
 namespace rbdc_gen::mini_cheetah::stance_osc {
 
@@ -17,131 +20,9 @@ namespace rbdc_gen::mini_cheetah::stance_osc {
 /// @param q in  19x1: configuration (position, quaternion w x y z, joints)
 /// @param p out 3x4: foot positions, world frame, one column per foot
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated    183    146      0      0     24      0    353
-/// generic     6351   5250      0      0     24      0  11625
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void feet_positions(const Scalar* q, Scalar* p) noexcept {
-  const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
-    q[15], q[16], q[17], q[18]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_7 = joint_trig.sin[0];
-  const Scalar cos_q_7 = joint_trig.cos[0];
-  const Scalar sin_q_8 = joint_trig.sin[1];
-  const Scalar cos_q_8 = joint_trig.cos[1];
-  const Scalar sin_q_9 = joint_trig.sin[2];
-  const Scalar cos_q_9 = joint_trig.cos[2];
-  const Scalar sin_q_10 = joint_trig.sin[3];
-  const Scalar cos_q_10 = joint_trig.cos[3];
-  const Scalar sin_q_11 = joint_trig.sin[4];
-  const Scalar cos_q_11 = joint_trig.cos[4];
-  const Scalar sin_q_12 = joint_trig.sin[5];
-  const Scalar cos_q_12 = joint_trig.cos[5];
-  const Scalar sin_q_13 = joint_trig.sin[6];
-  const Scalar cos_q_13 = joint_trig.cos[6];
-  const Scalar sin_q_14 = joint_trig.sin[7];
-  const Scalar cos_q_14 = joint_trig.cos[7];
-  const Scalar sin_q_15 = joint_trig.sin[8];
-  const Scalar cos_q_15 = joint_trig.cos[8];
-  const Scalar sin_q_16 = joint_trig.sin[9];
-  const Scalar cos_q_16 = joint_trig.cos[9];
-  const Scalar sin_q_17 = joint_trig.sin[10];
-  const Scalar cos_q_17 = joint_trig.cos[10];
-  const Scalar sin_q_18 = joint_trig.sin[11];
-  const Scalar cos_q_18 = joint_trig.cos[11];
-  const Scalar t0 = q[5] + q[5];
-  const Scalar t1 = q[5] * t0;
-  const Scalar t2 = q[6] + q[6];
-  const Scalar t3 = q[6] * t2;
-  const Scalar t4 = t1 + t3;
-  const Scalar t5 = Scalar(0.19) * (Scalar(1) - t4);
-  const Scalar t6 = q[4] * t0;
-  const Scalar t7 = q[3] * t2;
-  const Scalar t8 = t6 - t7;
-  const Scalar t9 = Scalar(0.049000000000000002) * t8;
-  const Scalar t10 = t5 + t9;
-  const Scalar t11 = q[4] * t2;
-  const Scalar t12 = q[3] * t0;
-  const Scalar t13 = t11 + t12;
-  const Scalar t14 = (t8 * cos_q_7) + (t13 * sin_q_7);
-  const Scalar t15 = t4 - Scalar(1);
-  const Scalar t16 = (t13 * cos_q_7) - (t8 * sin_q_7);
-  const Scalar t17 = (sin_q_8 * t15) + (t16 * cos_q_8);
-  const Scalar t18 = (Scalar(0.0040000000000000001) * t14) - (Scalar(0.19500000000000001) * ((((cos_q_8 * t15) - (t16 * sin_q_8)) * sin_q_9) + (t17 * cos_q_9)));
-  const Scalar t19 = t6 + t7;
-  const Scalar t20 = Scalar(0.19) * t19;
-  const Scalar t21 = q[4] + q[4];
-  const Scalar t22 = q[4] * t21;
-  const Scalar t23 = Scalar(1) - (t22 + t3);
-  const Scalar t24 = Scalar(0.049000000000000002) * t23;
-  const Scalar t25 = t20 + t24;
-  const Scalar t26 = q[5] * t2;
-  const Scalar t27 = q[3] * t21;
-  const Scalar t28 = t26 - t27;
-  const Scalar t29 = (t23 * cos_q_7) + (t28 * sin_q_7);
-  const Scalar t30 = (t28 * cos_q_7) - (t23 * sin_q_7);
-  const Scalar t31 = (t30 * cos_q_8) - (t19 * sin_q_8);
-  const Scalar t32 = (Scalar(0.0040000000000000001) * t29) - (Scalar(0.19500000000000001) * ((t31 * cos_q_9) - (((t19 * cos_q_8) + (t30 * sin_q_8)) * sin_q_9)));
-  const Scalar t33 = Scalar(0.19) * (t11 - t12);
-  const Scalar t34 = t26 + t27;
-  const Scalar t35 = Scalar(0.049000000000000002) * t34;
-  const Scalar t36 = t33 + t35;
-  const Scalar t37 = Scalar(1) - (t22 + t1);
-  const Scalar t38 = (t34 * cos_q_7) + (t37 * sin_q_7);
-  const Scalar t39 = t12 - t11;
-  const Scalar t40 = (t37 * cos_q_7) - (t34 * sin_q_7);
-  const Scalar t41 = (sin_q_8 * t39) + (t40 * cos_q_8);
-  const Scalar t42 = (Scalar(0.0040000000000000001) * t38) - (Scalar(0.19500000000000001) * ((((cos_q_8 * t39) - (t40 * sin_q_8)) * sin_q_9) + (t41 * cos_q_9)));
-  const Scalar t43 = (t8 * cos_q_10) + (t13 * sin_q_10);
-  const Scalar t44 = (t13 * cos_q_10) - (t8 * sin_q_10);
-  const Scalar t45 = (t15 * sin_q_11) + (t44 * cos_q_11);
-  const Scalar t46 = (Scalar(0.0040000000000000001) * t43) + (Scalar(0.19500000000000001) * ((((t15 * cos_q_11) - (t44 * sin_q_11)) * sin_q_12) + (t45 * cos_q_12)));
-  const Scalar t47 = (t23 * cos_q_10) + (t28 * sin_q_10);
-  const Scalar t48 = (t28 * cos_q_10) - (t23 * sin_q_10);
-  const Scalar t49 = (t48 * cos_q_11) - (t19 * sin_q_11);
-  const Scalar t50 = (Scalar(0.0040000000000000001) * t47) + (Scalar(0.19500000000000001) * ((t49 * cos_q_12) - (((t19 * cos_q_11) + (t48 * sin_q_11)) * sin_q_12)));
-  const Scalar t51 = (t34 * cos_q_10) + (t37 * sin_q_10);
-  const Scalar t52 = (t37 * cos_q_10) - (t34 * sin_q_10);
-  const Scalar t53 = (t39 * sin_q_11) + (t52 * cos_q_11);
-  const Scalar t54 = (Scalar(0.0040000000000000001) * t51) + (Scalar(0.19500000000000001) * ((((t39 * cos_q_11) - (t52 * sin_q_11)) * sin_q_12) + (t53 * cos_q_12)));
-  const Scalar t55 = (t8 * cos_q_13) + (t13 * sin_q_13);
-  const Scalar t56 = (t13 * cos_q_13) - (t8 * sin_q_13);
-  const Scalar t57 = (t15 * sin_q_14) + (t56 * cos_q_14);
-  const Scalar t58 = (Scalar(0.0040000000000000001) * t55) - (Scalar(0.19500000000000001) * ((((t15 * cos_q_14) - (t56 * sin_q_14)) * sin_q_15) + (t57 * cos_q_15)));
-  const Scalar t59 = (t23 * cos_q_13) + (t28 * sin_q_13);
-  const Scalar t60 = (t28 * cos_q_13) - (t23 * sin_q_13);
-  const Scalar t61 = (t60 * cos_q_14) - (t19 * sin_q_14);
-  const Scalar t62 = (Scalar(0.0040000000000000001) * t59) - (Scalar(0.19500000000000001) * ((t61 * cos_q_15) - (((t19 * cos_q_14) + (t60 * sin_q_14)) * sin_q_15)));
-  const Scalar t63 = (t34 * cos_q_13) + (t37 * sin_q_13);
-  const Scalar t64 = (t37 * cos_q_13) - (t34 * sin_q_13);
-  const Scalar t65 = (t39 * sin_q_14) + (t64 * cos_q_14);
-  const Scalar t66 = (Scalar(0.0040000000000000001) * t63) - (Scalar(0.19500000000000001) * ((((t39 * cos_q_14) - (t64 * sin_q_14)) * sin_q_15) + (t65 * cos_q_15)));
-  const Scalar t67 = (t8 * cos_q_16) + (t13 * sin_q_16);
-  const Scalar t68 = (t13 * cos_q_16) - (t8 * sin_q_16);
-  const Scalar t69 = (t15 * sin_q_17) + (t68 * cos_q_17);
-  const Scalar t70 = (Scalar(0.0040000000000000001) * t67) + (Scalar(0.19500000000000001) * ((((t15 * cos_q_17) - (t68 * sin_q_17)) * sin_q_18) + (t69 * cos_q_18)));
-  const Scalar t71 = (t23 * cos_q_16) + (t28 * sin_q_16);
-  const Scalar t72 = (t28 * cos_q_16) - (t23 * sin_q_16);
-  const Scalar t73 = (t72 * cos_q_17) - (t19 * sin_q_17);
-  const Scalar t74 = (Scalar(0.0040000000000000001) * t71) + (Scalar(0.19500000000000001) * ((t73 * cos_q_18) - (((t19 * cos_q_17) + (t72 * sin_q_17)) * sin_q_18)));
-  const Scalar t75 = (t34 * cos_q_16) + (t37 * sin_q_16);
-  const Scalar t76 = (t37 * cos_q_16) - (t34 * sin_q_16);
-  const Scalar t77 = (t39 * sin_q_17) + (t76 * cos_q_17);
-  const Scalar t78 = (Scalar(0.0040000000000000001) * t75) + (Scalar(0.19500000000000001) * ((((t39 * cos_q_17) - (t76 * sin_q_17)) * sin_q_18) + (t77 * cos_q_18)));
-  p[0] = (((q[0] + t10) + (Scalar(0.062) * t14)) - (Scalar(0.20899999999999999) * t17)) + t18;
-  p[1] = (((q[1] + t25) + (Scalar(0.062) * t29)) - (Scalar(0.20899999999999999) * t31)) + t32;
-  p[2] = (((q[2] + t36) + (Scalar(0.062) * t38)) - (Scalar(0.20899999999999999) * t41)) + t42;
-  p[3] = (((q[0] + (t5 - t9)) - (Scalar(0.062) * t43)) - (Scalar(0.20899999999999999) * t45)) - t46;
-  p[4] = (((q[1] + (t20 - t24)) - (Scalar(0.062) * t47)) - (Scalar(0.20899999999999999) * t49)) - t50;
-  p[5] = (((q[2] + (t33 - t35)) - (Scalar(0.062) * t51)) - (Scalar(0.20899999999999999) * t53)) - t54;
-  p[6] = (((q[0] + (t9 - t5)) + (Scalar(0.062) * t55)) - (Scalar(0.20899999999999999) * t57)) + t58;
-  p[7] = (((q[1] + (t24 - t20)) + (Scalar(0.062) * t59)) - (Scalar(0.20899999999999999) * t61)) + t62;
-  p[8] = (((q[2] + (t35 - t33)) + (Scalar(0.062) * t63)) - (Scalar(0.20899999999999999) * t65)) + t66;
-  p[9] = (((q[0] - t10) - (Scalar(0.062) * t67)) - (Scalar(0.20899999999999999) * t69)) - t70;
-  p[10] = (((q[1] - t25) - (Scalar(0.062) * t71)) - (Scalar(0.20899999999999999) * t73)) - t74;
-  p[11] = (((q[2] - t36) - (Scalar(0.062) * t75)) - (Scalar(0.20899999999999999) * t77)) - t78;
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///             183  146    0     0    24    0    353
+using ::rbdc_gen::mini_cheetah::common::feet_positions_0dff411a3862::feet_positions;
 
 /// feet_positions on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

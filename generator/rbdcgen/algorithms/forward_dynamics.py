@@ -69,5 +69,8 @@ def forward_dynamics(m):
     rhs = [-b for b in bias[:robot.root_dofs]]      # unactuated trunk: Sᵀτ has zeros there
     rhs += [m.tau[i - 1] - bias[robot.joints[i].v_index] for i in range(1, robot.nb)]
     parents = dof_parents(robot)
-    L, inv_diag = ltdl(mass_matrix(m), parents)
+    H = mass_matrix(m)
+    m.mark("factorisation M = LᵀDL")
+    L, inv_diag = ltdl(H, parents)
+    m.mark("solve LᵀDL a = τ + τ_e − c − g")
     return tuple(ltdl_solve(L, inv_diag, parents, rhs))

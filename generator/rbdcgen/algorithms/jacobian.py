@@ -15,6 +15,7 @@ def feet_jacobian(m):
     positions = feet_positions(m, frames)
     rows = []
     for foot, p_foot in zip(m.feet, positions):
+        m.mark("Jacobian of foot " + foot.name)
         cols = [sp.zeros(3) for _ in range(robot.nv)]
         if robot.floating_base:
             R, p0 = frames[0]

@@ -10,6 +10,7 @@ def body_velocities(m):
     """Alg. 1 line 7 (Eq. 13): v_i = X_λ(i)^i v_λ(i) + S_i q̇_i, v₀ the trunk twist."""
     velocities = [m.base_velocity()]
     for i in range(1, m.robot.nb):
+        m.mark("outward pass, velocities", i)
         j = m.robot.parent[i]
         v_joint = sp.vscale(m.vi(i), m.motion_subspace(i))
         velocities.append(sp.vadd(m.X_up(i).motion(velocities[j]), v_joint))
@@ -21,6 +22,7 @@ def world_frames(m):
     (R_W^i)ᵀ) and the world position p_i of its origin, composed outward joint by joint."""
     frames = [(m.base_rotation(), m.base_position())]
     for i in range(1, m.robot.nb):
+        m.mark("world frames", i)
         R, p = frames[m.robot.parent[i]]
         for x in m.X_up(i).factors:
             if x.r is not None:
@@ -36,6 +38,7 @@ def feet_positions(m, frames=None):
     frames = frames or world_frames(m)
     result = []
     for foot in m.feet:
+        m.mark("foot " + foot.name)
         R, p = frames[foot.body]
         result.append(sp.vadd(p, sp.matvec(R, sp.vec(foot.offset))))
     return result
@@ -48,6 +51,7 @@ def feet_velocities(m):
     velocities = body_velocities(m)
     result = []
     for foot in m.feet:
+        m.mark("foot " + foot.name)
         v = velocities[foot.body]
         local = sp.vadd(sp.lin(v), sp.cross(sp.ang(v), sp.vec(foot.offset)))
         result.append(sp.matvec(frames[foot.body][0], local))

@@ -70,6 +70,12 @@ class TracedModel:
     def foot_force(self, k):
         return self.f[3 * k:3 * k + 3]
 
+    def mark(self, phase, body=None):
+        """Labels the nodes traced from here on with the phase (and body) of the algorithm; the
+        emitter prints the label as a marker comment where it changes."""
+        name = "" if body is None else ": body %d %s" % (body, self.robot.bodies[body].name)
+        ex.set_label(phase + name)
+
     # --- joints -------------------------------------------------------------------------------
     def joint(self, i):
         return self.robot.joints[i]

@@ -18,6 +18,7 @@ def _recursion(m, articulated, beta, velocities):
     nb = robot.nb
     B = [dict() for _ in range(nb)]        # B[i][k]: torque-force coupling B_ik (Eq. 32)
     for i in range(nb - 1, 0, -1):
+        m.mark("inward pass", i)
         j = robot.parent[i]
         X = m.X_up(i)
         S = m.motion_subspace(i)
@@ -38,6 +39,7 @@ def _recursion(m, articulated, beta, velocities):
         B[j][i] = sp.vneg(X.force_T(UD))
         for k, column in B[i].items():
             B[j][k] = X.force_T(propagate(column))
+    m.mark("trunk task")
     Lam = articulated[0]
     JbarT_cols = [B[0][k] for k in range(1, nb)]
     JbarT = tuple(tuple(col[r] for col in JbarT_cols) for r in range(6))
@@ -53,6 +55,7 @@ def _outward(m):
     velocities = body_velocities(m)
     articulated, beta = [], []
     for i in range(m.robot.nb):
+        m.mark("outward pass, inertias and bias forces", i)
         inertia = m.inertia(i)
         articulated.append(inertia.dense())
         beta.append(sp.crf(velocities[i], inertia.apply(velocities[i])))
@@ -76,6 +79,7 @@ def osc_closed_chain(m):
     frames = world_frames(m)
     M = m.ground_mass
     for foot in m.contacts:
+        m.mark("contact of foot " + foot.name)
         i = foot.body
         r = sp.vec(foot.offset)
         rr = sp.dot(r, r)

@@ -13,6 +13,7 @@ def foot_wrenches(m, frames):
     body coordinates: F_i = R_iᵀ f_k, f_i += (r_fk × F_i, F_i) (force transform of Eq. 7)."""
     wrenches = [None] * m.robot.nb
     for k, foot in enumerate(m.feet):
+        m.mark("force of foot " + foot.name)
         force = sp.mat_tmatvec(frames[foot.body][0], m.foot_force(k))
         wrench = sp.cross(sp.vec(foot.offset), force) + force
         i = foot.body
@@ -26,6 +27,7 @@ def inward_pass(m, forces):
     forces = list(forces)
     tau = [None] * m.robot.nb
     for i in range(m.robot.nb - 1, 0, -1):
+        m.mark("inward pass", i)
         j = m.robot.parent[i]
         tau[i] = sp.dot(m.motion_subspace(i), forces[i])
         forces[j] = sp.vadd(forces[j], m.X_up(i).force_T(forces[i]))
@@ -42,6 +44,7 @@ def rnea(m, base_acceleration, joint_accelerations, with_velocity, external=None
     velocities = body_velocities(m) if with_velocity else None
     accelerations = [base_acceleration]
     for i in range(1, nb):
+        m.mark("outward pass, accelerations", i)
         j = m.robot.parent[i]
         a_i = m.X_up(i).motion(accelerations[j])
         S = m.motion_subspace(i)
@@ -52,6 +55,7 @@ def rnea(m, base_acceleration, joint_accelerations, with_velocity, external=None
         accelerations.append(a_i)
     forces = []
     for i in range(nb):
+        m.mark("outward pass, forces", i)
         inertia = m.inertia(i)
         f_i = inertia.apply(accelerations[i])
         if with_velocity:

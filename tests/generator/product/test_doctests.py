@@ -1,14 +1,15 @@
-"""The doctested examples of the product's helper functions (identifiers, C++ literals)."""
+"""The doctested examples of the product's helper functions (identifiers, C++ literals, constants)."""
 import doctest
 import sys
 
 from rbdc_cli import ROOT
 
 sys.path.insert(0, str(ROOT / "generator"))
-from rbdcgen import names, verify  # noqa: E402
+from rbdcgen import emit, names, verify  # noqa: E402
 
 
 def load_tests(loader, tests, pattern):
+    tests.addTests(doctest.DocTestSuite(emit))
     tests.addTests(doctest.DocTestSuite(names))
     tests.addTests(doctest.DocTestSuite(verify))
     return tests

@@ -1,5 +1,6 @@
 """`rbdc generate` as a build system uses it: --list-outputs, --dry-run, --check, byte-stable output
-with a banner, stale headers removed; and `rbdc flops`/`rbdc eval` output."""
+with a banner, stale headers removed, function bodies shared between scenes; and `rbdc flops`/`rbdc
+eval` output."""
 import hashlib
 import json
 import re
@@ -12,6 +13,12 @@ from rbdc_cli import MINI_CHEETAH, ROOT, SCENES, run_rbdc
 
 def written_files(directory: Path) -> set[str]:
     return {p.relative_to(directory).as_posix() for p in directory.rglob("*") if p.is_file()}
+
+
+def body_file(out: Path, scene: str, function: str) -> Path:
+    """The shared body that the scene's function header includes (<robot>/common/<function>_<hash>.hpp)."""
+    header = (out / "mini_cheetah" / scene / f"{function}.hpp").read_text()
+    return out / re.search(r'#include "(mini_cheetah/common/[^"]+)"', header).group(1)
 
 
 class GenerateTest(unittest.TestCase):
@@ -38,11 +45,11 @@ class GenerateTest(unittest.TestCase):
             self.assertEqual((self.tmp / "a" / name).read_bytes(), (self.tmp / "b" / name).read_bytes(), name)
         self.assertEqual(run_rbdc("generate", MINI_CHEETAH, "--scene", SCENES / "full.yaml", "-o",
                                   self.tmp / "a", "--check").returncode, 0)
-        edited = self.tmp / "a" / "mini_cheetah" / "full" / "gravity_terms.hpp"
+        edited = body_file(self.tmp / "a", "full", "gravity_terms")
         edited.write_text(edited.read_text().replace("g[0] =", "g[0] = 1 +", 1))
         check = run_rbdc("generate", MINI_CHEETAH, "--scene", SCENES / "full.yaml", "-o", self.tmp / "a", "--check")
         self.assertEqual(check.returncode, 1)
-        self.assertIn("gravity_terms.hpp", check.stdout)
+        self.assertIn(edited.name, check.stdout)
 
     def test_dry_run_writes_nothing(self):
         result = self.generate(self.tmp / "out", "--dry-run")
@@ -79,10 +86,55 @@ class GenerateTest(unittest.TestCase):
                             "using MassMatrix = Eigen::Matrix<T, nv, nv>;"):
             self.assertIn(declaration, umbrella)
         mass_matrix = (self.tmp / "mini_cheetah" / "full" / "mass_matrix.hpp").read_text()
-        self.assertIn("RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept", mass_matrix)
+        key = body_file(self.tmp, "full", "mass_matrix").stem
+        self.assertIn(f"using ::rbdc_gen::mini_cheetah::common::{key}::mass_matrix;", mass_matrix)
         self.assertIn("mass_matrix(const ConfigVector<Scalar>& q, MassMatrix<Scalar>& M) noexcept", mass_matrix)
-        self.assertNotIn("new ", mass_matrix)
-        self.assertNotIn("throw", mass_matrix)
+        body = body_file(self.tmp, "full", "mass_matrix").read_text()
+        self.assertIn(f"namespace rbdc_gen::mini_cheetah::common::{key} {{", body)
+        self.assertIn("RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept", body)
+        self.assertNotIn("scene:", body[:body.index("#pragma once")])  # any scene's, not one
+        for text in (mass_matrix, body):
+            self.assertNotIn("new ", text)
+            self.assertNotIn("throw", text)
+
+    def test_scenes_with_the_same_function_share_one_body(self):
+        for scene in ("full", "kinematics_only", "stance_osc", "gravity_compensation"):
+            result = run_rbdc("generate", MINI_CHEETAH, "--scene", SCENES / f"{scene}.yaml", "-o", self.tmp)
+            self.assertEqual(result.returncode, 0, result.stderr)
+        common = self.tmp / "mini_cheetah" / "common"
+        jacobians = sorted(p.name for p in common.glob("feet_jacobian_*.hpp"))
+        self.assertEqual(len(jacobians), 1, jacobians)
+        for scene in ("full", "kinematics_only", "stance_osc"):
+            self.assertEqual(body_file(self.tmp, scene, "feet_jacobian").name, jacobians[0])
+        # gravity_compensation's inverse dynamics has no velocity: its own body.
+        self.assertNotEqual(body_file(self.tmp, "gravity_compensation", "inverse_dynamics"),
+                            body_file(self.tmp, "full", "inverse_dynamics"))
+        self.assertEqual(run_rbdc("generate", MINI_CHEETAH, "--scene", SCENES / "full.yaml", "-o", self.tmp,
+                                  "--check").returncode, 0)
+
+    def test_a_body_no_scene_includes_any_more_is_removed(self):
+        kept = self.tmp / "kept.yaml"
+        kept.write_text("name: kept\nquantities: [gravity_terms]\n")
+        moved = self.tmp / "moved.yaml"
+        moved.write_text("name: moved\nquantities: [gravity_terms]\n")
+        for scene in (kept, moved):
+            self.assertEqual(run_rbdc("generate", MINI_CHEETAH, "--scene", scene, "-o", self.tmp).returncode, 0)
+        shared = body_file(self.tmp, "moved", "gravity_terms")
+        moved.write_text("name: moved\nquantities: [gravity_terms]\ngravity: [0, 0, -1.62]\n")
+        self.assertEqual(run_rbdc("generate", MINI_CHEETAH, "--scene", moved, "-o", self.tmp).returncode, 0)
+        self.assertTrue(shared.exists(), "still included by scene 'kept'")
+        self.assertNotEqual(body_file(self.tmp, "moved", "gravity_terms"), shared)
+        kept.write_text("name: kept\nquantities: [gravity_terms]\ngravity: [0, 0, -1.62]\n")
+        self.assertEqual(run_rbdc("generate", MINI_CHEETAH, "--scene", kept, "-o", self.tmp).returncode, 0)
+        self.assertFalse(shared.exists(), "no scene includes it any more")
+        self.assertEqual(len(list((self.tmp / "mini_cheetah" / "common").glob("*.hpp"))), 1)
+
+    def test_the_shared_directory_is_no_scene_name(self):
+        scene = self.tmp / "common.yaml"
+        scene.write_text("name: common\n")
+        result = run_rbdc("generate", MINI_CHEETAH, "--scene", scene, "-o", self.tmp)
+        self.assertNotEqual(result.returncode, 0)
+        self.assertIn("reserved", result.stderr)
 
 
 class SceneTest(unittest.TestCase):
@@ -102,7 +154,7 @@ class SceneTest(unittest.TestCase):
         with tempfile.TemporaryDirectory() as out:
             result = run_rbdc("generate", MINI_CHEETAH, "--scene", SCENES / "gravity_compensation.yaml", "-o", out)
             self.assertEqual(result.returncode, 0, result.stderr)
-            text = (Path(out) / "mini_cheetah" / "gravity_compensation" / "inverse_dynamics.hpp").read_text()
+            text = body_file(Path(out), "gravity_compensation", "inverse_dynamics").read_text()
         self.assertIn("inverse_dynamics(const Scalar* q, const Scalar* a, Scalar* tau) noexcept", text)
         self.assertNotIn("v[", text)
 

@@ -59,5 +59,7 @@ _OPERATOR = re.compile(r" [-+*/] |(?:^|[(\s])-(?=[\w(])|\b(?:sin|cos|sqrt)\(|\bj
 
 
 def operator_count(statement):
-    """Operations on the right-hand side of one emitted statement."""
+    """Operations on the right-hand side of one emitted statement (none in a marker comment)."""
+    if statement.startswith("//"):
+        return 0
     return len(_OPERATOR.findall(_CONSTANT.sub("C", statement.split("=", 1)[1])))

@@ -1,5 +1,6 @@
 """Emitted statements: deterministic text, every output entry written exactly once, joint sin/cos
-first in one block, constants printed exactly, temporaries declared before use."""
+first in one block and named by joint, constants printed exactly and short, temporaries declared
+before use, phase markers in the algorithm's order."""
 
 import os
 import re
@@ -44,7 +45,7 @@ class Emission(unittest.TestCase):
         for fn in trace_scene(ROBOT, default_scene()):
             lines = emit_body(fn)
             defined = set()
-            for line in lines:
+            for line in (l for l in lines if not l.startswith("//")):
                 declared = re.match(r"const Scalar (\w+) = (.*);$", line)
                 used = set(re.findall(r"\b(t\d+|sin_q_\d+|cos_q_\d+)\b",
                                       declared.group(2) if declared else line.split("=", 1)[1]))
@@ -65,16 +66,37 @@ class Emission(unittest.TestCase):
         fn = trace_function(ROBOT, default_scene(), "inverse_dynamics")
         lines = emit_body(fn)
         # two revolute joints; the prismatic one has no angle
-        self.assertEqual(lines[:2], ["const Scalar joint_angle[2] = {q[7], q[8]};",
+        self.assertEqual(lines[:3], ["// sines and cosines of the joint angles",
+                                     "const Scalar joint_angle[2] = {q[7], q[8]};",
                                      "const auto joint_trig = joint_sincos(joint_angle);"])
         trig = [l for l in lines if "joint_trig." in l]
-        self.assertEqual(lines[2:2 + len(trig)], trig)
+        self.assertEqual(lines[3:3 + len(trig)], trig)
         self.assertEqual(len(trig), 4)
         self.assertEqual(trig[0], "const Scalar sin_q_7 = joint_trig.sin[0];")
 
+    def test_joint_trig_is_named_by_joint(self):
+        fn = trace_function(ROBOT, default_scene(), "inverse_dynamics")
+        lines = emit_body(fn, {("q", 7): "hip", ("q", 8): "knee"})
+        self.assertIn("const Scalar sin_hip = joint_trig.sin[0];", lines)
+        self.assertIn("const Scalar cos_knee = joint_trig.cos[1];", lines)
+        self.assertFalse([l for l in lines if "sin_q_" in l or "cos_q_" in l])
+
+    def test_markers_follow_the_passes_of_the_algorithm(self):
+        lines = emit_body(trace_function(ROBOT, default_scene(), "mass_matrix"))
+        markers = [l for l in lines if l.startswith("//")]
+        # CRBA's inward pass from the last body to the first, each body once, then the outputs.
+        self.assertEqual(markers, ["// sines and cosines of the joint angles",
+                                   "// inward pass: body 3 slider", "// inward pass: body 2 lower",
+                                   "// inward pass: body 1 upper", "// outputs"])
+        first_output = lines.index("// outputs") + 1
+        self.assertTrue(lines[first_output].startswith("M[0] = "), lines[first_output])
+
     def test_constants_are_exact_and_symmetric_entries_mirrored(self):
-        self.assertEqual(format_constant(0.209), "Scalar(0.20899999999999999)")
+        self.assertEqual(format_constant(0.209), "Scalar(0.209)")
         self.assertEqual(format_constant(-1.0), "Scalar(-1)")
+        for value in (0.1 + 0.2, 1 / 3, 6.0000000000000002e-06, -0.013375999999999999, 1e300):
+            text = format_constant(value)
+            self.assertEqual(float(text[len("Scalar("):-1]), value, text)
         fn = trace_function(ROBOT, default_scene(), "mass_matrix")
         M = fn.values["M"]
         n = ROBOT.nv
@@ -87,7 +109,16 @@ class Emission(unittest.TestCase):
             out = (ex.symbol("q", 0) * 2.0, ex.const(0.0))
         fn = Function("f", "", (Argument("q", 1, 1, ""),), (Argument("y", 2, 1, ""),),
                       {"y": out}, graph)
-        self.assertEqual(emit_body(fn), ["y[0] = Scalar(2) * q[0];", "y[1] = Scalar(0);"])
+        self.assertEqual(emit_body(fn), ["// outputs", "y[0] = Scalar(2) * q[0];", "y[1] = Scalar(0);"])
+
+    def test_a_negative_constant_operand_flips_the_operator(self):
+        with ex.Graph() as graph:
+            x = ex.symbol("q", 0)
+            out = (ex.sub(x, ex.const(-0.5)), ex.add(ex.const(-0.25), x), ex.sub(ex.const(-2.0), x))
+        fn = Function("f", "", (Argument("q", 1, 1, ""),), (Argument("y", 3, 1, ""),),
+                      {"y": out}, graph)
+        self.assertEqual(emit_body(fn)[1:], ["y[0] = q[0] + Scalar(0.5);", "y[1] = q[0] - Scalar(0.25);",
+                                             "y[2] = Scalar(-2) - q[0];"])
 
 
 if __name__ == "__main__":

@@ -51,9 +51,10 @@ class DegenerateRobots(unittest.TestCase):
         data["joints"][0]["type"] = "fixed"
         robot = load_ir(data)
         for fn in trace_scene(robot, default_scene()):
-            self.assertEqual(len(emit_body(fn)), sum(a.size for a in fn.outputs), fn.name)
-        self.assertEqual(emit_body(trace_function(robot, default_scene(), "feet_positions"))[2],
-                         "p[2] = Scalar(-0.10000000000000001);")
+            statements = [l for l in emit_body(fn) if not l.startswith("//")]
+            self.assertEqual(len(statements), sum(a.size for a in fn.outputs), fn.name)
+        self.assertEqual(emit_body(trace_function(robot, default_scene(), "feet_positions"))[-1],
+                         "p[2] = Scalar(-0.1);")
 
     def test_a_massless_moving_body_is_a_clear_error_where_a_pivot_vanishes(self):
         data = copy.deepcopy(RAW)

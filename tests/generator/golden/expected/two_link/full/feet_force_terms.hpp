@@ -3,11 +3,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// feet_force_terms for two_link: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// feet_force_terms for two_link, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose feet_force_terms is the same code:
+//   two_link/common/feet_force_terms_59804ca4d7f8.hpp
 #pragma once
 
 #include "two_link/full.hpp"
+#include "two_link/common/feet_force_terms_59804ca4d7f8.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -17,23 +20,9 @@ namespace rbdc_gen::two_link::full {
 /// @param f in  3x1: foot forces, world frame, one column per foot
 /// @param tau_e out 2x1: τ_e = Jᵀ f
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated     22     13      0      0      2      0     37
-/// generic     1046    874      0      0      4      0   1924
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void feet_force_terms(const Scalar* q, const Scalar* f, Scalar* tau_e) noexcept {
-  const Scalar joint_angle[1] = {q[0]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_0 = joint_trig.sin[0];
-  const Scalar cos_q_0 = joint_trig.cos[0];
-  const Scalar t0 = ((cos_q_0 * f[0]) + ((Scalar(0.80000000000000004) * sin_q_0) * f[1])) - ((Scalar(0.59999999999999998) * sin_q_0) * f[2]);
-  const Scalar t1 = (Scalar(0.050000000000000003) * t0) - (q[1] * t0);
-  const Scalar t2 = Scalar(1) - cos_q_0;
-  const Scalar t3 = (f[0] * ((Scalar(-0.38354043088336254) * sin_q_0) - (Scalar(0.52654953713422359) * sin_q_0))) - (((Scalar(0.42123962970737888) * t2) - (Scalar(0.47942553860420312) * (cos_q_0 + (Scalar(0.35999999999999999) * t2)))) * f[1]);
-  tau_e[0] = (Scalar(0.59999999999999998) * ((Scalar(0.87758256189037265) * t1) + (Scalar(0.29999999999999999) * t0))) + (Scalar(0.38354043088336254) * t1);
-  tau_e[1] = t3 - (((Scalar(0.87758256189037265) * (cos_q_0 + (Scalar(0.64000000000000012) * t2))) - (Scalar(0.2301242585300175) * t2)) * f[2]);
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///              22   13    0     0     2    0     37
+using ::rbdc_gen::two_link::common::feet_force_terms_59804ca4d7f8::feet_force_terms;
 
 /// feet_force_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -3,11 +3,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// feet_jacobian for two_link: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// feet_jacobian for two_link, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose feet_jacobian is the same code:
+//   two_link/common/feet_jacobian_f01e5db26a10.hpp
 #pragma once
 
 #include "two_link/full.hpp"
+#include "two_link/common/feet_jacobian_f01e5db26a10.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -16,37 +19,9 @@ namespace rbdc_gen::two_link::full {
 /// @param q in  2x1: joint positions
 /// @param J out 3x2: feet Jacobian, world-frame foot velocities from v
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated     25     19      0      0      2      2     48
-/// generic     1655   1368      0      0      4      0   3027
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void feet_jacobian(const Scalar* q, Scalar* J) noexcept {
-  const Scalar joint_angle[1] = {q[0]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_0 = joint_trig.sin[0];
-  const Scalar cos_q_0 = joint_trig.cos[0];
-  const Scalar t0 = Scalar(1) - cos_q_0;
-  const Scalar t1 = cos_q_0 + (Scalar(0.35999999999999999) * t0);
-  const Scalar t2 = (Scalar(0.59999999999999998) * t1) + (Scalar(0.38400000000000001) * t0);
-  const Scalar t3 = cos_q_0 + (Scalar(0.64000000000000012) * t0);
-  const Scalar t4 = Scalar(0.87758256189037265) * t3;
-  const Scalar t5 = Scalar(0.2301242585300175) * t0;
-  const Scalar t6 = t4 - t5;
-  const Scalar t7 = t2 * ((((Scalar(0.10000000000000001) + (Scalar(0.29999999999999999) * t3)) - (q[1] * t6)) + (Scalar(0.050000000000000003) * t6)) - Scalar(0.10000000000000001));
-  const Scalar t8 = Scalar(0.42123962970737888) * t0;
-  const Scalar t9 = Scalar(0.47942553860420312) * t1;
-  const Scalar t10 = t8 - t9;
-  const Scalar t11 = (Scalar(0.28799999999999998) * t0) + (Scalar(0.80000000000000004) * t3);
-  const Scalar t12 = (Scalar(0.38354043088336254) * sin_q_0) + (Scalar(0.52654953713422359) * sin_q_0);
-  const Scalar t13 = ((Scalar(0.17999999999999999) * sin_q_0) - (q[1] * t12)) + (Scalar(0.050000000000000003) * t12);
-  J[0] = t7 - ((((Scalar(0.14399999999999999) * t0) - (q[1] * t10)) + (Scalar(0.050000000000000003) * t10)) * t11);
-  J[1] = t13 * t11;
-  J[2] = -(t13 * t2);
-  J[3] = -t12;
-  J[4] = t9 - t8;
-  J[5] = t5 - t4;
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///              25   19    0     0     2    2     48
+using ::rbdc_gen::two_link::common::feet_jacobian_f01e5db26a10::feet_jacobian;
 
 /// feet_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

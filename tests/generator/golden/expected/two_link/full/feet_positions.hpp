@@ -3,11 +3,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// feet_positions for two_link: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// feet_positions for two_link, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose feet_positions is the same code:
+//   two_link/common/feet_positions_674121e213a3.hpp
 #pragma once
 
 #include "two_link/full.hpp"
+#include "two_link/common/feet_positions_674121e213a3.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -16,25 +19,9 @@ namespace rbdc_gen::two_link::full {
 /// @param q in  2x1: joint positions
 /// @param p out 3x1: foot positions, world frame, one column per foot
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated     17     13      0      0      2      0     32
-/// generic     1160    954      0      0      4      0   2118
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void feet_positions(const Scalar* q, Scalar* p) noexcept {
-  const Scalar joint_angle[1] = {q[0]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_0 = joint_trig.sin[0];
-  const Scalar cos_q_0 = joint_trig.cos[0];
-  const Scalar t0 = (Scalar(0.38354043088336254) * sin_q_0) + (Scalar(0.52654953713422359) * sin_q_0);
-  const Scalar t1 = Scalar(1) - cos_q_0;
-  const Scalar t2 = (Scalar(0.42123962970737888) * t1) - (Scalar(0.47942553860420312) * (cos_q_0 + (Scalar(0.35999999999999999) * t1)));
-  const Scalar t3 = cos_q_0 + (Scalar(0.64000000000000012) * t1);
-  const Scalar t4 = (Scalar(0.87758256189037265) * t3) - (Scalar(0.2301242585300175) * t1);
-  p[0] = ((Scalar(0.17999999999999999) * sin_q_0) - (q[1] * t0)) + (Scalar(0.050000000000000003) * t0);
-  p[1] = ((Scalar(0.14399999999999999) * t1) - (q[1] * t2)) + (Scalar(0.050000000000000003) * t2);
-  p[2] = ((Scalar(0.10000000000000001) + (Scalar(0.29999999999999999) * t3)) - (q[1] * t4)) + (Scalar(0.050000000000000003) * t4);
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///              17   13    0     0     2    0     32
+using ::rbdc_gen::two_link::common::feet_positions_674121e213a3::feet_positions;
 
 /// feet_positions on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

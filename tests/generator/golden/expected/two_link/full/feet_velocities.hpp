@@ -3,11 +3,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// feet_velocities for two_link: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// feet_velocities for two_link, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose feet_velocities is the same code:
+//   two_link/common/feet_velocities_951e3b555ff6.hpp
 #pragma once
 
 #include "two_link/full.hpp"
+#include "two_link/common/feet_velocities_951e3b555ff6.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -17,23 +20,9 @@ namespace rbdc_gen::two_link::full {
 /// @param v in  2x1: joint velocities
 /// @param pdot out 3x1: foot velocities, world frame, one column per foot
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated     21     12      0      0      2      0     35
-/// generic     1046    864      0      0      4      0   1914
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void feet_velocities(const Scalar* q, const Scalar* v, Scalar* pdot) noexcept {
-  const Scalar joint_angle[1] = {q[0]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_0 = joint_trig.sin[0];
-  const Scalar cos_q_0 = joint_trig.cos[0];
-  const Scalar t0 = (Scalar(0.52654953713422359) * v[0]) + (Scalar(0.38354043088336254) * v[0]);
-  const Scalar t1 = ((Scalar(0.17999999999999999) * v[0]) - (q[1] * t0)) + (Scalar(0.050000000000000003) * t0);
-  const Scalar t2 = Scalar(1) - cos_q_0;
-  pdot[0] = (cos_q_0 * t1) - (((Scalar(0.38354043088336254) * sin_q_0) + (Scalar(0.52654953713422359) * sin_q_0)) * v[1]);
-  pdot[1] = ((Scalar(0.80000000000000004) * sin_q_0) * t1) - (((Scalar(0.42123962970737888) * t2) - (Scalar(0.47942553860420312) * (cos_q_0 + (Scalar(0.35999999999999999) * t2)))) * v[1]);
-  pdot[2] = (t1 * (Scalar(-0.59999999999999998) * sin_q_0)) - (((Scalar(0.87758256189037265) * (cos_q_0 + (Scalar(0.64000000000000012) * t2))) - (Scalar(0.2301242585300175) * t2)) * v[1]);
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///              21   12    0     0     2    0     35
+using ::rbdc_gen::two_link::common::feet_velocities_951e3b555ff6::feet_velocities;
 
 /// feet_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -3,11 +3,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// forward_dynamics for two_link: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// forward_dynamics for two_link, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose forward_dynamics is the same code:
+//   two_link/common/forward_dynamics_32035964f7df.hpp
 #pragma once
 
 #include "two_link/full.hpp"
+#include "two_link/common/forward_dynamics_32035964f7df.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -19,36 +22,9 @@ namespace rbdc_gen::two_link::full {
 /// @param f in  3x1: foot forces, world frame, one column per foot
 /// @param a out 2x1: acceleration
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated     62     41      1      0      2      0    106
-/// generic     2836   2457      5      2      4      0   5304
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
-  const Scalar joint_angle[1] = {q[0]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_0 = joint_trig.sin[0];
-  const Scalar cos_q_0 = joint_trig.cos[0];
-  const Scalar t0 = (Scalar(0.52654953713422359) * v[0]) + (Scalar(0.38354043088336254) * v[0]);
-  const Scalar t1 = (Scalar(0.17999999999999999) * v[0]) - (q[1] * t0);
-  const Scalar t2 = Scalar(0.5) * v[1];
-  const Scalar t3 = Scalar(0.5) * t1;
-  const Scalar t4 = ((cos_q_0 * f[0]) + ((Scalar(0.80000000000000004) * sin_q_0) * f[1])) - ((Scalar(0.59999999999999998) * sin_q_0) * f[2]);
-  const Scalar t5 = t4 + ((Scalar(0.5) * ((Scalar(5.8860000000000001) * sin_q_0) + (v[1] * t0))) + (t0 * t2));
-  const Scalar t6 = (((t1 * t2) - (v[1] * t3)) - (Scalar(0.050000000000000003) * t4)) + (q[1] * t5);
-  const Scalar t7 = Scalar(0.0018068559148641137) * v[0];
-  const Scalar t8 = Scalar(0.59999999999999998) * (((Scalar(0.87758256189037265) * t6) - (Scalar(0.29999999999999999) * t5)) - ((Scalar(0.88290000000000002) * sin_q_0) + ((Scalar(0.80000000000000004) * v[0]) * t7)));
-  const Scalar t9 = Scalar(0.001) + (q[1] * (Scalar(0.5) * q[1]));
-  const Scalar t10 = (Scalar(-0.00042073549240394833) + (Scalar(0.42073549240394831) * t9)) - (Scalar(0.071913830790630462) * q[1]);
-  const Scalar t11 = (Scalar(0.59999999999999998) * (Scalar(0.032500000000000001) + ((Scalar(0.00022984884706593026) + (Scalar(0.77015115293406977) * t9)) - ((Scalar(0.1316373842835559) * q[1]) - (Scalar(0.29999999999999999) * (Scalar(0.14999999999999999) - (Scalar(0.43879128094518632) * q[1]))))))) + (Scalar(0.80000000000000004) * t10);
-  const Scalar t12 = Scalar(1) / ((Scalar(0.59999999999999998) * t11) + (Scalar(0.80000000000000004) * ((Scalar(0.59999999999999998) * t10) + (Scalar(0.80000000000000004) * (Scalar(0.0026986575403612871) + (Scalar(0.00077015115293406977) + (Scalar(0.22984884706593026) * t9)))))));
-  const Scalar t13 = Scalar(1) - cos_q_0;
-  const Scalar t14 = (((Scalar(0.38354043088336254) * sin_q_0) + (Scalar(0.52654953713422359) * sin_q_0)) * f[0]) + (((Scalar(0.42123962970737888) * t13) - (Scalar(0.47942553860420312) * (cos_q_0 + (Scalar(0.35999999999999999) * t13)))) * f[1]);
-  const Scalar t15 = cos_q_0 + (Scalar(0.64000000000000012) * t13);
-  const Scalar t16 = (t14 + (((Scalar(0.87758256189037265) * t15) - (Scalar(0.2301242585300175) * t13)) * f[2])) - ((Scalar(0.5) * ((Scalar(8.6090849321445564) * t15) - (Scalar(2.2575189761794716) * t13))) - (t0 * t3));
-  a[0] = (tau[0] - (t8 + (Scalar(0.80000000000000004) * (((Scalar(0.59999999999999998) * v[0]) * t7) + (Scalar(0.47942553860420312) * t6))))) * t12;
-  a[1] = Scalar(2) * (tau[1] - t16);
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///              62   41    1     0     2    0    106
+using ::rbdc_gen::two_link::common::forward_dynamics_32035964f7df::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -3,11 +3,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// gravity_terms for two_link: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// gravity_terms for two_link, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose gravity_terms is the same code:
+//   two_link/common/gravity_terms_451cc3898918.hpp
 #pragma once
 
 #include "two_link/full.hpp"
+#include "two_link/common/gravity_terms_451cc3898918.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -16,22 +19,9 @@ namespace rbdc_gen::two_link::full {
 /// @param q in  2x1: joint positions
 /// @param g out 2x1: gravity terms
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated     10      6      0      0      2      0     18
-/// generic      731    616      0      0      4      0   1351
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept {
-  const Scalar joint_angle[1] = {q[0]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_0 = joint_trig.sin[0];
-  const Scalar cos_q_0 = joint_trig.cos[0];
-  const Scalar t0 = q[1] * (Scalar(2.9430000000000001) * sin_q_0);
-  const Scalar t1 = Scalar(0.88290000000000002) * sin_q_0;
-  const Scalar t2 = Scalar(1) - cos_q_0;
-  g[0] = (Scalar(0.59999999999999998) * (((Scalar(0.87758256189037265) * t0) - t1) - t1)) + (Scalar(0.38354043088336254) * t0);
-  g[1] = Scalar(-0.5) * ((Scalar(8.6090849321445564) * (cos_q_0 + (Scalar(0.64000000000000012) * t2))) - (Scalar(2.2575189761794716) * t2));
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///              10    6    0     0     2    0     18
+using ::rbdc_gen::two_link::common::gravity_terms_451cc3898918::gravity_terms;
 
 /// gravity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

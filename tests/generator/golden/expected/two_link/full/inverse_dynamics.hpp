@@ -3,11 +3,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// inverse_dynamics for two_link: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// inverse_dynamics for two_link, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose inverse_dynamics is the same code:
+//   two_link/common/inverse_dynamics_ec91a79eab09.hpp
 #pragma once
 
 #include "two_link/full.hpp"
+#include "two_link/common/inverse_dynamics_ec91a79eab09.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -18,30 +21,9 @@ namespace rbdc_gen::two_link::full {
 /// @param a in  2x1: joint accelerations
 /// @param tau out 2x1: generalised forces M a + c + g
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated     40     25      0      0      2      0     67
-/// generic     1133    973      0      0      4      0   2110
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
-  const Scalar joint_angle[1] = {q[0]};
-  const auto joint_trig = joint_sincos(joint_angle);
-  const Scalar sin_q_0 = joint_trig.sin[0];
-  const Scalar cos_q_0 = joint_trig.cos[0];
-  const Scalar t0 = Scalar(0.0018068559148641137) * v[0];
-  const Scalar t1 = (Scalar(0.52654953713422359) * a[0]) + (Scalar(0.38354043088336254) * a[0]);
-  const Scalar t2 = (Scalar(0.52654953713422359) * v[0]) + (Scalar(0.38354043088336254) * v[0]);
-  const Scalar t3 = (Scalar(0.17999999999999999) * v[0]) - (q[1] * t2);
-  const Scalar t4 = Scalar(0.5) * v[1];
-  const Scalar t5 = Scalar(0.5) * t3;
-  const Scalar t6 = (Scalar(0.5) * ((((Scalar(0.17999999999999999) * a[0]) - (Scalar(5.8860000000000001) * sin_q_0)) - (q[1] * t1)) - (v[1] * t2))) - (t2 * t4);
-  const Scalar t7 = ((Scalar(0.001) * t1) + ((t3 * t4) - (v[1] * t5))) - (q[1] * t6);
-  const Scalar t8 = (Scalar(0.70206604951229812) * a[0]) - (Scalar(0.28765532316252185) * a[0]);
-  const Scalar t9 = (((Scalar(0.0195) * a[0]) - (Scalar(0.88290000000000002) * sin_q_0)) - ((Scalar(0.80000000000000004) * v[0]) * t0)) + (((Scalar(0.87758256189037265) * t7) - (Scalar(0.00047942553860420313) * t8)) + (Scalar(0.29999999999999999) * t6));
-  const Scalar t10 = Scalar(1) - cos_q_0;
-  tau[0] = (Scalar(0.59999999999999998) * t9) + (Scalar(0.80000000000000004) * (((Scalar(0.0021589260322890298) * a[0]) + ((Scalar(0.59999999999999998) * v[0]) * t0)) + ((Scalar(0.47942553860420312) * t7) + (Scalar(0.00087758256189037268) * t8))));
-  tau[1] = (t2 * t5) - (Scalar(0.5) * (((Scalar(8.6090849321445564) * (cos_q_0 + (Scalar(0.64000000000000012) * t10))) - (Scalar(2.2575189761794716) * t10)) - a[1]));
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///              40   25    0     0     2    0     67
+using ::rbdc_gen::two_link::common::inverse_dynamics_ec91a79eab09::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

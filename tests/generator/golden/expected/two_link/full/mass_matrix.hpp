@@ -3,11 +3,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// mass_matrix for two_link: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// mass_matrix for two_link, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose mass_matrix is the same code:
+//   two_link/common/mass_matrix_dffff2eb5d0c.hpp
 #pragma once
 
 #include "two_link/full.hpp"
+#include "two_link/common/mass_matrix_dffff2eb5d0c.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -16,20 +19,9 @@ namespace rbdc_gen::two_link::full {
 /// @param q in  2x1: joint positions
 /// @param M out 2x2: mass matrix, full symmetric
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated     15     13      0      0      0      0     28
-/// generic     1664   1455      0      0      4      0   3123
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
-  const Scalar t0 = Scalar(0.001) + (q[1] * (Scalar(0.5) * q[1]));
-  const Scalar t1 = (Scalar(-0.00042073549240394833) + (Scalar(0.42073549240394831) * t0)) - (Scalar(0.071913830790630462) * q[1]);
-  const Scalar t2 = (Scalar(0.59999999999999998) * (Scalar(0.032500000000000001) + ((Scalar(0.00022984884706593026) + (Scalar(0.77015115293406977) * t0)) - ((Scalar(0.1316373842835559) * q[1]) - (Scalar(0.29999999999999999) * (Scalar(0.14999999999999999) - (Scalar(0.43879128094518632) * q[1]))))))) + (Scalar(0.80000000000000004) * t1);
-  M[0] = (Scalar(0.59999999999999998) * t2) + (Scalar(0.80000000000000004) * ((Scalar(0.59999999999999998) * t1) + (Scalar(0.80000000000000004) * (Scalar(0.0026986575403612871) + (Scalar(0.00077015115293406977) + (Scalar(0.22984884706593026) * t0))))));
-  M[1] = Scalar(0);
-  M[2] = Scalar(0);
-  M[3] = Scalar(0.5);
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///              15   13    0     0     0    0     28
+using ::rbdc_gen::two_link::common::mass_matrix_dffff2eb5d0c::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -3,11 +3,14 @@
 // scene: full
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// quadratic_velocity_terms for two_link: straight-line code from rbdc's traced algorithm, constants
-// folded, shared subexpressions computed once, only what reaches the outputs kept.
+// quadratic_velocity_terms for two_link, scene "full": the overload on the scene's Eigen
+// types, and the raw-pointer overload with the straight-line body, from the file shared by every
+// scene whose quadratic_velocity_terms is the same code:
+//   two_link/common/quadratic_velocity_terms_fbe8a96c3ec9.hpp
 #pragma once
 
 #include "two_link/full.hpp"
+#include "two_link/common/quadratic_velocity_terms_fbe8a96c3ec9.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -17,23 +20,9 @@ namespace rbdc_gen::two_link::full {
 /// @param v in  2x1: joint velocities
 /// @param c out 2x1: Coriolis and centrifugal terms
 ///
-/// Operations      mul    add    div   sqrt   trig    neg  total
-/// generated     23      9      0      0      0      0     32
-/// generic     1121    961      0      0      4      0   2086
-/// (generic: the runtime's algorithm with dense 6x6 arithmetic, counted analytically.)
-template <class Scalar>
-RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Scalar* v, Scalar* c) noexcept {
-  const Scalar t0 = (Scalar(0.52654953713422359) * v[0]) + (Scalar(0.38354043088336254) * v[0]);
-  const Scalar t1 = (Scalar(0.17999999999999999) * v[0]) - (q[1] * t0);
-  const Scalar t2 = Scalar(0.5) * v[1];
-  const Scalar t3 = Scalar(0.5) * t1;
-  const Scalar t4 = (Scalar(0.5) * (v[1] * t0)) + (t0 * t2);
-  const Scalar t5 = ((t1 * t2) - (v[1] * t3)) + (q[1] * t4);
-  const Scalar t6 = Scalar(0.0018068559148641137) * v[0];
-  const Scalar t7 = Scalar(0.59999999999999998) * (((Scalar(0.87758256189037265) * t5) - (Scalar(0.29999999999999999) * t4)) - ((Scalar(0.80000000000000004) * v[0]) * t6));
-  c[0] = t7 + (Scalar(0.80000000000000004) * (((Scalar(0.59999999999999998) * v[0]) * t6) + (Scalar(0.47942553860420312) * t5)));
-  c[1] = t0 * t3;
-}
+/// operations  mul  add  div  sqrt  trig  neg  total
+///              23    9    0     0     0    0     32
+using ::rbdc_gen::two_link::common::quadratic_velocity_terms_fbe8a96c3ec9::quadratic_velocity_terms;
 
 /// quadratic_velocity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>
