@@ -8,6 +8,7 @@
 #include "rbdc/crba.hpp"
 #include "rbdc/inverse_dynamics.hpp"
 #include "rbdc/kinematics.hpp"
+#include "rbdc/osc.hpp"
 #include "rbdc/urdf_loader.hpp"
 
 namespace rbdc {
@@ -105,6 +106,19 @@ TEST(Coupling, ProjectedBiasNeedsNoExtraTermWhenGIsConstant) {
   const double c = (G.transpose() * quadratic_velocity_terms(m, data, q_tree, G * VectorX::Constant(1, v)))(0);
   EXPECT_GT(std::abs(dM), 1e-3);  // the check has something to see
   EXPECT_NEAR(c, 0.5 * dM * v * v, 1e-8);
+}
+
+TEST(Coupling, TheOscRecursionRefusesCoupledModels) {
+  const Model m = load("mimic_chain.urdf", true, MimicMode::Couple);
+  Data data(m);
+  VectorX q = VectorX::Zero(m.nq);
+  q[3] = 1;
+  try {
+    osc_open_chain(m, data, q, VectorX::Zero(m.nv), Matrix3X::Zero(3, 1));
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("has mimic couplings"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Coupling, ModelsWithoutCouplingsHaveTheIdentity) {
