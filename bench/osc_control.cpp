@@ -5,10 +5,11 @@
 
 #include <vector>
 
-#include "rbdc/control/trot_experiment.hpp"
+#include "rbdc/control/osc_trot.hpp"
 #include "rbdc/control/trunk_dynamics.hpp"
 #include "rbdc/osc.hpp"
 #include "rbdc/sim/robot.hpp"
+#include "rbdc/sim/run.hpp"
 
 namespace {
 
@@ -18,26 +19,30 @@ using namespace rbdc::control;
 struct TrotState {
   VectorX q, v;
   FeetForces f;
+  Matrix3X f_measured;  ///< f as the controller interface takes it
   double t = 0;
 };
 
-// States along a short OSC trot, sampled every 7 ms once it is under way.
+// States along a short OSC trot, sampled every 7 ms once it is under way (after 1 s).
 const std::vector<TrotState>& trot_states() {
   static const std::vector<TrotState> states = [] {
     const Model model = sim::load_robot(sim::default_urdf());
     std::unique_ptr<sim::DynamicsModel> dynamics = sim::make_generated_dynamics();
     if (!dynamics) dynamics = sim::make_runtime_dynamics(model);
     sim::Simulator simulator(*dynamics, sim::SimOptions{});
-    TrotController controller(model, TrotParameters{}, StanceControl::OperationalSpace, 0.02);
-    simulator.reset(controller.standing_configuration(), VectorX::Zero(kNv));
+    OscTrotController controller(model, TrotParameters{}, StanceControl::OperationalSpace, 0.02);
+    sim::RunOptions run;
+    run.duration = 1.5;
+    run.sample_interval = 7e-3;
     std::vector<TrotState> out;
-    for (long n = 0; n < 15000; ++n) {
-      FeetForces f;
-      for (int k = 0; k < kFeet; ++k) f.col(k) = simulator.contacts()[k].force_W;
-      const JointTorques tau = controller.update(simulator.time(), simulator.q().data(), simulator.v().data(), f);
-      if (n > 10000 && n % 70 == 0) out.push_back({simulator.q(), simulator.v(), f, simulator.time()});
-      simulator.step(tau);
-    }
+    sim::RunCallbacks callbacks;
+    callbacks.sample = [&](sim::Simulator& s) {
+      if (s.time() <= 1.0) return;
+      Matrix3X f;
+      sim::world_forces(s.contacts(), f);
+      out.push_back({s.q(), s.v(), f, f, s.time()});
+    };
+    sim::run(simulator, controller, run, callbacks);
     return out;
   }();
   return states;
@@ -84,11 +89,13 @@ void BM_closed_chain_recursion_runtime(benchmark::State& state) {
 void BM_closed_form_runtime(benchmark::State& state) {
   const auto& states = trot_states();
   Data data(model());
+  OscReferenceData closed_form(model());
   const std::vector<int> feet = {0, 3};
   std::size_t i = 0;
   for (auto _ : state) {
     const TrotState& s = states[i++ % states.size()];
-    benchmark::DoNotOptimize(osc_closed_form_constrained(model(), data, s.q, s.v, feet).b.data());
+    benchmark::DoNotOptimize(
+        osc_closed_form_constrained(model(), data, closed_form, s.q, s.v, feet).b.data());
   }
 }
 
@@ -116,11 +123,11 @@ void BM_controller_update(benchmark::State& state) {
   const auto& states = trot_states();
   const StanceControl control = static_cast<StanceControl>(state.range(0));
   state.SetLabel(to_string(control));
-  TrotController controller(model(), TrotParameters{}, control, 0.02);
+  OscTrotController controller(model(), TrotParameters{}, control, 0.02);
   std::size_t i = 0;
   for (auto _ : state) {
     const TrotState& s = states[i++ % states.size()];
-    benchmark::DoNotOptimize(controller.update(s.t, s.q.data(), s.v.data(), s.f).data());
+    benchmark::DoNotOptimize(controller.update({s.t, 1e-4, s.q, s.v, s.f_measured}).data());
   }
 }
 

@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   try {
     const Model model = sim::load_robot(argv[1]);
     Data data(model);
+    OscReferenceData reference(model);
     std::vector<int> feet(model.feet.size());
     std::iota(feet.begin(), feet.end(), 0);
     std::mt19937 rng(7);
@@ -53,7 +54,7 @@ int main(int argc, char** argv) {
       sink += osc_closed_chain(model, data, qs[i % 16], vs[i % 16], feet).b[0];
     });
     const double closed_form = mean_ns(2000, [&](int i) {
-      sink += osc_closed_form_constrained(model, data, qs[i % 16], vs[i % 16], feet).b[0];
+      sink += osc_closed_form_constrained(model, data, reference, qs[i % 16], vs[i % 16], feet).b[0];
     });
     // Printing whether the outputs were finite uses them, so no call can be optimised away.
     std::printf("{\"runtime_recursion_ns\": %.1f, \"runtime_closed_form_ns\": %.1f, \"nv\": %d, "

@@ -14,12 +14,13 @@ namespace {
 
 struct RuntimeContext {
   explicit RuntimeContext(const LoadedRobot& loaded)
-      : model(loaded.model), data(model), states(loaded.states),
+      : model(loaded.model), data(model), closed_form(model), states(loaded.states),
         zero_a(rbdc::VectorX::Zero(model.nv)), ground_mass(loaded.ground_mass) {
     for (int k = 0; k < static_cast<int>(model.feet.size()); ++k) all_feet.push_back(k);
   }
   rbdc::Model model;
   rbdc::Data data;
+  rbdc::OscReferenceData closed_form;
   std::vector<State> states;
   rbdc::VectorX zero_a;
   double ground_mass;
@@ -81,7 +82,8 @@ void provide() {
     });
     add("osc_closed_form", [](void* p, int k) {  // the exact constrained quantities (Eqs. 16-26)
       RuntimeContext& c = context(p);
-      rbdc::osc_closed_form_constrained(c.model, c.data, state(c, k).q, state(c, k).v, c.all_feet);
+      rbdc::osc_closed_form_constrained(c.model, c.data, c.closed_form, state(c, k).q, state(c, k).v,
+                                        c.all_feet);
     });
   });
 }

@@ -42,31 +42,20 @@ double number(const char* option, const char* text) {
 }
 
 // --set NAME=VALUE for the scalar trot parameters (tuning without recompiling).
-void set_parameter(TrotParameters& p, const std::string& assignment) {
+void set_assignment(TrotParameters& p, const std::string& assignment) {
   const std::size_t eq = assignment.find('=');
-  const std::string name = assignment.substr(0, eq);
-  const std::vector<std::pair<const char*, double*>> table = {
-      {"step_duration", &p.step_duration}, {"leg_length", &p.leg_length},
-      {"leg_stiffness", &p.leg_stiffness}, {"leg_damping", &p.leg_damping},
-      {"swing_height", &p.swing_height},   {"velocity_gain", &p.velocity_gain},
-      {"force_filter_time", &p.force_filter_time},
-      {"yaw_gain", &p.yaw_gain},           {"velocity_integral_gain", &p.velocity_integral_gain},
-               {"swing_kp", &p.swing_kp},
-      {"swing_kd", &p.swing_kd},           {"speed_ramp", &p.speed_ramp},
-      {"ground_mass", &p.ground_mass},
-      {"osc_kp", &p.osc_gains.roll_kp},    {"osc_kd", &p.osc_gains.roll_kd},
-      {"hip_kp", &p.hip_gains.roll_kp},    {"hip_kd", &p.hip_gains.roll_kd}};
-  for (const auto& [key, target] : table)
-    if (eq != std::string::npos && name == key) {
-      char* end = nullptr;
-      const double value = std::strtod(assignment.c_str() + eq + 1, &end);
-      if (*end != '\0') break;
-      *target = value;
-      // One gain pair for roll and pitch.
-      p.osc_gains.pitch_kp = p.osc_gains.roll_kp, p.osc_gains.pitch_kd = p.osc_gains.roll_kd;
-      p.hip_gains.pitch_kp = p.hip_gains.roll_kp, p.hip_gains.pitch_kd = p.hip_gains.roll_kd;
-      return;
+  if (eq != std::string::npos) {
+    char* end = nullptr;
+    const double value = std::strtod(assignment.c_str() + eq + 1, &end);
+    if (*end == '\0') {
+      try {
+        set_parameter(p, assignment.substr(0, eq), value);
+        return;
+      } catch (const std::invalid_argument&) {
+        // an unknown name: reported below with the whole assignment
+      }
     }
+  }
   throw std::invalid_argument("--set: expected NAME=NUMBER with a trot parameter name, got '" +
                               assignment + "'");
 }
@@ -90,7 +79,7 @@ Options parse(int argc, char** argv) {
     } else if (arg == "--control-period") {
       o.experiment.control_period = number("--control-period", value);
     } else if (arg == "--set") {
-      set_parameter(o.experiment.trot, value);
+      set_assignment(o.experiment.trot, value);
     } else if (arg == "--out") {
       o.out = value;
     } else {

@@ -1,15 +1,15 @@
 // rbdc-sim: the 10 s Mini Cheetah trot of paper 000 on generated (or runtime) dynamics.
 #include <cstdio>
 #include <exception>
-#include <functional>
 #include <memory>
 #include <optional>
 
-#include "rbdc/sim/command_line.hpp"
+#include "rbdc/control/command_line.hpp"
 #include "rbdc/sim/robot.hpp"
 #include "rbdc/sim/trajectory_csv.hpp"
 
 using namespace rbdc;
+using namespace rbdc::control;
 using namespace rbdc::sim;
 
 int main(int argc, char** argv) {
@@ -35,15 +35,15 @@ int main(int argc, char** argv) {
     }
     Simulator simulator(*dynamics, cli.sim);
     simulator.set_profiling(cli.profile);
-    TrotController controller(model, cli.gait, cli.gains, cli.sim.contact.foot_radius);
+    PdTrotController controller(model, cli.gait, cli.gains, cli.sim.contact.foot_radius);
     std::optional<TrajectoryCsv> csv;
     if (!cli.out.empty()) csv.emplace(cli.out, model);
     std::fprintf(stderr, "rbdc-sim: %s dynamics, %s, %s state, dt = %g s, %g s\n",
                  dynamics->name().c_str(), to_string(cli.sim.integrator), to_string(cli.sim.state),
                  cli.sim.dt, cli.run.duration);
-    std::function<void(Simulator&)> sample;
-    if (csv) sample = [&](Simulator& s) { csv->write(s.time(), s.q(), s.v(), s.contacts()); };
-    const RunSummary summary = run_trot(simulator, controller, cli.run, sample);
+    RunCallbacks callbacks;
+    if (csv) callbacks.sample = [&](Simulator& s) { csv->write(s.time(), s.q(), s.v(), s.contacts()); };
+    const RunSummary summary = run(simulator, controller, cli.run, callbacks);
     const double simulated = summary.steps * cli.sim.dt;
     std::printf("simulated %.3f s in %.3f s wall: real-time factor %.1f (%ld steps, %.2f us/step)\n",
                 simulated, summary.wall_seconds, simulated / summary.wall_seconds, summary.steps,
@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
                 simulator.q()[1], simulator.q()[2], summary.min_trunk_height);
     if (cli.profile) {
       const PhaseTimes& p = simulator.profile();
-      const double total = p.dynamics + p.contact + p.integration + p.control;
+      const double total = p.dynamics + p.contact + p.integration + summary.controller_seconds;
       auto line = [&](const char* name, double seconds) {
         std::printf("  %-12s %8.3f s  %6.1f %%  %7.3f us/step\n", name, seconds, 100 * seconds / total,
                     1e6 * seconds / p.steps);
@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
       line("dynamics", p.dynamics);
       line("contact", p.contact);
       line("integration", p.integration);
-      line("control", p.control);
+      line("control", summary.controller_seconds);
     }
     if (!summary.finite) {
       std::fprintf(stderr, "rbdc-sim: the state became non-finite at t = %.4f s\n", simulated);

@@ -1,4 +1,4 @@
-#include "rbdc/sim/command_line.hpp"
+#include "rbdc/control/command_line.hpp"
 
 #include <cmath>
 #include <functional>
@@ -6,7 +6,12 @@
 #include <stdexcept>
 #include <vector>
 
-namespace rbdc::sim {
+namespace rbdc::control {
+
+using sim::GroundPlane;
+using sim::Integrator;
+using sim::StateKind;
+using sim::to_string;
 namespace {
 
 struct Option {
@@ -80,7 +85,7 @@ std::vector<Option> options(Program program, CommandLine& c) {
     flag("--profile", c.profile, true, "time dynamics, contact, integration and control separately");
   } else {
     text("--out", c.out, "DIR", "output directory for the CSVs, the table and the plots");
-    flag("--no-plots", c.plots, false, "do not run sim/plot_compare.py");
+    flag("--no-plots", c.plots, false, "do not run mujoco/plot_compare.py");
   }
   text("--urdf", c.urdf, "FILE", "robot URDF (feet LF_foot, RF_foot, LH_foot, RH_foot)");
   number("--sample-interval", c.run.sample_interval, "s between CSV rows");
@@ -154,4 +159,4 @@ std::string usage(Program program, const CommandLine& defaults) {
   return out.str();
 }
 
-}  // namespace rbdc::sim
+}  // namespace rbdc::control

@@ -1,4 +1,4 @@
-#include "rbdc/control/trot_controller.hpp"
+#include "rbdc/control/osc_trot.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -24,6 +24,38 @@ const char* to_string(StanceControl control) {
   return "?";
 }
 
+std::vector<std::pair<const char*, double*>> named_parameters(TrotParameters& p) {
+  return {{"step_duration", &p.step_duration},
+          {"leg_length", &p.leg_length},
+          {"leg_stiffness", &p.leg_stiffness},
+          {"leg_damping", &p.leg_damping},
+          {"swing_height", &p.swing_height},
+          {"velocity_gain", &p.velocity_gain},
+          {"force_filter_time", &p.force_filter_time},
+          {"yaw_gain", &p.yaw_gain},
+          {"velocity_integral_gain", &p.velocity_integral_gain},
+          {"swing_kp", &p.swing_kp},
+          {"swing_kd", &p.swing_kd},
+          {"speed_ramp", &p.speed_ramp},
+          {"ground_mass", &p.ground_mass},
+          {"osc_kp", &p.osc_gains.roll_kp},
+          {"osc_kd", &p.osc_gains.roll_kd},
+          {"hip_kp", &p.hip_gains.roll_kp},
+          {"hip_kd", &p.hip_gains.roll_kd}};
+}
+
+void set_parameter(TrotParameters& p, const std::string& name, double value) {
+  for (const auto& [key, target] : named_parameters(p))
+    if (name == key) {
+      *target = value;
+      // One gain pair for roll and pitch.
+      p.osc_gains.pitch_kp = p.osc_gains.roll_kp, p.osc_gains.pitch_kd = p.osc_gains.roll_kd;
+      p.hip_gains.pitch_kp = p.hip_gains.roll_kp, p.hip_gains.pitch_kd = p.hip_gains.roll_kd;
+      return;
+    }
+  throw std::invalid_argument("unknown trot parameter '" + name + "'");
+}
+
 StanceControl parse_stance_control(const std::string& name) {
   for (StanceControl c : {StanceControl::OperationalSpace, StanceControl::OperationalSpaceOpenChain,
                           StanceControl::HipTorque})
@@ -31,17 +63,17 @@ StanceControl parse_stance_control(const std::string& name) {
   throw std::invalid_argument("unknown controller '" + name + "' (expected osc, osc-open or raibert)");
 }
 
-TrotController::TrotController(const Model& model, const TrotParameters& parameters,
-                               StanceControl control, double foot_radius)
+OscTrotController::OscTrotController(const Model& model, const TrotParameters& parameters,
+                                     StanceControl control, double foot_radius)
     : parameters_(parameters), control_(control), foot_radius_(foot_radius), total_mass_(0) {
   if (model.nq != kNq || model.nv != kNv || static_cast<int>(model.feet.size()) != kFeet)
-    throw std::invalid_argument("TrotController: model '" + model.name +
+    throw std::invalid_argument("OscTrotController: model '" + model.name +
                                 "' is not the Mini Cheetah the generated code was made from");
   if (!(parameters.step_duration > 0) || !(parameters.leg_length > 0))
-    throw std::invalid_argument("TrotController: step duration and leg length must be positive");
+    throw std::invalid_argument("OscTrotController: step duration and leg length must be positive");
   for (const Body& body : model.bodies) total_mass_ += body.mass;
   ground_mass_ = parameters.ground_mass > 0 ? parameters.ground_mass : mini_cheetah_ground_mass();
-  for (const sim::LegGeometry& geometry : sim::leg_geometry(model)) {
+  for (const LegGeometry& geometry : leg_geometry(model)) {
     Leg leg;
     leg.geometry = geometry;
     leg.hip_in_trunk = geometry.hip_in_trunk;
@@ -57,12 +89,12 @@ TrotController::TrotController(const Model& model, const TrotParameters& paramet
   tau_passive_.setZero();
 }
 
-VectorX TrotController::standing_configuration() const {
+VectorX OscTrotController::initial_configuration() const {
   VectorX q = VectorX::Zero(kNq);
   q[3] = 1;  // identity quaternion
   for (const Leg& leg : legs_) {
     const Eigen::Vector2d angles =
-        sim::leg_inverse_kinematics(leg.geometry, 0, -parameters_.leg_length);
+        leg_inverse_kinematics(leg.geometry, 0, -parameters_.leg_length);
     q[leg.geometry.hip_q] = angles[0];
     q[leg.geometry.knee_q] = angles[1];
   }
@@ -70,7 +102,7 @@ VectorX TrotController::standing_configuration() const {
   return q;
 }
 
-void TrotController::start_step(int step, const double* q) {
+void OscTrotController::start_step(int step, const double* q) {
   step_ = step;
   step_start_ = step * parameters_.step_duration;
   status_.pair = step % 2 == 0 ? StancePair::LfRh : StancePair::RfLh;
@@ -81,7 +113,7 @@ void TrotController::start_step(int step, const double* q) {
   for (int k : swing_feet(status_.pair)) liftoff_[k] = feet_.col(k);
 }
 
-void TrotController::swing_torques(double t, const Vector3& p, const Matrix3& W_R_B,
+void OscTrotController::swing_torques(double t, const Vector3& p, const Matrix3& W_R_B,
                                    const Vector3& v_W, double yaw_rate) {
   const TrotParameters& P = parameters_;
   const double remaining = step_start_ + P.step_duration - t;
@@ -112,7 +144,7 @@ void TrotController::swing_torques(double t, const Vector3& p, const Matrix3& W_
   }
 }
 
-void TrotController::passive_stance_torques(const Vector3& p, const Matrix3& W_R_B, const double* v) {
+void OscTrotController::passive_stance_torques(const Vector3& p, const Matrix3& W_R_B, const double* v) {
   const TrotParameters& P = parameters_;
   const Vector3 omega_B(v[0], v[1], v[2]), v_B(v[3], v[4], v[5]);
   for (int k : stance_feet(status_.pair)) {
@@ -131,7 +163,7 @@ void TrotController::passive_stance_torques(const Vector3& p, const Matrix3& W_R
   }
 }
 
-void TrotController::attitude_law(double t, const double* q, const double* v) {
+void OscTrotController::attitude_law(double t, const double* q, const double* v) {
   status_.roll_desired = roll_spline_.at(t);
   status_.pitch_desired = pitch_spline_.at(t);
   const std::array<int, 2> feet = stance_feet(status_.pair);
@@ -163,8 +195,26 @@ void TrotController::attitude_law(double t, const double* q, const double* v) {
   tau_ = tau_swing_ + status_.stance.tau;
 }
 
-const JointTorques& TrotController::update(double t, const double* q, const double* v,
-                                           const FeetForces& measured) {
+std::vector<sim::Parameter> OscTrotController::parameters() const {
+  TrotParameters copy = parameters_;
+  std::vector<sim::Parameter> list;
+  for (const auto& [name, value] : named_parameters(copy)) list.push_back({name, *value});
+  return list;
+}
+
+const VectorX& OscTrotController::update(const sim::ControllerInput& input) {
+  FeetForces measured = FeetForces::Zero();
+  if (uses_foot_forces()) {
+    if (input.foot_forces.cols() != kFeet)
+      throw std::invalid_argument("OscTrotController: " + name() + " needs the measured foot forces");
+    measured = input.foot_forces;
+  }
+  tau_out_ = torques(input.t, input.q.data(), input.v.data(), measured);
+  return tau_out_;
+}
+
+const JointTorques& OscTrotController::torques(double t, const double* q, const double* v,
+                                               const FeetForces& measured) {
   const int step = static_cast<int>(std::floor(t / parameters_.step_duration));
   if (step != step_) start_step(step, q);
   const Eigen::Map<const Eigen::Matrix<double, kNq, 1>> q_map(q);

@@ -1,12 +1,12 @@
-#include "rbdc/sim/trot.hpp"
+#include "rbdc/control/pd_trot.hpp"
 
-#include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
 #include "rbdc/sim/smoothstep.hpp"
 
-namespace rbdc::sim {
+namespace rbdc::control {
 namespace {
 
 constexpr double kTwoPi = 2 * M_PI;
@@ -17,58 +17,7 @@ Eigen::Vector2d bezier(const std::array<Eigen::Vector2d, 4>& P, double s) {
   return r * r * r * P[0] + 3 * r * r * s * P[1] + 3 * r * s * s * P[2] + s * s * s * P[3];
 }
 
-bool along_y(const Vector3& axis) { return std::abs(std::abs(axis.y()) - 1) < 1e-9; }
-
 }  // namespace
-
-std::vector<LegGeometry> leg_geometry(const Model& model) {
-  std::vector<LegGeometry> legs;
-  for (const Foot& foot : model.feet) {
-    const int knee = foot.body;
-    const int hip = knee > 0 ? model.parent[knee] : -1;
-    const int abad = hip > 0 ? model.parent[hip] : -1;
-    if (abad <= 0 || model.parent[abad] != 0)
-      throw std::invalid_argument("leg_geometry: foot '" + foot.name +
-                                  "' is not on the third body of a leg starting at the trunk");
-    // Joint origins and axes in trunk coordinates at q = 0 (body axes are E_Tᵀ of each joint).
-    const Joint& ja = model.joints[abad];
-    const Joint& jh = model.joints[hip];
-    const Joint& jk = model.joints[knee];
-    const Matrix3 R_abad = ja.rotation.transpose();
-    const Matrix3 R_hip = R_abad * jh.rotation.transpose();
-    const Matrix3 R_knee = R_hip * jk.rotation.transpose();
-    const Vector3 hip_origin = ja.translation + R_abad * jh.translation;
-    const Vector3 knee_origin = hip_origin + R_hip * jk.translation;
-    const Vector3 foot_point = knee_origin + R_knee * foot.offset;
-    const Vector3 hip_axis = R_hip * jh.axis, knee_axis = R_knee * jk.axis;
-    const Vector3 thigh = knee_origin - hip_origin, shank = foot_point - knee_origin;
-    if (!along_y(hip_axis) || !along_y(knee_axis) || std::abs(thigh.x()) > 1e-9 ||
-        std::abs(shank.x()) > 1e-9 || thigh.z() >= 0 || shank.z() >= 0)
-      throw std::invalid_argument("leg_geometry: leg of foot '" + foot.name +
-                                  "' is not a sagittal hip-knee leg hanging straight down at q = 0");
-    LegGeometry leg;
-    leg.abad_q = ja.q_index, leg.hip_q = jh.q_index, leg.knee_q = jk.q_index;
-    leg.abad_v = ja.v_index, leg.hip_v = jh.v_index, leg.knee_v = jk.v_index;
-    // A rotation about −y swings a hanging foot towards +x.
-    leg.hip_sign = -hip_axis.y();
-    leg.knee_sign = -knee_axis.y();
-    leg.thigh = -thigh.z();
-    leg.shank = -shank.z();
-    leg.hip_in_trunk = hip_origin;
-    legs.push_back(leg);
-  }
-  return legs;
-}
-
-Eigen::Vector2d leg_inverse_kinematics(const LegGeometry& leg, double x, double z) {
-  // Foot: x = l1 sin α + l2 sin(α + β), z = −l1 cos α − l2 cos(α + β) (α hip, β knee, from down).
-  const double l1 = leg.thigh, l2 = leg.shank;
-  const double reach = std::clamp(std::hypot(x, z), std::abs(l1 - l2) + 1e-9, l1 + l2 - 1e-9);
-  const double cos_knee = (reach * reach - l1 * l1 - l2 * l2) / (2 * l1 * l2);
-  const double beta = std::acos(std::clamp(cos_knee, -1.0, 1.0));  // > 0: knee behind the foot
-  const double alpha = std::atan2(x, -z) - std::atan2(l2 * std::sin(beta), l1 + l2 * std::cos(beta));
-  return {leg.hip_sign * alpha, leg.knee_sign * beta};
-}
 
 TrotGenerator::TrotGenerator(const GaitParameters& gait, std::vector<double> trot_offsets)
     : gait_(gait), offsets_(std::move(trot_offsets)), phase_(offsets_), phase_rate_(offsets_.size()) {
@@ -97,7 +46,7 @@ bool TrotGenerator::in_stance(int k) const {
 }
 
 Eigen::Vector2d TrotGenerator::foot_offset(int k) const {
-  const double ramp = smoothstep(0, gait_.ramp_time, t_);
+  const double ramp = sim::smoothstep(0, gait_.ramp_time, t_);
   const double L = ramp * gait_.step_length, H = ramp * gait_.step_height;
   const double s = std::fmod(phase_[k] + kTwoPi, kTwoPi) / kTwoPi;
   if (s < gait_.duty_factor)  // stance: straight line from front to back on the ground
@@ -120,8 +69,8 @@ std::vector<double> trot_offsets(const std::vector<LegGeometry>& legs) {
 
 }  // namespace
 
-TrotController::TrotController(const Model& model, const GaitParameters& gait, const PdGains& gains,
-                               double foot_radius)
+PdTrotController::PdTrotController(const Model& model, const GaitParameters& gait,
+                                   const PdGains& gains, double foot_radius)
     : model_(model),
       gait_(gait),
       gains_(gains),
@@ -133,7 +82,7 @@ TrotController::TrotController(const Model& model, const GaitParameters& gait, c
   desired_angles();
 }
 
-void TrotController::desired_angles() {
+void PdTrotController::desired_angles() {
   // Joint index j ≥ 1 sits at q[7 + j − 1]; desired angles are stored per joint (ab/ad stays 0).
   for (std::size_t k = 0; k < legs_.size(); ++k) {
     const LegGeometry& leg = legs_[k];
@@ -146,15 +95,28 @@ void TrotController::desired_angles() {
   }
 }
 
-const VectorX& TrotController::update(double dt, const VectorX& q, const VectorX& v) {
-  generator_.advance(dt);
+std::vector<sim::Parameter> PdTrotController::parameters() const {
+  return {{"period", gait_.period},
+          {"duty_factor", gait_.duty_factor},
+          {"step_length", gait_.step_length},
+          {"step_height", gait_.step_height},
+          {"stance_height", gait_.stance_height},
+          {"ramp_time", gait_.ramp_time},
+          {"coupling", gait_.coupling},
+          {"kp", gains_.kp},
+          {"kd", gains_.kd}};
+}
+
+const VectorX& PdTrotController::update(const sim::ControllerInput& input) {
+  generator_.advance(input.dt);
   desired_angles();
   // Eq. 44 (restoring sign): τ = k_p (q_d − q) − k_d q̇.
-  tau_ = gains_.kp * (q_desired_ - q.tail(q_desired_.size())) - gains_.kd * v.tail(tau_.size());
+  tau_ = gains_.kp * (q_desired_ - input.q.tail(q_desired_.size())) -
+         gains_.kd * input.v.tail(tau_.size());
   return tau_;
 }
 
-VectorX TrotController::standing_configuration() const {
+VectorX PdTrotController::initial_configuration() const {
   VectorX q = VectorX::Zero(model_.nq);
   q[3] = 1;  // identity quaternion
   q.tail(q_desired_.size()) = q_desired_;
@@ -163,4 +125,4 @@ VectorX TrotController::standing_configuration() const {
   return q;
 }
 
-}  // namespace rbdc::sim
+}  // namespace rbdc::control

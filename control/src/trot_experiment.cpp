@@ -1,9 +1,11 @@
 #include "rbdc/control/trot_experiment.hpp"
 
-#include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
+
+#include "rbdc/sim/run.hpp"
 
 namespace rbdc::control {
 namespace {
@@ -12,17 +14,24 @@ constexpr double kDeg = 180.0 / M_PI;
 constexpr double kFallHeight = 0.12;      // m, trunk origin
 constexpr double kFallAngle = 45.0 / kDeg;
 
-FeetForces measured_forces(sim::Simulator& simulator) {
-  FeetForces f;
-  const std::vector<sim::FootContact>& contacts = simulator.contacts();
-  for (int k = 0; k < kFeet; ++k) f.col(k) = contacts[k].force_W;
-  return f;
-}
-
 void write_trace_header(std::ofstream& out) {
   out << "t,x,y,z,vx,roll,pitch,yaw,roll_desired,pitch_desired,pair,attitude_control";
   for (const char* foot : {"LF", "RF", "LH", "RH"})
     out << ',' << foot << "_fx," << foot << "_fy," << foot << "_fz";
+  out << '\n';
+}
+
+void write_trace_row(std::ofstream& out, sim::Simulator& simulator, const ControllerStatus& s) {
+  const VectorX& q = simulator.q();
+  const VectorX& v = simulator.v();
+  const Matrix3 W_R_B = Eigen::Quaterniond(q[3], q[4], q[5], q[6]).normalized().toRotationMatrix();
+  const double vx = (W_R_B * v.segment<3>(3)).x();
+  out << simulator.time() << ',' << q[0] << ',' << q[1] << ',' << q[2] << ',' << vx << ','
+      << kDeg * s.attitude.roll << ',' << kDeg * s.attitude.pitch << ',' << kDeg * s.attitude.yaw << ','
+      << kDeg * s.roll_desired.angle << ',' << kDeg * s.pitch_desired.angle << ','
+      << (s.pair == StancePair::LfRh ? 0 : 1) << ',' << (s.attitude_control ? 1 : 0);
+  for (const sim::FootContact& c : simulator.contacts())
+    out << ',' << c.force_W.x() << ',' << c.force_W.y() << ',' << c.force_W.z();
   out << '\n';
 }
 
@@ -36,72 +45,58 @@ void AbsStats::add(double x) {
 
 ExperimentResult run_trot_experiment(const Model& model, sim::DynamicsModel& dynamics,
                                      const ExperimentOptions& options) {
-  using Clock = std::chrono::steady_clock;
   sim::Simulator simulator(dynamics, options.sim);
-  TrotController controller(model, options.trot, options.control, options.sim.contact.foot_radius);
-  simulator.reset(controller.standing_configuration(), VectorX::Zero(kNv));
+  OscTrotController controller(model, options.trot, options.control, options.sim.contact.foot_radius);
   std::ofstream trace;
   if (!options.trace_csv.empty()) {
     trace.open(options.trace_csv);
     if (!trace) throw std::runtime_error("cannot write the trace '" + options.trace_csv + "'");
     write_trace_header(trace);
   }
-  const double dt = options.sim.dt;
-  const long steps = std::lround(options.duration / dt);
-  const long control_every = std::max(1L, std::lround(options.control_period / dt));
-  const long trace_every = std::max(1L, std::lround(1e-3 / dt));
-  const long half = steps / 2;
-  double x_half = 0, t_half = 0;
+  sim::RunOptions run;
+  run.duration = options.duration;
+  run.control_period = options.control_period;
+  run.sample_interval = trace.is_open() ? 1e-3 : 0;
+
   ExperimentResult result;
-  JointTorques tau = JointTorques::Zero();
-  for (long n = 0; n < steps; ++n) {
-    const VectorX& q = simulator.q();
-    const VectorX& v = simulator.v();
-    if (n % control_every == 0) {
-      const FeetForces f = measured_forces(simulator);
-      const Clock::time_point start = Clock::now();
-      tau = controller.update(simulator.time(), q.data(), v.data(), f);
-      result.controller_seconds += std::chrono::duration<double>(Clock::now() - start).count();
-      ++result.controller_calls;
-      const ControllerStatus& s = controller.status();
-      if (s.attitude_control) {
-        result.roll_error.add(kDeg * (s.attitude.roll - s.roll_desired.angle));
-        result.pitch_error.add(kDeg * (s.attitude.pitch - s.pitch_desired.angle));
-        result.roll.add(kDeg * s.attitude.roll);
-        result.pitch.add(kDeg * s.attitude.pitch);
-      }
-    }
-    if (trace.is_open() && n % trace_every == 0) {
-      const ControllerStatus& s = controller.status();
-      const Matrix3 W_R_B = Eigen::Quaterniond(q[3], q[4], q[5], q[6]).normalized().toRotationMatrix();
-      const double vx = (W_R_B * v.segment<3>(3)).x();
-      trace << simulator.time() << ',' << q[0] << ',' << q[1] << ',' << q[2] << ',' << vx << ','
-            << kDeg * s.attitude.roll << ',' << kDeg * s.attitude.pitch << ',' << kDeg * s.attitude.yaw
-            << ',' << kDeg * s.roll_desired.angle << ',' << kDeg * s.pitch_desired.angle << ','
-            << (s.pair == StancePair::LfRh ? 0 : 1) << ',' << (s.attitude_control ? 1 : 0);
-      const FeetForces f = measured_forces(simulator);
-      for (int k = 0; k < kFeet; ++k) trace << ',' << f(0, k) << ',' << f(1, k) << ',' << f(2, k);
-      trace << '\n';
-    }
-    if (n == half) x_half = q[0], t_half = simulator.time();
-    simulator.step(tau);
-    const VectorX& q_next = simulator.q();
-    const TrunkAttitude attitude = trunk_attitude(q_next.data(), simulator.v().data());
-    const char* reason = nullptr;
-    if (!q_next.allFinite() || !simulator.v().allFinite()) reason = "non-finite state";
-    else if (q_next[2] < kFallHeight) reason = "trunk below 0.12 m";
-    else if (std::abs(attitude.roll) > kFallAngle) reason = "|roll| > 45 deg";
-    else if (std::abs(attitude.pitch) > kFallAngle) reason = "|pitch| > 45 deg";
-    if (reason) {
-      result.fell = true;
-      result.fall_time = simulator.time();
-      result.fall_reason = reason;
-      break;
-    }
-  }
+  const long total_steps = std::lround(options.duration / options.sim.dt);
+  const long half = total_steps / 2;
+  long steps = 0;
+  double x_half = 0, t_half = 0;
+  sim::RunCallbacks callbacks;
+  callbacks.updated = [&](sim::Simulator&) {
+    const ControllerStatus& s = controller.status();
+    if (!s.attitude_control) return;
+    result.roll_error.add(kDeg * (s.attitude.roll - s.roll_desired.angle));
+    result.pitch_error.add(kDeg * (s.attitude.pitch - s.pitch_desired.angle));
+    result.roll.add(kDeg * s.attitude.roll);
+    result.pitch.add(kDeg * s.attitude.pitch);
+  };
+  // A row per millisecond of a state the controller acted on: none for the final state.
+  callbacks.sample = [&](sim::Simulator& s) {
+    if (steps < total_steps) write_trace_row(trace, s, controller.status());
+  };
+  // After each step: the half-way position for the mean speed, then the fall criteria.
+  callbacks.stop = [&](sim::Simulator& s) -> const char* {
+    if (++steps == half) x_half = s.q()[0], t_half = s.time();
+    const TrunkAttitude attitude = trunk_attitude(s.q().data(), s.v().data());
+    if (s.q()[2] < kFallHeight) return "trunk below 0.12 m";
+    if (std::abs(attitude.roll) > kFallAngle) return "|roll| > 45 deg";
+    if (std::abs(attitude.pitch) > kFallAngle) return "|pitch| > 45 deg";
+    return nullptr;
+  };
+  const sim::RunSummary summary = sim::run(simulator, controller, run, callbacks);
+
+  result.controller_seconds = summary.controller_seconds;
+  result.controller_calls = summary.controller_calls;
   result.simulated = simulator.time();
-  if (!result.fell && result.simulated > t_half)
+  if (!summary.finite || summary.stop_reason) {
+    result.fell = true;
+    result.fall_time = simulator.time();
+    result.fall_reason = summary.finite ? summary.stop_reason : "non-finite state";
+  } else if (result.simulated > t_half) {
     result.mean_speed = (simulator.q()[0] - x_half) / (result.simulated - t_half);
+  }
   return result;
 }
 

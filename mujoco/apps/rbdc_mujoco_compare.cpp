@@ -7,12 +7,14 @@
 #include <fstream>
 #include <string>
 
-#include "rbdc/sim/command_line.hpp"
-#include "rbdc/sim/mujoco_trot.hpp"
+#include "rbdc/control/command_line.hpp"
+#include "rbdc/mujoco/mujoco_run.hpp"
 #include "rbdc/sim/robot.hpp"
 #include "rbdc/sim/trajectory_csv.hpp"
 
 using namespace rbdc;
+using namespace rbdc::control;
+using namespace rbdc::mujoco;
 using namespace rbdc::sim;
 
 namespace {
@@ -20,11 +22,11 @@ namespace {
 Trajectory run_ours(const Model& model, const CommandLine& cli, double& wall_seconds) {
   std::unique_ptr<DynamicsModel> dynamics = make_runtime_dynamics(model);
   Simulator simulator(*dynamics, cli.sim);
-  TrotController controller(model, cli.gait, cli.gains, cli.sim.contact.foot_radius);
+  PdTrotController controller(model, cli.gait, cli.gains, cli.sim.contact.foot_radius);
   Trajectory trajectory;
-  const RunSummary summary = run_trot(simulator, controller, cli.run, [&](Simulator& s) {
-    trajectory.push_back({s.time(), s.q(), s.v(), s.contacts()});
-  });
+  RunCallbacks callbacks;
+  callbacks.sample = [&](Simulator& s) { trajectory.push_back({s.time(), s.q(), s.v(), s.contacts()}); };
+  const RunSummary summary = run(simulator, controller, cli.run, callbacks);
   if (!summary.finite) throw std::runtime_error("our simulation became non-finite");
   wall_seconds = summary.wall_seconds;
   return trajectory;
@@ -36,19 +38,19 @@ double time_ours(const Model& model, const CommandLine& cli, std::string& which)
   if (!dynamics) dynamics = make_runtime_dynamics(model);
   which = dynamics->name();
   Simulator simulator(*dynamics, cli.sim);
-  TrotController controller(model, cli.gait, cli.gains, cli.sim.contact.foot_radius);
+  PdTrotController controller(model, cli.gait, cli.gains, cli.sim.contact.foot_radius);
   RunOptions quiet = cli.run;
   quiet.progress = false;
   quiet.sample_interval = 0;
-  return run_trot(simulator, controller, quiet).wall_seconds;
+  return run(simulator, controller, quiet).wall_seconds;
 }
 
 double time_mujoco(const Model& model, const mjModel* m, const CommandLine& cli) {
-  TrotController controller(model, cli.gait, cli.gains, cli.sim.contact.foot_radius);
+  PdTrotController controller(model, cli.gait, cli.gains, cli.sim.contact.foot_radius);
   RunOptions quiet = cli.run;
   quiet.progress = false;
   quiet.sample_interval = 0;
-  return run_mujoco_trot(model, m, controller, quiet).wall_seconds;
+  return run_mujoco(model, m, controller, quiet).wall_seconds;
 }
 
 void write_csv(const std::string& path, const Model& model, const Trajectory& run) {
@@ -85,8 +87,8 @@ int main(int argc, char** argv) {
                  cli.sim.dt, mj_versionString());
     double wall_ours_runtime = 0;
     const Trajectory ours = run_ours(balanced, cli, wall_ours_runtime);
-    TrotController mujoco_controller(balanced, cli.gait, cli.gains, cli.sim.contact.foot_radius);
-    const MujocoRun theirs = run_mujoco_trot(balanced, m.get(), mujoco_controller, cli.run);
+    PdTrotController mujoco_controller(balanced, cli.gait, cli.gains, cli.sim.contact.foot_radius);
+    const MujocoRun theirs = run_mujoco(balanced, m.get(), mujoco_controller, cli.run);
     std::string fastest;
     const double wall_ours_fast = time_ours(original, cli, fastest);
     const double wall_mujoco = time_mujoco(balanced, m.get(), cli);
@@ -150,7 +152,7 @@ int main(int argc, char** argv) {
     std::ifstream shown(cli.out + "/comparison.md");
     std::printf("%s", std::string(std::istreambuf_iterator<char>(shown), {}).c_str());
     if (cli.plots) {
-      const std::string command = "/usr/bin/python3 \"" RBDC_SOURCE_DIR "/sim/plot_compare.py\" \"" + cli.out + "\"";
+      const std::string command = "/usr/bin/python3 \"" RBDC_SOURCE_DIR "/mujoco/plot_compare.py\" \"" + cli.out + "\"";
       if (std::system(command.c_str()) != 0) {
         std::fprintf(stderr, "rbdc-mujoco-compare: plotting failed (%s)\n", command.c_str());
         return 3;

@@ -1,15 +1,16 @@
+#include "rbdc/mujoco/comparison.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "rbdc/sim/orientation.hpp"
-#include "rbdc/sim/trajectory.hpp"
 
-namespace rbdc::sim {
+namespace rbdc::mujoco {
 namespace {
 
 Vector3 roll_pitch_yaw(const VectorX& q) {
-  const Vector3 xi = zyx_from_rotation(rotation_from_quaternion(q.segment<4>(3)));
+  const Vector3 xi = sim::zyx_from_rotation(sim::rotation_from_quaternion(q.segment<4>(3)));
   return {xi[2], xi[1], xi[0]};
 }
 
@@ -59,4 +60,4 @@ ComparisonMetrics compare_trajectories(const Trajectory& ours, const Trajectory&
   return m;
 }
 
-}  // namespace rbdc::sim
+}  // namespace rbdc::mujoco

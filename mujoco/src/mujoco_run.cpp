@@ -1,4 +1,4 @@
-#include "rbdc/sim/mujoco_trot.hpp"
+#include "rbdc/mujoco/mujoco_run.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,7 +7,9 @@
 
 #include "rbdc/sim/orientation.hpp"
 
-namespace rbdc::sim {
+namespace rbdc::mujoco {
+
+using sim::FootContact;
 
 void mujoco_state(const Model& model, const mjcf::MujocoIndex& index, const mjData* d, VectorX& q,
                   VectorX& v) {
@@ -15,7 +17,7 @@ void mujoco_state(const Model& model, const mjcf::MujocoIndex& index, const mjDa
   const mjtNum* root_q = d->qpos + index.qpos[0];
   const mjtNum* root_v = d->qvel + index.dof[0];
   q.head<7>() = Eigen::Map<const Eigen::Matrix<double, 7, 1>>(root_q);
-  const Matrix3 W_R_0 = rotation_from_quaternion(q.segment<4>(3));
+  const Matrix3 W_R_0 = sim::rotation_from_quaternion(q.segment<4>(3));
   v.head<3>() = Eigen::Map<const Vector3>(root_v + 3);
   v.segment<3>(3) = W_R_0.transpose() * Eigen::Map<const Vector3>(root_v);
   for (int i = 1; i < model.nb; ++i) {
@@ -24,7 +26,8 @@ void mujoco_state(const Model& model, const mjcf::MujocoIndex& index, const mjDa
   }
 }
 
-std::vector<FootContact> mujoco_contacts(const mjModel* m, const mjData* d, const mjcf::MujocoIndex& index) {
+std::vector<FootContact> mujoco_contacts(const mjModel* m, const mjData* d,
+                                         const mjcf::MujocoIndex& index) {
   std::vector<FootContact> contacts(index.foot_geom.size());
   for (int c = 0; c < d->ncon; ++c) {
     const mjContact& con = d->contact[c];
@@ -46,13 +49,13 @@ std::vector<FootContact> mujoco_contacts(const mjModel* m, const mjData* d, cons
   return contacts;
 }
 
-MujocoRun run_mujoco_trot(const Model& model, const mjModel* m, TrotController& controller,
-                          const RunOptions& options) {
+MujocoRun run_mujoco(const Model& model, const mjModel* m, sim::Controller& controller,
+                     const sim::RunOptions& options) {
   using Clock = std::chrono::steady_clock;
   const mjcf::MujocoIndex index = mjcf::index_mjmodel(model, m);
   mjcf::MjDataPtr data(mj_makeData(m));
   mjData* d = data.get();
-  const VectorX q0 = controller.standing_configuration();
+  const VectorX q0 = controller.initial_configuration();
   for (int j = 0; j < 7; ++j) d->qpos[index.qpos[0] + j] = q0[j];
   for (int i = 1; i < model.nb; ++i) d->qpos[index.qpos[i]] = q0[model.joints[i].q_index];
   mj_forward(m, d);
@@ -68,11 +71,13 @@ MujocoRun run_mujoco_trot(const Model& model, const mjModel* m, TrotController& 
     run.trajectory.push_back({d->time, q, v, mujoco_contacts(m, d, index)});
   };
   if (sample_every) sample();
+  Matrix3X forces;  // stays empty for controllers that do not read them
   double wall = 0;
   for (long n = 1; n <= steps; ++n) {
     const Clock::time_point start = Clock::now();
     mujoco_state(model, index, d, q, v);
-    const VectorX& tau = controller.update(dt, q, v);
+    if (controller.uses_foot_forces()) sim::world_forces(mujoco_contacts(m, d, index), forces);
+    const VectorX& tau = controller.update({d->time, dt, q, v, forces});
     for (int i = 1; i < model.nb; ++i) d->ctrl[index.actuator[i]] = tau[i - 1];
     mj_step(m, d);
     wall += std::chrono::duration<double>(Clock::now() - start).count();
@@ -85,4 +90,4 @@ MujocoRun run_mujoco_trot(const Model& model, const mjModel* m, TrotController& 
   return run;
 }
 
-}  // namespace rbdc::sim
+}  // namespace rbdc::mujoco

@@ -1,12 +1,9 @@
 #!/bin/sh
 # Regenerates results/sim/: the MuJoCo comparison (table, summary CSV, figures), the speed profile of
-# rbdc-sim and the Table I unit check. Usage: sim/make_results.sh [BUILD_DIR]   (default: build)
+# rbdc-sim and the Table I unit check. Usage: results/scripts/sim.sh [BUILD_DIR]   (default: build)
 set -eu
-root=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:-"$root/build"}
+. "$(dirname "$0")/common.sh"
 out="$root/results/sim"
-series=$(mktemp -d)
-trap 'rm -rf "$series"' EXIT
 mkdir -p "$out"
 
 echo "== rbdc-sim, 10 s trot, Heun, dt 1e-4 s, generated dynamics, per-phase profile" > "$out/speed.txt"
@@ -21,7 +18,7 @@ echo "== Table I read with the penetration in mm (our default)" >> "$out/units.t
 "$build/bin/rbdc-sim" --quiet >> "$out/units.txt"
 
 # Full time series stay out of git (tens of MB); the table, summary and figures are committed.
-"$build/bin/rbdc-mujoco-compare" --quiet --out "$series"
-cp "$series/comparison.md" "$series/comparison_summary.csv" "$series/trunk_pose.png" \
-   "$series/lf_contact.png" "$out/"
+"$build/bin/rbdc-mujoco-compare" --quiet --out "$scratch"
+cp "$scratch/comparison.md" "$scratch/comparison_summary.csv" "$scratch/trunk_pose.png" \
+   "$scratch/lf_contact.png" "$out/"
 echo "results written to $out"

@@ -42,19 +42,6 @@ Data::Data(const Model& model) : M_llt(model.nv) {
   zeta.assign(nb, Vector6::Zero());
   B.assign(nb, Matrix6X::Zero(6, n_joints));
   osc.JbarT = Matrix6X::Zero(6, n_joints);
-  osc_reference.JbarT = Matrix6X::Zero(6, n_joints);
-
-  M_inv = MatrixX::Zero(nv, nv);
-  J_t = Matrix6X::Zero(6, nv);
-  J_t_M_inv = Matrix6X::Zero(6, nv);
-  J_t_M_inv_N_cT = Matrix6X::Zero(6, nv);
-  JbarT_full = Matrix6X::Zero(6, nv);
-  J_c = MatrixX::Zero(3 * n_feet, nv);
-  J_c_M_inv = MatrixX::Zero(3 * n_feet, nv);
-  A_c = MatrixX::Zero(3 * n_feet, 3 * n_feet);
-  N_cT = MatrixX::Zero(nv, nv);
-  contact_bias = VectorX::Zero(3 * n_feet);
-  work_nv = VectorX::Zero(nv);
 }
 
 }  // namespace rbdc

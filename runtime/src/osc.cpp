@@ -133,16 +133,34 @@ const OscQuantities& recursion_outputs(const Model& model, Data& data) {
   return data.osc;
 }
 
-/// H⁻¹ into data.M_inv by the preallocated Cholesky factor; J_t = [1₆ 0] into data.J_t.
-void invert_mass_matrix_and_set_task_jacobian(Data& data) {
+/// H⁻¹ into reference.M_inv by Data's preallocated Cholesky factor; J_t = [1₆ 0] into
+/// reference.J_t.
+void invert_mass_matrix_and_set_task_jacobian(Data& data, OscReferenceData& reference) {
   data.M_llt.compute(data.M);
-  data.M_inv.setIdentity();
-  data.M_llt.solveInPlace(data.M_inv);
-  data.J_t.setZero();
-  data.J_t.leftCols<6>().setIdentity();
+  reference.M_inv.setIdentity();
+  data.M_llt.solveInPlace(reference.M_inv);
+  reference.J_t.setZero();
+  reference.J_t.leftCols<6>().setIdentity();
 }
 
 }  // namespace
+
+OscReferenceData::OscReferenceData(const Model& model) {
+  const Eigen::Index nv = model.nv;
+  const Eigen::Index n_feet = static_cast<Eigen::Index>(model.feet.size());
+  result.JbarT = Matrix6X::Zero(6, model.num_joints());
+  M_inv = MatrixX::Zero(nv, nv);
+  J_t = Matrix6X::Zero(6, nv);
+  J_t_M_inv = Matrix6X::Zero(6, nv);
+  J_t_M_inv_N_cT = Matrix6X::Zero(6, nv);
+  JbarT_full = Matrix6X::Zero(6, nv);
+  J_c = MatrixX::Zero(3 * n_feet, nv);
+  J_c_M_inv = MatrixX::Zero(3 * n_feet, nv);
+  A_c = MatrixX::Zero(3 * n_feet, 3 * n_feet);
+  N_cT = MatrixX::Zero(nv, nv);
+  contact_bias = VectorX::Zero(3 * n_feet);
+  work_nv = VectorX::Zero(nv);
+}
 
 double default_ground_mass(const Model& model) {
   double m_min = std::numeric_limits<double>::infinity();
@@ -185,8 +203,9 @@ const OscQuantities& osc_closed_chain(const Model& model, Data& data, const Vect
   return osc_closed_chain(model, data, q, v, contact_feet, default_ground_mass(model));
 }
 
-const OscQuantities& osc_closed_form(const Model& model, Data& data, const VectorRef& q,
-                                     const VectorRef& v, const Matrix3X& f_feet_world) {
+const OscQuantities& osc_closed_form(const Model& model, Data& data, OscReferenceData& reference,
+                                     const VectorRef& q, const VectorRef& v,
+                                     const Matrix3X& f_feet_world) {
   detail::check_qv("osc_closed_form", model, data, q, v);
   detail::check_feet_matrix("osc_closed_form", "f_feet_world", model, f_feet_world);
   check_trunk_task("osc_closed_form", model);
@@ -194,23 +213,24 @@ const OscQuantities& osc_closed_form(const Model& model, Data& data, const Vecto
   quadratic_velocity_terms(model, data, q, v);
   gravity_terms(model, data, q);
   feet_force_terms(model, data, q, f_feet_world);  // τ_e = J_cᵀ F_c (App. B of paper 000)
-  invert_mass_matrix_and_set_task_jacobian(data);
-  OscQuantities& out = data.osc_reference;
-  data.J_t_M_inv.noalias() = data.J_t * data.M_inv;
+  invert_mass_matrix_and_set_task_jacobian(data, reference);
+  OscQuantities& out = reference.result;
+  reference.J_t_M_inv.noalias() = reference.J_t * reference.M_inv;
   // Λ_t = (J_t H⁻¹ J_tᵀ)⁻¹                                              (Eq. 10)
-  const Matrix6 Lambda_inv = data.J_t_M_inv * data.J_t.transpose();
+  const Matrix6 Lambda_inv = reference.J_t_M_inv * reference.J_t.transpose();
   out.Lambda = Lambda_inv.inverse();
   // J̄_tᵀ = Λ_t J_t H⁻¹                                                  (Eq. 11)
-  data.JbarT_full.noalias() = out.Lambda * data.J_t_M_inv;
-  out.JbarT = data.JbarT_full.rightCols(model.num_joints());  // Sᵀ picks the actuated columns
+  reference.JbarT_full.noalias() = out.Lambda * reference.J_t_M_inv;
+  out.JbarT = reference.JbarT_full.rightCols(model.num_joints());  // Sᵀ picks the actuated columns
   // μ_t + ρ_t - J̄_tᵀ J_cᵀ F_c = J̄_tᵀ (C + G - τ_e); J̇_t = 0        (Eqs. 12, 13, 27)
-  data.work_nv = data.c + data.g - data.tau_e;
-  out.b.noalias() = data.JbarT_full * data.work_nv;
+  reference.work_nv = data.c + data.g - data.tau_e;
+  out.b.noalias() = reference.JbarT_full * reference.work_nv;
   return out;
 }
 
 const OscQuantities& osc_closed_form_constrained(const Model& model, Data& data,
-                                                 const VectorRef& q, const VectorRef& v,
+                                                 OscReferenceData& reference, const VectorRef& q,
+                                                 const VectorRef& v,
                                                  const std::vector<int>& contact_feet) {
   detail::check_qv("osc_closed_form_constrained", model, data, q, v);
   check_trunk_task("osc_closed_form_constrained", model);
@@ -220,43 +240,44 @@ const OscQuantities& osc_closed_form_constrained(const Model& model, Data& data,
   gravity_terms(model, data, q);
   feet_jacobian(model, data, q);
   feet_bias_accelerations(model, data, q, v);
-  invert_mass_matrix_and_set_task_jacobian(data);
-  OscQuantities& out = data.osc_reference;
+  invert_mass_matrix_and_set_task_jacobian(data, reference);
+  OscQuantities& out = reference.result;
 
   // J_c and J̇_c v: the world rows of the feet in contact (Eq. 16)
   const Eigen::Index m = 3 * static_cast<Eigen::Index>(contact_feet.size());
   for (size_t r = 0; r < contact_feet.size(); ++r) {
     const Eigen::Index k = contact_feet[r];
-    data.J_c.middleRows<3>(3 * static_cast<Eigen::Index>(r)) = data.J.middleRows<3>(3 * k);
-    data.contact_bias.segment<3>(3 * static_cast<Eigen::Index>(r)) = data.feet_bias_acceleration.col(k);
+    const Eigen::Index row = 3 * static_cast<Eigen::Index>(r);
+    reference.J_c.middleRows<3>(row) = data.J.middleRows<3>(3 * k);
+    reference.contact_bias.segment<3>(row) = data.feet_bias_acceleration.col(k);
   }
-  const auto J_c = data.J_c.topRows(m);
-  auto JbarT_c = data.J_c_M_inv.topRows(m);
-  auto Lambda_c_Jdot_v = data.contact_bias.head(m);
+  const auto J_c = reference.J_c.topRows(m);
+  auto JbarT_c = reference.J_c_M_inv.topRows(m);
+  auto Lambda_c_Jdot_v = reference.contact_bias.head(m);
   // Λ_c⁻¹ = J_c H⁻¹ J_cᵀ, factorised in place (no allocation)
-  JbarT_c.noalias() = J_c * data.M_inv;
-  Eigen::Ref<MatrixX> A_c = data.A_c.topLeftCorner(m, m);
+  JbarT_c.noalias() = J_c * reference.M_inv;
+  Eigen::Ref<MatrixX> A_c = reference.A_c.topLeftCorner(m, m);
   A_c.noalias() = JbarT_c * J_c.transpose();
   Eigen::LLT<Eigen::Ref<MatrixX>> A_c_llt(A_c);
   // J̄_cᵀ = Λ_c J_c H⁻¹ and Λ_c J̇_c v
   A_c_llt.solveInPlace(JbarT_c);
   A_c_llt.solveInPlace(Lambda_c_Jdot_v);
   // N_cᵀ = 1 - J_cᵀ J̄_cᵀ                                               (after Eq. 17)
-  data.N_cT.setIdentity();
-  data.N_cT.noalias() -= J_c.transpose() * JbarT_c;
+  reference.N_cT.setIdentity();
+  reference.N_cT.noalias() -= J_c.transpose() * JbarT_c;
   // Λ̃_t = (J_t H⁻¹ N_cᵀ J_tᵀ)⁻¹                                         (Eq. 20)
-  data.J_t_M_inv.noalias() = data.J_t * data.M_inv;
-  data.J_t_M_inv_N_cT.noalias() = data.J_t_M_inv * data.N_cT;
-  const Matrix6 Lambda_inv = data.J_t_M_inv_N_cT * data.J_t.transpose();
+  reference.J_t_M_inv.noalias() = reference.J_t * reference.M_inv;
+  reference.J_t_M_inv_N_cT.noalias() = reference.J_t_M_inv * reference.N_cT;
+  const Matrix6 Lambda_inv = reference.J_t_M_inv_N_cT * reference.J_t.transpose();
   out.Lambda = Lambda_inv.inverse();
   // J̃_tᵀ = Λ̃_t J_t H⁻¹ N_cᵀ                                             (Eq. 22)
-  data.JbarT_full.noalias() = out.Lambda * data.J_t_M_inv_N_cT;
-  out.JbarT = data.JbarT_full.rightCols(model.num_joints());
+  reference.JbarT_full.noalias() = out.Lambda * reference.J_t_M_inv_N_cT;
+  out.JbarT = reference.JbarT_full.rightCols(model.num_joints());
   // b̃_t = μ̃_t + ρ̃_t = J̃_tᵀ (C + G) + Λ̃_t J_t H⁻¹ J_cᵀ Λ_c J̇_c v       (Eqs. 25-26)
-  data.work_nv.noalias() = J_c.transpose() * Lambda_c_Jdot_v;
-  const Vector6 contact_term = out.Lambda * (data.J_t_M_inv * data.work_nv);
-  data.work_nv = data.c + data.g;
-  out.b.noalias() = data.JbarT_full * data.work_nv;
+  reference.work_nv.noalias() = J_c.transpose() * Lambda_c_Jdot_v;
+  const Vector6 contact_term = out.Lambda * (reference.J_t_M_inv * reference.work_nv);
+  reference.work_nv = data.c + data.g;
+  out.b.noalias() = reference.JbarT_full * reference.work_nv;
   out.b += contact_term;
   return out;
 }

@@ -63,4 +63,9 @@ FootContact foot_contact(const ContactParameters& p, const GroundPlane& ground, 
   return c;
 }
 
+void world_forces(const std::vector<FootContact>& contacts, Matrix3X& f) {
+  f.resize(3, static_cast<Eigen::Index>(contacts.size()));
+  for (std::size_t k = 0; k < contacts.size(); ++k) f.col(static_cast<Eigen::Index>(k)) = contacts[k].force_W;
+}
+
 }  // namespace rbdc::sim

@@ -8,7 +8,7 @@
 #include "mini_cheetah/stance_osc.hpp"
 #include "rbdc/bias_terms.hpp"
 #include "rbdc/control/operational_space_law.hpp"
-#include "rbdc/control/trot_controller.hpp"
+#include "rbdc/control/osc_trot.hpp"
 #include "rbdc/control/trunk_dynamics.hpp"
 #include "rbdc/crba.hpp"
 #include "rbdc/jacobian.hpp"
@@ -44,8 +44,8 @@ Vector6 constrained_trunk_acceleration(const Model& model, const VectorX& q, con
 class StanceTorquesTest : public ::testing::Test {
  protected:
   StanceTorquesTest() : model_(sim::load_robot(sim::default_urdf())) {
-    TrotController controller(model_, TrotParameters{}, StanceControl::OperationalSpace, 0.02);
-    q_ = controller.standing_configuration();
+    OscTrotController controller(model_, TrotParameters{}, StanceControl::OperationalSpace, 0.02);
+    q_ = controller.initial_configuration();
     q_[7] = 0.05, q_[11] = -0.04, q_[16] = 0.03;  // not quite symmetric
     v_ = VectorX::Zero(kNv);  // at rest: the recursion assumes feet at rest (Eq. 16)
   }

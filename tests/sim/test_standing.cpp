@@ -5,14 +5,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rbdc/control/pd_trot.hpp"
 #include "rbdc/model_builder.hpp"
 #include "rbdc/sim/robot.hpp"
+#include "rbdc/sim/run.hpp"
 #include "rbdc/sim/simulator.hpp"
-#include "rbdc/sim/trot.hpp"
-#include "rbdc/sim/trot_run.hpp"
 
 using namespace rbdc;
 using namespace rbdc::sim;
+using rbdc::control::GaitParameters;
+using rbdc::control::PdGains;
+using rbdc::control::PdTrotController;
 
 // With Table I's stiction velocity (v_s = 0.1 mm/s) the friction law is far too stiff for an explicit
 // step of 1e-4 s on the light shank (about 0.01 kg at the foot), so stance feet chatter inside the
@@ -28,18 +31,20 @@ TEST(Standing, SettlesAndFeetCarryTheWeight) {
   GaitParameters stand;  // zero stride: the generator holds the stance pose
   stand.step_length = 0;
   stand.step_height = 0;
-  TrotController controller(model, stand, PdGains{}, options.contact.foot_radius);
-  RunOptions run;
-  run.duration = 3.0;
-  run.sample_interval = 1e-4;
+  PdTrotController controller(model, stand, PdGains{}, options.contact.foot_radius);
+  RunOptions run_options;
+  run_options.duration = 3.0;
+  run_options.sample_interval = 1e-4;
   double vertical = 0, trunk_speed = 0;
   int samples = 0;
-  ASSERT_TRUE(run_trot(sim, controller, run, [&](Simulator& s) {
-                if (s.time() < 2.5) return;  // average over the last 0.5 s
-                for (const FootContact& c : s.contacts()) vertical += c.force_W.z();
-                trunk_speed = std::max(trunk_speed, s.v().head<6>().norm());
-                ++samples;
-              }).finite);
+  RunCallbacks callbacks;
+  callbacks.sample = [&](Simulator& s) {
+    if (s.time() < 2.5) return;  // average over the last 0.5 s
+    for (const FootContact& c : s.contacts()) vertical += c.force_W.z();
+    trunk_speed = std::max(trunk_speed, s.v().head<6>().norm());
+    ++samples;
+  };
+  ASSERT_TRUE(run(sim, controller, run_options, callbacks).finite);
   vertical /= samples;
   for (const FootContact& c : sim.contacts()) EXPECT_TRUE(c.active);
 

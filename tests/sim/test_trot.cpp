@@ -1,11 +1,15 @@
 // The 10 s trot of paper 000 Section 6.2 on the fastest dynamics of this build.
 #include <gtest/gtest.h>
 
+#include "rbdc/control/pd_trot.hpp"
 #include "rbdc/sim/robot.hpp"
-#include "rbdc/sim/trot_run.hpp"
+#include "rbdc/sim/run.hpp"
 
 using namespace rbdc;
 using namespace rbdc::sim;
+using rbdc::control::GaitParameters;
+using rbdc::control::PdGains;
+using rbdc::control::PdTrotController;
 
 namespace {
 
@@ -21,10 +25,10 @@ TEST(Trot, TenSecondsForwardWithoutFallingOrNaN) {
   const auto dynamics = fastest(model);
   SimOptions options;
   Simulator sim(*dynamics, options);
-  TrotController controller(model, GaitParameters{}, PdGains{}, options.contact.foot_radius);
-  RunOptions run;
-  run.sample_interval = 0;
-  const RunSummary summary = run_trot(sim, controller, run);
+  PdTrotController controller(model, GaitParameters{}, PdGains{}, options.contact.foot_radius);
+  RunOptions run_options;
+  run_options.sample_interval = 0;
+  const RunSummary summary = run(sim, controller, run_options);
   ASSERT_TRUE(summary.finite);
   EXPECT_EQ(summary.steps, 100000);
   // Trunk box half-height is 0.05 m: its underside stays well above the ground.
@@ -44,16 +48,16 @@ TEST(Trot, EulerAndQuaternionStatesAgree) {
   SimOptions quaternion, euler;
   quaternion.contact_enabled = euler.contact_enabled = false;
   euler.state = StateKind::Euler;
-  RunOptions run;
-  run.duration = 0.5;
-  run.sample_interval = 0;
+  RunOptions run_options;
+  run_options.duration = 0.5;
+  run_options.sample_interval = 0;
   Simulator a(*dynamics, quaternion);
-  TrotController ca(model, GaitParameters{}, PdGains{}, quaternion.contact.foot_radius);
-  ASSERT_TRUE(run_trot(a, ca, run).finite);
+  PdTrotController ca(model, GaitParameters{}, PdGains{}, quaternion.contact.foot_radius);
+  ASSERT_TRUE(run(a, ca, run_options).finite);
   const auto dynamics_b = fastest(model);
   Simulator b(*dynamics_b, euler);
-  TrotController cb(model, GaitParameters{}, PdGains{}, euler.contact.foot_radius);
-  ASSERT_TRUE(run_trot(b, cb, run).finite);
+  PdTrotController cb(model, GaitParameters{}, PdGains{}, euler.contact.foot_radius);
+  ASSERT_TRUE(run(b, cb, run_options).finite);
   EXPECT_GT(a.v().tail(12).norm(), 0.5);  // the legs did move
   EXPECT_LT((a.q() - b.q()).norm(), 1e-6);
   EXPECT_LT((a.v() - b.v()).norm(), 1e-5);
@@ -61,9 +65,9 @@ TEST(Trot, EulerAndQuaternionStatesAgree) {
 
 TEST(Trot, IntegratorsAgreeOnAShortRun) {
   const Model model = load_robot(default_urdf());
-  RunOptions run;
-  run.duration = 0.3;
-  run.sample_interval = 0;
+  RunOptions run_options;
+  run_options.duration = 0.3;
+  run_options.sample_interval = 0;
   std::vector<VectorX> finals;
   for (Integrator integrator : {Integrator::RK4, Integrator::Heun, Integrator::SemiImplicitEuler}) {
     const auto dynamics = fastest(model);
@@ -71,8 +75,8 @@ TEST(Trot, IntegratorsAgreeOnAShortRun) {
     options.integrator = integrator;
     options.contact_enabled = false;
     Simulator sim(*dynamics, options);
-    TrotController controller(model, GaitParameters{}, PdGains{}, options.contact.foot_radius);
-    ASSERT_TRUE(run_trot(sim, controller, run).finite);
+    PdTrotController controller(model, GaitParameters{}, PdGains{}, options.contact.foot_radius);
+    ASSERT_TRUE(run(sim, controller, run_options).finite);
     finals.push_back(sim.q());
   }
   std::printf("|heun - rk4| = %.2e, |semi-implicit - rk4| = %.2e\n", (finals[1] - finals[0]).norm(),

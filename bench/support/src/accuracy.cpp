@@ -76,8 +76,10 @@ std::vector<Quad> runtime_output(const rbdc::Model& model, rbdc::Data& data, Qua
       return flat(rbdc::forward_dynamics(model, data, s.q, s.v, s.tau, s.f));
     case Quantity::osc_open_chain: return osc_flat(rbdc::osc_open_chain(model, data, s.q, s.v, s.f));
     case Quantity::osc_closed_chain:
-      if (ground_mass <= 0)
-        return osc_flat(rbdc::osc_closed_form_constrained(model, data, s.q, s.v, all_feet));
+      if (ground_mass <= 0) {
+        rbdc::OscReferenceData closed_form(model);  // not timed: sized per call
+        return osc_flat(rbdc::osc_closed_form_constrained(model, data, closed_form, s.q, s.v, all_feet));
+      }
       return osc_flat(rbdc::osc_closed_chain(model, data, s.q, s.v, all_feet, ground_mass));
   }
   return {};

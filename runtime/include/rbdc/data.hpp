@@ -68,20 +68,7 @@ struct Data {
   std::vector<Vector6> zeta;     ///< velocity-product accelerations ζ_i (Eq. 29)
   std::vector<Matrix6X> B;       ///< B_ik: column k-1 holds joint k's coupling (6 × n_joints)
   OscQuantities osc;             ///< output of osc_open_chain / osc_closed_chain
-  OscQuantities osc_reference;   ///< output of the closed-form references (Eqs. 10-13, 20-26)
-
-  // --- Closed-form reference workspace -----------------------------------------------------------
-  MatrixX M_inv;                 ///< H⁻¹ (nv × nv)
-  Matrix6X J_t;                  ///< task Jacobian [1₆ 0] (6 × nv)
-  Matrix6X J_t_M_inv;            ///< J_t H⁻¹ (6 × nv)
-  Matrix6X J_t_M_inv_N_cT;       ///< J_t H⁻¹ N_cᵀ (6 × nv)
-  Matrix6X JbarT_full;           ///< J̄_tᵀ over all of v (6 × nv)
-  MatrixX J_c;                   ///< contact Jacobian rows, world (top 3·n_contacts rows used)
-  MatrixX J_c_M_inv;             ///< J_c H⁻¹, then J̄_cᵀ = Λ_c J_c H⁻¹ (top rows used)
-  MatrixX A_c;                   ///< Λ_c⁻¹ = J_c H⁻¹ J_cᵀ (top-left block used)
-  MatrixX N_cT;                  ///< N_cᵀ = 1 - J_cᵀ J̄_cᵀ (nv × nv)
-  VectorX contact_bias;          ///< J̇_c v, then Λ_c J̇_c v (top rows used)
-  VectorX work_nv;               ///< an nv-vector of scratch
+  // The closed-form references keep their own workspace: OscReferenceData in rbdc/osc.hpp.
 };
 
 }  // namespace rbdc

@@ -1,20 +1,20 @@
-// Command-line options shared by rbdc-sim and rbdc-mujoco-compare: run, dynamics, contact, gait and
-// gains. Every contact parameter of Table I is an option.
+// Command-line options of the PD-trot programs rbdc-sim and rbdc-mujoco-compare: run, dynamics,
+// contact, gait and gains. Every contact parameter of Table I is an option.
 #pragma once
 
 #include <string>
 
+#include "rbdc/control/pd_trot.hpp"
+#include "rbdc/sim/run.hpp"
 #include "rbdc/sim/simulator.hpp"
-#include "rbdc/sim/trot.hpp"
-#include "rbdc/sim/trot_run.hpp"
 
-namespace rbdc::sim {
+namespace rbdc::control {
 
 struct CommandLine {
-  SimOptions sim;
+  sim::SimOptions sim;
   GaitParameters gait;
   PdGains gains;
-  RunOptions run;
+  sim::RunOptions run;
   std::string urdf;               ///< robot file
   std::string dynamics = "generated";  ///< generated | runtime (falls back to runtime when absent)
   std::string out;                ///< CSV output (rbdc-sim) or output directory (comparison)
@@ -30,4 +30,4 @@ enum class Program { Sim, Compare };
 void parse_command_line(int argc, char** argv, Program program, CommandLine& cli);
 std::string usage(Program program, const CommandLine& defaults);
 
-}  // namespace rbdc::sim
+}  // namespace rbdc::control

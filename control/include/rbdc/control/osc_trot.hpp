@@ -13,13 +13,15 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rbdc/control/attitude.hpp"
+#include "rbdc/control/leg.hpp"
 #include "rbdc/control/mini_cheetah.hpp"
 #include "rbdc/control/operational_space_law.hpp"
 #include "rbdc/model.hpp"
-#include "rbdc/sim/trot.hpp"
+#include "rbdc/sim/controller.hpp"
 
 namespace rbdc::control {
 
@@ -49,6 +51,13 @@ struct TrotParameters {
   AttitudeGains hip_gains{6, 0.3, 6, 0.3};                // Eqs. 56-57, N·m/rad, N·m·s/rad
 };
 
+/// The scalar parameters by name (rbdc-osc-trot --set, Controller::parameters()): each pointer
+/// into `p`; osc_kp, osc_kd, hip_kp and hip_kd point at the roll gain, and set_parameter copies it
+/// to pitch.
+std::vector<std::pair<const char*, double*>> named_parameters(TrotParameters& p);
+/// Sets one named parameter; throws std::invalid_argument for an unknown name.
+void set_parameter(TrotParameters& p, const std::string& name, double value);
+
 /// What the controller did in its last update (for logging and the tests).
 struct ControllerStatus {
   StancePair pair = StancePair::LfRh;
@@ -58,29 +67,34 @@ struct ControllerStatus {
   StanceTorques stance;           ///< Eq. 53/55 details (OSC controllers)
 };
 
-class TrotController {
+class OscTrotController final : public sim::Controller {
  public:
   /// `model` is the Mini Cheetah the generated code was made from (hip placements, joint axes,
   /// total mass); foot_radius is the contact sphere radius (feet rest one radius above ground).
-  TrotController(const Model& model, const TrotParameters& parameters, StanceControl control,
-                 double foot_radius);
+  OscTrotController(const Model& model, const TrotParameters& parameters, StanceControl control,
+                    double foot_radius);
 
-  /// Joint torques for time t, state q (19), v (18) and the measured foot forces (used only by
-  /// OperationalSpaceOpenChain).
-  const JointTorques& update(double t, const double* q, const double* v, const FeetForces& measured);
+  std::string name() const override { return to_string(control_); }
+  std::vector<sim::Parameter> parameters() const override;
+  /// Standing at rest on flat ground, trunk level, each foot leg_length below its hip joint.
+  VectorX initial_configuration() const override;
+  /// Only OperationalSpaceOpenChain reads the measured foot forces.
+  bool uses_foot_forces() const override {
+    return control_ == StanceControl::OperationalSpaceOpenChain;
+  }
+  /// Joint torques (12) for time input.t, state q (19), v (18).
+  const VectorX& update(const sim::ControllerInput& input) override;
   const ControllerStatus& status() const { return status_; }
   StanceControl control() const { return control_; }
-
-  /// Standing at rest on flat ground, trunk level, each foot leg_length below its hip joint.
-  VectorX standing_configuration() const;
 
  private:
   struct Leg {
     Vector3 hip_in_trunk;   ///< hip joint origin, trunk coordinates
     double abad_axis_x = 1; ///< ab/ad axis · trunk x (±1)
     double hip_axis_y = 1;  ///< hip axis · trunk y (±1)
-    sim::LegGeometry geometry;  ///< planar hip-knee geometry (standing IK)
+    LegGeometry geometry;   ///< planar hip-knee geometry (standing IK)
   };
+  const JointTorques& torques(double t, const double* q, const double* v, const FeetForces& measured);
   void start_step(int step, const double* q);
   void swing_torques(double t, const Vector3& p, const Matrix3& W_R_B, const Vector3& v_W,
                      double yaw_rate);
@@ -96,6 +110,7 @@ class TrotController {
   Eigen::Matrix<double, 3 * kFeet, kNv> J_;
   Eigen::Matrix<double, 3, kFeet> feet_velocity_;
   JointTorques tau_, tau_swing_, tau_passive_;
+  VectorX tau_out_ = VectorX::Zero(kJoints);  ///< tau_ as the interface returns it
   TrunkTaskDynamics dynamics_, closed_chain_;
   // Gait and filter state.
   FeetForces filtered_forces_ = FeetForces::Zero();

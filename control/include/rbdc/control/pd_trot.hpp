@@ -4,12 +4,14 @@
 // and knee angles, with ab/ad held at 0. The PD law of Eq. 44 then tracks them.
 #pragma once
 
-#include <array>
+#include <string>
 #include <vector>
 
+#include "rbdc/control/leg.hpp"
 #include "rbdc/model.hpp"
+#include "rbdc/sim/controller.hpp"
 
-namespace rbdc::sim {
+namespace rbdc::control {
 
 struct GaitParameters {
   double period = 0.4;          ///< s, one full stride
@@ -20,24 +22,6 @@ struct GaitParameters {
   double ramp_time = 0.5;       ///< s, step length and height grow 0 → full (smoothstep)
   double coupling = 5.0;        ///< 1/s, oscillator coupling gain
 };
-
-/// One leg's planar geometry, read from the model at q = 0 (hip and knee axes along ±y of the
-/// trunk, leg hanging straight down).
-struct LegGeometry {
-  int abad_q = 0, hip_q = 0, knee_q = 0;  ///< indices into q
-  int abad_v = 0, hip_v = 0, knee_v = 0;  ///< indices into v
-  double hip_sign = 1, knee_sign = 1;     ///< +1 when positive rotation swings the foot forward
-  double thigh = 0, shank = 0;            ///< m, sagittal link lengths
-  Vector3 hip_in_trunk = Vector3::Zero(); ///< hip joint origin, trunk coordinates
-};
-
-/// Reads every foot's leg (foot body = knee, its parent = hip, its parent = ab/ad on the trunk).
-/// Throws std::invalid_argument naming the foot when a leg does not have that shape.
-std::vector<LegGeometry> leg_geometry(const Model& model);
-
-/// Planar two-link inverse kinematics: hip and knee angles placing the foot at (x, z) relative to
-/// the hip joint (trunk x forward, z up), knee bent backwards. Unreachable targets are clamped.
-Eigen::Vector2d leg_inverse_kinematics(const LegGeometry& leg, double x, double z);
 
 /// Trot foot-trajectory generator: oscillator phases → sagittal foot targets.
 class TrotGenerator {
@@ -67,18 +51,20 @@ struct PdGains {
   double kd = 1.0;   ///< N·m·s/rad (Table I)
 };
 
-/// The complete trot controller: generator + IK + PD, for a floating-base model's q, v.
-class TrotController {
+/// The complete trot controller of paper 000: generator + IK + PD, for a floating-base model.
+class PdTrotController final : public sim::Controller {
  public:
-  TrotController(const Model& model, const GaitParameters& gait, const PdGains& gains,
-                 double foot_radius);
-  /// Advances the pattern generator by dt and returns the joint torques (nv − 6) for q, v.
-  const VectorX& update(double dt, const VectorX& q, const VectorX& v);
-  /// The desired joint angles of the last update (nv − 6).
-  const VectorX& desired() const { return q_desired_; }
+  PdTrotController(const Model& model, const GaitParameters& gait, const PdGains& gains,
+                   double foot_radius);
+  std::string name() const override { return "pd-trot"; }
+  std::vector<sim::Parameter> parameters() const override;
   /// A standing configuration on flat ground at the start of the gait (trunk level, feet on
   /// the ground at the nominal stance points).
-  VectorX standing_configuration() const;
+  VectorX initial_configuration() const override;
+  /// Advances the pattern generator by input.dt and returns the joint torques (nv − 6).
+  const VectorX& update(const sim::ControllerInput& input) override;
+  /// The desired joint angles of the last update (nv − 6).
+  const VectorX& desired() const { return q_desired_; }
   const std::vector<LegGeometry>& legs() const { return legs_; }
 
  private:
@@ -92,4 +78,4 @@ class TrotController {
   VectorX q_desired_, tau_;
 };
 
-}  // namespace rbdc::sim
+}  // namespace rbdc::control

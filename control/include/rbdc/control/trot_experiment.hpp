@@ -1,11 +1,11 @@
-// One trot run of the Mini Cheetah in the paper-000 simulator under one stance controller: the
-// controller runs at a fixed control period (zero-order hold between updates), and the run is
-// scored the way paper 001 Sec. 6.2 reports it — roll and pitch during stance, falls.
+// One trot run of the Mini Cheetah in the paper-000 simulator (sim::run) under one stance
+// controller at a fixed control period, scored the way paper 001 Sec. 6.2 reports it: roll and
+// pitch during stance, falls.
 #pragma once
 
 #include <string>
 
-#include "rbdc/control/trot_controller.hpp"
+#include "rbdc/control/osc_trot.hpp"
 #include "rbdc/sim/simulator.hpp"
 
 namespace rbdc::control {
@@ -34,7 +34,7 @@ struct ExperimentResult {
   double fall_time = 0;              ///< s, first time a fall criterion held
   std::string fall_reason;
   double mean_speed = 0;             ///< m/s, forward, over the second half of the run
-  double controller_seconds = 0;     ///< wall time inside TrotController::update
+  double controller_seconds = 0;     ///< wall time inside OscTrotController::update
   long controller_calls = 0;
   double simulated = 0;              ///< s
 };

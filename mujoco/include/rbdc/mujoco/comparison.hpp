@@ -1,4 +1,4 @@
-// A sampled run (either simulator) and the comparison metrics of paper 000 Section 6.3 / 7.
+// A sampled run (our simulator or MuJoCo) and the comparison metrics of paper 000 Section 6.3 / 7.
 #pragma once
 
 #include <string>
@@ -6,12 +6,12 @@
 
 #include "rbdc/sim/contact.hpp"
 
-namespace rbdc::sim {
+namespace rbdc::mujoco {
 
 struct Sample {
   double t = 0;
   VectorX q, v;                       ///< docs/conventions.md layout
-  std::vector<FootContact> contacts;  ///< foot order of the model
+  std::vector<sim::FootContact> contacts;  ///< foot order of the model
 };
 using Trajectory = std::vector<Sample>;
 
@@ -28,4 +28,4 @@ struct ComparisonMetrics {
 /// Compares two runs sampled at the same instants (the shorter length is used) on foot `foot`.
 ComparisonMetrics compare_trajectories(const Trajectory& ours, const Trajectory& mujoco, int foot);
 
-}  // namespace rbdc::sim
+}  // namespace rbdc::mujoco

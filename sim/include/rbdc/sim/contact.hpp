@@ -3,6 +3,9 @@
 // stick-slip Coulomb friction (Eq. 38).
 #pragma once
 
+#include <vector>
+
+#include "rbdc/data.hpp"
 #include "rbdc/spatial.hpp"
 
 namespace rbdc::sim {
@@ -47,6 +50,9 @@ struct FootContact {
   Vector3 force_C = Vector3::Zero();  ///< (f_x, f_y, f_n) in the contact frame
   Vector3 force_W = Vector3::Zero();  ///< the same force in world coordinates, applied at the foot
 };
+
+/// The world forces of `contacts` as the columns of `f` (3 × n_feet), what a controller measures.
+void world_forces(const std::vector<FootContact>& contacts, Matrix3X& f);
 
 /// Effective friction coefficient μ(v) of Eq. 38 for a slip speed v ≥ 0 (also valid for v < 0, odd):
 /// smoothstep from −μ_s to μ_s over v ∈ [−v_s, v_s], then from μ_s to μ_d over |v| ∈ [v_s, v_d].

@@ -25,12 +25,12 @@ struct SimOptions {
   bool contact_enabled = true;
 };
 
-/// Wall time spent in each phase of the run (seconds), filled when profiling is on.
+/// Wall time spent in each phase of a step (seconds), filled when profiling is on; the controller's
+/// share is RunSummary::controller_seconds (run.hpp).
 struct PhaseTimes {
   double dynamics = 0;     ///< forward dynamics
   double contact = 0;      ///< foot kinematics + contact forces
   double integration = 0;  ///< everything else inside step()
-  double control = 0;      ///< added by the caller (trajectory, IK, PD)
   long steps = 0;
 };
 
