@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Figures of the rbdc-osc-trot traces (paper 001 Figs. 9, 11 and 12 for the Mini Cheetah).
 
-Usage: results/scripts/plot_trot.py TRACE_DIR OUT_DIR [--step-start S]   (results/scripts/osc.sh runs it)
+Usage: results/scripts/plot_osc_trot.py TRACE_DIR OUT_DIR [--step-start S]   (results/scripts/osc.sh runs it)
 TRACE_DIR holds osc.csv, osc-open.csv and raibert.csv written by `rbdc-osc-trot --out TRACE_DIR`.
 Writes OUT_DIR/trot_attitude.png (roll and pitch with their set-points over 0.6 s) and
 OUT_DIR/trot_grf.png (ground reaction forces of one stance foot over one step, closed chain vs
