@@ -17,6 +17,7 @@ from .layout import Layout
 from .names import unique_identifiers
 from .pipeline import compile_robot, render
 from .render import template_environment
+from .scene import DERIVATIVES
 from .version import VERSION
 
 HARNESS_TEMPLATE = "verify_harness.cpp.j2"
@@ -56,7 +57,7 @@ def _robot_record(compilation, robot_path: Path, args) -> dict:
         "feet": [foot.name for foot in scene.feet_for(robot)],
         "contacts": [scene.feet_for(robot).index(foot) for foot in scene.contacts_for(robot)],
         "zero_inputs": list(scene.zero_inputs),
-        "functions": [{"name": f.name, "inputs": [a.name for a in f.inputs],
+        "functions": [{"name": f.name, "inputs": [a.name for a in f.inputs], "derivative": f.name in DERIVATIVES,
                        "outputs": [{"name": a.name, "rows": a.rows, "cols": a.cols} for a in f.outputs]}
                       for f in compilation.functions],
     }
@@ -138,12 +139,12 @@ def build_and_run(paths, compilations, directory: Path, args, layout: Layout) ->
     if result.returncode != 0:
         raise RbdcError(f"the verify harness failed: {result.stderr.strip()}")
     rows = _results(result.stdout)
-    print(f"{'robot':<20} {'quantity':<34} {'max abs error':>14} {'max rel error':>14} {'states':>7}")
+    print(f"{'robot':<20} {'quantity':<40} {'max abs error':>14} {'max rel error':>14} {'states':>7}")
     failed = 0
     for robot, quantity, abs_error, rel_error, states in rows:
         bad = not rel_error <= args.tolerance
         failed += bad
-        print(f"{robot:<20} {quantity:<34} {abs_error:>14.3e} {rel_error:>14.3e} {states:>7}"
+        print(f"{robot:<20} {quantity:<40} {abs_error:>14.3e} {rel_error:>14.3e} {states:>7}"
               + ("  FAIL" if bad else ""))
     print(f"{len(rows) - failed} passed, {failed} failed (relative tolerance {args.tolerance:g}; "
           f"compile {compiled - start:.1f} s, run {time.monotonic() - compiled:.1f} s)")

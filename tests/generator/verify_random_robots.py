@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """rbdc verify on the random robots of seeds FIRST..LAST (generator/rbdcgen/random_robot.py): even
 seeds with a floating base, odd seeds with a fixed base, each group in one harness (one compile).
-Usage: verify_random_robots.py FIRST LAST"""
+Usage: verify_random_robots.py FIRST LAST [SCENE]   (SCENE: a scene file, e.g. the derivatives one)"""
 import subprocess
 import sys
 import tempfile
@@ -15,6 +15,7 @@ from rbdcgen.random_robot import random_urdf  # noqa: E402
 
 def main() -> int:
     first, last = int(sys.argv[1]), int(sys.argv[2])
+    scene = ["--scene", sys.argv[3]] if len(sys.argv) > 3 else []
     failed = 0
     with tempfile.TemporaryDirectory(prefix="rbdc-random-") as directory:
         for base, parity in (("floating", 0), ("fixed", 1)):
@@ -26,7 +27,7 @@ def main() -> int:
                     files.append(str(path))
             start = time.monotonic()
             result = subprocess.run([str(ROOT / "rbdc"), "verify", *files, f"--{base}-base", "--states", "20",
-                                     "--tolerance", "1e-10"])
+                                     "--tolerance", "1e-10", *scene])
             print(f"{len(files)} random robots, {base} base: exit {result.returncode}, "
                   f"{time.monotonic() - start:.1f} s", flush=True)
             failed += result.returncode != 0

@@ -9,10 +9,12 @@ import mini_cheetah
 from numeric_check import DATA, evaluate, operator_count, random_state
 
 from rbdcgen import expr as ex
+from rbdcgen import flops_report
 from rbdcgen.algorithms.model import TracedModel
 from rbdcgen.emit import emit_body
 from rbdcgen.flops import count_ops, generic_ops
 from rbdcgen.ir import load_ir
+from rbdcgen.pipeline import Compilation
 from rbdcgen.manifold import configuration_seeds, integrate, q_direction
 from rbdcgen.scene import DERIVATIVES, SceneError, default_scene, scene_from_dict
 from rbdcgen.trace import trace_function, trace_scene
@@ -140,6 +142,21 @@ class Counts(unittest.TestCase):
                 total = sum(operator_count(line) for line in emit_body(fn))
                 self.assertEqual(total, count_ops(fn)["total"])
                 self.assertLess(count_ops(fn)["total"], generic_ops(FLOATING, ALL, name)["total"])
+
+    def test_rbdc_flops_compares_each_derivative_with_its_primal(self):
+        scene = scene_from_dict({"name": "x", "quantities": ["gravity_terms"],
+                                 "derivatives": ["gravity_derivatives"]})
+        functions = trace_scene(FLOATING, scene)
+        compilation = Compilation(robot=FLOATING, scene=scene, functions=functions,
+                                  robot_name="tiny", inputs=[], robot_inputs=[])
+        rows = flops_report.rows(compilation)
+        self.assertNotIn("primal", rows[0])
+        self.assertEqual(rows[1]["primal"], {"function": "gravity_terms",
+                                             "ops": count_ops(functions[0])})
+        ratio = count_ops(functions[1])["total"] / count_ops(functions[0])["total"]
+        self.assertIn("%.1fx gravity_terms" % ratio, flops_report.table(compilation, rows))
+        as_json = flops_report.as_json(compilation, rows)["functions"]["gravity_derivatives"]
+        self.assertEqual(as_json["primal"]["function"], "gravity_terms")
 
 
 class Scenes(unittest.TestCase):
