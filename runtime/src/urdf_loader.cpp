@@ -128,6 +128,11 @@ class UrdfTranslator {
     if (opts_.mimic == MimicMode::Couple) resolve_mimics();
     drafts_.emplace_back();  // body 0, the root
     visit(choose_root(), 0, Pose{});
+    if (!link_errors_.empty()) {
+      std::string all;
+      for (const std::string& e : link_errors_) all += (all.empty() ? "" : "\n") + e;
+      throw ModelError(all);  // one line per bad link
+    }
     return assemble();
   }
 
@@ -255,7 +260,11 @@ class UrdfTranslator {
   void visit(const std::string& link, int body, const Pose& pose) {
     drafts_[static_cast<size_t>(body)].links.push_back(link);
     placement_[link] = {body, pose};
-    add_mass_properties(link, body, pose);
+    try {  // a link's mass properties concern it alone: report every bad link, not just the first
+      add_mass_properties(link, body, pose);
+    } catch (const ModelError& e) {
+      link_errors_.push_back(e.what());
+    }
     const auto kids = child_joints_.find(link);
     if (kids == child_joints_.end()) return;
     for (const UrdfJointEdge* edge : kids->second) {
@@ -455,6 +464,7 @@ class UrdfTranslator {
   std::map<std::string, std::vector<const UrdfJointEdge*>> child_joints_;
   std::map<std::string, Mimic> mimics_;
   std::vector<std::pair<std::string, Mimic>> couplings_;  ///< coupled followers, in visiting order
+  std::vector<std::string> link_errors_;  ///< refusals of links' mass properties, in visiting order
   std::map<std::string, const UrdfJointEdge*> parent_joint_;
   std::vector<BodyDraft> drafts_;
   std::map<std::string, LinkPlacement> placement_;

@@ -53,9 +53,12 @@ int write_check_report(const LoadOptions& opts, std::ostream& out) {
     error = e.what();
   }
   for (const std::string& w : warnings) out << "warning: " << w << "\n";
-  if (!error.empty()) out << "error: " << error << "\n";
+  size_t errors = 0;  // a refusal may list several bad links, one per line
+  std::istringstream lines(error);
+  for (std::string line; std::getline(lines, line); ++errors) out << "error: " << line << "\n";
   out << opts.input << ": " << warnings.size() << " warning" << (warnings.size() == 1 ? "" : "s") << ", "
-      << (error.empty() ? "0 errors" : "1 error (loading stops at the first refusal)") << "\n";
+      << errors << " error" << (errors == 1 ? "" : "s")
+      << (errors > 0 ? " (loading stops at the first refused element; bad links are all listed)" : "") << "\n";
   if (!error.empty()) return 2;
   write_topology(model, out);
   return 0;

@@ -36,6 +36,10 @@ void print_summary(const Model& m, std::ostream& out) {
   for (const rbdc::Body& b : m.bodies) mass += b.mass;
   out << "robot " << m.name << ": nb = " << m.nb << ", nq = " << m.nq << ", nv = " << m.nv << ", "
       << (m.floating_base ? "floating base" : "fixed base") << ", total mass " << mass << " kg\n";
+  for (const rbdc::Coupling& c : m.couplings) {  // the sections below are in tree coordinates
+    out << "coupling: joint " << c.follower << " = " << c.multiplier << " * joint " << c.leader << " + "
+        << c.offset << " (docs/model.md, \"Mimic joints\")\n";
+  }
 }
 
 void print_bodies(const Model& m, std::ostream& out) {

@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 
 #include "rbdc/topology_file.hpp"
@@ -88,7 +89,8 @@ int run_tool(const std::function<int()>& body) {
   try {
     return body();
   } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
+    std::istringstream lines(e.what());  // a refusal may list several bad elements, one per line
+    for (std::string line; std::getline(lines, line);) std::cerr << "error: " << line << "\n";
     return 2;
   }
 }

@@ -57,6 +57,16 @@ class RbdcCheck(unittest.TestCase):
         self.assertIn("0 warnings, 1 error", front.stdout)
         self.assertNotIn("PRED", front.stdout)
 
+    def test_every_bad_link_is_listed(self):
+        path = os.path.join(DATA, "two_bad_links.urdf")
+        front, tool = check(path)
+        self.assertEqual((front.returncode, tool.returncode), (2, 2))
+        self.assertEqual(front.stdout, tool.stdout)
+        self.assertIn(f"error: {path}:5: link 'light': mass is negative\n"
+                      f"error: {path}:6: link 'wobbly': rotational inertia is not positive semi-definite",
+                      front.stdout)
+        self.assertIn("0 warnings, 2 errors", front.stdout)
+
     def test_a_clean_robot_has_no_warnings(self):
         front, _ = check(os.path.join(DATA, "branched_robot.urdf"))
         self.assertEqual(front.returncode, 0, front.stdout + front.stderr)

@@ -243,6 +243,12 @@ TEST(UrdfLoaderRepairs, FixedBaseWarnsWhenItDropsTheFilesFloatingJoint) {
               ElementsAre(HasSubstr("world_floating.urdf:5: floating joint 'free' from link 'world' is dropped")));
 }
 
+TEST(UrdfLoaderRepairs, EveryBadLinkIsRefusedInOneMessage) {
+  EXPECT_THAT(model_error([] { load_urdf(data_path("two_bad_links.urdf")); }),
+              AllOf(HasSubstr("two_bad_links.urdf:5: link 'light': mass is negative\n"),
+                    HasSubstr("two_bad_links.urdf:6: link 'wobbly': rotational inertia is not positive")));
+}
+
 TEST(UrdfLoader, MasslessWorldRootIsDroppedOrMerged) {
   const Model floating = load_urdf(data_path("world_floating.urdf"));  // world -floating-> base
   EXPECT_EQ(floating.bodies[0].name, "base");
