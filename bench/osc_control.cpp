@@ -28,7 +28,6 @@ const std::vector<TrotState>& trot_states() {
   static const std::vector<TrotState> states = [] {
     const Model model = sim::load_robot(sim::default_urdf());
     std::unique_ptr<sim::DynamicsModel> dynamics = sim::make_generated_dynamics();
-    if (!dynamics) dynamics = sim::make_runtime_dynamics(model);
     sim::Simulator simulator(*dynamics, sim::SimOptions{});
     OscTrotController controller(model, TrotParameters{}, StanceControl::OperationalSpace, 0.02);
     sim::RunOptions run;

@@ -111,7 +111,6 @@ int main(int argc, char** argv) {
     Options o = parse(argc, argv);
     const Model model = sim::load_robot(sim::default_urdf());
     std::unique_ptr<sim::DynamicsModel> dynamics = sim::make_generated_dynamics();
-    if (!dynamics) dynamics = sim::make_runtime_dynamics(model);
     if (!o.out.empty()) std::filesystem::create_directories(o.out);
     const TrotParameters& trot = o.experiment.trot;
     char header[512];

@@ -23,11 +23,10 @@ int main(int argc, char** argv) {
     }
     const Model model = load_robot(cli.urdf);
     std::unique_ptr<DynamicsModel> dynamics;
-    if (cli.dynamics == "generated") {
+    if (cli.dynamics == "generated")
       dynamics = make_generated_dynamics();
-      if (!dynamics) std::fprintf(stderr, "rbdc-sim: no generated dynamics in this build, using the runtime\n");
-    }
-    if (!dynamics) dynamics = make_runtime_dynamics(model);
+    else
+      dynamics = make_runtime_dynamics(model);
     if (dynamics->nq() != model.nq || dynamics->n_feet() != static_cast<int>(model.feet.size())) {
       std::fprintf(stderr, "rbdc-sim: the %s dynamics do not match the robot in the URDF\n",
                    dynamics->name().c_str());

@@ -74,7 +74,7 @@ std::vector<Option> options(Program program, CommandLine& c) {
                   [&c = c] { return std::string(to_string(c.sim.state)); }});
   if (program == Program::Sim) {
     list.push_back({"--dynamics", "generated|runtime",
-                    "dynamics implementation (generated falls back to runtime if not built)",
+                    "dynamics implementation: generated (the bundled Mini Cheetah) or runtime (any URDF)",
                     [&c = c](const std::string& t) {
                       if (t != "generated" && t != "runtime")
                         throw std::invalid_argument("option --dynamics: unknown implementation '" + t + "'");

@@ -32,10 +32,9 @@ Trajectory run_ours(const Model& model, const CommandLine& cli, double& wall_sec
   return trajectory;
 }
 
-// Speed only: the same trot without sampling, on the fastest dynamics of this build.
+// Speed only: the same trot without sampling, on the generated dynamics.
 double time_ours(const Model& model, const CommandLine& cli, std::string& which) {
   std::unique_ptr<DynamicsModel> dynamics = make_generated_dynamics();
-  if (!dynamics) dynamics = make_runtime_dynamics(model);
   which = dynamics->name();
   Simulator simulator(*dynamics, cli.sim);
   PdTrotController controller(model, cli.gait, cli.gains, cli.sim.contact.foot_radius);

@@ -14,7 +14,6 @@ using namespace rbdc::control;
 TEST(OscTrot, TwoSecondsWithoutFalling) {
   const Model model = sim::load_robot(sim::default_urdf());
   std::unique_ptr<sim::DynamicsModel> dynamics = sim::make_generated_dynamics();
-  if (!dynamics) dynamics = sim::make_runtime_dynamics(model);
   ExperimentOptions options;
   options.duration = 2.0;
   options.control = StanceControl::OperationalSpace;

@@ -1,4 +1,4 @@
-// The 10 s trot of paper 000 Section 6.2 on the fastest dynamics of this build.
+// The 10 s trot of paper 000 Section 6.2 on the generated dynamics.
 #include <gtest/gtest.h>
 
 #include "rbdc/control/pd_trot.hpp"
@@ -11,18 +11,10 @@ using rbdc::control::GaitParameters;
 using rbdc::control::PdGains;
 using rbdc::control::PdTrotController;
 
-namespace {
-
-std::unique_ptr<DynamicsModel> fastest(const Model& model) {
-  auto generated = make_generated_dynamics();
-  return generated ? std::move(generated) : make_runtime_dynamics(model);
-}
-
-}  // namespace
 
 TEST(Trot, TenSecondsForwardWithoutFallingOrNaN) {
   const Model model = load_robot(default_urdf());
-  const auto dynamics = fastest(model);
+  const auto dynamics = make_generated_dynamics();
   SimOptions options;
   Simulator sim(*dynamics, options);
   PdTrotController controller(model, GaitParameters{}, PdGains{}, options.contact.foot_radius);
@@ -44,7 +36,7 @@ TEST(Trot, TenSecondsForwardWithoutFallingOrNaN) {
 // only the smooth part of the dynamics can show the discretisations agree.
 TEST(Trot, EulerAndQuaternionStatesAgree) {
   const Model model = load_robot(default_urdf());
-  const auto dynamics = fastest(model);
+  const auto dynamics = make_generated_dynamics();
   SimOptions quaternion, euler;
   quaternion.contact_enabled = euler.contact_enabled = false;
   euler.state = StateKind::Euler;
@@ -54,7 +46,7 @@ TEST(Trot, EulerAndQuaternionStatesAgree) {
   Simulator a(*dynamics, quaternion);
   PdTrotController ca(model, GaitParameters{}, PdGains{}, quaternion.contact.foot_radius);
   ASSERT_TRUE(run(a, ca, run_options).finite);
-  const auto dynamics_b = fastest(model);
+  const auto dynamics_b = make_generated_dynamics();
   Simulator b(*dynamics_b, euler);
   PdTrotController cb(model, GaitParameters{}, PdGains{}, euler.contact.foot_radius);
   ASSERT_TRUE(run(b, cb, run_options).finite);
@@ -70,7 +62,7 @@ TEST(Trot, IntegratorsAgreeOnAShortRun) {
   run_options.sample_interval = 0;
   std::vector<VectorX> finals;
   for (Integrator integrator : {Integrator::RK4, Integrator::Heun, Integrator::SemiImplicitEuler}) {
-    const auto dynamics = fastest(model);
+    const auto dynamics = make_generated_dynamics();
     SimOptions options;
     options.integrator = integrator;
     options.contact_enabled = false;

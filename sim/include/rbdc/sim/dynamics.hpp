@@ -28,7 +28,7 @@ class DynamicsModel {
 /// Dynamics from the runtime's reference algorithms on `model` (copied).
 std::unique_ptr<DynamicsModel> make_runtime_dynamics(const Model& model);
 
-/// Dynamics from generated/mini_cheetah/full.hpp; nullptr when this build has no generated code.
+/// Dynamics from generated/mini_cheetah/full.hpp (every build has them).
 std::unique_ptr<DynamicsModel> make_generated_dynamics();
 
 }  // namespace rbdc::sim
