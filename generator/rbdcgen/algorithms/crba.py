@@ -18,7 +18,7 @@ def mass_matrix(m):
     H = [[zero] * nv for _ in range(nv)]
     composite = [m.inertia(i) for i in range(robot.nb)]        # I_ci ← I_i
     for i in range(robot.nb - 1, 0, -1):
-        m.mark("inward pass", i)
+        m.mark("inward pass, composite inertias (CRBA)", i)
         j = robot.parent[i]
         X = m.X_up(i)
         composite[j] = composite[j] + X.congruence(composite[i])  # Eq. 26

@@ -85,9 +85,9 @@ class Emission(unittest.TestCase):
         lines = emit_body(trace_function(ROBOT, default_scene(), "mass_matrix"))
         markers = [l for l in lines if l.startswith("//")]
         # CRBA's inward pass from the last body to the first, each body once, then the outputs.
-        self.assertEqual(markers, ["// sines and cosines of the joint angles",
-                                   "// inward pass: body 3 slider", "// inward pass: body 2 lower",
-                                   "// inward pass: body 1 upper", "// outputs"])
+        crba = "// inward pass, composite inertias (CRBA): body "
+        self.assertEqual(markers, ["// sines and cosines of the joint angles", crba + "3 slider",
+                                   crba + "2 lower", crba + "1 upper", "// outputs"])
         first_output = lines.index("// outputs") + 1
         self.assertTrue(lines[first_output].startswith("M[0] = "), lines[first_output])
 

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_e32d2dbbd999 {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_6a24652b3ee7 {
 
 /// Derivatives of the forward dynamics a = M⁻¹(Sᵀτ + Jᵀf − c − g): −M⁻¹ ∂(RNEA − τ_e) at (q, v, a),
 /// M⁻¹Sᵀ and M⁻¹Jᵀ, solved with the sparse LᵀDL factor of M.
@@ -15301,7 +15301,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15061 = (t294 * t15060) - (t296 * t15059);
   const Scalar t15062 = (t296 * t15058) - (t292 * t15060);
   const Scalar t15063 = (t292 * t15059) - (t294 * t15058);
-  // inward pass: body 32 r_hand
+  // inward pass, composite inertias (CRBA): body 32 r_hand
   const Scalar t15064 = Scalar(0.035) * sin_r_wrist_roll;
   const Scalar t15065 = Scalar(0.0031166666670000005) * sin_r_wrist_roll;
   const Scalar t15066 = Scalar(0.000404166667) * cos_r_wrist_roll;
@@ -15351,7 +15351,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15110 = (sin_waist_yaw * t15105) + (cos_waist_yaw * t15102);
   const Scalar t15111 = ((cos_waist_yaw * t15107) - (sin_waist_yaw * t15108)) - (Scalar(0.1) * t15110);
   const Scalar t15112 = ((sin_waist_yaw * t15107) + (cos_waist_yaw * t15108)) + (Scalar(0.1) * t15109);
-  // inward pass: body 31 r_wrist_pitch_link
+  // inward pass, composite inertias (CRBA): body 31 r_wrist_pitch_link
   const Scalar t15113 = sin_r_wrist_pitch * t3695;
   const Scalar t15114 = cos_r_wrist_pitch * t3695;
   const Scalar t15115 = Scalar(0.0035125000000000004) * sin_r_wrist_pitch;
@@ -15408,7 +15408,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15166 = (sin_waist_yaw * t15161) + (cos_waist_yaw * t15158);
   const Scalar t15167 = ((cos_waist_yaw * t15163) - (sin_waist_yaw * t15164)) - (Scalar(0.1) * t15166);
   const Scalar t15168 = ((sin_waist_yaw * t15163) + (cos_waist_yaw * t15164)) + (Scalar(0.1) * t15165);
-  // inward pass: body 30 r_wrist_yaw_link
+  // inward pass, composite inertias (CRBA): body 30 r_wrist_yaw_link
   const Scalar t15169 = (cos_r_wrist_yaw * t15113) + (sin_r_wrist_yaw * t15064);
   const Scalar t15170 = sin_r_wrist_yaw * t15113;
   const Scalar t15171 = cos_r_wrist_yaw * t15064;
@@ -15460,7 +15460,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15217 = t15211 + (Scalar(0.05) * t15215);
   const Scalar t15218 = (cos_waist_yaw * t15215) - (sin_waist_yaw * t15213);
   const Scalar t15219 = (sin_waist_yaw * t15215) + (cos_waist_yaw * t15213);
-  // inward pass: body 29 r_forearm
+  // inward pass, composite inertias (CRBA): body 29 r_forearm
   const Scalar t15220 = cos_r_elbow * t15169;
   const Scalar t15221 = sin_r_elbow * t15183;
   const Scalar t15222 = t15221 - t15220;
@@ -15508,7 +15508,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15264 = t15258 + (Scalar(0.05) * t15262);
   const Scalar t15265 = (cos_waist_yaw * t15262) - (sin_waist_yaw * t15260);
   const Scalar t15266 = (sin_waist_yaw * t15262) + (cos_waist_yaw * t15260);
-  // inward pass: body 28 r_upper_arm
+  // inward pass, composite inertias (CRBA): body 28 r_upper_arm
   const Scalar t15267 = cos_r_shoulder_yaw * t15222;
   const Scalar t15268 = sin_r_shoulder_yaw * t15172;
   const Scalar t15269 = t15267 - t15268;
@@ -15554,7 +15554,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15309 = t15303 + (Scalar(0.05) * t15307);
   const Scalar t15310 = (cos_waist_yaw * t15307) - (sin_waist_yaw * t15305);
   const Scalar t15311 = (sin_waist_yaw * t15307) + (cos_waist_yaw * t15305);
-  // inward pass: body 27 r_shoulder_roll_link
+  // inward pass, composite inertias (CRBA): body 27 r_shoulder_roll_link
   const Scalar t15312 = cos_r_shoulder_roll * t15271;
   const Scalar t15313 = sin_r_shoulder_roll * t15282;
   const Scalar t15314 = t15312 - t15313;
@@ -15594,7 +15594,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15348 = t15342 + (Scalar(0.05) * t15346);
   const Scalar t15349 = (cos_waist_yaw * t15346) - (sin_waist_yaw * t15344);
   const Scalar t15350 = (sin_waist_yaw * t15346) + (cos_waist_yaw * t15344);
-  // inward pass: body 26 r_shoulder_pitch_link
+  // inward pass, composite inertias (CRBA): body 26 r_shoulder_pitch_link
   const Scalar t15351 = sin_r_shoulder_pitch * t15315;
   const Scalar t15352 = (cos_r_shoulder_pitch * t15269) + t15351;
   const Scalar t15353 = cos_r_shoulder_pitch * t15315;
@@ -15639,7 +15639,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15392 = t15386 + (Scalar(0.05) * t15390);
   const Scalar t15393 = (cos_waist_yaw * t15390) - (sin_waist_yaw * t15388);
   const Scalar t15394 = (sin_waist_yaw * t15390) + (cos_waist_yaw * t15388);
-  // inward pass: body 25 l_hand
+  // inward pass, composite inertias (CRBA): body 25 l_hand
   const Scalar t15395 = Scalar(0.035) * sin_l_wrist_roll;
   const Scalar t15396 = Scalar(0.0031166666670000005) * sin_l_wrist_roll;
   const Scalar t15397 = Scalar(0.000404166667) * cos_l_wrist_roll;
@@ -15689,7 +15689,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15441 = (sin_waist_yaw * t15436) + (cos_waist_yaw * t15433);
   const Scalar t15442 = ((cos_waist_yaw * t15438) - (sin_waist_yaw * t15439)) - (Scalar(0.1) * t15441);
   const Scalar t15443 = ((sin_waist_yaw * t15438) + (cos_waist_yaw * t15439)) + (Scalar(0.1) * t15440);
-  // inward pass: body 24 l_wrist_pitch_link
+  // inward pass, composite inertias (CRBA): body 24 l_wrist_pitch_link
   const Scalar t15444 = sin_l_wrist_pitch * t7393;
   const Scalar t15445 = cos_l_wrist_pitch * t7393;
   const Scalar t15446 = Scalar(0.0035125000000000004) * sin_l_wrist_pitch;
@@ -15746,7 +15746,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15497 = (sin_waist_yaw * t15492) + (cos_waist_yaw * t15489);
   const Scalar t15498 = ((cos_waist_yaw * t15494) - (sin_waist_yaw * t15495)) - (Scalar(0.1) * t15497);
   const Scalar t15499 = ((sin_waist_yaw * t15494) + (cos_waist_yaw * t15495)) + (Scalar(0.1) * t15496);
-  // inward pass: body 23 l_wrist_yaw_link
+  // inward pass, composite inertias (CRBA): body 23 l_wrist_yaw_link
   const Scalar t15500 = (cos_l_wrist_yaw * t15444) + (sin_l_wrist_yaw * t15395);
   const Scalar t15501 = sin_l_wrist_yaw * t15444;
   const Scalar t15502 = cos_l_wrist_yaw * t15395;
@@ -15798,7 +15798,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15548 = t15542 + (Scalar(0.05) * t15546);
   const Scalar t15549 = (cos_waist_yaw * t15546) - (sin_waist_yaw * t15544);
   const Scalar t15550 = (sin_waist_yaw * t15546) + (cos_waist_yaw * t15544);
-  // inward pass: body 22 l_forearm
+  // inward pass, composite inertias (CRBA): body 22 l_forearm
   const Scalar t15551 = cos_l_elbow * t15500;
   const Scalar t15552 = sin_l_elbow * t15514;
   const Scalar t15553 = t15552 - t15551;
@@ -15846,7 +15846,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15595 = t15589 + (Scalar(0.05) * t15593);
   const Scalar t15596 = (cos_waist_yaw * t15593) - (sin_waist_yaw * t15591);
   const Scalar t15597 = (sin_waist_yaw * t15593) + (cos_waist_yaw * t15591);
-  // inward pass: body 21 l_upper_arm
+  // inward pass, composite inertias (CRBA): body 21 l_upper_arm
   const Scalar t15598 = cos_l_shoulder_yaw * t15553;
   const Scalar t15599 = sin_l_shoulder_yaw * t15503;
   const Scalar t15600 = t15598 - t15599;
@@ -15892,7 +15892,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15640 = t15634 + (Scalar(0.05) * t15638);
   const Scalar t15641 = (cos_waist_yaw * t15638) - (sin_waist_yaw * t15636);
   const Scalar t15642 = (sin_waist_yaw * t15638) + (cos_waist_yaw * t15636);
-  // inward pass: body 20 l_shoulder_roll_link
+  // inward pass, composite inertias (CRBA): body 20 l_shoulder_roll_link
   const Scalar t15643 = cos_l_shoulder_roll * t15602;
   const Scalar t15644 = sin_l_shoulder_roll * t15613;
   const Scalar t15645 = t15643 - t15644;
@@ -15932,7 +15932,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15679 = t15673 + (Scalar(0.05) * t15677);
   const Scalar t15680 = (cos_waist_yaw * t15677) + (sin_waist_yaw * t15675);
   const Scalar t15681 = (sin_waist_yaw * t15677) - (cos_waist_yaw * t15675);
-  // inward pass: body 19 l_shoulder_pitch_link
+  // inward pass, composite inertias (CRBA): body 19 l_shoulder_pitch_link
   const Scalar t15682 = sin_l_shoulder_pitch * t15646;
   const Scalar t15683 = (cos_l_shoulder_pitch * t15600) + t15682;
   const Scalar t15684 = cos_l_shoulder_pitch * t15646;
@@ -15978,7 +15978,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15724 = t15718 + (Scalar(0.05) * t15722);
   const Scalar t15725 = (cos_waist_yaw * t15722) + (sin_waist_yaw * t15720);
   const Scalar t15726 = (sin_waist_yaw * t15722) - (cos_waist_yaw * t15720);
-  // inward pass: body 18 head
+  // inward pass, composite inertias (CRBA): body 18 head
   const Scalar t15727 = Scalar(0.32000000000000006) * sin_neck_roll;
   const Scalar t15728 = Scalar(0.006400000000000002) * cos_neck_roll;
   const Scalar t15729 = Scalar(0.05685333330000001) * sin_neck_roll;
@@ -16010,7 +16010,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15755 = (sin_waist_yaw * t15750) + (cos_waist_yaw * t15747);
   const Scalar t15756 = ((cos_waist_yaw * t15752) - (sin_waist_yaw * t15753)) - (Scalar(0.1) * t15755);
   const Scalar t15757 = ((sin_waist_yaw * t15752) + (cos_waist_yaw * t15753)) + (Scalar(0.1) * t15754);
-  // inward pass: body 17 neck_pitch_link
+  // inward pass, composite inertias (CRBA): body 17 neck_pitch_link
   const Scalar t15758 = (Scalar(0.064) * cos_neck_pitch) + (sin_neck_pitch * t9781);
   const Scalar t15759 = Scalar(0.064) * sin_neck_pitch;
   const Scalar t15760 = cos_neck_pitch * t9781;
@@ -16044,7 +16044,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15788 = t15782 + (Scalar(0.05) * t15786);
   const Scalar t15789 = (cos_waist_yaw * t15786) - (sin_waist_yaw * t15784);
   const Scalar t15790 = (sin_waist_yaw * t15786) + (cos_waist_yaw * t15784);
-  // inward pass: body 16 neck_yaw_link
+  // inward pass, composite inertias (CRBA): body 16 neck_yaw_link
   const Scalar t15791 = (cos_neck_yaw * t15758) + (sin_neck_yaw * t15727);
   const Scalar t15792 = sin_neck_yaw * t15758;
   const Scalar t15793 = cos_neck_yaw * t15727;
@@ -16075,7 +16075,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15818 = t15812 + (Scalar(0.05) * t15816);
   const Scalar t15819 = (cos_waist_yaw * t15816) - (sin_waist_yaw * t15814);
   const Scalar t15820 = (sin_waist_yaw * t15816) + (cos_waist_yaw * t15814);
-  // inward pass: body 15 torso
+  // inward pass, composite inertias (CRBA): body 15 torso
   const Scalar t15821 = cos_waist_roll * t15804;
   const Scalar t15822 = sin_waist_roll * t15805;
   const Scalar t15823 = t15821 - t15822;
@@ -16098,7 +16098,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15840 = t15825 + (Scalar(0.05) * t15838);
   const Scalar t15841 = (cos_waist_yaw * t15838) + (sin_waist_yaw * t15824);
   const Scalar t15842 = (sin_waist_yaw * t15838) - (cos_waist_yaw * t15824);
-  // inward pass: body 14 waist_pitch_link
+  // inward pass, composite inertias (CRBA): body 14 waist_pitch_link
   const Scalar t15843 = (cos_waist_pitch * t15803) + (sin_waist_pitch * t15832);
   const Scalar t15844 = sin_waist_pitch * t15803;
   const Scalar t15845 = cos_waist_pitch * t15832;
@@ -16122,7 +16122,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15863 = sin_waist_yaw * t15848;
   const Scalar t15864 = cos_waist_yaw * t15846;
   const Scalar t15865 = sin_waist_yaw * t15846;
-  // inward pass: body 13 waist_yaw_link
+  // inward pass, composite inertias (CRBA): body 13 waist_yaw_link
   const Scalar t15866 = cos_waist_yaw * t15843;
   const Scalar t15867 = sin_waist_yaw * t15823;
   const Scalar t15868 = sin_waist_yaw * t15843;
@@ -16135,7 +16135,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15875 = (Scalar(0.1) * t15857) + (Scalar(0.1) * t15874);
   const Scalar t15876 = (cos_waist_yaw * t15852) - t15868;
   const Scalar t15877 = t15866 + (sin_waist_yaw * t15852);
-  // inward pass: body 12 r_sole
+  // inward pass, composite inertias (CRBA): body 12 r_sole
   const Scalar t15878 = Scalar(0.05) * sin_r_ankle_roll;
   const Scalar t15879 = Scalar(0.0015) * cos_r_ankle_roll;
   const Scalar t15880 = Scalar(0.0075666666700000005) * sin_r_ankle_roll;
@@ -16169,7 +16169,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15908 = ((cos_r_hip_yaw * t15904) + (sin_r_hip_yaw * t15905)) + ((Scalar(0.07) * t15907) - (Scalar(0.09) * t15903));
   const Scalar t15909 = ((sin_r_hip_yaw * t15904) - (cos_r_hip_yaw * t15905)) - (Scalar(0.07) * t15906);
   const Scalar t15910 = t15901 + (Scalar(0.09) * t15906);
-  // inward pass: body 11 r_ankle_link
+  // inward pass, composite inertias (CRBA): body 11 r_ankle_link
   const Scalar t15911 = Scalar(0.03) * cos_r_ankle_pitch;
   const Scalar t15912 = sin_r_ankle_pitch * t12048;
   const Scalar t15913 = t15911 - t15912;
@@ -16208,7 +16208,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15946 = ((cos_r_hip_roll * t15937) - (sin_r_hip_roll * t15939)) - (Scalar(0.06) * t15940);
   const Scalar t15947 = (cos_r_hip_yaw * t15940) + (sin_r_hip_yaw * t15943);
   const Scalar t15948 = (sin_r_hip_yaw * t15940) - (cos_r_hip_yaw * t15943);
-  // inward pass: body 10 r_shank
+  // inward pass, composite inertias (CRBA): body 10 r_shank
   const Scalar t15949 = sin_r_knee * t15924;
   const Scalar t15950 = (cos_r_knee * t15913) + t15949;
   const Scalar t15951 = sin_r_knee * t15913;
@@ -16245,7 +16245,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t15982 = ((cos_r_hip_roll * t15971) - (sin_r_hip_roll * t15975)) - (Scalar(0.06) * t15976);
   const Scalar t15983 = (cos_r_hip_yaw * t15976) + (sin_r_hip_yaw * t15979);
   const Scalar t15984 = (sin_r_hip_yaw * t15976) - (cos_r_hip_yaw * t15979);
-  // inward pass: body 9 r_thigh
+  // inward pass, composite inertias (CRBA): body 9 r_thigh
   const Scalar t15985 = (cos_r_hip_pitch * t15950) + (sin_r_hip_pitch * t15964);
   const Scalar t15986 = (cos_r_hip_pitch * t15964) - (sin_r_hip_pitch * t15950);
   const Scalar t15987 = sin_r_hip_pitch * t15962;
@@ -16268,7 +16268,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t16004 = ((cos_r_hip_roll * t15966) - t15998) - (Scalar(0.06) * t15986);
   const Scalar t16005 = (cos_r_hip_yaw * t15986) - (sin_r_hip_yaw * t16001);
   const Scalar t16006 = (sin_r_hip_yaw * t15986) + (cos_r_hip_yaw * t16001);
-  // inward pass: body 8 r_hip_roll_link
+  // inward pass, composite inertias (CRBA): body 8 r_hip_roll_link
   const Scalar t16007 = cos_r_hip_roll * t15963;
   const Scalar t16008 = sin_r_hip_roll * t15994;
   const Scalar t16009 = t16007 - t16008;
@@ -16292,7 +16292,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t16027 = cos_r_hip_yaw * t16011;
   const Scalar t16028 = sin_r_hip_yaw * t16010;
   const Scalar t16029 = cos_r_hip_yaw * t16010;
-  // inward pass: body 7 r_hip_yaw_link
+  // inward pass, composite inertias (CRBA): body 7 r_hip_yaw_link
   const Scalar t16030 = cos_r_hip_yaw * t15985;
   const Scalar t16031 = sin_r_hip_yaw * t16009;
   const Scalar t16032 = t16030 - t16031;
@@ -16313,7 +16313,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t16047 = (Scalar(0.0416666667) + (((sin_waist_yaw * t15870) + (cos_waist_yaw * t15871)) + t15875)) + (((sin_r_hip_yaw * t16035) + (cos_r_hip_yaw * t16036)) - (t16041 + t16043));
   const Scalar t16048 = (cos_r_hip_yaw * t16016) - t16033;
   const Scalar t16049 = t16030 + (sin_r_hip_yaw * t16016);
-  // inward pass: body 6 l_sole
+  // inward pass, composite inertias (CRBA): body 6 l_sole
   const Scalar t16050 = Scalar(0.05) * sin_l_ankle_roll;
   const Scalar t16051 = Scalar(0.0015) * cos_l_ankle_roll;
   const Scalar t16052 = Scalar(0.0075666666700000005) * sin_l_ankle_roll;
@@ -16347,7 +16347,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t16080 = ((cos_l_hip_yaw * t16076) + (sin_l_hip_yaw * t16077)) + ((Scalar(0.09) * t16075) + (Scalar(0.07) * t16079));
   const Scalar t16081 = ((sin_l_hip_yaw * t16076) - (cos_l_hip_yaw * t16077)) - (Scalar(0.07) * t16078);
   const Scalar t16082 = t16073 - (Scalar(0.09) * t16078);
-  // inward pass: body 5 l_ankle_link
+  // inward pass, composite inertias (CRBA): body 5 l_ankle_link
   const Scalar t16083 = Scalar(0.03) * cos_l_ankle_pitch;
   const Scalar t16084 = sin_l_ankle_pitch * t13921;
   const Scalar t16085 = t16083 - t16084;
@@ -16386,7 +16386,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t16118 = ((cos_l_hip_roll * t16109) - (sin_l_hip_roll * t16111)) - (Scalar(0.06) * t16112);
   const Scalar t16119 = (cos_l_hip_yaw * t16112) + (sin_l_hip_yaw * t16115);
   const Scalar t16120 = (sin_l_hip_yaw * t16112) - (cos_l_hip_yaw * t16115);
-  // inward pass: body 4 l_shank
+  // inward pass, composite inertias (CRBA): body 4 l_shank
   const Scalar t16121 = sin_l_knee * t16096;
   const Scalar t16122 = (cos_l_knee * t16085) + t16121;
   const Scalar t16123 = sin_l_knee * t16085;
@@ -16423,7 +16423,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t16154 = ((cos_l_hip_roll * t16143) - (sin_l_hip_roll * t16147)) - (Scalar(0.06) * t16148);
   const Scalar t16155 = (cos_l_hip_yaw * t16148) + (sin_l_hip_yaw * t16151);
   const Scalar t16156 = (sin_l_hip_yaw * t16148) - (cos_l_hip_yaw * t16151);
-  // inward pass: body 3 l_thigh
+  // inward pass, composite inertias (CRBA): body 3 l_thigh
   const Scalar t16157 = (cos_l_hip_pitch * t16122) + (sin_l_hip_pitch * t16136);
   const Scalar t16158 = (cos_l_hip_pitch * t16136) - (sin_l_hip_pitch * t16122);
   const Scalar t16159 = sin_l_hip_pitch * t16134;
@@ -16446,7 +16446,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t16176 = ((cos_l_hip_roll * t16138) - t16170) - (Scalar(0.06) * t16158);
   const Scalar t16177 = (cos_l_hip_yaw * t16158) - (sin_l_hip_yaw * t16173);
   const Scalar t16178 = (sin_l_hip_yaw * t16158) + (cos_l_hip_yaw * t16173);
-  // inward pass: body 2 l_hip_roll_link
+  // inward pass, composite inertias (CRBA): body 2 l_hip_roll_link
   const Scalar t16179 = cos_l_hip_roll * t16135;
   const Scalar t16180 = sin_l_hip_roll * t16166;
   const Scalar t16181 = t16179 - t16180;
@@ -16470,7 +16470,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t16199 = cos_l_hip_yaw * t16183;
   const Scalar t16200 = sin_l_hip_yaw * t16182;
   const Scalar t16201 = cos_l_hip_yaw * t16182;
-  // inward pass: body 1 l_hip_yaw_link
+  // inward pass, composite inertias (CRBA): body 1 l_hip_yaw_link
   const Scalar t16202 = cos_l_hip_yaw * t16157;
   const Scalar t16203 = sin_l_hip_yaw * t16181;
   const Scalar t16204 = t16202 - t16203;
@@ -37510,4 +37510,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   da_df[569] = (t25179 - (t16240 * t25113)) - (t16241 * t25112);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_e32d2dbbd999
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_6a24652b3ee7

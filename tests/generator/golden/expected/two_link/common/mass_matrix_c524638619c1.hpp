@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::two_link::common::mass_matrix_dffff2eb5d0c {
+namespace rbdc_gen::two_link::common::mass_matrix_c524638619c1 {
 
 /// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).
 ///
@@ -21,10 +21,10 @@ namespace rbdc_gen::two_link::common::mass_matrix_dffff2eb5d0c {
 ///              15   13    0     0     0    0     28
 template <class Scalar>
 RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
-  // inward pass: body 2 slider
+  // inward pass, composite inertias (CRBA): body 2 slider
   const Scalar t0 = Scalar(0.001) + (q[1] * (Scalar(0.5) * q[1]));
   const Scalar t1 = ((Scalar(0.4207354924039483) * t0) - Scalar(0.00042073549240394833)) - (Scalar(0.07191383079063046) * q[1]);
-  // inward pass: body 1 upper
+  // inward pass, composite inertias (CRBA): body 1 upper
   const Scalar t2 = (Scalar(0.6) * (Scalar(0.0325) + ((Scalar(0.00022984884706593026) + (Scalar(0.7701511529340698) * t0)) - ((Scalar(0.1316373842835559) * q[1]) - (Scalar(0.3) * (Scalar(0.15) - (Scalar(0.4387912809451863) * q[1]))))))) + (Scalar(0.8) * t1);
   // outputs
   M[0] = (Scalar(0.6) * t2) + (Scalar(0.8) * ((Scalar(0.6) * t1) + (Scalar(0.8) * (Scalar(0.002698657540361287) + (Scalar(0.0007701511529340698) + (Scalar(0.22984884706593026) * t0))))));
@@ -33,4 +33,4 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   M[3] = Scalar(0.5);
 }
 
-}  // namespace rbdc_gen::two_link::common::mass_matrix_dffff2eb5d0c
+}  // namespace rbdc_gen::two_link::common::mass_matrix_c524638619c1

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::mass_matrix_283a4a1dcbcc {
+namespace rbdc_gen::humanoid32::common::mass_matrix_3b44101fdf5b {
 
 /// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).
 ///
@@ -91,7 +91,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar cos_r_wrist_pitch = joint_trig.cos[30];
   const Scalar sin_r_wrist_roll = joint_trig.sin[31];
   const Scalar cos_r_wrist_roll = joint_trig.cos[31];
-  // inward pass: body 32 r_hand
+  // inward pass, composite inertias (CRBA): body 32 r_hand
   const Scalar t0 = Scalar(0.035) * sin_r_wrist_roll;
   const Scalar t1 = Scalar(0.035) * cos_r_wrist_roll;
   const Scalar t2 = Scalar(0.0031166666670000005) * sin_r_wrist_roll;
@@ -145,7 +145,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t50 = (t45 * sin_waist_yaw) + (t42 * cos_waist_yaw);
   const Scalar t51 = ((t47 * cos_waist_yaw) - (t48 * sin_waist_yaw)) - (Scalar(0.1) * t50);
   const Scalar t52 = ((t47 * sin_waist_yaw) + (t48 * cos_waist_yaw)) + (Scalar(0.1) * t49);
-  // inward pass: body 31 r_wrist_pitch_link
+  // inward pass, composite inertias (CRBA): body 31 r_wrist_pitch_link
   const Scalar t53 = t1 * sin_r_wrist_pitch;
   const Scalar t54 = t1 * cos_r_wrist_pitch;
   const Scalar t55 = Scalar(0.0035125000000000004) * sin_r_wrist_pitch;
@@ -202,7 +202,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t106 = (sin_waist_yaw * t101) + (cos_waist_yaw * t98);
   const Scalar t107 = ((cos_waist_yaw * t103) - (sin_waist_yaw * t104)) - (Scalar(0.1) * t106);
   const Scalar t108 = ((sin_waist_yaw * t103) + (cos_waist_yaw * t104)) + (Scalar(0.1) * t105);
-  // inward pass: body 30 r_wrist_yaw_link
+  // inward pass, composite inertias (CRBA): body 30 r_wrist_yaw_link
   const Scalar t109 = (cos_r_wrist_yaw * t53) + (t0 * sin_r_wrist_yaw);
   const Scalar t110 = sin_r_wrist_yaw * t53;
   const Scalar t111 = t0 * cos_r_wrist_yaw;
@@ -258,7 +258,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t161 = (sin_waist_yaw * t156) + (cos_waist_yaw * t153);
   const Scalar t162 = ((cos_waist_yaw * t158) - (sin_waist_yaw * t159)) - (Scalar(0.1) * t161);
   const Scalar t163 = ((sin_waist_yaw * t158) + (cos_waist_yaw * t159)) + (Scalar(0.1) * t160);
-  // inward pass: body 29 r_forearm
+  // inward pass, composite inertias (CRBA): body 29 r_forearm
   const Scalar t164 = cos_r_elbow * t109;
   const Scalar t165 = sin_r_elbow * t123;
   const Scalar t166 = t165 - t164;
@@ -310,7 +310,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t212 = (sin_waist_yaw * t207) + (cos_waist_yaw * t204);
   const Scalar t213 = ((cos_waist_yaw * t209) - (sin_waist_yaw * t210)) - (Scalar(0.1) * t212);
   const Scalar t214 = ((sin_waist_yaw * t209) + (cos_waist_yaw * t210)) + (Scalar(0.1) * t211);
-  // inward pass: body 28 r_upper_arm
+  // inward pass, composite inertias (CRBA): body 28 r_upper_arm
   const Scalar t215 = cos_r_shoulder_yaw * t166;
   const Scalar t216 = sin_r_shoulder_yaw * t112;
   const Scalar t217 = t215 - t216;
@@ -360,7 +360,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t261 = (sin_waist_yaw * t256) + (cos_waist_yaw * t253);
   const Scalar t262 = ((cos_waist_yaw * t258) - (sin_waist_yaw * t259)) - (Scalar(0.1) * t261);
   const Scalar t263 = ((sin_waist_yaw * t258) + (cos_waist_yaw * t259)) + (Scalar(0.1) * t260);
-  // inward pass: body 27 r_shoulder_roll_link
+  // inward pass, composite inertias (CRBA): body 27 r_shoulder_roll_link
   const Scalar t264 = cos_r_shoulder_roll * t219;
   const Scalar t265 = sin_r_shoulder_roll * t230;
   const Scalar t266 = t264 - t265;
@@ -404,7 +404,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t304 = (sin_waist_yaw * t299) + (cos_waist_yaw * t296);
   const Scalar t305 = ((cos_waist_yaw * t301) - (sin_waist_yaw * t302)) - (Scalar(0.1) * t304);
   const Scalar t306 = ((sin_waist_yaw * t301) + (cos_waist_yaw * t302)) + (Scalar(0.1) * t303);
-  // inward pass: body 26 r_shoulder_pitch_link
+  // inward pass, composite inertias (CRBA): body 26 r_shoulder_pitch_link
   const Scalar t307 = sin_r_shoulder_pitch * t267;
   const Scalar t308 = (cos_r_shoulder_pitch * t217) + t307;
   const Scalar t309 = cos_r_shoulder_pitch * t267;
@@ -453,7 +453,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t352 = (sin_waist_yaw * t347) + (cos_waist_yaw * t344);
   const Scalar t353 = ((cos_waist_yaw * t349) - (sin_waist_yaw * t350)) - (Scalar(0.1) * t352);
   const Scalar t354 = ((sin_waist_yaw * t349) + (cos_waist_yaw * t350)) + (Scalar(0.1) * t351);
-  // inward pass: body 25 l_hand
+  // inward pass, composite inertias (CRBA): body 25 l_hand
   const Scalar t355 = Scalar(0.035) * sin_l_wrist_roll;
   const Scalar t356 = Scalar(0.035) * cos_l_wrist_roll;
   const Scalar t357 = Scalar(0.0031166666670000005) * sin_l_wrist_roll;
@@ -507,7 +507,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t405 = (sin_waist_yaw * t400) + (cos_waist_yaw * t397);
   const Scalar t406 = ((cos_waist_yaw * t402) - (sin_waist_yaw * t403)) - (Scalar(0.1) * t405);
   const Scalar t407 = ((sin_waist_yaw * t402) + (cos_waist_yaw * t403)) + (Scalar(0.1) * t404);
-  // inward pass: body 24 l_wrist_pitch_link
+  // inward pass, composite inertias (CRBA): body 24 l_wrist_pitch_link
   const Scalar t408 = t356 * sin_l_wrist_pitch;
   const Scalar t409 = t356 * cos_l_wrist_pitch;
   const Scalar t410 = Scalar(0.0035125000000000004) * sin_l_wrist_pitch;
@@ -564,7 +564,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t461 = (sin_waist_yaw * t456) + (cos_waist_yaw * t453);
   const Scalar t462 = ((cos_waist_yaw * t458) - (sin_waist_yaw * t459)) - (Scalar(0.1) * t461);
   const Scalar t463 = ((sin_waist_yaw * t458) + (cos_waist_yaw * t459)) + (Scalar(0.1) * t460);
-  // inward pass: body 23 l_wrist_yaw_link
+  // inward pass, composite inertias (CRBA): body 23 l_wrist_yaw_link
   const Scalar t464 = (cos_l_wrist_yaw * t408) + (t355 * sin_l_wrist_yaw);
   const Scalar t465 = sin_l_wrist_yaw * t408;
   const Scalar t466 = t355 * cos_l_wrist_yaw;
@@ -620,7 +620,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t516 = (sin_waist_yaw * t511) + (cos_waist_yaw * t508);
   const Scalar t517 = ((cos_waist_yaw * t513) - (sin_waist_yaw * t514)) - (Scalar(0.1) * t516);
   const Scalar t518 = ((sin_waist_yaw * t513) + (cos_waist_yaw * t514)) + (Scalar(0.1) * t515);
-  // inward pass: body 22 l_forearm
+  // inward pass, composite inertias (CRBA): body 22 l_forearm
   const Scalar t519 = cos_l_elbow * t464;
   const Scalar t520 = sin_l_elbow * t478;
   const Scalar t521 = t520 - t519;
@@ -672,7 +672,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t567 = (sin_waist_yaw * t562) + (cos_waist_yaw * t559);
   const Scalar t568 = ((cos_waist_yaw * t564) - (sin_waist_yaw * t565)) - (Scalar(0.1) * t567);
   const Scalar t569 = ((sin_waist_yaw * t564) + (cos_waist_yaw * t565)) + (Scalar(0.1) * t566);
-  // inward pass: body 21 l_upper_arm
+  // inward pass, composite inertias (CRBA): body 21 l_upper_arm
   const Scalar t570 = cos_l_shoulder_yaw * t521;
   const Scalar t571 = sin_l_shoulder_yaw * t467;
   const Scalar t572 = t570 - t571;
@@ -722,7 +722,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t616 = (sin_waist_yaw * t611) + (cos_waist_yaw * t608);
   const Scalar t617 = ((cos_waist_yaw * t613) - (sin_waist_yaw * t614)) - (Scalar(0.1) * t616);
   const Scalar t618 = ((sin_waist_yaw * t613) + (cos_waist_yaw * t614)) + (Scalar(0.1) * t615);
-  // inward pass: body 20 l_shoulder_roll_link
+  // inward pass, composite inertias (CRBA): body 20 l_shoulder_roll_link
   const Scalar t619 = cos_l_shoulder_roll * t574;
   const Scalar t620 = sin_l_shoulder_roll * t585;
   const Scalar t621 = t619 - t620;
@@ -766,7 +766,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t659 = (sin_waist_yaw * t654) - (cos_waist_yaw * t651);
   const Scalar t660 = ((cos_waist_yaw * t656) - (sin_waist_yaw * t657)) - (Scalar(0.1) * t659);
   const Scalar t661 = ((sin_waist_yaw * t656) + (cos_waist_yaw * t657)) + (Scalar(0.1) * t658);
-  // inward pass: body 19 l_shoulder_pitch_link
+  // inward pass, composite inertias (CRBA): body 19 l_shoulder_pitch_link
   const Scalar t662 = sin_l_shoulder_pitch * t622;
   const Scalar t663 = (cos_l_shoulder_pitch * t572) + t662;
   const Scalar t664 = cos_l_shoulder_pitch * t622;
@@ -816,7 +816,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t708 = (sin_waist_yaw * t703) - (cos_waist_yaw * t700);
   const Scalar t709 = ((cos_waist_yaw * t705) - (sin_waist_yaw * t706)) - (Scalar(0.1) * t708);
   const Scalar t710 = ((sin_waist_yaw * t705) + (cos_waist_yaw * t706)) + (Scalar(0.1) * t707);
-  // inward pass: body 18 head
+  // inward pass, composite inertias (CRBA): body 18 head
   const Scalar t711 = Scalar(0.32000000000000006) * sin_neck_roll;
   const Scalar t712 = Scalar(0.32000000000000006) * cos_neck_roll;
   const Scalar t713 = Scalar(0.006400000000000002) * sin_neck_roll;
@@ -851,7 +851,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t742 = (sin_waist_yaw * t737) + (cos_waist_yaw * t734);
   const Scalar t743 = ((cos_waist_yaw * t739) - (sin_waist_yaw * t740)) - (Scalar(0.1) * t742);
   const Scalar t744 = ((sin_waist_yaw * t739) + (cos_waist_yaw * t740)) + (Scalar(0.1) * t741);
-  // inward pass: body 17 neck_pitch_link
+  // inward pass, composite inertias (CRBA): body 17 neck_pitch_link
   const Scalar t745 = (Scalar(0.064) * cos_neck_pitch) + (t712 * sin_neck_pitch);
   const Scalar t746 = Scalar(0.064) * sin_neck_pitch;
   const Scalar t747 = t712 * cos_neck_pitch;
@@ -889,7 +889,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t779 = (sin_waist_yaw * t774) + (cos_waist_yaw * t771);
   const Scalar t780 = ((cos_waist_yaw * t776) - (sin_waist_yaw * t777)) - (Scalar(0.1) * t779);
   const Scalar t781 = ((sin_waist_yaw * t776) + (cos_waist_yaw * t777)) + (Scalar(0.1) * t778);
-  // inward pass: body 16 neck_yaw_link
+  // inward pass, composite inertias (CRBA): body 16 neck_yaw_link
   const Scalar t782 = (cos_neck_yaw * t745) + (t711 * sin_neck_yaw);
   const Scalar t783 = sin_neck_yaw * t745;
   const Scalar t784 = t711 * cos_neck_yaw;
@@ -924,7 +924,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t813 = (sin_waist_yaw * t808) + (cos_waist_yaw * t805);
   const Scalar t814 = ((cos_waist_yaw * t810) - (sin_waist_yaw * t811)) - (Scalar(0.1) * t813);
   const Scalar t815 = ((sin_waist_yaw * t810) + (cos_waist_yaw * t811)) + (Scalar(0.1) * t812);
-  // inward pass: body 15 torso
+  // inward pass, composite inertias (CRBA): body 15 torso
   const Scalar t816 = cos_waist_roll * t795;
   const Scalar t817 = sin_waist_roll * t796;
   const Scalar t818 = t816 - t817;
@@ -951,7 +951,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t839 = (sin_waist_yaw * t834) - (cos_waist_yaw * t819);
   const Scalar t840 = ((cos_waist_yaw * t836) - (sin_waist_yaw * t837)) - (Scalar(0.1) * t839);
   const Scalar t841 = ((sin_waist_yaw * t836) + (cos_waist_yaw * t837)) + (Scalar(0.1) * t838);
-  // inward pass: body 14 waist_pitch_link
+  // inward pass, composite inertias (CRBA): body 14 waist_pitch_link
   const Scalar t842 = (cos_waist_pitch * t794) + (sin_waist_pitch * t827);
   const Scalar t843 = sin_waist_pitch * t794;
   const Scalar t844 = cos_waist_pitch * t827;
@@ -978,7 +978,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t865 = sin_waist_yaw * t845;
   const Scalar t866 = (t862 - (sin_waist_yaw * t861)) - (Scalar(0.1) * t865);
   const Scalar t867 = (t863 + (cos_waist_yaw * t861)) + (Scalar(0.1) * t864);
-  // inward pass: body 13 waist_yaw_link
+  // inward pass, composite inertias (CRBA): body 13 waist_yaw_link
   const Scalar t868 = cos_waist_yaw * t842;
   const Scalar t869 = sin_waist_yaw * t818;
   const Scalar t870 = sin_waist_yaw * t842;
@@ -993,7 +993,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t879 = t868 + (sin_waist_yaw * t852);
   const Scalar t880 = t874 - (Scalar(0.1) * t879);
   const Scalar t881 = t875 + (Scalar(0.1) * t878);
-  // inward pass: body 12 r_sole
+  // inward pass, composite inertias (CRBA): body 12 r_sole
   const Scalar t882 = Scalar(0.05) * sin_r_ankle_roll;
   const Scalar t883 = Scalar(0.05) * cos_r_ankle_roll;
   const Scalar t884 = Scalar(0.0015) * sin_r_ankle_roll;
@@ -1032,7 +1032,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t917 = ((t913 * cos_r_hip_yaw) + (t914 * sin_r_hip_yaw)) + ((Scalar(0.07) * t916) - (Scalar(0.09) * t912));
   const Scalar t918 = ((t913 * sin_r_hip_yaw) - (t914 * cos_r_hip_yaw)) - (Scalar(0.07) * t915);
   const Scalar t919 = t910 + (Scalar(0.09) * t915);
-  // inward pass: body 11 r_ankle_link
+  // inward pass, composite inertias (CRBA): body 11 r_ankle_link
   const Scalar t920 = Scalar(0.03) * cos_r_ankle_pitch;
   const Scalar t921 = t883 * sin_r_ankle_pitch;
   const Scalar t922 = t920 - t921;
@@ -1074,7 +1074,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t958 = ((cos_r_hip_yaw * t954) - (sin_r_hip_yaw * t955)) + ((Scalar(0.07) * t957) - (Scalar(0.09) * t953));
   const Scalar t959 = ((sin_r_hip_yaw * t954) + (cos_r_hip_yaw * t955)) - (Scalar(0.07) * t956);
   const Scalar t960 = t951 + (Scalar(0.09) * t956);
-  // inward pass: body 10 r_shank
+  // inward pass, composite inertias (CRBA): body 10 r_shank
   const Scalar t961 = sin_r_knee * t933;
   const Scalar t962 = (cos_r_knee * t922) + t961;
   const Scalar t963 = sin_r_knee * t922;
@@ -1114,7 +1114,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t997 = ((cos_r_hip_yaw * t993) - (sin_r_hip_yaw * t994)) + ((Scalar(0.07) * t996) - (Scalar(0.09) * t992));
   const Scalar t998 = ((sin_r_hip_yaw * t993) + (cos_r_hip_yaw * t994)) - (Scalar(0.07) * t995);
   const Scalar t999 = t990 + (Scalar(0.09) * t995);
-  // inward pass: body 9 r_thigh
+  // inward pass, composite inertias (CRBA): body 9 r_thigh
   const Scalar t1000 = (cos_r_hip_pitch * t962) + (sin_r_hip_pitch * t976);
   const Scalar t1001 = (cos_r_hip_pitch * t976) - (sin_r_hip_pitch * t962);
   const Scalar t1002 = sin_r_hip_pitch * t974;
@@ -1141,7 +1141,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t1023 = ((cos_r_hip_yaw * t1019) - (sin_r_hip_yaw * t1020)) + ((Scalar(0.09) * t1017) + (Scalar(0.07) * t1022));
   const Scalar t1024 = ((sin_r_hip_yaw * t1019) + (cos_r_hip_yaw * t1020)) - (Scalar(0.07) * t1021);
   const Scalar t1025 = t1015 + (Scalar(0.09) * t1021);
-  // inward pass: body 8 r_hip_roll_link
+  // inward pass, composite inertias (CRBA): body 8 r_hip_roll_link
   const Scalar t1026 = cos_r_hip_roll * t975;
   const Scalar t1027 = sin_r_hip_roll * t1009;
   const Scalar t1028 = t1026 - t1027;
@@ -1169,7 +1169,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t1050 = ((cos_r_hip_yaw * t1044) - t1045) - ((Scalar(0.09) * t1028) + (Scalar(0.07) * t1048));
   const Scalar t1051 = ((sin_r_hip_yaw * t1044) + t1046) - (Scalar(0.07) * t1047);
   const Scalar t1052 = t1031 + (Scalar(0.09) * t1047);
-  // inward pass: body 7 r_hip_yaw_link
+  // inward pass, composite inertias (CRBA): body 7 r_hip_yaw_link
   const Scalar t1053 = cos_r_hip_yaw * t1000;
   const Scalar t1054 = sin_r_hip_yaw * t1028;
   const Scalar t1055 = t1053 - t1054;
@@ -1193,7 +1193,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t1073 = t1060 + (Scalar(0.07) * t1072);
   const Scalar t1074 = t1061 - (Scalar(0.07) * t1071);
   const Scalar t1075 = t1043 + (Scalar(0.09) * t1071);
-  // inward pass: body 6 l_sole
+  // inward pass, composite inertias (CRBA): body 6 l_sole
   const Scalar t1076 = Scalar(0.05) * sin_l_ankle_roll;
   const Scalar t1077 = Scalar(0.05) * cos_l_ankle_roll;
   const Scalar t1078 = Scalar(0.0015) * sin_l_ankle_roll;
@@ -1232,7 +1232,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t1111 = ((t1107 * cos_l_hip_yaw) + (t1108 * sin_l_hip_yaw)) + ((Scalar(0.09) * t1106) + (Scalar(0.07) * t1110));
   const Scalar t1112 = ((t1107 * sin_l_hip_yaw) - (t1108 * cos_l_hip_yaw)) - (Scalar(0.07) * t1109);
   const Scalar t1113 = t1104 - (Scalar(0.09) * t1109);
-  // inward pass: body 5 l_ankle_link
+  // inward pass, composite inertias (CRBA): body 5 l_ankle_link
   const Scalar t1114 = Scalar(0.03) * cos_l_ankle_pitch;
   const Scalar t1115 = t1077 * sin_l_ankle_pitch;
   const Scalar t1116 = t1114 - t1115;
@@ -1274,7 +1274,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t1152 = ((cos_l_hip_yaw * t1148) - (sin_l_hip_yaw * t1149)) + ((Scalar(0.09) * t1147) + (Scalar(0.07) * t1151));
   const Scalar t1153 = ((sin_l_hip_yaw * t1148) + (cos_l_hip_yaw * t1149)) - (Scalar(0.07) * t1150);
   const Scalar t1154 = t1145 - (Scalar(0.09) * t1150);
-  // inward pass: body 4 l_shank
+  // inward pass, composite inertias (CRBA): body 4 l_shank
   const Scalar t1155 = sin_l_knee * t1127;
   const Scalar t1156 = (cos_l_knee * t1116) + t1155;
   const Scalar t1157 = sin_l_knee * t1116;
@@ -1314,7 +1314,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t1191 = ((cos_l_hip_yaw * t1187) - (sin_l_hip_yaw * t1188)) + ((Scalar(0.09) * t1186) + (Scalar(0.07) * t1190));
   const Scalar t1192 = ((sin_l_hip_yaw * t1187) + (cos_l_hip_yaw * t1188)) - (Scalar(0.07) * t1189);
   const Scalar t1193 = t1184 - (Scalar(0.09) * t1189);
-  // inward pass: body 3 l_thigh
+  // inward pass, composite inertias (CRBA): body 3 l_thigh
   const Scalar t1194 = (cos_l_hip_pitch * t1156) + (sin_l_hip_pitch * t1170);
   const Scalar t1195 = (cos_l_hip_pitch * t1170) - (sin_l_hip_pitch * t1156);
   const Scalar t1196 = sin_l_hip_pitch * t1168;
@@ -1341,7 +1341,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t1217 = ((cos_l_hip_yaw * t1213) - (sin_l_hip_yaw * t1214)) + ((Scalar(0.07) * t1216) - (Scalar(0.09) * t1211));
   const Scalar t1218 = ((sin_l_hip_yaw * t1213) + (cos_l_hip_yaw * t1214)) - (Scalar(0.07) * t1215);
   const Scalar t1219 = t1209 - (Scalar(0.09) * t1215);
-  // inward pass: body 2 l_hip_roll_link
+  // inward pass, composite inertias (CRBA): body 2 l_hip_roll_link
   const Scalar t1220 = cos_l_hip_roll * t1169;
   const Scalar t1221 = sin_l_hip_roll * t1203;
   const Scalar t1222 = t1220 - t1221;
@@ -1369,7 +1369,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t1244 = ((cos_l_hip_yaw * t1238) - t1239) + ((Scalar(0.09) * t1222) - (Scalar(0.07) * t1242));
   const Scalar t1245 = ((sin_l_hip_yaw * t1238) + t1240) - (Scalar(0.07) * t1241);
   const Scalar t1246 = t1225 - (Scalar(0.09) * t1241);
-  // inward pass: body 1 l_hip_yaw_link
+  // inward pass, composite inertias (CRBA): body 1 l_hip_yaw_link
   const Scalar t1247 = cos_l_hip_yaw * t1194;
   const Scalar t1248 = sin_l_hip_yaw * t1222;
   const Scalar t1249 = t1247 - t1248;
@@ -2847,4 +2847,4 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   M[1443] = Scalar(0.0033875000000000003);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::mass_matrix_283a4a1dcbcc
+}  // namespace rbdc_gen::humanoid32::common::mass_matrix_3b44101fdf5b

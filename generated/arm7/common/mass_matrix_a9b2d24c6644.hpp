@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::mass_matrix_cfd6a58a598e {
+namespace rbdc_gen::arm7::common::mass_matrix_a9b2d24c6644 {
 
 /// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).
 ///
@@ -36,7 +36,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar cos_joint6 = joint_trig.cos[4];
   const Scalar sin_joint7 = joint_trig.sin[5];
   const Scalar cos_joint7 = joint_trig.cos[5];
-  // inward pass: body 7 link7
+  // inward pass, composite inertias (CRBA): body 7 link7
   const Scalar t0 = Scalar(0.0005812500000000001) * cos_joint7;
   const Scalar t1 = Scalar(0.0005812500000000001) * sin_joint7;
   const Scalar t2 = (cos_joint7 * t0) + (sin_joint7 * t1);
@@ -56,7 +56,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t16 = (t12 * sin_joint4) + (t11 * cos_joint4);
   const Scalar t17 = (t15 * sin_joint3) + (t13 * cos_joint3);
   const Scalar t18 = (t16 * cos_joint2) - (((t15 * cos_joint3) - (t13 * sin_joint3)) * sin_joint2);
-  // inward pass: body 6 link6
+  // inward pass, composite inertias (CRBA): body 6 link6
   const Scalar t19 = (Scalar(0.0033246023249400717) * cos_joint6) + (Scalar(0.04726753550266307) * sin_joint6);
   const Scalar t20 = Scalar(0.0033246023249400717) * sin_joint6;
   const Scalar t21 = Scalar(0.04726753550266307) * cos_joint6;
@@ -91,7 +91,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t50 = t45 + (Scalar(0.2) * t48);
   const Scalar t51 = ((sin_joint3 * t49) + (cos_joint3 * t50)) + (Scalar(0.22) * ((cos_joint3 * t48) - (sin_joint3 * t42)));
   const Scalar t52 = (cos_joint2 * t47) - (sin_joint2 * (((cos_joint3 * t49) - (sin_joint3 * t50)) - (Scalar(0.22) * ((sin_joint3 * t48) + (cos_joint3 * t42)))));
-  // inward pass: body 5 link5
+  // inward pass, composite inertias (CRBA): body 5 link5
   const Scalar t53 = cos_joint5 * t32;
   const Scalar t54 = Scalar(0.036480000000000005) * sin_joint5;
   const Scalar t55 = t53 - t54;
@@ -125,7 +125,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t83 = t71 - (Scalar(0.2) * t81);
   const Scalar t84 = ((sin_joint3 * t82) + (cos_joint3 * t83)) - (Scalar(0.22) * ((cos_joint3 * t81) + (sin_joint3 * t55)));
   const Scalar t85 = (cos_joint2 * t80) - (sin_joint2 * (((cos_joint3 * t82) - (sin_joint3 * t83)) - (Scalar(0.22) * ((cos_joint3 * t55) - (sin_joint3 * t81)))));
-  // inward pass: body 4 link4
+  // inward pass, composite inertias (CRBA): body 4 link4
   const Scalar t86 = cos_joint4 * t55;
   const Scalar t87 = sin_joint4 * t74;
   const Scalar t88 = t86 - t87;
@@ -153,7 +153,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t110 = t76 + t98;
   const Scalar t111 = ((sin_joint3 * t108) - (cos_joint3 * t110)) - (Scalar(0.22) * (cos_joint3 * t89));
   const Scalar t112 = (cos_joint2 * t109) - (sin_joint2 * (((cos_joint3 * t108) + (sin_joint3 * t110)) + (Scalar(0.22) * (sin_joint3 * t89))));
-  // inward pass: body 3 link3
+  // inward pass, composite inertias (CRBA): body 3 link3
   const Scalar t113 = cos_joint3 * t88;
   const Scalar t114 = sin_joint3 * t101;
   const Scalar t115 = sin_joint3 * t94;
@@ -165,7 +165,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t121 = ((sin_joint3 * t100) + (cos_joint3 * t105)) - (Scalar(0.22) * ((sin_joint3 * t88) + (cos_joint3 * t101)));
   const Scalar t122 = Scalar(0.00030010000000000003) + (t119 + (Scalar(0.22) * (t114 - t113)));
   const Scalar t123 = (cos_joint2 * t106) - (sin_joint2 * (t119 - (Scalar(0.22) * (t113 - t114))));
-  // inward pass: body 2 link2
+  // inward pass, composite inertias (CRBA): body 2 link2
   const Scalar t124 = (cos_joint2 * t122) - (sin_joint2 * (Scalar(0.0643) + (((cos_joint3 * ((cos_joint3 * t103) - t115)) - (sin_joint3 * (t116 - (sin_joint3 * t104)))) + t120)));
   const Scalar t125 = (cos_joint2 * (t121 - Scalar(0.01279))) - (sin_joint2 * (((cos_joint3 * t117) - (sin_joint3 * t118)) - Scalar(3.3299999999999996e-05)));
   // outputs
@@ -220,4 +220,4 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   M[48] = Scalar(0.0005);
 }
 
-}  // namespace rbdc_gen::arm7::common::mass_matrix_cfd6a58a598e
+}  // namespace rbdc_gen::arm7::common::mass_matrix_a9b2d24c6644

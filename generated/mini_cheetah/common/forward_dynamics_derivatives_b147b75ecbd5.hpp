@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_44199ef85e0a {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b147b75ecbd5 {
 
 /// Derivatives of the forward dynamics a = M⁻¹(Sᵀτ + Jᵀf − c − g): −M⁻¹ ∂(RNEA − τ_e) at (q, v, a),
 /// M⁻¹Sᵀ and M⁻¹Jᵀ, solved with the sparse LᵀDL factor of M.
@@ -3969,7 +3969,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t3848 = (t130 * t3846) - (t127 * t3847);
   const Scalar t3849 = (t123 * t3847) - (t130 * t3845);
   const Scalar t3850 = (t127 * t3845) - (t123 * t3846);
-  // inward pass: body 12 RH_knee
+  // inward pass, composite inertias (CRBA): body 12 RH_knee
   const Scalar t3851 = Scalar(0.003904) * sin_RH_knee_joint;
   const Scalar t3852 = Scalar(0.003904) * cos_RH_knee_joint;
   const Scalar t3853 = Scalar(0.000483144) * sin_RH_knee_joint;
@@ -3991,7 +3991,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t3869 = t3865 + (Scalar(0.049) * t3868);
   const Scalar t3870 = (Scalar(0.19) * t3868) - ((cos_RH_abad_joint * t881) + (sin_RH_abad_joint * t3866));
   const Scalar t3871 = ((cos_RH_abad_joint * t3866) - (sin_RH_abad_joint * t881)) + ((Scalar(0.19) * t3867) + (Scalar(0.049) * t3864));
-  // inward pass: body 11 RH_hip
+  // inward pass, composite inertias (CRBA): body 11 RH_hip
   const Scalar t3872 = sin_RH_hip_joint * t3856;
   const Scalar t3873 = t3861 + (cos_RH_hip_joint * t3856);
   const Scalar t3874 = sin_RH_hip_joint * t3858;
@@ -4013,7 +4013,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t3890 = (t3877 - t3878) - t3882;
   const Scalar t3891 = sin_RH_abad_joint * t3880;
   const Scalar t3892 = cos_RH_abad_joint * t3880;
-  // inward pass: body 10 RH_abad
+  // inward pass, composite inertias (CRBA): body 10 RH_abad
   const Scalar t3893 = (Scalar(0.052571999999999994) * cos_RH_abad_joint) + (sin_RH_abad_joint * t3873);
   const Scalar t3894 = Scalar(0.052571999999999994) * sin_RH_abad_joint;
   const Scalar t3895 = cos_RH_abad_joint * t3873;
@@ -4031,7 +4031,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t3907 = ((sin_RH_abad_joint * t3884) + (cos_RH_abad_joint * t3885)) - (Scalar(0.19) * t3904);
   const Scalar t3908 = Scalar(0.036203) + (((cos_RH_abad_joint * ((cos_RH_abad_joint * t3886) - t3898)) - (sin_RH_abad_joint * (t3899 - (sin_RH_abad_joint * t3888)))) - ((Scalar(0.19) * t3880) + t3906));
   const Scalar t3909 = Scalar(0.042673) + (((sin_RH_abad_joint * t3900) + (cos_RH_abad_joint * t3901)) - ((t3906 - (Scalar(0.049) * (t3893 + Scalar(0.060662)))) - (t3905 + (Scalar(0.19) * (t3872 - t3862)))));
-  // inward pass: body 9 LH_knee
+  // inward pass, composite inertias (CRBA): body 9 LH_knee
   const Scalar t3910 = Scalar(0.003904) * sin_LH_knee_joint;
   const Scalar t3911 = Scalar(0.003904) * cos_LH_knee_joint;
   const Scalar t3912 = Scalar(0.000483144) * sin_LH_knee_joint;
@@ -4053,7 +4053,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t3928 = t3924 + (Scalar(0.049) * t3927);
   const Scalar t3929 = ((sin_LH_abad_joint * t3925) - (cos_LH_abad_joint * t1744)) + (Scalar(0.19) * t3927);
   const Scalar t3930 = ((Scalar(0.19) * t3926) - (Scalar(0.049) * t3923)) - ((sin_LH_abad_joint * t1744) + (cos_LH_abad_joint * t3925));
-  // inward pass: body 8 LH_hip
+  // inward pass, composite inertias (CRBA): body 8 LH_hip
   const Scalar t3931 = sin_LH_hip_joint * t3915;
   const Scalar t3932 = t3920 + (cos_LH_hip_joint * t3915);
   const Scalar t3933 = sin_LH_hip_joint * t3917;
@@ -4075,7 +4075,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t3949 = (t3937 - t3936) + t3941;
   const Scalar t3950 = sin_LH_abad_joint * t3939;
   const Scalar t3951 = cos_LH_abad_joint * t3939;
-  // inward pass: body 7 LH_abad
+  // inward pass, composite inertias (CRBA): body 7 LH_abad
   const Scalar t3952 = Scalar(0.052571999999999994) * cos_LH_abad_joint;
   const Scalar t3953 = sin_LH_abad_joint * t3932;
   const Scalar t3954 = t3952 - t3953;
@@ -4095,7 +4095,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t3968 = (t3897 + ((Scalar(0.049) * t3880) + (Scalar(0.19) * t3903))) + (t3956 - ((Scalar(0.049) * t3939) - (Scalar(0.19) * t3962)));
   const Scalar t3969 = t3908 + (((cos_LH_abad_joint * ((cos_LH_abad_joint * t3945) - t3957)) - (sin_LH_abad_joint * (t3958 - (sin_LH_abad_joint * t3947)))) - ((Scalar(0.19) * t3939) + t3965));
   const Scalar t3970 = (((cos_RH_abad_joint * t3900) - (sin_RH_abad_joint * t3901)) + (Scalar(0.049) * t3896)) + (((cos_LH_abad_joint * t3959) - (sin_LH_abad_joint * t3960)) - (Scalar(0.049) * t3955));
-  // inward pass: body 6 RF_knee
+  // inward pass, composite inertias (CRBA): body 6 RF_knee
   const Scalar t3971 = Scalar(0.003904) * sin_RF_knee_joint;
   const Scalar t3972 = Scalar(0.003904) * cos_RF_knee_joint;
   const Scalar t3973 = Scalar(0.000483144) * sin_RF_knee_joint;
@@ -4117,7 +4117,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t3989 = t3985 + (Scalar(0.049) * t3988);
   const Scalar t3990 = ((cos_RF_abad_joint * t2134) + (sin_RF_abad_joint * t3986)) + (Scalar(0.19) * t3988);
   const Scalar t3991 = ((cos_RF_abad_joint * t3986) - (sin_RF_abad_joint * t2134)) + ((Scalar(0.049) * t3984) - (Scalar(0.19) * t3987));
-  // inward pass: body 5 RF_hip
+  // inward pass, composite inertias (CRBA): body 5 RF_hip
   const Scalar t3992 = sin_RF_hip_joint * t3976;
   const Scalar t3993 = t3981 + (cos_RF_hip_joint * t3976);
   const Scalar t3994 = sin_RF_hip_joint * t3978;
@@ -4139,7 +4139,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t4010 = (t3997 - t3998) - t4002;
   const Scalar t4011 = sin_RF_abad_joint * t4000;
   const Scalar t4012 = cos_RF_abad_joint * t4000;
-  // inward pass: body 4 RF_abad
+  // inward pass, composite inertias (CRBA): body 4 RF_abad
   const Scalar t4013 = (Scalar(0.052571999999999994) * cos_RF_abad_joint) + (sin_RF_abad_joint * t3993);
   const Scalar t4014 = Scalar(0.052571999999999994) * sin_RF_abad_joint;
   const Scalar t4015 = cos_RF_abad_joint * t3993;
@@ -4158,7 +4158,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t4028 = ((sin_RF_abad_joint * t4020) + (cos_RF_abad_joint * t4021)) - (((Scalar(0.19) * (t3992 - t3982)) - t4025) - (t4026 + (Scalar(0.049) * (t4013 + Scalar(0.060662)))));
   const Scalar t4029 = t3969 + (((cos_RF_abad_joint * ((cos_RF_abad_joint * t4006) - t4018)) - (sin_RF_abad_joint * (t4019 - (sin_RF_abad_joint * t4008)))) + ((Scalar(0.19) * t4000) + t4026));
   const Scalar t4030 = (t3909 + (((sin_LH_abad_joint * t3959) + (cos_LH_abad_joint * t3960)) - ((t3965 - t3964) - (t3963 + (Scalar(0.19) * (t3931 - t3921)))))) + t4028;
-  // inward pass: body 3 LF_knee
+  // inward pass, composite inertias (CRBA): body 3 LF_knee
   const Scalar t4031 = Scalar(0.003904) * sin_LF_knee_joint;
   const Scalar t4032 = Scalar(0.003904) * cos_LF_knee_joint;
   const Scalar t4033 = Scalar(0.000483144) * sin_LF_knee_joint;
@@ -4180,7 +4180,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t4049 = t4045 + (Scalar(0.049) * t4048);
   const Scalar t4050 = ((sin_LF_abad_joint * t4046) - (cos_LF_abad_joint * t2995)) - (Scalar(0.19) * t4048);
   const Scalar t4051 = ((sin_LF_abad_joint * t2995) + (cos_LF_abad_joint * t4046)) + ((Scalar(0.19) * t4047) + (Scalar(0.049) * t4044));
-  // inward pass: body 2 LF_hip
+  // inward pass, composite inertias (CRBA): body 2 LF_hip
   const Scalar t4052 = sin_LF_hip_joint * t4036;
   const Scalar t4053 = t4041 + (cos_LF_hip_joint * t4036);
   const Scalar t4054 = sin_LF_hip_joint * t4038;
@@ -4202,7 +4202,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t4070 = (t4058 - t4057) + t4062;
   const Scalar t4071 = sin_LF_abad_joint * t4060;
   const Scalar t4072 = cos_LF_abad_joint * t4060;
-  // inward pass: body 1 LF_abad
+  // inward pass, composite inertias (CRBA): body 1 LF_abad
   const Scalar t4073 = Scalar(0.052571999999999994) * cos_LF_abad_joint;
   const Scalar t4074 = sin_LF_abad_joint * t4053;
   const Scalar t4075 = t4073 - t4074;
@@ -8404,4 +8404,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   da_df[215] = ((t5918 - (t4105 * t5898)) - (t4107 * t5897)) + (t4109 * t5896);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_44199ef85e0a
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b147b75ecbd5

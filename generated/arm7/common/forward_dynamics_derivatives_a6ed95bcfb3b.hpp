@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_9373c1272e2c {
+namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_a6ed95bcfb3b {
 
 /// Derivatives of the forward dynamics a = M⁻¹(Sᵀτ + Jᵀf − c − g): −M⁻¹ ∂(RNEA − τ_e) at (q, v, a),
 /// M⁻¹Sᵀ and M⁻¹Jᵀ, solved with the sparse LᵀDL factor of M.
@@ -1592,7 +1592,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t1516 = (t54 * t1515) - (t56 * t1514);
   const Scalar t1517 = (t56 * t1513) - (t52 * t1515);
   const Scalar t1518 = (t52 * t1514) - (t54 * t1513);
-  // inward pass: body 7 link7
+  // inward pass, composite inertias (CRBA): body 7 link7
   const Scalar t1519 = (cos_joint7 * t884) + (sin_joint7 * t974);
   const Scalar t1520 = (cos_joint7 * t974) - (sin_joint7 * t884);
   const Scalar t1521 = Scalar(0.955336489125606) * t1520;
@@ -1609,7 +1609,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t1532 = (sin_joint4 * t1529) + (cos_joint4 * t1528);
   const Scalar t1533 = (sin_joint3 * t1531) + (cos_joint3 * t1530);
   const Scalar t1534 = (cos_joint2 * t1532) - (sin_joint2 * ((cos_joint3 * t1531) - (sin_joint3 * t1530)));
-  // inward pass: body 6 link6
+  // inward pass, composite inertias (CRBA): body 6 link6
   const Scalar t1535 = (Scalar(0.0033246023249400717) * cos_joint6) + (Scalar(0.04726753550266307) * sin_joint6);
   const Scalar t1536 = Scalar(0.0033246023249400717) * sin_joint6;
   const Scalar t1537 = Scalar(0.04726753550266307) * cos_joint6;
@@ -1643,7 +1643,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t1565 = t1561 + (Scalar(0.2) * t1563);
   const Scalar t1566 = ((sin_joint3 * t1564) + (cos_joint3 * t1565)) + (Scalar(0.22) * ((cos_joint3 * t1563) - (sin_joint3 * t1558)));
   const Scalar t1567 = (cos_joint2 * t1562) - (sin_joint2 * (((cos_joint3 * t1564) - (sin_joint3 * t1565)) - (Scalar(0.22) * ((sin_joint3 * t1563) + (cos_joint3 * t1558)))));
-  // inward pass: body 5 link5
+  // inward pass, composite inertias (CRBA): body 5 link5
   const Scalar t1568 = cos_joint5 * t1548;
   const Scalar t1569 = Scalar(0.036480000000000005) * sin_joint5;
   const Scalar t1570 = t1568 - t1569;
@@ -1675,7 +1675,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t1596 = ((cos_joint4 * t1587) - (sin_joint4 * t1555)) - t1583;
   const Scalar t1597 = t1586 - (Scalar(0.2) * t1595);
   const Scalar t1598 = (cos_joint2 * t1594) - (sin_joint2 * (((cos_joint3 * t1596) - (sin_joint3 * t1597)) - (Scalar(0.22) * ((cos_joint3 * t1570) - (sin_joint3 * t1595)))));
-  // inward pass: body 4 link4
+  // inward pass, composite inertias (CRBA): body 4 link4
   const Scalar t1599 = cos_joint4 * t1570;
   const Scalar t1600 = sin_joint4 * t1589;
   const Scalar t1601 = t1599 - t1600;
@@ -1701,7 +1701,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t1621 = t1606 + (cos_joint4 * t1620);
   const Scalar t1622 = (sin_joint4 * t1620) - t1608;
   const Scalar t1623 = t1591 + t1611;
-  // inward pass: body 3 link3
+  // inward pass, composite inertias (CRBA): body 3 link3
   const Scalar t1624 = cos_joint3 * t1601;
   const Scalar t1625 = sin_joint3 * t1614;
   const Scalar t1626 = sin_joint3 * t1607;
@@ -1712,9 +1712,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   const Scalar t1631 = (Scalar(0.22) * t1615) + (Scalar(0.22) * (Scalar(1.903) + t1615));
   const Scalar t1632 = ((sin_joint3 * t1613) + (cos_joint3 * t1618)) - (Scalar(0.22) * ((sin_joint3 * t1601) + (cos_joint3 * t1614)));
   const Scalar t1633 = Scalar(0.00030010000000000003) + (t1630 + (Scalar(0.22) * (t1625 - t1624)));
-  // inward pass: body 2 link2
+  // inward pass, composite inertias (CRBA): body 2 link2
   const Scalar t1634 = (cos_joint2 * t1633) - (sin_joint2 * (Scalar(0.0643) + (((cos_joint3 * ((cos_joint3 * t1616) - t1626)) - (sin_joint3 * (t1627 - (sin_joint3 * t1617)))) + t1631)));
-  // inward pass: body 1 link1
+  // inward pass, composite inertias (CRBA): body 1 link1
   const Scalar t1635 = Scalar(2000) * t1528;
   const Scalar t1636 = Scalar(2000) * t1530;
   const Scalar t1637 = ((cos_joint2 * t1622) - (sin_joint2 * (((cos_joint3 * t1621) + (sin_joint3 * t1623)) + (Scalar(0.22) * (sin_joint3 * t1602))))) + (t1534 * t1636);
@@ -2739,4 +2739,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   da_df[20] = (((((Scalar(2000) * t1518) - (t1635 * t1834)) + (t1636 * t1833)) - (t1638 * t1832)) - (t1639 * t1831)) - (t1640 * t1830);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_9373c1272e2c
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_a6ed95bcfb3b

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_78b2cfb18f5c {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_03aa50087976 {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).
 ///
@@ -562,7 +562,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t446 = tau[5] - t300;
   const Scalar t447 = tau[8] - t333;
   const Scalar t448 = tau[11] - t366;
-  // inward pass: body 12 RH_knee
+  // inward pass, composite inertias (CRBA): body 12 RH_knee
   const Scalar t449 = Scalar(0.003904) * sin_RH_knee_joint;
   const Scalar t450 = Scalar(0.003904) * cos_RH_knee_joint;
   const Scalar t451 = Scalar(0.000483144) * sin_RH_knee_joint;
@@ -586,7 +586,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t469 = t465 + (Scalar(0.049) * t468);
   const Scalar t470 = (Scalar(0.19) * t468) - ((cos_RH_abad_joint * t460) + (sin_RH_abad_joint * t466));
   const Scalar t471 = ((cos_RH_abad_joint * t466) - (sin_RH_abad_joint * t460)) + ((Scalar(0.19) * t467) + (Scalar(0.049) * t464));
-  // inward pass: body 11 RH_hip
+  // inward pass, composite inertias (CRBA): body 11 RH_hip
   const Scalar t472 = sin_RH_hip_joint * t455;
   const Scalar t473 = t461 + (cos_RH_hip_joint * t455);
   const Scalar t474 = sin_RH_hip_joint * t457;
@@ -609,7 +609,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t491 = (t478 - t479) - t483;
   const Scalar t492 = sin_RH_abad_joint * t481;
   const Scalar t493 = cos_RH_abad_joint * t481;
-  // inward pass: body 10 RH_abad
+  // inward pass, composite inertias (CRBA): body 10 RH_abad
   const Scalar t494 = (Scalar(0.052571999999999994) * cos_RH_abad_joint) + (sin_RH_abad_joint * t473);
   const Scalar t495 = Scalar(0.052571999999999994) * sin_RH_abad_joint;
   const Scalar t496 = cos_RH_abad_joint * t473;
@@ -627,7 +627,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t508 = ((sin_RH_abad_joint * t485) + (cos_RH_abad_joint * t486)) - (Scalar(0.19) * t505);
   const Scalar t509 = Scalar(0.036203) + (((cos_RH_abad_joint * ((cos_RH_abad_joint * t487) - t499)) - (sin_RH_abad_joint * (t500 - (sin_RH_abad_joint * t489)))) - ((Scalar(0.19) * t481) + t507));
   const Scalar t510 = Scalar(0.042673) + (((sin_RH_abad_joint * t501) + (cos_RH_abad_joint * t502)) - ((t507 - (Scalar(0.049) * (t494 + Scalar(0.060662)))) - (t506 + (Scalar(0.19) * (t472 - t462)))));
-  // inward pass: body 9 LH_knee
+  // inward pass, composite inertias (CRBA): body 9 LH_knee
   const Scalar t511 = Scalar(0.003904) * sin_LH_knee_joint;
   const Scalar t512 = Scalar(0.003904) * cos_LH_knee_joint;
   const Scalar t513 = Scalar(0.000483144) * sin_LH_knee_joint;
@@ -651,7 +651,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t531 = t527 + (Scalar(0.049) * t530);
   const Scalar t532 = ((sin_LH_abad_joint * t528) - (cos_LH_abad_joint * t522)) + (Scalar(0.19) * t530);
   const Scalar t533 = ((Scalar(0.19) * t529) - (Scalar(0.049) * t526)) - ((sin_LH_abad_joint * t522) + (cos_LH_abad_joint * t528));
-  // inward pass: body 8 LH_hip
+  // inward pass, composite inertias (CRBA): body 8 LH_hip
   const Scalar t534 = sin_LH_hip_joint * t517;
   const Scalar t535 = t523 + (cos_LH_hip_joint * t517);
   const Scalar t536 = sin_LH_hip_joint * t519;
@@ -674,7 +674,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t553 = (t541 - t540) + t545;
   const Scalar t554 = sin_LH_abad_joint * t543;
   const Scalar t555 = cos_LH_abad_joint * t543;
-  // inward pass: body 7 LH_abad
+  // inward pass, composite inertias (CRBA): body 7 LH_abad
   const Scalar t556 = Scalar(0.052571999999999994) * cos_LH_abad_joint;
   const Scalar t557 = sin_LH_abad_joint * t535;
   const Scalar t558 = t556 - t557;
@@ -694,7 +694,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t572 = (t498 + ((Scalar(0.049) * t481) + (Scalar(0.19) * t504))) + (t560 - ((Scalar(0.049) * t543) - (Scalar(0.19) * t566)));
   const Scalar t573 = t509 + (((cos_LH_abad_joint * ((cos_LH_abad_joint * t549) - t561)) - (sin_LH_abad_joint * (t562 - (sin_LH_abad_joint * t551)))) - ((Scalar(0.19) * t543) + t569));
   const Scalar t574 = (((cos_RH_abad_joint * t501) - (sin_RH_abad_joint * t502)) + (Scalar(0.049) * t497)) + (((cos_LH_abad_joint * t563) - (sin_LH_abad_joint * t564)) - (Scalar(0.049) * t559));
-  // inward pass: body 6 RF_knee
+  // inward pass, composite inertias (CRBA): body 6 RF_knee
   const Scalar t575 = Scalar(0.003904) * sin_RF_knee_joint;
   const Scalar t576 = Scalar(0.003904) * cos_RF_knee_joint;
   const Scalar t577 = Scalar(0.000483144) * sin_RF_knee_joint;
@@ -718,7 +718,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t595 = t591 + (Scalar(0.049) * t594);
   const Scalar t596 = ((cos_RF_abad_joint * t586) + (sin_RF_abad_joint * t592)) + (Scalar(0.19) * t594);
   const Scalar t597 = ((cos_RF_abad_joint * t592) - (sin_RF_abad_joint * t586)) + ((Scalar(0.049) * t590) - (Scalar(0.19) * t593));
-  // inward pass: body 5 RF_hip
+  // inward pass, composite inertias (CRBA): body 5 RF_hip
   const Scalar t598 = sin_RF_hip_joint * t581;
   const Scalar t599 = t587 + (cos_RF_hip_joint * t581);
   const Scalar t600 = sin_RF_hip_joint * t583;
@@ -741,7 +741,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t617 = (t604 - t605) - t609;
   const Scalar t618 = sin_RF_abad_joint * t607;
   const Scalar t619 = cos_RF_abad_joint * t607;
-  // inward pass: body 4 RF_abad
+  // inward pass, composite inertias (CRBA): body 4 RF_abad
   const Scalar t620 = (Scalar(0.052571999999999994) * cos_RF_abad_joint) + (sin_RF_abad_joint * t599);
   const Scalar t621 = Scalar(0.052571999999999994) * sin_RF_abad_joint;
   const Scalar t622 = cos_RF_abad_joint * t599;
@@ -760,7 +760,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t635 = ((sin_RF_abad_joint * t627) + (cos_RF_abad_joint * t628)) - (((Scalar(0.19) * (t598 - t588)) - t632) - (t633 + (Scalar(0.049) * (t620 + Scalar(0.060662)))));
   const Scalar t636 = t573 + (((cos_RF_abad_joint * ((cos_RF_abad_joint * t613) - t625)) - (sin_RF_abad_joint * (t626 - (sin_RF_abad_joint * t615)))) + ((Scalar(0.19) * t607) + t633));
   const Scalar t637 = (t510 + (((sin_LH_abad_joint * t563) + (cos_LH_abad_joint * t564)) - ((t569 - t568) - (t567 + (Scalar(0.19) * (t534 - t524)))))) + t635;
-  // inward pass: body 3 LF_knee
+  // inward pass, composite inertias (CRBA): body 3 LF_knee
   const Scalar t638 = Scalar(0.003904) * sin_LF_knee_joint;
   const Scalar t639 = Scalar(0.003904) * cos_LF_knee_joint;
   const Scalar t640 = Scalar(0.000483144) * sin_LF_knee_joint;
@@ -784,7 +784,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t658 = t654 + (Scalar(0.049) * t657);
   const Scalar t659 = ((sin_LF_abad_joint * t655) - (cos_LF_abad_joint * t649)) - (Scalar(0.19) * t657);
   const Scalar t660 = ((sin_LF_abad_joint * t649) + (cos_LF_abad_joint * t655)) + ((Scalar(0.19) * t656) + (Scalar(0.049) * t653));
-  // inward pass: body 2 LF_hip
+  // inward pass, composite inertias (CRBA): body 2 LF_hip
   const Scalar t661 = sin_LF_hip_joint * t644;
   const Scalar t662 = t650 + (cos_LF_hip_joint * t644);
   const Scalar t663 = sin_LF_hip_joint * t646;
@@ -807,7 +807,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t680 = (t668 - t667) + t672;
   const Scalar t681 = sin_LF_abad_joint * t670;
   const Scalar t682 = cos_LF_abad_joint * t670;
-  // inward pass: body 1 LF_abad
+  // inward pass, composite inertias (CRBA): body 1 LF_abad
   const Scalar t683 = Scalar(0.052571999999999994) * cos_LF_abad_joint;
   const Scalar t684 = sin_LF_abad_joint * t662;
   const Scalar t685 = t683 - t684;
@@ -1125,4 +1125,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[17] = ((t976 - (t715 * t953)) - (t717 * t952)) + (t719 * t951);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_78b2cfb18f5c
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_03aa50087976

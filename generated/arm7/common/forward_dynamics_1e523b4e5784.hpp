@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_b4302ca94dd2 {
+namespace rbdc_gen::arm7::common::forward_dynamics_1e523b4e5784 {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).
 ///
@@ -276,7 +276,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t201 = tau[0] - (t200 - (sin_joint2 * (t115 + (((cos_joint3 * t195) - (sin_joint3 * t196)) - (Scalar(0.22) * ((sin_joint3 * t198) + (cos_joint3 * t199)))))));
   const Scalar t202 = tau[5] - t175;
   const Scalar t203 = tau[6] - t163;
-  // inward pass: body 7 link7
+  // inward pass, composite inertias (CRBA): body 7 link7
   const Scalar t204 = Scalar(0.0005812500000000001) * cos_joint7;
   const Scalar t205 = Scalar(0.0005812500000000001) * sin_joint7;
   const Scalar t206 = (cos_joint7 * t204) + (sin_joint7 * t205);
@@ -295,7 +295,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t219 = (sin_joint4 * t216) + (cos_joint4 * t215);
   const Scalar t220 = (sin_joint3 * t218) + (cos_joint3 * t217);
   const Scalar t221 = (cos_joint2 * t219) - (sin_joint2 * ((cos_joint3 * t218) - (sin_joint3 * t217)));
-  // inward pass: body 6 link6
+  // inward pass, composite inertias (CRBA): body 6 link6
   const Scalar t222 = (Scalar(0.0033246023249400717) * cos_joint6) + (Scalar(0.04726753550266307) * sin_joint6);
   const Scalar t223 = Scalar(0.0033246023249400717) * sin_joint6;
   const Scalar t224 = Scalar(0.04726753550266307) * cos_joint6;
@@ -329,7 +329,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t252 = t248 + (Scalar(0.2) * t250);
   const Scalar t253 = ((sin_joint3 * t251) + (cos_joint3 * t252)) + (Scalar(0.22) * ((cos_joint3 * t250) - (sin_joint3 * t245)));
   const Scalar t254 = (cos_joint2 * t249) - (sin_joint2 * (((cos_joint3 * t251) - (sin_joint3 * t252)) - (Scalar(0.22) * ((sin_joint3 * t250) + (cos_joint3 * t245)))));
-  // inward pass: body 5 link5
+  // inward pass, composite inertias (CRBA): body 5 link5
   const Scalar t255 = cos_joint5 * t235;
   const Scalar t256 = Scalar(0.036480000000000005) * sin_joint5;
   const Scalar t257 = t255 - t256;
@@ -361,7 +361,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t283 = ((cos_joint4 * t274) - (sin_joint4 * t242)) - t270;
   const Scalar t284 = t273 - (Scalar(0.2) * t282);
   const Scalar t285 = (cos_joint2 * t281) - (sin_joint2 * (((cos_joint3 * t283) - (sin_joint3 * t284)) - (Scalar(0.22) * ((cos_joint3 * t257) - (sin_joint3 * t282)))));
-  // inward pass: body 4 link4
+  // inward pass, composite inertias (CRBA): body 4 link4
   const Scalar t286 = cos_joint4 * t257;
   const Scalar t287 = sin_joint4 * t276;
   const Scalar t288 = t286 - t287;
@@ -387,7 +387,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t308 = t293 + (cos_joint4 * t307);
   const Scalar t309 = (sin_joint4 * t307) - t295;
   const Scalar t310 = t278 + t298;
-  // inward pass: body 3 link3
+  // inward pass, composite inertias (CRBA): body 3 link3
   const Scalar t311 = cos_joint3 * t288;
   const Scalar t312 = sin_joint3 * t301;
   const Scalar t313 = sin_joint3 * t294;
@@ -398,7 +398,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t318 = (Scalar(0.22) * t302) + (Scalar(0.22) * (Scalar(1.903) + t302));
   const Scalar t319 = ((sin_joint3 * t300) + (cos_joint3 * t305)) - (Scalar(0.22) * ((sin_joint3 * t288) + (cos_joint3 * t301)));
   const Scalar t320 = Scalar(0.00030010000000000003) + (t317 + (Scalar(0.22) * (t312 - t311)));
-  // inward pass: body 2 link2
+  // inward pass, composite inertias (CRBA): body 2 link2
   const Scalar t321 = (cos_joint2 * t320) - (sin_joint2 * (Scalar(0.0643) + (((cos_joint3 * ((cos_joint3 * t303) - t313)) - (sin_joint3 * (t314 - (sin_joint3 * t304)))) + t318)));
   // factorisation M = LᵀDL
   const Scalar t322 = Scalar(2000) * t215;
@@ -463,4 +463,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[6] = (((((Scalar(2000) * t203) - (t322 * t372)) + (t323 * t371)) - (t325 * t370)) - (t326 * t369)) - (t327 * t368);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_b4302ca94dd2
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_1e523b4e5784

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::two_link::common::forward_dynamics_32035964f7df {
+namespace rbdc_gen::two_link::common::forward_dynamics_adbce1d2cb4e {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).
 ///
@@ -49,10 +49,10 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t11 = (((t5 * t8) - (v[1] * t7)) - (Scalar(0.05) * t2)) + (q[1] * t9);
   // inward pass: body 1 upper
   const Scalar t12 = Scalar(0.6) * (((Scalar(0.8775825618903726) * t11) - (Scalar(0.3) * t9)) - ((Scalar(0.8829) * sin_shoulder) + ((Scalar(0.8) * v[0]) * t6)));
-  // inward pass: body 2 slider
+  // inward pass, composite inertias (CRBA): body 2 slider
   const Scalar t13 = Scalar(0.001) + (q[1] * (Scalar(0.5) * q[1]));
   const Scalar t14 = ((Scalar(0.4207354924039483) * t13) - Scalar(0.00042073549240394833)) - (Scalar(0.07191383079063046) * q[1]);
-  // inward pass: body 1 upper
+  // inward pass, composite inertias (CRBA): body 1 upper
   const Scalar t15 = (Scalar(0.6) * (Scalar(0.0325) + ((Scalar(0.00022984884706593026) + (Scalar(0.7701511529340698) * t13)) - ((Scalar(0.1316373842835559) * q[1]) - (Scalar(0.3) * (Scalar(0.15) - (Scalar(0.4387912809451863) * q[1]))))))) + (Scalar(0.8) * t14);
   // factorisation M = LᵀDL
   const Scalar t16 = Scalar(1) / ((Scalar(0.6) * t15) + (Scalar(0.8) * ((Scalar(0.6) * t14) + (Scalar(0.8) * (Scalar(0.002698657540361287) + (Scalar(0.0007701511529340698) + (Scalar(0.22984884706593026) * t13)))))));
@@ -61,4 +61,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[1] = Scalar(2) * (tau[1] - t10);
 }
 
-}  // namespace rbdc_gen::two_link::common::forward_dynamics_32035964f7df
+}  // namespace rbdc_gen::two_link::common::forward_dynamics_adbce1d2cb4e

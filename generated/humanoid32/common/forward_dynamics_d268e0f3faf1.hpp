@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_1c0a87758ae3 {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_d268e0f3faf1 {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).
 ///
@@ -1415,7 +1415,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1157 = tau[24] - t868;
   const Scalar t1158 = tau[30] - t943;
   const Scalar t1159 = tau[31] - t934;
-  // inward pass: body 32 r_hand
+  // inward pass, composite inertias (CRBA): body 32 r_hand
   const Scalar t1160 = Scalar(0.035) * sin_r_wrist_roll;
   const Scalar t1161 = Scalar(0.035) * cos_r_wrist_roll;
   const Scalar t1162 = Scalar(0.0031166666670000005) * sin_r_wrist_roll;
@@ -1467,7 +1467,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1208 = (sin_waist_yaw * t1203) + (cos_waist_yaw * t1200);
   const Scalar t1209 = ((cos_waist_yaw * t1205) - (sin_waist_yaw * t1206)) - (Scalar(0.1) * t1208);
   const Scalar t1210 = ((sin_waist_yaw * t1205) + (cos_waist_yaw * t1206)) + (Scalar(0.1) * t1207);
-  // inward pass: body 31 r_wrist_pitch_link
+  // inward pass, composite inertias (CRBA): body 31 r_wrist_pitch_link
   const Scalar t1211 = sin_r_wrist_pitch * t1161;
   const Scalar t1212 = cos_r_wrist_pitch * t1161;
   const Scalar t1213 = Scalar(0.0035125000000000004) * sin_r_wrist_pitch;
@@ -1524,7 +1524,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1264 = (sin_waist_yaw * t1259) + (cos_waist_yaw * t1256);
   const Scalar t1265 = ((cos_waist_yaw * t1261) - (sin_waist_yaw * t1262)) - (Scalar(0.1) * t1264);
   const Scalar t1266 = ((sin_waist_yaw * t1261) + (cos_waist_yaw * t1262)) + (Scalar(0.1) * t1263);
-  // inward pass: body 30 r_wrist_yaw_link
+  // inward pass, composite inertias (CRBA): body 30 r_wrist_yaw_link
   const Scalar t1267 = (cos_r_wrist_yaw * t1211) + (sin_r_wrist_yaw * t1160);
   const Scalar t1268 = sin_r_wrist_yaw * t1211;
   const Scalar t1269 = cos_r_wrist_yaw * t1160;
@@ -1576,7 +1576,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1315 = t1309 + (Scalar(0.05) * t1313);
   const Scalar t1316 = (cos_waist_yaw * t1313) - (sin_waist_yaw * t1311);
   const Scalar t1317 = (sin_waist_yaw * t1313) + (cos_waist_yaw * t1311);
-  // inward pass: body 29 r_forearm
+  // inward pass, composite inertias (CRBA): body 29 r_forearm
   const Scalar t1318 = cos_r_elbow * t1267;
   const Scalar t1319 = sin_r_elbow * t1281;
   const Scalar t1320 = t1319 - t1318;
@@ -1624,7 +1624,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1362 = t1356 + (Scalar(0.05) * t1360);
   const Scalar t1363 = (cos_waist_yaw * t1360) - (sin_waist_yaw * t1358);
   const Scalar t1364 = (sin_waist_yaw * t1360) + (cos_waist_yaw * t1358);
-  // inward pass: body 28 r_upper_arm
+  // inward pass, composite inertias (CRBA): body 28 r_upper_arm
   const Scalar t1365 = cos_r_shoulder_yaw * t1320;
   const Scalar t1366 = sin_r_shoulder_yaw * t1270;
   const Scalar t1367 = t1365 - t1366;
@@ -1670,7 +1670,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1407 = t1401 + (Scalar(0.05) * t1405);
   const Scalar t1408 = (cos_waist_yaw * t1405) - (sin_waist_yaw * t1403);
   const Scalar t1409 = (sin_waist_yaw * t1405) + (cos_waist_yaw * t1403);
-  // inward pass: body 27 r_shoulder_roll_link
+  // inward pass, composite inertias (CRBA): body 27 r_shoulder_roll_link
   const Scalar t1410 = cos_r_shoulder_roll * t1369;
   const Scalar t1411 = sin_r_shoulder_roll * t1380;
   const Scalar t1412 = t1410 - t1411;
@@ -1710,7 +1710,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1446 = t1440 + (Scalar(0.05) * t1444);
   const Scalar t1447 = (cos_waist_yaw * t1444) - (sin_waist_yaw * t1442);
   const Scalar t1448 = (sin_waist_yaw * t1444) + (cos_waist_yaw * t1442);
-  // inward pass: body 26 r_shoulder_pitch_link
+  // inward pass, composite inertias (CRBA): body 26 r_shoulder_pitch_link
   const Scalar t1449 = sin_r_shoulder_pitch * t1413;
   const Scalar t1450 = (cos_r_shoulder_pitch * t1367) + t1449;
   const Scalar t1451 = cos_r_shoulder_pitch * t1413;
@@ -1755,7 +1755,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1490 = t1484 + (Scalar(0.05) * t1488);
   const Scalar t1491 = (cos_waist_yaw * t1488) - (sin_waist_yaw * t1486);
   const Scalar t1492 = (sin_waist_yaw * t1488) + (cos_waist_yaw * t1486);
-  // inward pass: body 25 l_hand
+  // inward pass, composite inertias (CRBA): body 25 l_hand
   const Scalar t1493 = Scalar(0.035) * sin_l_wrist_roll;
   const Scalar t1494 = Scalar(0.035) * cos_l_wrist_roll;
   const Scalar t1495 = Scalar(0.0031166666670000005) * sin_l_wrist_roll;
@@ -1807,7 +1807,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1541 = (sin_waist_yaw * t1536) + (cos_waist_yaw * t1533);
   const Scalar t1542 = ((cos_waist_yaw * t1538) - (sin_waist_yaw * t1539)) - (Scalar(0.1) * t1541);
   const Scalar t1543 = ((sin_waist_yaw * t1538) + (cos_waist_yaw * t1539)) + (Scalar(0.1) * t1540);
-  // inward pass: body 24 l_wrist_pitch_link
+  // inward pass, composite inertias (CRBA): body 24 l_wrist_pitch_link
   const Scalar t1544 = sin_l_wrist_pitch * t1494;
   const Scalar t1545 = cos_l_wrist_pitch * t1494;
   const Scalar t1546 = Scalar(0.0035125000000000004) * sin_l_wrist_pitch;
@@ -1864,7 +1864,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1597 = (sin_waist_yaw * t1592) + (cos_waist_yaw * t1589);
   const Scalar t1598 = ((cos_waist_yaw * t1594) - (sin_waist_yaw * t1595)) - (Scalar(0.1) * t1597);
   const Scalar t1599 = ((sin_waist_yaw * t1594) + (cos_waist_yaw * t1595)) + (Scalar(0.1) * t1596);
-  // inward pass: body 23 l_wrist_yaw_link
+  // inward pass, composite inertias (CRBA): body 23 l_wrist_yaw_link
   const Scalar t1600 = (cos_l_wrist_yaw * t1544) + (sin_l_wrist_yaw * t1493);
   const Scalar t1601 = sin_l_wrist_yaw * t1544;
   const Scalar t1602 = cos_l_wrist_yaw * t1493;
@@ -1916,7 +1916,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1648 = t1642 + (Scalar(0.05) * t1646);
   const Scalar t1649 = (cos_waist_yaw * t1646) - (sin_waist_yaw * t1644);
   const Scalar t1650 = (sin_waist_yaw * t1646) + (cos_waist_yaw * t1644);
-  // inward pass: body 22 l_forearm
+  // inward pass, composite inertias (CRBA): body 22 l_forearm
   const Scalar t1651 = cos_l_elbow * t1600;
   const Scalar t1652 = sin_l_elbow * t1614;
   const Scalar t1653 = t1652 - t1651;
@@ -1964,7 +1964,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1695 = t1689 + (Scalar(0.05) * t1693);
   const Scalar t1696 = (cos_waist_yaw * t1693) - (sin_waist_yaw * t1691);
   const Scalar t1697 = (sin_waist_yaw * t1693) + (cos_waist_yaw * t1691);
-  // inward pass: body 21 l_upper_arm
+  // inward pass, composite inertias (CRBA): body 21 l_upper_arm
   const Scalar t1698 = cos_l_shoulder_yaw * t1653;
   const Scalar t1699 = sin_l_shoulder_yaw * t1603;
   const Scalar t1700 = t1698 - t1699;
@@ -2010,7 +2010,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1740 = t1734 + (Scalar(0.05) * t1738);
   const Scalar t1741 = (cos_waist_yaw * t1738) - (sin_waist_yaw * t1736);
   const Scalar t1742 = (sin_waist_yaw * t1738) + (cos_waist_yaw * t1736);
-  // inward pass: body 20 l_shoulder_roll_link
+  // inward pass, composite inertias (CRBA): body 20 l_shoulder_roll_link
   const Scalar t1743 = cos_l_shoulder_roll * t1702;
   const Scalar t1744 = sin_l_shoulder_roll * t1713;
   const Scalar t1745 = t1743 - t1744;
@@ -2050,7 +2050,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1779 = t1773 + (Scalar(0.05) * t1777);
   const Scalar t1780 = (cos_waist_yaw * t1777) + (sin_waist_yaw * t1775);
   const Scalar t1781 = (sin_waist_yaw * t1777) - (cos_waist_yaw * t1775);
-  // inward pass: body 19 l_shoulder_pitch_link
+  // inward pass, composite inertias (CRBA): body 19 l_shoulder_pitch_link
   const Scalar t1782 = sin_l_shoulder_pitch * t1746;
   const Scalar t1783 = (cos_l_shoulder_pitch * t1700) + t1782;
   const Scalar t1784 = cos_l_shoulder_pitch * t1746;
@@ -2096,7 +2096,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1824 = t1818 + (Scalar(0.05) * t1822);
   const Scalar t1825 = (cos_waist_yaw * t1822) + (sin_waist_yaw * t1820);
   const Scalar t1826 = (sin_waist_yaw * t1822) - (cos_waist_yaw * t1820);
-  // inward pass: body 18 head
+  // inward pass, composite inertias (CRBA): body 18 head
   const Scalar t1827 = Scalar(0.32000000000000006) * sin_neck_roll;
   const Scalar t1828 = Scalar(0.32000000000000006) * cos_neck_roll;
   const Scalar t1829 = Scalar(0.006400000000000002) * sin_neck_roll;
@@ -2130,7 +2130,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1857 = (sin_waist_yaw * t1852) + (cos_waist_yaw * t1849);
   const Scalar t1858 = ((cos_waist_yaw * t1854) - (sin_waist_yaw * t1855)) - (Scalar(0.1) * t1857);
   const Scalar t1859 = ((sin_waist_yaw * t1854) + (cos_waist_yaw * t1855)) + (Scalar(0.1) * t1856);
-  // inward pass: body 17 neck_pitch_link
+  // inward pass, composite inertias (CRBA): body 17 neck_pitch_link
   const Scalar t1860 = (Scalar(0.064) * cos_neck_pitch) + (sin_neck_pitch * t1828);
   const Scalar t1861 = Scalar(0.064) * sin_neck_pitch;
   const Scalar t1862 = cos_neck_pitch * t1828;
@@ -2164,7 +2164,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1890 = t1884 + (Scalar(0.05) * t1888);
   const Scalar t1891 = (cos_waist_yaw * t1888) - (sin_waist_yaw * t1886);
   const Scalar t1892 = (sin_waist_yaw * t1888) + (cos_waist_yaw * t1886);
-  // inward pass: body 16 neck_yaw_link
+  // inward pass, composite inertias (CRBA): body 16 neck_yaw_link
   const Scalar t1893 = (cos_neck_yaw * t1860) + (sin_neck_yaw * t1827);
   const Scalar t1894 = sin_neck_yaw * t1860;
   const Scalar t1895 = cos_neck_yaw * t1827;
@@ -2195,7 +2195,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1920 = t1914 + (Scalar(0.05) * t1918);
   const Scalar t1921 = (cos_waist_yaw * t1918) - (sin_waist_yaw * t1916);
   const Scalar t1922 = (sin_waist_yaw * t1918) + (cos_waist_yaw * t1916);
-  // inward pass: body 15 torso
+  // inward pass, composite inertias (CRBA): body 15 torso
   const Scalar t1923 = cos_waist_roll * t1906;
   const Scalar t1924 = sin_waist_roll * t1907;
   const Scalar t1925 = t1923 - t1924;
@@ -2218,7 +2218,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1942 = t1927 + (Scalar(0.05) * t1940);
   const Scalar t1943 = (cos_waist_yaw * t1940) + (sin_waist_yaw * t1926);
   const Scalar t1944 = (sin_waist_yaw * t1940) - (cos_waist_yaw * t1926);
-  // inward pass: body 14 waist_pitch_link
+  // inward pass, composite inertias (CRBA): body 14 waist_pitch_link
   const Scalar t1945 = (cos_waist_pitch * t1905) + (sin_waist_pitch * t1934);
   const Scalar t1946 = sin_waist_pitch * t1905;
   const Scalar t1947 = cos_waist_pitch * t1934;
@@ -2242,7 +2242,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1965 = sin_waist_yaw * t1950;
   const Scalar t1966 = cos_waist_yaw * t1948;
   const Scalar t1967 = sin_waist_yaw * t1948;
-  // inward pass: body 13 waist_yaw_link
+  // inward pass, composite inertias (CRBA): body 13 waist_yaw_link
   const Scalar t1968 = cos_waist_yaw * t1945;
   const Scalar t1969 = sin_waist_yaw * t1925;
   const Scalar t1970 = sin_waist_yaw * t1945;
@@ -2255,7 +2255,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1977 = (Scalar(0.1) * t1959) + (Scalar(0.1) * t1976);
   const Scalar t1978 = (cos_waist_yaw * t1954) - t1970;
   const Scalar t1979 = t1968 + (sin_waist_yaw * t1954);
-  // inward pass: body 12 r_sole
+  // inward pass, composite inertias (CRBA): body 12 r_sole
   const Scalar t1980 = Scalar(0.05) * sin_r_ankle_roll;
   const Scalar t1981 = Scalar(0.05) * cos_r_ankle_roll;
   const Scalar t1982 = Scalar(0.0015) * sin_r_ankle_roll;
@@ -2291,7 +2291,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t2012 = ((cos_r_hip_yaw * t2008) + (sin_r_hip_yaw * t2009)) + ((Scalar(0.07) * t2011) - (Scalar(0.09) * t2007));
   const Scalar t2013 = ((sin_r_hip_yaw * t2008) - (cos_r_hip_yaw * t2009)) - (Scalar(0.07) * t2010);
   const Scalar t2014 = t2005 + (Scalar(0.09) * t2010);
-  // inward pass: body 11 r_ankle_link
+  // inward pass, composite inertias (CRBA): body 11 r_ankle_link
   const Scalar t2015 = Scalar(0.03) * cos_r_ankle_pitch;
   const Scalar t2016 = sin_r_ankle_pitch * t1981;
   const Scalar t2017 = t2015 - t2016;
@@ -2330,7 +2330,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t2050 = ((cos_r_hip_roll * t2041) - (sin_r_hip_roll * t2043)) - (Scalar(0.06) * t2044);
   const Scalar t2051 = (cos_r_hip_yaw * t2044) + (sin_r_hip_yaw * t2047);
   const Scalar t2052 = (sin_r_hip_yaw * t2044) - (cos_r_hip_yaw * t2047);
-  // inward pass: body 10 r_shank
+  // inward pass, composite inertias (CRBA): body 10 r_shank
   const Scalar t2053 = sin_r_knee * t2028;
   const Scalar t2054 = (cos_r_knee * t2017) + t2053;
   const Scalar t2055 = sin_r_knee * t2017;
@@ -2367,7 +2367,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t2086 = ((cos_r_hip_roll * t2075) - (sin_r_hip_roll * t2079)) - (Scalar(0.06) * t2080);
   const Scalar t2087 = (cos_r_hip_yaw * t2080) + (sin_r_hip_yaw * t2083);
   const Scalar t2088 = (sin_r_hip_yaw * t2080) - (cos_r_hip_yaw * t2083);
-  // inward pass: body 9 r_thigh
+  // inward pass, composite inertias (CRBA): body 9 r_thigh
   const Scalar t2089 = (cos_r_hip_pitch * t2054) + (sin_r_hip_pitch * t2068);
   const Scalar t2090 = (cos_r_hip_pitch * t2068) - (sin_r_hip_pitch * t2054);
   const Scalar t2091 = sin_r_hip_pitch * t2066;
@@ -2390,7 +2390,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t2108 = ((cos_r_hip_roll * t2070) - t2102) - (Scalar(0.06) * t2090);
   const Scalar t2109 = (cos_r_hip_yaw * t2090) - (sin_r_hip_yaw * t2105);
   const Scalar t2110 = (sin_r_hip_yaw * t2090) + (cos_r_hip_yaw * t2105);
-  // inward pass: body 8 r_hip_roll_link
+  // inward pass, composite inertias (CRBA): body 8 r_hip_roll_link
   const Scalar t2111 = cos_r_hip_roll * t2067;
   const Scalar t2112 = sin_r_hip_roll * t2098;
   const Scalar t2113 = t2111 - t2112;
@@ -2414,7 +2414,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t2131 = cos_r_hip_yaw * t2115;
   const Scalar t2132 = sin_r_hip_yaw * t2114;
   const Scalar t2133 = cos_r_hip_yaw * t2114;
-  // inward pass: body 7 r_hip_yaw_link
+  // inward pass, composite inertias (CRBA): body 7 r_hip_yaw_link
   const Scalar t2134 = cos_r_hip_yaw * t2089;
   const Scalar t2135 = sin_r_hip_yaw * t2113;
   const Scalar t2136 = t2134 - t2135;
@@ -2435,7 +2435,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t2151 = (Scalar(0.0416666667) + (((sin_waist_yaw * t1972) + (cos_waist_yaw * t1973)) + t1977)) + (((sin_r_hip_yaw * t2139) + (cos_r_hip_yaw * t2140)) - (t2145 + t2147));
   const Scalar t2152 = (cos_r_hip_yaw * t2120) - t2137;
   const Scalar t2153 = t2134 + (sin_r_hip_yaw * t2120);
-  // inward pass: body 6 l_sole
+  // inward pass, composite inertias (CRBA): body 6 l_sole
   const Scalar t2154 = Scalar(0.05) * sin_l_ankle_roll;
   const Scalar t2155 = Scalar(0.05) * cos_l_ankle_roll;
   const Scalar t2156 = Scalar(0.0015) * sin_l_ankle_roll;
@@ -2471,7 +2471,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t2186 = ((cos_l_hip_yaw * t2182) + (sin_l_hip_yaw * t2183)) + ((Scalar(0.09) * t2181) + (Scalar(0.07) * t2185));
   const Scalar t2187 = ((sin_l_hip_yaw * t2182) - (cos_l_hip_yaw * t2183)) - (Scalar(0.07) * t2184);
   const Scalar t2188 = t2179 - (Scalar(0.09) * t2184);
-  // inward pass: body 5 l_ankle_link
+  // inward pass, composite inertias (CRBA): body 5 l_ankle_link
   const Scalar t2189 = Scalar(0.03) * cos_l_ankle_pitch;
   const Scalar t2190 = sin_l_ankle_pitch * t2155;
   const Scalar t2191 = t2189 - t2190;
@@ -2510,7 +2510,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t2224 = ((cos_l_hip_roll * t2215) - (sin_l_hip_roll * t2217)) - (Scalar(0.06) * t2218);
   const Scalar t2225 = (cos_l_hip_yaw * t2218) + (sin_l_hip_yaw * t2221);
   const Scalar t2226 = (sin_l_hip_yaw * t2218) - (cos_l_hip_yaw * t2221);
-  // inward pass: body 4 l_shank
+  // inward pass, composite inertias (CRBA): body 4 l_shank
   const Scalar t2227 = sin_l_knee * t2202;
   const Scalar t2228 = (cos_l_knee * t2191) + t2227;
   const Scalar t2229 = sin_l_knee * t2191;
@@ -2547,7 +2547,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t2260 = ((cos_l_hip_roll * t2249) - (sin_l_hip_roll * t2253)) - (Scalar(0.06) * t2254);
   const Scalar t2261 = (cos_l_hip_yaw * t2254) + (sin_l_hip_yaw * t2257);
   const Scalar t2262 = (sin_l_hip_yaw * t2254) - (cos_l_hip_yaw * t2257);
-  // inward pass: body 3 l_thigh
+  // inward pass, composite inertias (CRBA): body 3 l_thigh
   const Scalar t2263 = (cos_l_hip_pitch * t2228) + (sin_l_hip_pitch * t2242);
   const Scalar t2264 = (cos_l_hip_pitch * t2242) - (sin_l_hip_pitch * t2228);
   const Scalar t2265 = sin_l_hip_pitch * t2240;
@@ -2570,7 +2570,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t2282 = ((cos_l_hip_roll * t2244) - t2276) - (Scalar(0.06) * t2264);
   const Scalar t2283 = (cos_l_hip_yaw * t2264) - (sin_l_hip_yaw * t2279);
   const Scalar t2284 = (sin_l_hip_yaw * t2264) + (cos_l_hip_yaw * t2279);
-  // inward pass: body 2 l_hip_roll_link
+  // inward pass, composite inertias (CRBA): body 2 l_hip_roll_link
   const Scalar t2285 = cos_l_hip_roll * t2241;
   const Scalar t2286 = sin_l_hip_roll * t2272;
   const Scalar t2287 = t2285 - t2286;
@@ -2594,7 +2594,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t2305 = cos_l_hip_yaw * t2289;
   const Scalar t2306 = sin_l_hip_yaw * t2288;
   const Scalar t2307 = cos_l_hip_yaw * t2288;
-  // inward pass: body 1 l_hip_yaw_link
+  // inward pass, composite inertias (CRBA): body 1 l_hip_yaw_link
   const Scalar t2308 = cos_l_hip_yaw * t2263;
   const Scalar t2309 = sin_l_hip_yaw * t2287;
   const Scalar t2310 = t2308 - t2309;
@@ -3637,4 +3637,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[37] = ((t3306 + (t2338 * t3238)) - (t2346 * t3237)) - (t2347 * t3236);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_1c0a87758ae3
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_d268e0f3faf1

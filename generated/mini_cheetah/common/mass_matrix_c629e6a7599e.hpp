@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::mass_matrix_899bd573e359 {
+namespace rbdc_gen::mini_cheetah::common::mass_matrix_c629e6a7599e {
 
 /// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).
 ///
@@ -49,7 +49,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar cos_RH_hip_joint = joint_trig.cos[10];
   const Scalar sin_RH_knee_joint = joint_trig.sin[11];
   const Scalar cos_RH_knee_joint = joint_trig.cos[11];
-  // inward pass: body 12 RH_knee
+  // inward pass, composite inertias (CRBA): body 12 RH_knee
   const Scalar t0 = Scalar(0.003904) * sin_RH_knee_joint;
   const Scalar t1 = Scalar(0.003904) * cos_RH_knee_joint;
   const Scalar t2 = Scalar(0.000483144) * sin_RH_knee_joint;
@@ -75,7 +75,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t22 = (Scalar(-0.049) * t21) - t16;
   const Scalar t23 = (Scalar(0.19) * t21) - ((t11 * cos_RH_abad_joint) + (t18 * sin_RH_abad_joint));
   const Scalar t24 = ((t18 * cos_RH_abad_joint) - (t11 * sin_RH_abad_joint)) + ((Scalar(0.19) * t19) + (Scalar(0.049) * t15));
-  // inward pass: body 11 RH_hip
+  // inward pass, composite inertias (CRBA): body 11 RH_hip
   const Scalar t25 = t6 * sin_RH_hip_joint;
   const Scalar t26 = t12 + (t6 * cos_RH_hip_joint);
   const Scalar t27 = t8 * sin_RH_hip_joint;
@@ -103,7 +103,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t49 = t44 - (Scalar(0.049) * t48);
   const Scalar t50 = (Scalar(0.19) * t48) - ((t9 * cos_RH_abad_joint) + (sin_RH_abad_joint * t45));
   const Scalar t51 = ((cos_RH_abad_joint * t45) - (t9 * sin_RH_abad_joint)) + ((Scalar(0.19) * t46) - (Scalar(0.049) * t26));
-  // inward pass: body 10 RH_abad
+  // inward pass, composite inertias (CRBA): body 10 RH_abad
   const Scalar t52 = (Scalar(0.052571999999999994) * cos_RH_abad_joint) + (sin_RH_abad_joint * t26);
   const Scalar t53 = -t52;
   const Scalar t54 = Scalar(0.052571999999999994) * sin_RH_abad_joint;
@@ -124,7 +124,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t69 = Scalar(0.042673) + (((sin_RH_abad_joint * t60) + (cos_RH_abad_joint * t61)) - ((t66 - (Scalar(0.049) * (t52 + Scalar(0.060662)))) - (t65 + (Scalar(0.19) * (t25 - t13)))));
   const Scalar t70 = t38 + t65;
   const Scalar t71 = t57 - (Scalar(0.19) * t52);
-  // inward pass: body 9 LH_knee
+  // inward pass, composite inertias (CRBA): body 9 LH_knee
   const Scalar t72 = Scalar(0.003904) * sin_LH_knee_joint;
   const Scalar t73 = Scalar(0.003904) * cos_LH_knee_joint;
   const Scalar t74 = Scalar(0.000483144) * sin_LH_knee_joint;
@@ -149,7 +149,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t93 = t88 + (Scalar(0.049) * t92);
   const Scalar t94 = ((t89 * sin_LH_abad_joint) - (t83 * cos_LH_abad_joint)) + (Scalar(0.19) * t92);
   const Scalar t95 = ((Scalar(0.19) * t90) - (Scalar(0.049) * t87)) - ((t83 * sin_LH_abad_joint) + (t89 * cos_LH_abad_joint));
-  // inward pass: body 8 LH_hip
+  // inward pass, composite inertias (CRBA): body 8 LH_hip
   const Scalar t96 = t78 * sin_LH_hip_joint;
   const Scalar t97 = t84 + (t78 * cos_LH_hip_joint);
   const Scalar t98 = t80 * sin_LH_hip_joint;
@@ -177,7 +177,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t120 = t115 + (Scalar(0.049) * t119);
   const Scalar t121 = (Scalar(0.19) * t119) - ((t81 * cos_LH_abad_joint) + (sin_LH_abad_joint * t116));
   const Scalar t122 = ((cos_LH_abad_joint * t116) - (t81 * sin_LH_abad_joint)) + ((Scalar(0.19) * t117) + (Scalar(0.049) * t97));
-  // inward pass: body 7 LH_abad
+  // inward pass, composite inertias (CRBA): body 7 LH_abad
   const Scalar t123 = Scalar(0.052571999999999994) * cos_LH_abad_joint;
   const Scalar t124 = sin_LH_abad_joint * t97;
   const Scalar t125 = t123 - t124;
@@ -200,7 +200,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t142 = (((cos_RH_abad_joint * t60) - (sin_RH_abad_joint * t61)) + (Scalar(0.049) * t56)) + (((cos_LH_abad_joint * t130) - (sin_LH_abad_joint * t131)) - (Scalar(0.049) * t126));
   const Scalar t143 = t109 + t135;
   const Scalar t144 = t127 + (Scalar(0.19) * t125);
-  // inward pass: body 6 RF_knee
+  // inward pass, composite inertias (CRBA): body 6 RF_knee
   const Scalar t145 = Scalar(0.003904) * sin_RF_knee_joint;
   const Scalar t146 = Scalar(0.003904) * cos_RF_knee_joint;
   const Scalar t147 = Scalar(0.000483144) * sin_RF_knee_joint;
@@ -226,7 +226,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t167 = (Scalar(-0.049) * t166) - t161;
   const Scalar t168 = (Scalar(-0.19) * t166) - ((t156 * cos_RF_abad_joint) + (t163 * sin_RF_abad_joint));
   const Scalar t169 = ((t163 * cos_RF_abad_joint) - (t156 * sin_RF_abad_joint)) + ((Scalar(0.049) * t160) - (Scalar(0.19) * t164));
-  // inward pass: body 5 RF_hip
+  // inward pass, composite inertias (CRBA): body 5 RF_hip
   const Scalar t170 = t151 * sin_RF_hip_joint;
   const Scalar t171 = t157 + (t151 * cos_RF_hip_joint);
   const Scalar t172 = t153 * sin_RF_hip_joint;
@@ -254,7 +254,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t194 = t189 - (Scalar(0.049) * t193);
   const Scalar t195 = (Scalar(-0.19) * t193) - ((t154 * cos_RF_abad_joint) + (sin_RF_abad_joint * t190));
   const Scalar t196 = ((cos_RF_abad_joint * t190) - (t154 * sin_RF_abad_joint)) - ((Scalar(0.19) * t191) + (Scalar(0.049) * t171));
-  // inward pass: body 4 RF_abad
+  // inward pass, composite inertias (CRBA): body 4 RF_abad
   const Scalar t197 = (Scalar(0.052571999999999994) * cos_RF_abad_joint) + (sin_RF_abad_joint * t171);
   const Scalar t198 = -t197;
   const Scalar t199 = Scalar(0.052571999999999994) * sin_RF_abad_joint;
@@ -276,7 +276,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t215 = (t69 + (((sin_LH_abad_joint * t130) + (cos_LH_abad_joint * t131)) - ((t137 - t136) - (t135 + (Scalar(0.19) * (t96 - t85)))))) + t213;
   const Scalar t216 = t183 + t210;
   const Scalar t217 = t202 + (Scalar(0.19) * t197);
-  // inward pass: body 3 LF_knee
+  // inward pass, composite inertias (CRBA): body 3 LF_knee
   const Scalar t218 = Scalar(0.003904) * sin_LF_knee_joint;
   const Scalar t219 = Scalar(0.003904) * cos_LF_knee_joint;
   const Scalar t220 = Scalar(0.000483144) * sin_LF_knee_joint;
@@ -301,7 +301,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t239 = t234 + (Scalar(0.049) * t238);
   const Scalar t240 = ((t235 * sin_LF_abad_joint) - (t229 * cos_LF_abad_joint)) - (Scalar(0.19) * t238);
   const Scalar t241 = ((Scalar(-0.19) * t236) - (Scalar(0.049) * t233)) - ((t229 * sin_LF_abad_joint) + (t235 * cos_LF_abad_joint));
-  // inward pass: body 2 LF_hip
+  // inward pass, composite inertias (CRBA): body 2 LF_hip
   const Scalar t242 = t224 * sin_LF_hip_joint;
   const Scalar t243 = t230 + (t224 * cos_LF_hip_joint);
   const Scalar t244 = t226 * sin_LF_hip_joint;
@@ -329,7 +329,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t266 = t261 + (Scalar(0.049) * t265);
   const Scalar t267 = (Scalar(-0.19) * t265) - ((t227 * cos_LF_abad_joint) + (sin_LF_abad_joint * t262));
   const Scalar t268 = ((cos_LF_abad_joint * t262) - (t227 * sin_LF_abad_joint)) + ((Scalar(0.049) * t243) - (Scalar(0.19) * t263));
-  // inward pass: body 1 LF_abad
+  // inward pass, composite inertias (CRBA): body 1 LF_abad
   const Scalar t269 = Scalar(0.052571999999999994) * cos_LF_abad_joint;
   const Scalar t270 = sin_LF_abad_joint * t243;
   const Scalar t271 = t269 - t270;
@@ -684,4 +684,4 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   M[323] = Scalar(0.000486144);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_899bd573e359
+}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_c629e6a7599e
