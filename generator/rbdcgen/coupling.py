@@ -121,6 +121,7 @@ def traced_values(robot, name, m, build, output_specs):
 def _forward_dynamics(robot, m):
     """a' = M'⁻¹(S'ᵀτ' − Gᵀ(c + g − τ_e)) with M' = Gᵀ M G, factorised densely (couplings join
     branches, so M' has no tree sparsity to exploit)."""
+    # Imported here: the algorithms import this module (through TracedModel), so not at the top.
     from .algorithms.crba import mass_matrix
     from .algorithms.forward_dynamics import ltdl, ltdl_solve
     from .algorithms.rnea import bias_minus_external

@@ -52,9 +52,12 @@ MatrixX coupling_matrix(const Model& model) {
   const CoupledCoordinates c = coupled_coordinates(model);
   MatrixX G = MatrixX::Zero(model.nv, c.nv);
   for (int k = 0; k < model.root_dofs(); ++k) G(k, k) = 1;
-  for (int i = 1; i < model.nb; ++i) G(model.joints[static_cast<size_t>(i)].v_index, c.v_index[static_cast<size_t>(i)]) = 1;
+  for (int i = 1; i < model.nb; ++i) {
+    G(model.joints[static_cast<size_t>(i)].v_index, c.v_index[static_cast<size_t>(i)]) = 1;
+  }
   for (const Coupling& k : model.couplings) {
-    G(model.joints[static_cast<size_t>(k.follower)].v_index, c.v_index[static_cast<size_t>(k.leader)]) = k.multiplier;
+    const int row = model.joints[static_cast<size_t>(k.follower)].v_index;
+    G(row, c.v_index[static_cast<size_t>(k.leader)]) = k.multiplier;
   }
   return G;
 }

@@ -166,7 +166,8 @@ class UrdfTranslator {
         if (std::find(chain.begin(), chain.end(), rule.leader) != chain.end()) {
           std::string cycle;
           for (const std::string& name : chain) cycle += "'" + name + "' → ";
-          fail(&edge, "joint '" + j->name + "': its mimic joints form a cycle (" + cycle + "'" + rule.leader + "')");
+          fail(&edge, "joint '" + j->name + "': its mimic joints form a cycle (" + cycle + "'" + rule.leader +
+                          "')");
         }
         if (leader->type != urdf::Joint::REVOLUTE && leader->type != urdf::Joint::CONTINUOUS &&
             leader->type != urdf::Joint::PRISMATIC) {

@@ -24,7 +24,8 @@ std::string child_link_attribute(const TiXmlElement* joint, const char* tag) {
 // neither named nor described, are faults outside the dynamics: warn, then drop every such element.
 void strip_appearance(const std::string& path, TiXmlElement* robot, std::vector<std::string>& warnings) {
   const auto warn = [&](const TiXmlElement* e, const std::string& problem) {
-    warnings.push_back(path + ":" + std::to_string(e->Row()) + ": " + problem + "; ignored (not used for dynamics)");
+    warnings.push_back(path + ":" + std::to_string(e->Row()) + ": " + problem +
+                       "; ignored (not used for dynamics)");
   };
   std::vector<TiXmlElement*> dropped;
   for (TiXmlElement* link = robot->FirstChildElement("link"); link != nullptr;
@@ -38,7 +39,8 @@ void strip_appearance(const std::string& path, TiXmlElement* robot, std::vector<
       }
     }
   }
-  for (TiXmlElement* e = robot->FirstChildElement("material"); e != nullptr; e = e->NextSiblingElement("material")) {
+  for (TiXmlElement* e = robot->FirstChildElement("material"); e != nullptr;
+       e = e->NextSiblingElement("material")) {
     if (attribute(e, "name").empty()) warn(e, "<material> without a name");
     dropped.push_back(e);
   }

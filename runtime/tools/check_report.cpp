@@ -25,7 +25,8 @@ void write_topology(const Model& m, std::ostream& out) {
       << " bodies, " << c.num_joints() << " joint DoF (" << m.num_joints() << " joints, "
       << m.couplings.size() << " coupled), nq = " << c.nq << ", nv = " << c.nv << ", mass " << mass
       << " kg\n";
-  out << "PRED   = " << list(m.pred) << "\nSUCC   = " << list(m.succ) << "\nlambda = " << list(m.parent) << "\n";
+  out << "PRED   = " << list(m.pred) << "\nSUCC   = " << list(m.succ) << "\nlambda = " << list(m.parent)
+      << "\n";
   for (const Coupling& k : m.couplings) {
     out << "coupling: joint '" << m.joints[static_cast<size_t>(k.follower)].name << "' (" << k.follower
         << ") = " << k.multiplier << " * joint '" << m.joints[static_cast<size_t>(k.leader)].name << "' ("
@@ -44,7 +45,9 @@ int write_check_report(const LoadOptions& opts, std::ostream& out) {
   Model model;
   try {
     if (is_topology_path(opts.input)) {
-      if (!opts.urdf.topology_file.empty()) throw ModelError("--topology applies to URDF input, not to a topology file");
+      if (!opts.urdf.topology_file.empty()) {
+        throw ModelError("--topology applies to URDF input, not to a topology file");
+      }
       model = load_topology(opts.input, &warnings);
     } else {
       model = load_urdf(opts.input, opts.urdf, &warnings);
@@ -58,7 +61,8 @@ int write_check_report(const LoadOptions& opts, std::ostream& out) {
   for (std::string line; std::getline(lines, line); ++errors) out << "error: " << line << "\n";
   out << opts.input << ": " << warnings.size() << " warning" << (warnings.size() == 1 ? "" : "s") << ", "
       << errors << " error" << (errors == 1 ? "" : "s")
-      << (errors > 0 ? " (loading stops at the first refused element; bad links are all listed)" : "") << "\n";
+      << (errors > 0 ? " (loading stops at the first refused element; bad links are all listed)" : "")
+      << "\n";
   if (!error.empty()) return 2;
   write_topology(model, out);
   return 0;

@@ -82,7 +82,8 @@ TEST_P(CorpusRobot, CoupledDynamicsPassTheIdentities) {
   const MatrixX M = G.transpose() * mass_matrix(m, data, q_tree) * G;
   EXPECT_TRUE(M.isApprox(M.transpose(), 1e-14));
   EXPECT_EQ(Eigen::LLT<MatrixX>(M).info(), Eigen::Success) << "M' is not positive definite";
-  const VectorX a = coupled_forward_dynamics(m, data, q, v, tau, Matrix3X::Zero(3, static_cast<Eigen::Index>(m.feet.size())));
+  const Matrix3X no_forces = Matrix3X::Zero(3, static_cast<Eigen::Index>(m.feet.size()));
+  const VectorX a = coupled_forward_dynamics(m, data, q, v, tau, no_forces);
   const VectorX projected = G.transpose() * inverse_dynamics(m, data, q_tree, G * v, G * a);
   VectorX applied = VectorX::Zero(c.nv);
   applied.tail(c.num_joints()) = tau;
