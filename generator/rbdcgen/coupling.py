@@ -12,6 +12,9 @@ from __future__ import annotations
 from dataclasses import replace
 
 from . import expr as ex
+from .algorithms.crba import mass_matrix
+from .algorithms.forward_dynamics import ltdl, ltdl_solve
+from .algorithms.rnea import bias_minus_external
 from .errors import RbdcError
 
 # Output names whose rows (resp. columns) are velocity coordinates: Gᵀ from the left (resp. G from
@@ -121,11 +124,6 @@ def traced_values(robot, name, m, build, output_specs):
 def _forward_dynamics(robot, m):
     """a' = M'⁻¹(S'ᵀτ' − Gᵀ(c + g − τ_e)) with M' = Gᵀ M G, factorised densely (couplings join
     branches, so M' has no tree sparsity to exploit)."""
-    # Imported here: the algorithms import this module (through TracedModel), so not at the top.
-    from .algorithms.crba import mass_matrix
-    from .algorithms.forward_dynamics import ltdl, ltdl_solve
-    from .algorithms.rnea import bias_minus_external
-
     tree = tree_view(robot)
     g = _g_columns(robot)
     nv, n = tree.nv, robot.nv
