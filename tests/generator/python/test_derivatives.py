@@ -22,6 +22,9 @@ from rbdcgen.trace import trace_function, trace_scene
 STEP = 1e-6
 # Central differences: truncation h² ~ 1e-12 and round-off ε/h ~ 1e-10, relative to the largest entry.
 TOLERANCE = 2e-7
+# The Mini Cheetah's light legs make accelerations large next to their derivatives: round-off
+# ε·|a|/h reaches ~3e-7 there (verify and the dual-number test check it to 1e-10 and 1e-12).
+MINI_CHEETAH_TOLERANCE = 1e-6
 FLOATING = load_ir(os.path.join(DATA, "tiny_floating.json"))
 FIXED = load_ir(os.path.join(DATA, "tiny_fixed.json"))
 ALL = scene_from_dict({"name": "d", "derivatives": list(DERIVATIVES)})
@@ -100,7 +103,7 @@ class TangentsEqualFiniteDifferences(unittest.TestCase):
         primal = trace_function(robot, ALL, "forward_dynamics")
         for output, wrt in (("da_dq", "q"), ("da_dv", "v")):
             want = central_difference(robot, primal, "a", state, wrt)
-            self.assertLess(relative_error(got[output], want), TOLERANCE, output)
+            self.assertLess(relative_error(got[output], want), MINI_CHEETAH_TOLERANCE, output)
 
 
 class ManifoldSeeding(unittest.TestCase):
