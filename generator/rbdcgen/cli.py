@@ -110,6 +110,10 @@ def build_parser() -> argparse.ArgumentParser:
     evaluate.add_argument("--q", help="configuration, comma-separated (nq values; default: zero, identity quaternion)")
     evaluate.add_argument("--v", help="velocity, comma-separated (nv values; default zero)")
     evaluate.add_argument("--a", help="acceleration, comma-separated (nv values); adds inverse dynamics as tau")
+    evaluate.add_argument("--derivatives", action="store_true",
+                          help="adds the runtime's analytic derivatives (dtau_dq … dtau_e_dq, docs/runtime.md)")
+    evaluate.add_argument("--tau", help="joint torques for the forward-dynamics derivatives (n_joints values; default zero)")
+    evaluate.add_argument("--f", help="world foot forces for the derivatives, foot-major (3·n_feet values; default zero)")
     evaluate.add_argument("--topology", type=Path, metavar="FILE", help="topology YAML applied to the URDF")
     base = evaluate.add_mutually_exclusive_group()
     base.add_argument("--floating-base", dest="base", action="store_const", const="floating")

@@ -83,9 +83,11 @@ def evaluate(args, layout: Layout) -> int:
     if not layout.eval_tool.exists():
         raise RbdcError(f"{layout.eval_tool}: rbdc-eval is not built (cmake --build build --target rbdc-eval)")
     command = [str(layout.eval_tool), str(args.robot)]
-    for option in ("q", "v", "a"):
+    for option in ("q", "v", "a", "tau", "f"):
         if getattr(args, option):
             command += [f"--{option}", getattr(args, option)]
+    if args.derivatives:
+        command.append("--derivatives")
     if args.topology:
         command += ["--topology", str(args.topology)]
     if args.base:

@@ -176,6 +176,16 @@ class EvalTest(unittest.TestCase):
         self.assertEqual(result.returncode, 0, result.stderr)
         values = json.loads(result.stdout)
         self.assertIn("M", values)
+        self.assertNotIn("derivatives", values)
+
+    def test_eval_passes_derivatives_and_their_inputs_through(self):
+        result = run_rbdc("eval", MINI_CHEETAH, "--derivatives", "--tau", ",".join(["1"] * 12))
+        self.assertEqual(result.returncode, 0, result.stderr)
+        derivatives = json.loads(result.stdout)["derivatives"]
+        self.assertEqual((len(derivatives["da_dtau"]), len(derivatives["da_dtau"][0])), (18, 12))
+        bad = run_rbdc("eval", MINI_CHEETAH, "--derivatives", "--f", "1,2")
+        self.assertNotEqual(bad.returncode, 0)
+        self.assertIn("--f has 2 values, the model needs 12", bad.stderr)
 
 
 if __name__ == "__main__":
