@@ -6,6 +6,7 @@ import os
 import unittest
 
 import mini_cheetah
+from mini_cheetah import SCENES
 from numeric_check import DATA, evaluate, operator_count, random_state
 
 from rbdcgen import expr as ex
@@ -16,7 +17,7 @@ from rbdcgen.flops import count_ops, generic_ops
 from rbdcgen.ir import load_ir
 from rbdcgen.pipeline import Compilation
 from rbdcgen.manifold import configuration_seeds, integrate, q_direction
-from rbdcgen.scene import DERIVATIVES, SceneError, default_scene, scene_from_dict
+from rbdcgen.scene import DERIVATIVES, SceneError, default_scene, load_scene, scene_from_dict
 from rbdcgen.trace import trace_function, trace_scene
 
 STEP = 1e-6
@@ -170,6 +171,11 @@ class Scenes(unittest.TestCase):
                          ["gravity_terms", "gravity_derivatives"])
         self.assertEqual([f.name for f in trace_scene(FLOATING, scene_from_dict({"name": "x"}))
                           if f.name.endswith("_derivatives")], [])
+
+    def test_the_bundled_derivatives_scene_asks_for_every_derivative(self):
+        scene = load_scene(os.path.join(SCENES, "derivatives.yaml"))
+        self.assertEqual(scene.derivatives_for(FLOATING), DERIVATIVES)
+        self.assertIn("inverse_dynamics", scene.quantities_for(FLOATING))
 
     def test_bad_derivative_lists_are_refused(self):
         with self.assertRaises(SceneError) as caught:
