@@ -86,6 +86,12 @@ std::vector<Option> options(Program program, CommandLine& c) {
   } else {
     text("--out", c.out, "DIR", "output directory for the CSVs, the table and the plots");
     flag("--no-plots", c.plots, false, "do not run mujoco/plot_compare.py");
+    flag("--no-timing", c.timing, false, "skip the two unsampled runs that time both simulators");
+    number("--mj-stiffness", c.mj_stiffness, "MuJoCo contact stiffness, N/m (solref -stiffness)");
+    number("--mj-damping", c.mj_damping, "MuJoCo contact damping, N/(m/s) (solref -damping)");
+    number("--mj-friction", c.mj_friction, "MuJoCo sliding friction coefficient");
+    flag("--original-inertia", c.balanced_inertia, false,
+         "ours on MIT's thigh inertia instead of MuJoCo's balanced one");
   }
   text("--urdf", c.urdf, "FILE", "robot URDF (feet LF_foot, RF_foot, LH_foot, RH_foot)");
   number("--sample-interval", c.run.sample_interval, "s between CSV rows");
@@ -102,6 +108,24 @@ std::vector<Option> options(Program program, CommandLine& c) {
   number("--mu-dynamic", c.sim.contact.mu_dynamic, "sliding friction coefficient mu_d");
   number("--v-dynamic", c.sim.contact.v_dynamic, "stiction-sliding transition velocity v_d, m/s");
   number("--foot-radius", c.sim.contact.foot_radius, "foot sphere radius r, m");
+  // Two-way choices: name, the two spellings, the target and its value for the first spelling.
+  auto choice = [&](const std::string& name, const std::string& first, const std::string& second,
+                    bool& target, const std::string& help) {
+    list.push_back({name, first + "|" + second, help,
+                    [&target, name, first, second](const std::string& t) {
+                      if (t != first && t != second)
+                        throw std::invalid_argument("option " + name + ": unknown value '" + t + "'");
+                      target = t == first;
+                    },
+                    [&target, first, second] { return target ? first : second; }});
+  };
+  choice("--contact-point", "on", "off", c.contact_point,
+         "on: force at the contact point C_k with its moment, friction from v_Ck (Eqs. 32-33); "
+         "off: at the sphere centre");
+  choice("--friction", "per-axis", "isotropic", c.friction_per_axis,
+         "Eq. 38 on each tangential axis, or mu(|v_t|) against the slip direction");
+  choice("--friction-update", "implicit", "explicit", c.friction_implicit,
+         "friction stepped with the contact-space inertia (stable at Table I's v_s) or explicitly");
   number("--ground-tilt", c.ground_tilt_deg, "ground plane tilt about world x, deg");
   // Gait and gains (Section 6.2, Table I).
   number("--period", c.gait.period, "gait period, s");
@@ -135,6 +159,10 @@ void parse_command_line(int argc, char** argv, Program program, CommandLine& cli
   if (!(cli.sim.dt > 0) || !(cli.run.duration >= 0))
     throw std::invalid_argument("--dt must be positive and --duration not negative");
   cli.sim.ground = GroundPlane::tilted_about_x(cli.ground_tilt_deg * M_PI / 180);
+  sim::ContactParameters& contact = cli.sim.contact;
+  contact.at_contact_point = cli.contact_point;
+  contact.friction = cli.friction_per_axis ? sim::FrictionModel::PerAxis : sim::FrictionModel::Isotropic;
+  contact.friction_update = cli.friction_implicit ? sim::FrictionUpdate::Implicit : sim::FrictionUpdate::Explicit;
 }
 
 std::string usage(Program program, const CommandLine& defaults) {

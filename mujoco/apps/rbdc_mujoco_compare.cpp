@@ -77,6 +77,9 @@ int main(int argc, char** argv) {
     mj.timestep = cli.sim.dt;
     mj.foot_radius = cli.sim.contact.foot_radius;
     mj.ground_normal = cli.sim.ground.normal();
+    mj.contact_stiffness = cli.mj_stiffness;
+    mj.contact_damping = cli.mj_damping;
+    mj.friction = cli.mj_friction;
     const mjcf::MjModelPtr m = mjcf::load_mjmodel(original, mj);
     // MuJoCo balanced the inertias it found inconsistent: simulate exactly its robot on our side.
     Model balanced = original;
@@ -85,12 +88,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "rbdc-mujoco-compare: %g s, dt = %g s, MuJoCo %s\n", cli.run.duration,
                  cli.sim.dt, mj_versionString());
     double wall_ours_runtime = 0;
-    const Trajectory ours = run_ours(balanced, cli, wall_ours_runtime);
+    const Trajectory ours = run_ours(cli.balanced_inertia ? balanced : original, cli, wall_ours_runtime);
     PdTrotController mujoco_controller(balanced, cli.gait, cli.gains, cli.sim.contact.foot_radius);
     const MujocoRun theirs = run_mujoco(balanced, m.get(), mujoco_controller, cli.run);
-    std::string fastest;
-    const double wall_ours_fast = time_ours(original, cli, fastest);
-    const double wall_mujoco = time_mujoco(balanced, m.get(), cli);
+    std::string fastest = "generated";
+    const double wall_ours_fast = cli.timing ? time_ours(original, cli, fastest) : 0;
+    const double wall_mujoco = cli.timing ? time_mujoco(balanced, m.get(), cli) : 0;
 
     const int lf = 0;  // left foreleg = foot 0 (LF_foot)
     const ComparisonMetrics metrics = compare_trajectories(ours, theirs.trajectory, lf);

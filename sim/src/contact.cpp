@@ -39,8 +39,7 @@ FootContact foot_contact(const ContactParameters& p, const GroundPlane& ground, 
   // Eq. 31: d_f = ẑ_Cᵀ r_{P,f}, δ = d_c = d_f − r.
   c.penetration = n.dot(p_W - ground.point()) - p.foot_radius;
   if (c.penetration > 0) return c;
-  // Eq. 36: δ̇ = ẑ_Cᵀ v_f (the sphere's contact point moves with the foot point: no rolling term,
-  // as in the paper's point-contact model).
+  // Eq. 36: δ̇ = ẑ_Cᵀ v_f (= ẑ_Cᵀ v_C: the rolling term ω × (−r ẑ_C) has no normal part).
   const double penetration_rate = n.dot(v_W);
   // Eq. 34: Hertz spring, pushing out of the ground: f_s = K |δ|^e (δ in `length_unit`).
   const double f_spring = p.stiffness * std::pow(-c.penetration / p.length_unit, p.exponent);
@@ -50,9 +49,11 @@ FootContact foot_contact(const ContactParameters& p, const GroundPlane& ground, 
   if (f_normal <= 0) return c;  // the ground pushes, never pulls
   // Eq. 38 on the slip velocity v_C (contact-frame x, y).
   const Vector3 v_C = ground.W_R_C().transpose() * v_W;
-  const double slip = std::hypot(v_C.x(), v_C.y());
   Vector3 force_C(0, 0, f_normal);
-  if (slip > 0) {
+  if (p.friction == FrictionModel::PerAxis) {
+    force_C.x() = -friction_coefficient(p, v_C.x()) * f_normal;
+    force_C.y() = -friction_coefficient(p, v_C.y()) * f_normal;
+  } else if (const double slip = std::hypot(v_C.x(), v_C.y()); slip > 0) {
     const double scale = -friction_coefficient(p, slip) * f_normal / slip;
     force_C.x() = scale * v_C.x();
     force_C.y() = scale * v_C.y();
@@ -61,6 +62,43 @@ FootContact foot_contact(const ContactParameters& p, const GroundPlane& ground, 
   c.force_C = force_C;
   c.force_W = ground.W_R_C() * force_C;
   return c;
+}
+
+namespace {
+
+// dμ/dv of friction_coefficient (even in v): the smoothstep's slope 6 s (1 − s) on each piece.
+double friction_slope(const ContactParameters& p, double v) {
+  const double speed = std::abs(v);
+  if (speed <= p.v_static) {
+    const double s = (speed + p.v_static) / (2 * p.v_static);
+    return 6 * p.mu_static * s * (1 - s) / p.v_static;
+  }
+  if (speed >= p.v_dynamic) return 0;
+  const double s = (speed - p.v_static) / (p.v_dynamic - p.v_static);
+  return 6 * (p.mu_dynamic - p.mu_static) * s * (1 - s) / (p.v_dynamic - p.v_static);
+}
+
+}  // namespace
+
+double implicit_friction(const ContactParameters& p, double u_free, double compliance, double f_normal) {
+  if (u_free == 0 || f_normal <= 0) return 0;
+  // g(u) = u − u_free + k μ(u), k = compliance f_n: g(0) = −u_free and g(u_free) has the sign of
+  // u_free, so [0, u_free] brackets a root (μ need not be monotone when μ_d < μ_s). Newton's steps,
+  // bisecting whenever one leaves the bracket.
+  const double k = compliance * f_normal;
+  const double sign = u_free > 0 ? 1 : -1;
+  double lo = 0, hi = std::abs(u_free);  // in |u|: g(lo) < 0 < g(hi)
+  double u = 0;
+  for (int i = 0; i < 100; ++i) {
+    const double g = sign * (u - u_free + k * friction_coefficient(p, u));  // increasing through the root
+    if (g < 0) lo = sign * u; else hi = sign * u;
+    if (std::abs(g) < 1e-9 * p.v_static || hi - lo < 1e-12 * p.v_static) break;
+    const double slope = 1 + k * friction_slope(p, u);
+    double next = sign * (u - sign * g / slope);
+    if (!(slope > 0) || next <= lo || next >= hi) next = 0.5 * (lo + hi);
+    u = sign * next;
+  }
+  return -friction_coefficient(p, u) * f_normal;
 }
 
 void world_forces(const std::vector<FootContact>& contacts, Matrix3X& f) {

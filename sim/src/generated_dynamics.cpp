@@ -2,6 +2,8 @@
 // otherwise generated_dynamics_none.cpp provides the factory).
 #include "mini_cheetah/full.hpp"
 #include "rbdc/sim/dynamics.hpp"
+#include "rbdc/sim/feet_angular.hpp"
+#include "rbdc/sim/robot.hpp"
 
 namespace rbdc::sim {
 namespace {
@@ -10,6 +12,8 @@ namespace gen = rbdc_gen::mini_cheetah::full;
 
 class GeneratedDynamics final : public DynamicsModel {
  public:
+  // The angular rows need only the joint frames; they come from the URDF the code was generated from.
+  GeneratedDynamics() : angular_(load_robot(default_urdf())) {}
   int nq() const override { return gen::nq; }
   int nv() const override { return gen::nv; }
   int n_feet() const override { return gen::n_feet; }
@@ -24,6 +28,25 @@ class GeneratedDynamics final : public DynamicsModel {
                         double* a) override {
     gen::forward_dynamics<double>(q, v, tau, f_feet, a);
   }
+
+  void mass_matrix(const double* q, MatrixX& M) override {
+    gen::mass_matrix<double>(q, M_.data());
+    M = M_;
+  }
+  void bias_forces(const double* q, const double* v, double* h) override {
+    static constexpr double zero[gen::nv] = {};
+    gen::inverse_dynamics<double>(q, v, zero, h);
+  }
+  void feet_jacobian(const double* q, MatrixX& J) override {
+    gen::feet_jacobian<double>(q, J_.data());
+    J = J_;
+  }
+  void feet_angular_jacobian(const double* q, MatrixX& Jw) override { angular_.compute(q, Jw); }
+
+ private:
+  FeetAngularJacobian angular_;
+  gen::MassMatrix<double> M_;
+  gen::FeetJacobian<double> J_;
 };
 
 }  // namespace

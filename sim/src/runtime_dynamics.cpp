@@ -1,9 +1,13 @@
 // DynamicsModel on the runtime's reference algorithms (any robot loaded from URDF).
 #include <Eigen/Core>
 
+#include "rbdc/crba.hpp"
 #include "rbdc/forward_dynamics.hpp"
+#include "rbdc/inverse_dynamics.hpp"
+#include "rbdc/jacobian.hpp"
 #include "rbdc/kinematics.hpp"
 #include "rbdc/sim/dynamics.hpp"
+#include "rbdc/sim/feet_angular.hpp"
 
 namespace rbdc::sim {
 namespace {
@@ -11,7 +15,7 @@ namespace {
 class RuntimeDynamics final : public DynamicsModel {
  public:
   explicit RuntimeDynamics(const Model& model)
-      : model_(model), data_(model_), f_(Matrix3X::Zero(3, static_cast<int>(model.feet.size()))) {}
+      : model_(model), data_(model_), angular_(model_), f_(Matrix3X::Zero(3, static_cast<int>(model.feet.size()))) {}
 
   int nq() const override { return model_.nq; }
   int nv() const override { return model_.nv; }
@@ -32,9 +36,23 @@ class RuntimeDynamics final : public DynamicsModel {
         Eigen::Map<const VectorX>(tau, model_.nv - model_.root_dofs()), f_);
   }
 
+  void mass_matrix(const double* q, MatrixX& M) override {
+    M = rbdc::mass_matrix(model_, data_, Eigen::Map<const VectorX>(q, model_.nq));
+  }
+  void bias_forces(const double* q, const double* v, double* h) override {
+    Eigen::Map<VectorX>(h, model_.nv) =
+        inverse_dynamics(model_, data_, Eigen::Map<const VectorX>(q, model_.nq),
+                         Eigen::Map<const VectorX>(v, model_.nv), VectorX::Zero(model_.nv));
+  }
+  void feet_jacobian(const double* q, MatrixX& J) override {
+    J = rbdc::feet_jacobian(model_, data_, Eigen::Map<const VectorX>(q, model_.nq));
+  }
+  void feet_angular_jacobian(const double* q, MatrixX& Jw) override { angular_.compute(q, Jw); }
+
  private:
   Model model_;
   Data data_;
+  FeetAngularJacobian angular_;
   Matrix3X f_;  // forward_dynamics takes a Matrix3X, not a map
 };
 

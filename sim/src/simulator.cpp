@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "rbdc/sim/orientation.hpp"
 
@@ -30,6 +31,7 @@ Simulator::Simulator(DynamicsModel& dynamics, const SimOptions& options)
   q_stage_ = q_;
   v_.setZero(nv_);
   a_.setZero(nv_);
+  last_tau_.setZero(nv_ - 6);
   p_feet_.setZero(3, n_feet_);
   v_feet_.setZero(3, n_feet_);
   f_feet_.setZero(3, n_feet_);
@@ -95,13 +97,24 @@ double Simulator::seconds_since(Clock::time_point start) const {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-void Simulator::evaluate_contacts(const VectorX& q, const Eigen::Ref<const VectorX>& v) {
-  dynamics_.feet_state(q.data(), v.data(), p_feet_.data(), v_feet_.data());
-  for (int k = 0; k < n_feet_; ++k) {
-    contacts_[k] = options_.contact_enabled
-                       ? foot_contact(options_.contact, options_.ground, p_feet_.col(k), v_feet_.col(k))
-                       : FootContact{};
-    f_feet_.col(k) = contacts_[k].force_W;
+void Simulator::evaluate(const VectorX& q, const Eigen::Ref<const VectorX>& v, const VectorX& tau) {
+  const Clock::time_point start = profiling_ ? Clock::now() : Clock::time_point{};
+  solver_.timing = profiling_;
+  solver_.dynamics_seconds = 0;
+  if (options_.contact_enabled) {
+    solver_.accelerations(dynamics_, options_.contact, options_.ground, options_.dt, q, v, tau, p_feet_,
+                          v_feet_, contacts_, f_feet_, a_);
+  } else {
+    dynamics_.feet_state(q.data(), v.data(), p_feet_.data(), v_feet_.data());
+    for (FootContact& c : contacts_) c = FootContact{};
+    f_feet_.setZero();
+    dynamics_.forward_dynamics(q.data(), v.data(), tau.data(), f_feet_.data(), a_.data());
+  }
+  if (profiling_) {
+    const double total = seconds_since(start);
+    const double dynamics = options_.contact_enabled ? solver_.dynamics_seconds : total;
+    profile_.dynamics += dynamics;
+    profile_.contact += total - dynamics;
   }
 }
 
@@ -109,17 +122,8 @@ void Simulator::derivative(const VectorX& x, const VectorX& tau, VectorX& xdot) 
   const int np = position_size();
   const auto vel = x.tail(nv_);
   configuration(x, q_stage_);
-  Clock::time_point start;
-  if (profiling_) start = Clock::now();
-  evaluate_contacts(q_stage_, vel);  // Section 5: contact forces f_feet at this state
-  if (profiling_) {
-    const Clock::time_point now = Clock::now();
-    profile_.contact += std::chrono::duration<double>(now - start).count();
-    start = now;
-  }
-  // Eq. 43, last block rows: a = M⁻¹(Sᵀτ + Jᵀf − c − g).
-  dynamics_.forward_dynamics(q_stage_.data(), vel.data(), tau.data(), f_feet_.data(), a_.data());
-  if (profiling_) profile_.dynamics += seconds_since(start);
+  // Section 5 contact forces and Eq. 43's last block rows: a = M⁻¹(Sᵀτ + J_Cᵀf − c − g).
+  evaluate(q_stage_, vel, tau);
   position_rate(x, vel, xdot.head(np));
   // The state holds v_B = R_W^0 ṗ_W; a holds R_W^0 p̈_W, so v̇_B = R_W^0 p̈_W − ω_B × v_B.
   xdot.tail(nv_) = a_;
@@ -130,6 +134,7 @@ void Simulator::step(const VectorX& tau) {
   if (tau.size() != nv_ - 6)
     throw std::invalid_argument("Simulator::step: expected " + std::to_string(nv_ - 6) +
                                 " joint torques, got " + std::to_string(tau.size()));
+  last_tau_ = tau;
   Clock::time_point start;
   const PhaseTimes before = profile_;
   if (profiling_) start = Clock::now();
@@ -176,12 +181,14 @@ void Simulator::sync_outputs() {
 }
 
 const std::vector<FootContact>& Simulator::contacts() {
-  evaluate_contacts(q_, v_);
+  const bool profiling = std::exchange(profiling_, false);  // outputs are not part of the step
+  evaluate(q_, v_, last_tau_);
+  profiling_ = profiling;
   return contacts_;
 }
 
 const Matrix3X& Simulator::feet_positions() {
-  evaluate_contacts(q_, v_);
+  dynamics_.feet_state(q_.data(), v_.data(), p_feet_.data(), v_feet_.data());
   return p_feet_;
 }
 

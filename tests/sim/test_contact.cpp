@@ -52,8 +52,13 @@ TEST(Contact, FrictionCoefficientIsSmoothOddAndReachesTheTableValues) {
   EXPECT_NEAR(friction_coefficient(p, p.v_static * (1 - 1e-9)), friction_coefficient(p, p.v_static * (1 + 1e-9)), 1e-6);
 }
 
-TEST(Contact, FrictionNeverExceedsMuTimesNormalForce) {
+// Isotropic friction stays inside the cone |f_t| ≤ μ f_n; Eq. 38 per axis bounds each axis by μ f_n
+// (so |f_t| ≤ √2 μ f_n). Both oppose the slip.
+class FrictionBound : public ::testing::TestWithParam<FrictionModel> {};
+
+TEST_P(FrictionBound, FrictionStaysWithinItsBoundAndOpposesTheSlip) {
   ContactParameters p;
+  p.friction = GetParam();
   p.mu_dynamic = 1.2;
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> unit(-1, 1);
@@ -64,11 +69,47 @@ TEST(Contact, FrictionNeverExceedsMuTimesNormalForce) {
     const FootContact c = foot_contact(p, tilted, p_W, v_W);
     if (!c.active) continue;
     EXPECT_GT(c.force_C.z(), 0);
-    EXPECT_LE(c.force_C.head<2>().norm(), std::max(p.mu_static, p.mu_dynamic) * c.force_C.z() * (1 + 1e-12));
-    // Friction opposes the slip.
+    const double bound = std::max(p.mu_static, p.mu_dynamic) * c.force_C.z() * (1 + 1e-12);
+    if (p.friction == FrictionModel::Isotropic) {
+      EXPECT_LE(c.force_C.head<2>().norm(), bound);
+    } else {
+      EXPECT_LE(c.force_C.head<2>().cwiseAbs().maxCoeff(), bound);
+    }
     const Vector3 v_C = tilted.W_R_C().transpose() * v_W;
     EXPECT_LE(c.force_C.head<2>().dot(v_C.head<2>()), 1e-12);
   }
+}
+
+INSTANTIATE_TEST_SUITE_P(Contact, FrictionBound,
+                         ::testing::Values(FrictionModel::PerAxis, FrictionModel::Isotropic));
+
+TEST(Contact, PerAxisFrictionIsEq38OnEachAxis) {
+  ContactParameters p;
+  const Vector3 v(0.3e-4, -2e-3, 0);  // x inside the stiction band, y sliding
+  const FootContact c = foot_contact(p, GroundPlane(), Vector3(0, 0, p.foot_radius - 0.05e-3), v);
+  ASSERT_TRUE(c.active);
+  EXPECT_NEAR(c.force_C.x(), -friction_coefficient(p, v.x()) * c.force_C.z(), 1e-12);
+  EXPECT_NEAR(c.force_C.y(), p.mu_dynamic * c.force_C.z(), 1e-12);
+}
+
+TEST(Contact, ImplicitFrictionSolvesTheBackwardEulerEquation) {
+  const ContactParameters p;
+  const double f_n = 20, compliance = 1e-4 / 0.01;  // dt / m for a 10 g foot
+  for (double u_free : {-1.0, -3e-3, -1e-5, 0.0, 2e-6, 5e-5, 0.04, 2.0}) {
+    const double f = implicit_friction(p, u_free, compliance, f_n);
+    const double u = u_free + compliance * f;
+    // f = −μ(u) f_n up to the solver's velocity tolerance (the slope is 1.5 μ_s f_n / v_s ≈ 6e5 N s/m).
+    const double eps = 1e-4 * p.v_static;
+    const double f_lo = -friction_coefficient(p, u + eps) * f_n, f_hi = -friction_coefficient(p, u - eps) * f_n;
+    EXPECT_GE(f, f_lo - 1e-12) << u_free;
+    EXPECT_LE(f, f_hi + 1e-12) << u_free;
+    EXPECT_LE(std::abs(f), p.mu_static * f_n * (1 + 1e-12));
+    EXPECT_LE(f * u_free, 0);               // opposes the slip
+    EXPECT_LE(std::abs(u), std::abs(u_free));  // and never reverses it
+  }
+  // A force below μ_s f_n that would slip the foot at 1 m/s in one step is held: u ≈ 0.
+  const double holding = 1.0 / 30;  // μ_s f_n · holding = 1.33 m/s > 1 m/s
+  EXPECT_LT(std::abs(1.0 + holding * implicit_friction(p, 1.0, holding, f_n)), p.v_static);
 }
 
 TEST(Contact, StandingMiniCheetahPenetrationPerInterpretation) {

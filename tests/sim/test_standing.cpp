@@ -17,44 +17,53 @@ using rbdc::control::GaitParameters;
 using rbdc::control::PdGains;
 using rbdc::control::PdTrotController;
 
-// With Table I's stiction velocity (v_s = 0.1 mm/s) the friction law is far too stiff for an explicit
-// step of 1e-4 s on the light shank (about 0.01 kg at the foot), so stance feet chatter inside the
-// friction cone (docs/simulator.md). Here the friction slope is made resolvable (v_s = 0.5 m/s,
-// harmless for a symmetric stance) so that the robot can come to rest.
-TEST(Standing, SettlesAndFeetCarryTheWeight) {
+// Table I's contact as it stands (v_s = 0.1 mm/s, dt = 1e-4 s, Heun), with the implicit friction
+// of contact_solver.hpp: after settling for 3 s (its slowest mode, a pitch creep, takes that long)
+// the robot stands 10 s more. Its trunk drifts less than
+// 0.1 mm and every foot's normal force stays within 5 % of its value at 3 s (four feet on a plane
+// share the weight in a statically indeterminate way, so "static" is each foot's settled force);
+// together they carry the weight within 1 %. With the explicit friction the feet ring (measured:
+// docs/simulator.md).
+TEST(Standing, TableIContactHoldsStillForTenSeconds) {
   const Model model = load_robot(default_urdf());
-  const auto dynamics = make_runtime_dynamics(model);
-  SimOptions options;
-  options.contact.v_static = 0.5;
-  options.contact.v_dynamic = 1.0;
+  const auto dynamics = make_generated_dynamics();
+  SimOptions options;  // Table I
   Simulator sim(*dynamics, options);
   GaitParameters stand;  // zero stride: the generator holds the stance pose
   stand.step_length = 0;
   stand.step_height = 0;
   PdTrotController controller(model, stand, PdGains{}, options.contact.foot_radius);
   RunOptions run_options;
-  run_options.duration = 3.0;
-  run_options.sample_interval = 1e-4;
-  double vertical = 0, trunk_speed = 0;
-  int samples = 0;
+  run_options.duration = 13.0;
+  run_options.sample_interval = 1e-3;
+  Vector3 settled_position = Vector3::Zero();
+  Eigen::Vector4d settled_force = Eigen::Vector4d::Zero();
+  double drift = 0, force_deviation = 0, total_deviation = 0;
+  double weight = 0;
+  for (const Body& b : model.bodies) weight -= b.mass * model.gravity.z();
   RunCallbacks callbacks;
   callbacks.sample = [&](Simulator& s) {
-    if (s.time() < 2.5) return;  // average over the last 0.5 s
-    for (const FootContact& c : s.contacts()) vertical += c.force_W.z();
-    trunk_speed = std::max(trunk_speed, s.v().head<6>().norm());
-    ++samples;
+    if (s.time() < 3.0 - 1e-9) return;
+    const std::vector<FootContact>& contacts = s.contacts();
+    Eigen::Vector4d f;
+    for (int k = 0; k < 4; ++k) f[k] = contacts[static_cast<size_t>(k)].force_W.z();
+    if (settled_force.isZero()) {
+      settled_force = f;
+      settled_position = s.q().head<3>();
+    }
+    drift = std::max(drift, (s.q().head<3>() - settled_position).norm());
+    force_deviation = std::max(force_deviation, (f - settled_force).cwiseQuotient(settled_force).cwiseAbs().maxCoeff());
+    total_deviation = std::max(total_deviation, std::abs(f.sum() - weight) / weight);
   };
   ASSERT_TRUE(run(sim, controller, run_options, callbacks).finite);
-  vertical /= samples;
-  for (const FootContact& c : sim.contacts()) EXPECT_TRUE(c.active);
-
-  double mass = 0;
-  for (const Body& b : model.bodies) mass += b.mass;
-  const double weight = -mass * model.gravity.z();
-  EXPECT_NEAR(vertical, weight, 0.01 * weight);
-  EXPECT_LT(trunk_speed, 1e-3);  // the trunk has settled
-  std::printf("feet carry %.3f N of %.3f N on average; trunk speed %.2e, height %.4f m\n", vertical, weight,
-              trunk_speed, sim.q()[2]);
+  ASSERT_TRUE((settled_force.array() > 0).all()) << settled_force.transpose();
+  EXPECT_LT(drift, 0.1e-3);
+  EXPECT_LT(force_deviation, 0.05);
+  EXPECT_LT(total_deviation, 0.01);
+  std::printf("over 3-13 s: trunk drift %.3e m, feet forces (%.2f %.2f %.2f %.2f) N within %.3f %%, "
+              "sum within %.3f %% of the weight %.3f N\n",
+              drift, settled_force[0], settled_force[1], settled_force[2], settled_force[3], 100 * force_deviation,
+              100 * total_deviation, weight);
 }
 
 namespace {
@@ -78,6 +87,7 @@ double slide_on_slope(double tilt_deg, double dt) {
   const Model model = ball();
   const auto dynamics = make_runtime_dynamics(model);
   SimOptions options;
+  options.contact.at_contact_point = false;  // a block that slides; at C_k the ball would roll
   options.ground = GroundPlane::tilted_about_x(tilt_deg * M_PI / 180);
   options.dt = dt;
   Simulator sim(*dynamics, options);
@@ -105,9 +115,9 @@ TEST(Friction, FootOnASlopeBelowTheFrictionAngleDoesNotSlide) {
   // (dt · 1.5 μ_s f_n / (v_s m) < 2 needs dt < 8e-6 s for this 1 kg ball).
   const double resolved = slide_on_slope(30.0, 1e-6);
   EXPECT_LT(resolved, 5e-5);
-  // At Table I's 1e-4 s the foot chatters inside the cone; it still stays within a millimetre.
+  // At Table I's 1e-4 s the implicit friction holds it as well (the explicit law crept 0.24 mm).
   const double table_step = slide_on_slope(30.0, 1e-4);
-  EXPECT_LT(table_step, 1e-3);
+  EXPECT_LT(table_step, 5e-5);
   std::printf("moved %.3e m (dt 1e-6) and %.3e m (dt 1e-4) in 1 s on a 30 deg slope\n", resolved, table_step);
 }
 

@@ -19,8 +19,18 @@ struct CommandLine {
   std::string dynamics = "generated";  ///< generated | runtime (falls back to runtime when absent)
   std::string out;                ///< CSV output (rbdc-sim) or output directory (comparison)
   double ground_tilt_deg = 0;     ///< ground plane tilt about world x
+  // Contact model choices, copied into sim.contact after parsing.
+  bool contact_point = sim::ContactParameters{}.at_contact_point;
+  bool friction_per_axis = sim::ContactParameters{}.friction == sim::FrictionModel::PerAxis;
+  bool friction_implicit = sim::ContactParameters{}.friction_update == sim::FrictionUpdate::Implicit;
   bool profile = false;
   bool plots = true;              ///< comparison: draw PNGs with matplotlib
+  // Comparison only: MuJoCo's contact (Table I's MuJoCo column) and what the ablations switch.
+  double mj_stiffness = 1.6e3;    ///< N/m, solref = (−stiffness, −damping)
+  double mj_damping = 100.0;      ///< N/(m/s)
+  double mj_friction = 1.6;
+  bool balanced_inertia = true;   ///< ours on MuJoCo's balanced thigh inertia (false: MIT's)
+  bool timing = true;             ///< time both simulators without sampling (two more runs)
   bool help = false;
 };
 

@@ -10,6 +10,15 @@
 
 namespace rbdc::sim {
 
+/// Eq. 38 as printed: μ(v) applied to each tangential axis of the contact frame (default, the
+/// paper's model; the friction may reach √2 μ f_n on a diagonal slip), or isotropic: μ(|v_t|) along
+/// −v_t/|v_t|, bounded by μ f_n (an elliptic cone, closer to MuJoCo's).
+enum class FrictionModel { PerAxis, Isotropic };
+/// How the friction's stiff slope near v = 0 is stepped: explicitly (rings when dt exceeds about
+/// 2 m_foot v_s / (1.5 μ_s f_n)) or linearly implicitly with the contact-space inverse inertia
+/// (contact_solver.hpp), stable at Table I's v_s and dt.
+enum class FrictionUpdate { Explicit, Implicit };
+
 /// Paper 000 Table I, in the units we decided for it (docs/simulator.md): the Hertz law takes the
 /// penetration in `length_unit` metres, so K = 1e4 means 1e4 N/mm^2.2 and a standing Mini Cheetah
 /// sinks about 0.06 mm per foot. With length_unit = 1 (plain SI) it would sink about 6 cm.
@@ -24,6 +33,11 @@ struct ContactParameters {
   double mu_dynamic = 2.0;         ///< μ_d
   double v_dynamic = 0.2e-3;       ///< v_d, m/s: |μ| is μ_d from here on
   double foot_radius = 0.02;       ///< r, m: sphere centred at the foot point (Eq. 31)
+  FrictionModel friction = FrictionModel::PerAxis;
+  FrictionUpdate friction_update = FrictionUpdate::Implicit;
+  /// Force at the contact point C_k = p_f − r ẑ_C with its moment, friction from v_Ck (Eqs. 32-33,
+  /// 38); false: force at the sphere centre (the foot point) and its velocity, so feet cannot roll.
+  bool at_contact_point = true;
 };
 
 /// A plane through `point` with unit normal `normal` (world frame). Its contact frame {C}
@@ -58,10 +72,15 @@ void world_forces(const std::vector<FootContact>& contacts, Matrix3X& f);
 /// smoothstep from −μ_s to μ_s over v ∈ [−v_s, v_s], then from μ_s to μ_d over |v| ∈ [v_s, v_d].
 double friction_coefficient(const ContactParameters& p, double slip_speed);
 
-/// Contact force on a foot sphere centred at p_W moving with velocity v_W (world frame).
-/// Friction is isotropic: it opposes the tangential slip velocity with magnitude μ(|v_t|) f_n, so
-/// it never exceeds μ f_n (applying Eq. 38 per axis would allow √2 μ f_n).
+/// Contact force on a foot sphere centred at p_W whose contact point moves with velocity v_W
+/// (world frame; with p.at_contact_point the caller passes v_Ck, else the centre's velocity).
+/// Friction follows p.friction with the explicit law f_t = −μ(v) f_n.
 FootContact foot_contact(const ContactParameters& p, const GroundPlane& ground, const Vector3& p_W,
                          const Vector3& v_W);
+
+/// Friction of one tangential axis stepped implicitly: the f solving f = −μ(u) f_n with
+/// u = u_free + compliance · f, where u_free is the slip velocity the step would reach without this
+/// friction and compliance = dt (J M⁻¹ Jᵀ)_ii > 0. The root lies between 0 and u_free.
+double implicit_friction(const ContactParameters& p, double u_free, double compliance, double f_normal);
 
 }  // namespace rbdc::sim

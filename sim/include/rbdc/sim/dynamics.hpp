@@ -22,6 +22,14 @@ class DynamicsModel {
   /// a = M⁻¹(Sᵀτ + Jᵀf − c − g) (Eq. 30); τ has nv − 6 entries, f is 3 × n_feet.
   virtual void forward_dynamics(const double* q, const double* v, const double* tau,
                                 const double* f_feet, double* a) = 0;
+  /// Joint-space inertia M (nv × nv, full) and the feet Jacobian J (3·n_feet × nv, world, foot
+  /// points): the contact solver (contact_solver.hpp) needs M⁻¹Jᵀ.
+  virtual void mass_matrix(const double* q, MatrixX& M) = 0;
+  /// c + g (nv): the inverse dynamics at a = 0 without foot forces.
+  virtual void bias_forces(const double* q, const double* v, double* h) = 0;
+  virtual void feet_jacobian(const double* q, MatrixX& J) = 0;
+  /// Angular rows of the foot bodies (3·n_feet × nv, world), feet_angular.hpp.
+  virtual void feet_angular_jacobian(const double* q, MatrixX& Jw) = 0;
   virtual std::string name() const = 0;
 };
 

@@ -7,6 +7,7 @@
 
 #include "rbdc/data.hpp"
 #include "rbdc/sim/contact.hpp"
+#include "rbdc/sim/contact_solver.hpp"
 #include "rbdc/sim/dynamics.hpp"
 
 namespace rbdc::sim {
@@ -28,8 +29,8 @@ struct SimOptions {
 /// Wall time spent in each phase of a step (seconds), filled when profiling is on; the controller's
 /// share is RunSummary::controller_seconds (run.hpp).
 struct PhaseTimes {
-  double dynamics = 0;     ///< forward dynamics
-  double contact = 0;      ///< foot kinematics + contact forces
+  double dynamics = 0;     ///< forward dynamics, M and its factor, feet Jacobians
+  double contact = 0;      ///< foot kinematics, contact forces, friction solve
   double integration = 0;  ///< everything else inside step()
   long steps = 0;
 };
@@ -47,7 +48,8 @@ class Simulator {
   double time() const { return t_; }
   const VectorX& q() const { return q_; }  ///< current configuration (quaternion form)
   const VectorX& v() const { return v_; }
-  /// Contact state of every foot at the current state.
+  /// Contact state of every foot at the current state (with the torques of the last step, which
+  /// the implicit friction depends on).
   const std::vector<FootContact>& contacts();
   /// Foot positions at the current state (3 × n_feet, world).
   const Matrix3X& feet_positions();
@@ -67,7 +69,8 @@ class Simulator {
                      Eigen::Ref<VectorX> rate) const;
   /// ẋ of Eq. 43 at state x with torques `tau`.
   void derivative(const VectorX& x, const VectorX& tau, VectorX& xdot);
-  void evaluate_contacts(const VectorX& q, const Eigen::Ref<const VectorX>& v);
+  /// Contacts, feet and accelerations a_ at (q, v) under τ.
+  void evaluate(const VectorX& q, const Eigen::Ref<const VectorX>& v, const VectorX& tau);
   void sync_outputs();
   double seconds_since(Clock::time_point start) const;
 
@@ -79,7 +82,8 @@ class Simulator {
   PhaseTimes profile_;
 
   VectorX x_, k1_, k2_, k3_, k4_, x_stage_;  // state and integrator stages
-  VectorX q_, v_, q_stage_, a_;
+  VectorX q_, v_, q_stage_, a_, last_tau_;
+  ContactSolver solver_;
   Matrix3X p_feet_, v_feet_, f_feet_;
   std::vector<FootContact> contacts_;
 };
