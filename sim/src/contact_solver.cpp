@@ -79,7 +79,7 @@ void ContactSolver::implicit_friction_sweeps(const ContactParameters& p, double 
   const int m = static_cast<int>(active_.size());
   for (int i = 0; i < m; ++i) f_.segment<2>(3 * i).setZero();
   // Gauss-Seidel: each foot sees the others' latest friction through Φ's off-diagonal blocks.
-  for (int sweep = 0; sweep < 3; ++sweep) {
+  for (int sweep = 0; sweep < 12; ++sweep) {
     for (int i = 0; i < m; ++i) {
       const double f_n = f_[3 * i + 2];
       // Slip velocity one step ahead without this foot's friction.

@@ -17,53 +17,79 @@ using rbdc::control::GaitParameters;
 using rbdc::control::PdGains;
 using rbdc::control::PdTrotController;
 
-// Table I's contact as it stands (v_s = 0.1 mm/s, dt = 1e-4 s, Heun), with the implicit friction
-// of contact_solver.hpp: after settling for 3 s (its slowest mode, a pitch creep, takes that long)
-// the robot stands 10 s more. Its trunk drifts less than
-// 0.1 mm and every foot's normal force stays within 5 % of its value at 3 s (four feet on a plane
-// share the weight in a statically indeterminate way, so "static" is each foot's settled force);
-// together they carry the weight within 1 %. With the explicit friction the feet ring (measured:
-// docs/simulator.md).
-TEST(Standing, TableIContactHoldsStillForTenSeconds) {
+namespace {
+
+struct StandingResult {
+  double drift = 0;            ///< largest trunk displacement from its settled position, m
+  double force_deviation = 0;  ///< largest |f_k − f_k(settled)| / f_k(settled) over the feet
+  double total_deviation = 0;  ///< largest |Σ f_k − weight| / weight
+  Eigen::Vector4d settled_force = Eigen::Vector4d::Zero();
+};
+
+// The PD holding the stance pose on Table I's contact (v_s = 0.1 mm/s, dt = 1e-4 s, Heun, implicit
+// friction): settles for `settle` s (its slowest mode, a pitch creep, takes about 3 s), then
+// measures over `hold` s. "Static" is each foot's settled force: four feet on a plane share the
+// weight in a statically indeterminate way.
+StandingResult stand(bool at_contact_point, double settle, double hold) {
   const Model model = load_robot(default_urdf());
   const auto dynamics = make_generated_dynamics();
   SimOptions options;  // Table I
+  options.contact.at_contact_point = at_contact_point;
   Simulator sim(*dynamics, options);
   GaitParameters stand;  // zero stride: the generator holds the stance pose
   stand.step_length = 0;
   stand.step_height = 0;
   PdTrotController controller(model, stand, PdGains{}, options.contact.foot_radius);
   RunOptions run_options;
-  run_options.duration = 13.0;
+  run_options.duration = settle + hold;
   run_options.sample_interval = 1e-3;
+  StandingResult r;
   Vector3 settled_position = Vector3::Zero();
-  Eigen::Vector4d settled_force = Eigen::Vector4d::Zero();
-  double drift = 0, force_deviation = 0, total_deviation = 0;
   double weight = 0;
   for (const Body& b : model.bodies) weight -= b.mass * model.gravity.z();
   RunCallbacks callbacks;
   callbacks.sample = [&](Simulator& s) {
-    if (s.time() < 3.0 - 1e-9) return;
+    if (s.time() < settle - 1e-9) return;
     const std::vector<FootContact>& contacts = s.contacts();
     Eigen::Vector4d f;
     for (int k = 0; k < 4; ++k) f[k] = contacts[static_cast<size_t>(k)].force_W.z();
-    if (settled_force.isZero()) {
-      settled_force = f;
+    if (r.settled_force.isZero()) {
+      r.settled_force = f;
       settled_position = s.q().head<3>();
     }
-    drift = std::max(drift, (s.q().head<3>() - settled_position).norm());
-    force_deviation = std::max(force_deviation, (f - settled_force).cwiseQuotient(settled_force).cwiseAbs().maxCoeff());
-    total_deviation = std::max(total_deviation, std::abs(f.sum() - weight) / weight);
+    r.drift = std::max(r.drift, (s.q().head<3>() - settled_position).norm());
+    r.force_deviation = std::max(r.force_deviation, (f - r.settled_force).cwiseQuotient(r.settled_force).cwiseAbs().maxCoeff());
+    r.total_deviation = std::max(r.total_deviation, std::abs(f.sum() - weight) / weight);
   };
-  ASSERT_TRUE(run(sim, controller, run_options, callbacks).finite);
-  ASSERT_TRUE((settled_force.array() > 0).all()) << settled_force.transpose();
-  EXPECT_LT(drift, 0.1e-3);
-  EXPECT_LT(force_deviation, 0.05);
-  EXPECT_LT(total_deviation, 0.01);
-  std::printf("over 3-13 s: trunk drift %.3e m, feet forces (%.2f %.2f %.2f %.2f) N within %.3f %%, "
-              "sum within %.3f %% of the weight %.3f N\n",
-              drift, settled_force[0], settled_force[1], settled_force[2], settled_force[3], 100 * force_deviation,
-              100 * total_deviation, weight);
+  EXPECT_TRUE(run(sim, controller, run_options, callbacks).finite);
+  EXPECT_TRUE((r.settled_force.array() > 0).all()) << r.settled_force.transpose();
+  std::printf("contact point %s, over %g-%g s: trunk drift %.3e m, feet forces (%.2f %.2f %.2f %.2f) N within "
+              "%.3f %%, sum within %.3f %% of the weight %.3f N\n",
+              at_contact_point ? "on" : "off", settle, settle + hold, r.drift, r.settled_force[0], r.settled_force[1],
+              r.settled_force[2], r.settled_force[3], 100 * r.force_deviation, 100 * r.total_deviation, weight);
+  return r;
+}
+
+}  // namespace
+
+// Table I's values hold the robot still for 10 s: drift < 0.1 mm, feet forces within 5 % of
+// static, the weight carried within 1 %. Measured 0.03 mm, 0.2 %, 0.01 % with the force at the
+// sphere centre (the explicit friction rang at these values and needed v_s = 0.5 m/s).
+TEST(Standing, TableIContactHoldsStillForTenSeconds) {
+  const StandingResult r = stand(false, 3.0, 10.0);
+  EXPECT_LT(r.drift, 0.1e-3);
+  EXPECT_LT(r.force_deviation, 0.05);
+  EXPECT_LT(r.total_deviation, 0.01);
+}
+
+// With the force at the contact point the feet may roll and the stance creeps at 0.04-0.07 mm/s
+// at dt = 1e-4 s (0.015 mm/s at 5e-5 s: a discretisation effect we have not removed, see
+// docs/simulator.md): 0.6 mm over 10 s, above the 0.1 mm goal. Pinned over 2 s so it cannot grow.
+TEST(Standing, ContactPointStanceCreepIsBounded) {
+  const StandingResult r = stand(true, 3.0, 2.0);
+  EXPECT_LT(r.drift, 0.2e-3);
+  EXPECT_LT(r.force_deviation, 0.05);
+  EXPECT_LT(r.total_deviation, 0.01);
 }
 
 namespace {
