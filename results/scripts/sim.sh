@@ -17,6 +17,23 @@ echo "== Table I read in plain SI (length unit 1 m): the robot sinks, the trot f
 echo "== Table I read with the penetration in mm (our default)" >> "$out/units.txt"
 "$build/bin/rbdc-sim" --quiet >> "$out/units.txt"
 
+# Chatter: the share and RMS of the feet forces above 500 Hz over 1-10 s of trot, before (force at
+# the sphere centre, isotropic explicit friction) and after (contact point, Eq. 38 per axis, implicit).
+{
+  echo "# Feet-force energy above 500 Hz, 10 s trot sampled at 1e-4 s (results/scripts/force_spectrum.py)"
+  echo
+  for variant in after before; do
+    if [ "$variant" = before ]; then opts="--contact-point off --friction isotropic --friction-update explicit"
+    else opts=""; fi
+    # shellcheck disable=SC2086
+    "$build/bin/rbdc-sim" --quiet --sample-interval 1e-4 $opts --out "$scratch/trot_$variant.csv" > /dev/null
+    echo "## $variant: rbdc-sim $opts"
+    echo
+    /usr/bin/python3 "$root/results/scripts/force_spectrum.py" "$scratch/trot_$variant.csv" --label "$variant"
+    echo
+  done
+} > "$out/chatter.md"
+
 # Full time series stay out of git (tens of MB); the table, summary and figures are committed.
 "$build/bin/rbdc-mujoco-compare" --quiet --out "$scratch"
 cp "$scratch/comparison.md" "$scratch/comparison_summary.csv" "$scratch/trunk_pose.png" \
