@@ -10,7 +10,7 @@ echo "== rbdc-sim, 10 s trot, Heun, dt 1e-4 s, generated dynamics, per-phase pro
 "$build/bin/rbdc-sim" --quiet >> "$out/speed.txt"
 "$build/bin/rbdc-sim" --quiet --profile >> "$out/speed.txt"
 echo "== the same with the force at the sphere centre and explicit friction (the generated forward dynamics alone)" >> "$out/speed.txt"
-"$build/bin/rbdc-sim" --quiet --profile --contact-point off --friction-update explicit >> "$out/speed.txt"
+"$build/bin/rbdc-sim" --quiet --profile --contact-point off --friction isotropic --friction-update explicit >> "$out/speed.txt"
 echo "== the same on the runtime (reference) dynamics" >> "$out/speed.txt"
 "$build/bin/rbdc-sim" --quiet --dynamics runtime --profile >> "$out/speed.txt"
 
