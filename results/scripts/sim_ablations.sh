@@ -43,6 +43,7 @@ row "previous model (centre, isotropic, explicit)" --contact-point off --frictio
 row "ours with MuJoCo's friction 1.6" --mu-static 1.6 --mu-dynamic 1.6
 row "MuJoCo with our friction 2.0" --mj-friction 2.0
 row "MuJoCo 10x stiffer (solref -16000)" --mj-stiffness 16000 --mj-damping 316
+row "MuJoCo 100x stiffer (solref -160000)" --mj-stiffness 160000 --mj-damping 1000
 row "MuJoCo softer damping (solref damping -40)" --mj-damping 40
 row "ours on MIT's thigh inertia" --original-inertia
 row "Table I in SI metres (K = 1e4 N/m^2.2)" --length-unit 1
