@@ -112,8 +112,14 @@ def build_parser() -> argparse.ArgumentParser:
     evaluate.add_argument("--a", help="acceleration, comma-separated (nv values); adds inverse dynamics as tau")
     evaluate.add_argument("--derivatives", action="store_true",
                           help="adds the runtime's analytic derivatives (dtau_dq … dtau_e_dq, docs/runtime.md)")
-    evaluate.add_argument("--tau", help="joint torques for the forward-dynamics derivatives (n_joints values; default zero)")
-    evaluate.add_argument("--f", help="world foot forces for the derivatives, foot-major (3·n_feet values; default zero)")
+    evaluate.add_argument("--tau", help="joint torques (n_joints values; default zero); adds forward dynamics "
+                          "(qdd and the trunk's acceleration, docs/runtime.md) and feeds the derivatives")
+    evaluate.add_argument("--f", help="world foot forces, foot-major (3·n_feet values; default zero)")
+    evaluate.add_argument("--body-wrenches", type=Path, metavar="FILE.json",
+                          help="external wrenches {\"BODY\": [nx, ny, nz, fx, fy, fz]} at each body's origin, "
+                               "body coordinates; adds forward dynamics")
+    evaluate.add_argument("--armature", action="append", default=[], metavar="JOINT=VALUE",
+                          help="reflected rotor inertia added to M's diagonal (repeatable; docs/model.md)")
     evaluate.add_argument("--topology", type=Path, metavar="FILE", help="topology YAML applied to the URDF")
     base = evaluate.add_mutually_exclusive_group()
     base.add_argument("--floating-base", dest="base", action="store_const", const="floating")

@@ -88,6 +88,10 @@ def evaluate(args, layout: Layout) -> int:
             command += [f"--{option}", getattr(args, option)]
     if args.derivatives:
         command.append("--derivatives")
+    if args.body_wrenches:
+        command += ["--body-wrenches", str(args.body_wrenches)]
+    for armature in args.armature:
+        command += ["--armature", armature]
     if args.topology:
         command += ["--topology", str(args.topology)]
     if args.base:

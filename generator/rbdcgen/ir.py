@@ -33,6 +33,23 @@ class Body:
 
 
 @dataclass(frozen=True)
+class Rotor:
+    """A geared rotor carried by the joint's parent, spinning at gear_ratio · q̇ (docs/ir.md)."""
+    gear_ratio: float
+    mass: float
+    inertia: Mat3         # about its origin, rotor axes
+    rotation: Mat3        # parent → rotor coordinates
+    translation: Vec3     # rotor origin in parent coordinates
+    axis: Vec3            # spin axis, rotor coordinates
+
+
+@dataclass(frozen=True)
+class Actuator:
+    armature: float
+    rotor: Optional[Rotor] = None
+
+
+@dataclass(frozen=True)
 class Joint:
     name: str
     type: str             # floating | fixed (root only), revolute | prismatic
@@ -44,6 +61,7 @@ class Joint:
     v_index: int
     lower: Optional[float]
     upper: Optional[float]
+    actuator: Optional[Actuator] = None   # absent on joints without armature or rotor
 
 
 @dataclass(frozen=True)
@@ -145,6 +163,28 @@ class _Reader:
         return None if x is None else self.number(x, where)
 
 
+def _actuator(r, raw, where) -> Optional[Actuator]:
+    if raw is None:
+        return None
+    if not isinstance(raw, dict):
+        r.fail(where, "expected an object")
+    armature = r.number(r.get(raw, "armature", where), where + ".armature")
+    if armature < 0:
+        r.fail(where + ".armature", "must be ≥ 0, got %r" % armature)
+    rotor = None
+    if "rotor" in raw:
+        o, w = raw["rotor"], where + ".rotor"
+        rotor = Rotor(gear_ratio=r.number(r.get(o, "gear_ratio", w), w + ".gear_ratio"),
+                      mass=r.number(r.get(o, "mass", w), w + ".mass"),
+                      inertia=r.mat3(r.get(o, "inertia", w), w + ".inertia"),
+                      rotation=r.mat3(r.get(o, "rotation", w), w + ".rotation"),
+                      translation=r.vec3(r.get(o, "translation", w), w + ".translation"),
+                      axis=r.vec3(r.get(o, "axis", w), w + ".axis"))
+        if rotor.mass < 0:
+            r.fail(w + ".mass", "must be ≥ 0, got %r" % rotor.mass)
+    return Actuator(armature=armature, rotor=rotor)
+
+
 def load_ir(source) -> Robot:
     """Reads an IR from a path or an already parsed dict; checks shapes, never physics."""
     if isinstance(source, dict):
@@ -202,7 +242,8 @@ def load_ir(source) -> Robot:
             q_index=r.integer(r.get(j, "q_index", where), where + ".q_index"),
             v_index=r.integer(r.get(j, "v_index", where), where + ".v_index"),
             lower=r.optional_number(j.get("lower"), where + ".lower"),
-            upper=r.optional_number(j.get("upper"), where + ".upper")))
+            upper=r.optional_number(j.get("upper"), where + ".upper"),
+            actuator=_actuator(r, j.get("actuator"), where + ".actuator")))
     if (joints[0].type == "floating") != floating:
         r.fail("joints[0].type", "'%s' contradicts floating_base = %s" % (joints[0].type, floating))
 

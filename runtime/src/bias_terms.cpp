@@ -3,6 +3,7 @@
 
 #include "argument_checks.hpp"
 #include "rbdc/kinematics.hpp"
+#include "rotors.hpp"
 #include "tree_helpers.hpp"
 
 namespace rbdc {
@@ -27,6 +28,11 @@ const VectorX& quadratic_velocity_terms(const Model& model, Data& data, const Ve
                       crm(vi) * model.motion_subspace[ui] * v[model.joints[ui].v_index];
     //   f_i ← I_i a_i + v_i ⊗ I_i v_i                       (Eq. 20)
     data.f_body[ui] = Ii * data.a_body[ui] + crf(vi) * Ii * vi;
+    //   rotor i on body j: f_rot,i at q̈ = 0 (rotors.hpp)
+    if (model.has_rotors) {
+      data.f_rotor[ui] = detail::rotor_wrench(model, ui, data.v[j], data.a_body[j],
+                                              v[model.joints[ui].v_index], 0.0);
+    }
   }
   // for i = nb-1 … 1: c_i ← S_iᵀ f_i; f_j ← f_j + (X_j^i)ᵀ f_i; then c_0 ← S_0ᵀ f_0  (Eqs. 22-23)
   detail::inward_force_pass(model, data, data.c);
@@ -46,6 +52,10 @@ const VectorX& gravity_terms(const Model& model, Data& data, const VectorRef& q)
     const size_t j = static_cast<size_t>(model.parent[ui]);
     data.a_body[ui] = data.X_up[ui] * data.a_body[j];
     data.f_body[ui] = model.inertia[ui] * data.a_body[ui];
+    //   rotor i on body j: f_rot,i ← I_rot X_rot a_j
+    if (model.has_rotors) {
+      data.f_rotor[ui] = detail::rotor_wrench(model, ui, Vector6::Zero(), data.a_body[j], 0.0, 0.0);
+    }
   }
   // for i = nb-1 … 1: g_i ← S_iᵀ f_i; f_j ← f_j + (X_j^i)ᵀ f_i; then g_0 ← S_0ᵀ f_0  (Eqs. 22, 25)
   detail::inward_force_pass(model, data, data.g);
@@ -60,6 +70,10 @@ const VectorX& external_wrench_terms(const Model& model, Data& data, const Vecto
   kinematics(model, data, q);
   // for i = 0 … nb-1: f_i ← X̄_{F_i}^i f_ext,i  (the wrenches are given at F_i = body frame i)
   for (size_t i = 0; i < f_ext.size(); ++i) data.f_body[i] = f_ext[i];
+  // Rotors take no external wrench; they only carry the bodies' wrenches, so f_rot = 0.
+  if (model.has_rotors) {
+    for (Vector6& f : data.f_rotor) f.setZero();
+  }
   // for i = nb-1 … 1: τ_ei ← S_iᵀ f_i; f_j ← f_j + (X_j^i)ᵀ f_i; then τ_e0 ← S_0ᵀ f_0
   detail::inward_force_pass(model, data, data.tau_e);
   return data.tau_e;

@@ -6,6 +6,34 @@
 
 namespace rbdc {
 
+namespace {
+
+// Rotor i's part of column i (rotors.hpp): its spin S_rot q̈_i needs F_r = I_rot S_rot, so
+// H_ii += S_rotᵀ F_r; F_r, moved onto the carrier λ(i) by X_rotᵀ and towards the root like F_i
+// (Eq. 27), gives H_ij += F_rᵀ S_j for j ∈ κ(λ(i)) and the trunk block column (Eq. 29).
+void add_rotor_column(const Model& model, Data& data, int i) {
+  const size_t ui = static_cast<size_t>(i);
+  MatrixX& H = data.M;
+  const int ci = model.joints[ui].v_index;
+  const Vector6 F_r = model.rotor_inertia[ui] * model.rotor_subspace[ui];
+  H(ci, ci) += model.rotor_subspace[ui].dot(F_r);
+  Vector6 F = model.X_rotor[ui].transpose() * F_r;  // at the carrier λ(i)
+  int j = model.parent[ui];
+  for (; j != 0; j = model.parent[static_cast<size_t>(j)]) {
+    const size_t uj = static_cast<size_t>(j);
+    const int cj = model.joints[uj].v_index;
+    H(ci, cj) += F.dot(model.motion_subspace[uj]);
+    H(cj, ci) = H(ci, cj);
+    F = data.X_up[uj].transpose() * F;
+  }
+  if (model.floating_base) {
+    H.block<6, 1>(0, ci) += F;
+    H.block<1, 6>(ci, 0) += F.transpose();
+  }
+}
+
+}  // namespace
+
 const MatrixX& mass_matrix(const Model& model, Data& data, const VectorRef& q) {
   detail::check_q("mass_matrix", model, data, q);
   kinematics(model, data, q);
@@ -19,6 +47,14 @@ const MatrixX& mass_matrix(const Model& model, Data& data, const VectorRef& q) {
   H.setZero();
   // for i = 0 … nb-1: I_ci ← I_i
   for (int i = 0; i < model.nb; ++i) data.Ic[static_cast<size_t>(i)] = model.inertia[static_cast<size_t>(i)];
+  //   with rotors: I_cλ(i) ← I_cλ(i) + X_rot,iᵀ I_rot,i X_rot,i (the rotor rides on λ(i))
+  if (model.has_rotors) {
+    for (int i = 1; i < model.nb; ++i) {
+      const size_t ui = static_cast<size_t>(i);
+      data.Ic[static_cast<size_t>(lambda(i))].noalias() +=
+          model.X_rotor[ui].transpose() * model.rotor_inertia[ui] * model.X_rotor[ui];
+    }
+  }
   // for i = nb-1 … 1
   for (int i = model.nb - 1; i >= 1; --i) {
     const Matrix6& Ici = data.Ic[static_cast<size_t>(i)];
@@ -42,6 +78,9 @@ const MatrixX& mass_matrix(const Model& model, Data& data, const VectorRef& q) {
       H.block<6, 1>(0, col(i)) = F_i0;
       H.block<1, 6>(col(i), 0) = F_i0.transpose();
     }
+    if (model.has_rotors) add_rotor_column(model, data, i);
+    //   armature: H_ii ← H_ii + armature_i (reflected inertia, diagonal only)
+    H(col(i), col(i)) += model.joints[static_cast<size_t>(i)].armature;
   }
   // Floating base: the trunk block is the composite inertia of the whole tree, I_c0 (Eq. 29),
   // symmetrised so that M is exactly symmetric (the sums above leave round-off asymmetry).

@@ -22,6 +22,7 @@ Data::Data(const Model& model) : M_llt(model.nv) {
   a_body.assign(nb, Vector6::Zero());
   f_body.assign(nb, Vector6::Zero());
   f_ext.assign(nb, Vector6::Zero());
+  f_rotor.assign(nb, Vector6::Zero());
   c = VectorX::Zero(nv);
   g = VectorX::Zero(nv);
   tau_e = VectorX::Zero(nv);

@@ -4,6 +4,7 @@
 
 #include "argument_checks.hpp"
 #include "rbdc/kinematics.hpp"
+#include "rotors.hpp"
 #include "tree_helpers.hpp"
 
 namespace rbdc {
@@ -35,9 +36,20 @@ const VectorX& inverse_dynamics(const Model& model, Data& data, const VectorRef&
     data.a_body[ui] = data.X_up[ui] * data.a_body[j] + S * a[vi_index] + crm(vi) * S * v[vi_index];
     //   f_i ← I_i a_i + v_i ⊗ I_i v_i                       (Eq. 20)
     data.f_body[ui] = Ii * data.a_body[ui] + crf(vi) * Ii * vi;
+    //   rotor i on body j (rotors.hpp)
+    if (model.has_rotors) {
+      data.f_rotor[ui] = detail::rotor_wrench(model, ui, data.v[j], data.a_body[j], v[vi_index], a[vi_index]);
+    }
   }
   // for i = nb-1 … 1: τ_i ← S_iᵀ f_i; f_j ← f_j + (X_j^i)ᵀ f_i; then τ_0 ← S_0ᵀ f_0
   detail::inward_force_pass(model, data, data.tau);
+  // Armature: reflected inertia on M's diagonal only, τ_i += armature_i q̈_i.
+  if (model.has_armature) {
+    for (int i = 1; i < model.nb; ++i) {
+      const Joint& joint = model.joints[static_cast<size_t>(i)];
+      data.tau[joint.v_index] += joint.armature * a[joint.v_index];
+    }
+  }
   return data.tau;
 }
 

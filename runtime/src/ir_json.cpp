@@ -134,6 +134,24 @@ const char* type_name(JointType t) {
   return "unknown";
 }
 
+// Joint i's actuator (docs/ir.md): written only when it has one, so models without actuators keep
+// their IR byte for byte.
+bool has_actuator(const Joint& j) { return j.armature != 0 || j.rotor.gear_ratio != 0; }
+
+Json actuator_json(const Joint& j) {
+  JsonObject a{{"armature", j.armature}};
+  if (j.rotor.gear_ratio != 0) {
+    const Rotor& r = j.rotor;
+    a.emplace("rotor", JsonObject{{"gear_ratio", r.gear_ratio},
+                                  {"mass", r.mass},
+                                  {"inertia", matrix_json(r.inertia)},
+                                  {"rotation", matrix_json(r.rotation)},
+                                  {"translation", vector_json(r.translation)},
+                                  {"axis", vector_json(r.axis)}});
+  }
+  return a;
+}
+
 }  // namespace
 
 std::string json_number(double x) {
@@ -150,16 +168,18 @@ std::string to_ir_json(const Model& m) {
   }
   for (int i = 0; i < m.nb; ++i) {
     const Joint& j = m.joints[static_cast<size_t>(i)];
-    joints.push_back(JsonObject{{"name", j.name},
-                                {"type", type_name(j.type)},
-                                {"parent", m.parent[static_cast<size_t>(i)]},
-                                {"axis", vector_json(j.axis)},
-                                {"rotation", matrix_json(j.rotation)},
-                                {"translation", vector_json(j.translation)},
-                                {"q_index", j.q_index},
-                                {"v_index", j.v_index},
-                                {"lower", limit_json(j.lower)},
-                                {"upper", limit_json(j.upper)}});
+    JsonObject joint{{"name", j.name},
+                     {"type", type_name(j.type)},
+                     {"parent", m.parent[static_cast<size_t>(i)]},
+                     {"axis", vector_json(j.axis)},
+                     {"rotation", matrix_json(j.rotation)},
+                     {"translation", vector_json(j.translation)},
+                     {"q_index", j.q_index},
+                     {"v_index", j.v_index},
+                     {"lower", limit_json(j.lower)},
+                     {"upper", limit_json(j.upper)}};
+    if (has_actuator(j)) joint.emplace("actuator", actuator_json(j));
+    joints.push_back(std::move(joint));
   }
   for (const Foot& f : m.feet) {
     feet.push_back(JsonObject{{"name", f.name}, {"body", f.body}, {"offset", vector_json(f.offset)}});

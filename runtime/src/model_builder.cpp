@@ -355,6 +355,7 @@ Model build_model(const ModelSpec& spec_in, std::vector<std::string>* warnings) 
   for (const Body& b : m.bodies) m.inertia.push_back(spatial_inertia(b.mass, b.com, b.inertia_com));
   derive_sets(m);
   check_moving_inertia(spec, m);
+  add_actuators(m, spec.actuators);
   return m;
 }
 

@@ -31,6 +31,16 @@ void check_trunk_task(const char* function, const Model& model) {
   }
 }
 
+// The articulated-body recursions leave rotors and armature out (not implemented yet); the
+// closed-form references take them in through M.
+void check_no_actuators(const char* function, const Model& model) {
+  if (model.has_rotors || model.has_armature) {
+    throw std::invalid_argument(std::string("rbdc::") + function + ": model '" + model.name +
+                                "' has rotors or armature, which the OSC recursion does not support "
+                                "yet; use the closed-form reference (osc_closed_form*)");
+  }
+}
+
 void check_contact_feet(const char* function, const Model& model,
                         const std::vector<int>& contact_feet) {
   const int n_feet = static_cast<int>(model.feet.size());
@@ -175,6 +185,7 @@ const OscQuantities& osc_open_chain(const Model& model, Data& data, const Vector
   detail::check_qv("osc_open_chain", model, data, q, v);
   detail::check_feet_matrix("osc_open_chain", "f_feet_world", model, f_feet_world);
   check_trunk_task("osc_open_chain", model);
+  check_no_actuators("osc_open_chain", model);
   // f_i^e: the measured foot forces as body wrenches (the same construction as Alg. 4's input)
   feet_force_terms(model, data, q, f_feet_world);
   kinematics(model, data, q, v);
@@ -188,6 +199,7 @@ const OscQuantities& osc_closed_chain(const Model& model, Data& data, const Vect
                                       double ground_mass) {
   detail::check_qv("osc_closed_chain", model, data, q, v);
   check_trunk_task("osc_closed_chain", model);
+  check_no_actuators("osc_closed_chain", model);
   check_contact_feet("osc_closed_chain", model, contact_feet);
   kinematics(model, data, q, v);
   world_transforms(model, data, q);

@@ -3,6 +3,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <map>
 
 namespace rbdc {
@@ -84,6 +85,46 @@ class YamlReader {
   std::string path_;
 };
 
+// URDF convention: R = Rz(yaw) Ry(pitch) Rx(roll) places the child frame in the parent.
+Matrix3 rotation_from_rpy(const Vector3& rpy) {
+  return (Eigen::AngleAxisd(rpy.z(), Vector3::UnitZ()) * Eigen::AngleAxisd(rpy.y(), Vector3::UnitY()) *
+          Eigen::AngleAxisd(rpy.x(), Vector3::UnitX()))
+      .toRotationMatrix();
+}
+
+// One entry of `actuators:`; a rotor is present when gear_ratio is given. The values are checked
+// by add_actuators (model_builder.hpp), which names this file and line.
+ActuatorSpec read_actuator(const YamlReader& yaml, const YAML::Node& n) {
+  if (!n.IsMap()) yaml.fail(n, "actuators: expected a mapping per joint");
+  ActuatorSpec a;
+  a.joint = yaml.scalar<std::string>(yaml.required(n, "joint"), "actuator joint");
+  a.where = yaml.path() + ":" + std::to_string(n.Mark().line + 1);
+  const std::string what = "actuator of joint '" + a.joint + "'";
+  static const char* const kKeys[] = {"joint", "armature", "gear_ratio", "rotor_mass",
+                                      "rotor_inertia", "xyz", "rpy", "axis"};
+  for (const auto& kv : n) {
+    const std::string key = kv.first.as<std::string>();
+    if (std::find(std::begin(kKeys), std::end(kKeys), key) == std::end(kKeys)) {
+      yaml.fail(kv.first, what + ": unknown key '" + key + "'");
+    }
+  }
+  if (n["armature"]) a.armature = yaml.number(n["armature"], what + " armature");
+  a.has_rotor = static_cast<bool>(n["gear_ratio"]);
+  if (!a.has_rotor) {
+    if (n["rotor_mass"] || n["rotor_inertia"] || n["xyz"] || n["rpy"] || n["axis"]) {
+      yaml.fail(n, what + ": rotor values without gear_ratio");
+    }
+    return a;
+  }
+  a.gear_ratio = yaml.number(n["gear_ratio"], what + " gear_ratio");
+  a.rotor_mass = yaml.number(yaml.required(n, "rotor_mass"), what + " rotor_mass");
+  a.rotor_inertia = yaml.matrix3(yaml.required(n, "rotor_inertia"), what + " rotor_inertia");
+  if (n["xyz"]) a.rotor_translation = yaml.vector3(n["xyz"], what + " xyz");
+  if (n["rpy"]) a.rotor_rotation = rotation_from_rpy(yaml.vector3(n["rpy"], what + " rpy")).transpose();
+  if (n["axis"]) a.rotor_axis = yaml.vector3(n["axis"], what + " axis");
+  return a;
+}
+
 Topology read_arrays(const YamlReader& yaml, const YAML::Node& root) {
   Topology t;
   t.source = yaml.path();
@@ -104,14 +145,11 @@ Topology read_arrays(const YamlReader& yaml, const YAML::Node& root) {
                         yaml.vector3(yaml.required(f, "offset"), "foot '" + name + "' offset")});
     }
   }
+  if (const YAML::Node actuators = root["actuators"]) {
+    if (!actuators.IsSequence()) yaml.fail(actuators, "actuators: expected a list");
+    for (const YAML::Node& a : actuators) t.actuators.push_back(read_actuator(yaml, a));
+  }
   return t;
-}
-
-/// URDF convention: R = Rz(yaw) Ry(pitch) Rx(roll) places the child frame in the parent.
-Matrix3 rotation_from_rpy(const Vector3& rpy) {
-  return (Eigen::AngleAxisd(rpy.z(), Vector3::UnitZ()) * Eigen::AngleAxisd(rpy.y(), Vector3::UnitY()) *
-          Eigen::AngleAxisd(rpy.x(), Vector3::UnitX()))
-      .toRotationMatrix();
 }
 
 JointSpec read_joint(const YamlReader& yaml, const YAML::Node& n, int i) {
@@ -171,6 +209,7 @@ Model load_topology(const std::string& path, std::vector<std::string>* warnings)
   if (root["gravity"]) spec.gravity = yaml.vector3(root["gravity"], "gravity");
   spec.pred = t.pred;
   spec.succ = t.succ;
+  spec.actuators = t.actuators;
 
   const YAML::Node joints = yaml.required(root, "joints");
   if (!joints.IsSequence() || joints.size() + 1 != t.bodies.size()) {

@@ -25,12 +25,18 @@ inline Matrix3 rotation_of(const Matrix6& X) { return X.topLeftCorner<3, 3>(); }
 /// The inward pass shared by Algs. 2, 3 and 4 (and the full RNEA), over data.f_body:
 ///   for i = nb-1 … 1:  out_i ← S_iᵀ f_i;  f_λ(i) ← f_λ(i) + (X_λ(i)^i)ᵀ f_i
 ///   out_0 ← S_0ᵀ f_0   (S_0 = 1₆ for a floating base; a fixed base has no entries)
+/// With rotors, rotor i's wrench data.f_rotor[i] also drives its joint and loads its carrier:
+///   out_i += S_rotᵀ f_rot,i;  f_λ(i) += X_rotᵀ f_rot,i
 inline void inward_force_pass(const Model& model, Data& data, VectorX& out) {
   for (int i = model.nb - 1; i >= 1; --i) {
     const size_t ui = static_cast<size_t>(i);
     const size_t j = static_cast<size_t>(model.parent[ui]);
     out[model.joints[ui].v_index] = model.motion_subspace[ui].dot(data.f_body[ui]);
     data.f_body[j].noalias() += data.X_up[ui].transpose() * data.f_body[ui];
+    if (model.has_rotors) {
+      out[model.joints[ui].v_index] += model.rotor_subspace[ui].dot(data.f_rotor[ui]);
+      data.f_body[j].noalias() += model.X_rotor[ui].transpose() * data.f_rotor[ui];
+    }
   }
   if (model.floating_base) out.head<6>() = data.f_body[0];
 }

@@ -443,6 +443,7 @@ class UrdfTranslator {
     }
     for (Foot& f : feet) f.body = number_of[static_cast<size_t>(f.body)];
     spec.feet = feet;
+    if (topo) spec.actuators = topo->actuators;
     return spec;
   }
 

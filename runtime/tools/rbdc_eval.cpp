@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "rbdc/body_wrenches_file.hpp"
 #include "rbdc/derivatives.hpp"
 #include "rbdc/rbdc.hpp"
 #include "tool_options.hpp"
@@ -108,6 +109,28 @@ void write_derivatives(std::ostream& out, const Model& model, rbdc::Data& data, 
   out << "\n  }";
 }
 
+/// "forward_dynamics" (docs/runtime.md, "rbdc-eval"): q̈ = M⁻¹(Sᵀτ + τ_e − c − g) with τ_e from the
+/// world foot forces f and the body wrenches, and for a floating base the trunk's acceleration in
+/// trunk coordinates, classical (= q̈[0:6]) and spatial (Featherstone's, a₀ = q̈[0:6] − (0, ω_B × v_B)).
+void write_forward_dynamics(std::ostream& out, const Model& model, rbdc::Data& data, const VectorX& q,
+                            const VectorX& v, const VectorX& tau, const rbdc::Matrix3X& f,
+                            const std::vector<rbdc::Vector6>& body_wrenches) {
+  VectorX qdd = rbdc::forward_dynamics(model, data, q, v, tau, f);  // factors M in data.M_llt
+  // The body wrenches enter linearly: q̈ += M⁻¹ τ_e(wrenches) (Alg. 4)
+  qdd += data.M_llt.solve(rbdc::external_wrench_terms(model, data, q, body_wrenches));
+  out << ",\n  \"forward_dynamics\": {\n    \"qdd\": ";
+  write_vector(out, qdd);
+  if (model.floating_base) {
+    rbdc::Vector6 spatial = qdd.head<6>();
+    spatial.tail<3>() -= v.head<3>().cross(v.segment<3>(3));
+    out << ",\n    \"trunk_classical_acceleration\": ";
+    write_vector(out, qdd.head<6>());
+    out << ",\n    \"trunk_spatial_acceleration\": ";
+    write_vector(out, spatial);
+  }
+  out << "\n  }";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -117,9 +140,15 @@ int main(int argc, char** argv) {
     std::vector<double> q_values, v_values, a_values, tau_values, f_values;
     bool has_q = false, has_v = false, has_a = false, has_tau = false, has_f = false;
     bool derivatives = false;
+    std::string body_wrenches_file;
     const ExtraOption state_options = [&](int n, char** args, int& i) {
       const std::string arg = args[i];
       if (arg == "--derivatives") return derivatives = true;
+      if (arg == "--body-wrenches") {
+        if (i + 1 >= n) throw std::invalid_argument("--body-wrenches expects a JSON file");
+        body_wrenches_file = args[++i];
+        return true;
+      }
       const std::pair<const char*, std::pair<std::vector<double>*, bool*>> vectors[] = {
           {"--q", {&q_values, &has_q}},       {"--v", {&v_values, &has_v}},
           {"--a", {&a_values, &has_a}},       {"--tau", {&tau_values, &has_tau}},
@@ -135,10 +164,15 @@ int main(int argc, char** argv) {
     };
     if (!parse_load_options(argc, argv, opts, state_options)) {
       std::cout << "usage: rbdc-eval ROBOT [options] [--q Q0,Q1,…] [--v V0,V1,…] [--a A0,A1,…]\n"
-                   "                 [--derivatives [--tau T0,…] [--f F0x,F0y,F0z,F1x,…]]\n"
+                   "                 [--tau T0,…] [--f F0x,F0y,F0z,F1x,…] [--body-wrenches FILE.json]\n"
+                   "                 [--derivatives]\n"
                    "Prints the runtime's M, c, g, feet positions and feet Jacobian (and with --a the\n"
                    "inverse dynamics tau) at one state as JSON. Defaults: q neutral (identity\n"
                    "quaternion), v, a, tau and the world foot forces f (foot-major) zero.\n"
+                   "With --tau or --body-wrenches it adds \"forward_dynamics\": qdd (nv) and, for a\n"
+                   "floating base, the trunk's classical and spatial accelerations in trunk\n"
+                   "coordinates. FILE.json: {\"BODY\": [nx, ny, nz, fx, fy, fz], …}, each wrench\n"
+                   "(moment; force) at the body origin in body coordinates (docs/runtime.md).\n"
                    "--derivatives adds \"derivatives\": dtau_dq, dtau_dv (at a), dbias_dq, dbias_dv,\n"
                    "dg_dq, da_dq, da_dv, da_dtau, da_df (at tau, f), dpdot_dq, dtau_e_dq (at f), with\n"
                    "respect to q on the manifold (docs/conventions.md).\n\n"
@@ -160,6 +194,12 @@ int main(int argc, char** argv) {
                                      VectorX::Zero(model.num_joints()));
     const Eigen::Index n_forces = 3 * static_cast<Eigen::Index>(model.feet.size());
     const VectorX f = state_vector("--f", has_f ? &f_values : nullptr, n_forces, VectorX::Zero(n_forces));
+
+    if (derivatives && (model.has_rotors || model.has_armature)) {
+      throw std::invalid_argument(opts.input + ": --derivatives does not support rotors or armature yet");
+    }
+    std::vector<rbdc::Vector6> body_wrenches(static_cast<size_t>(model.nb), rbdc::Vector6::Zero());
+    if (!body_wrenches_file.empty()) body_wrenches = rbdc::read_body_wrenches(body_wrenches_file, model);
 
     rbdc::Data data(model);
     const MatrixX M = rbdc::mass_matrix(model, data, q);
@@ -191,6 +231,10 @@ int main(int argc, char** argv) {
     out << ",\n    \"jacobian\": ";
     write_rows(out, J, "    ");
     out << "\n  }";
+    if (has_tau || !body_wrenches_file.empty()) {
+      write_forward_dynamics(out, model, data, q, v, tau,
+                             Eigen::Map<const rbdc::Matrix3X>(f.data(), 3, n_forces / 3), body_wrenches);
+    }
     if (derivatives) {
       write_derivatives(out, model, data, q, v, a, tau,
                         Eigen::Map<const rbdc::Matrix3X>(f.data(), 3, n_forces / 3));

@@ -32,10 +32,23 @@ const char* type_name(rbdc::JointType t) {
 }
 
 void print_summary(const Model& m, std::ostream& out) {
-  double mass = 0;
+  double mass = 0, rotor_mass = 0;
   for (const rbdc::Body& b : m.bodies) mass += b.mass;
+  for (const rbdc::Joint& j : m.joints) rotor_mass += j.rotor.mass;
   out << "robot " << m.name << ": nb = " << m.nb << ", nq = " << m.nq << ", nv = " << m.nv << ", "
-      << (m.floating_base ? "floating base" : "fixed base") << ", total mass " << mass << " kg\n";
+      << (m.floating_base ? "floating base" : "fixed base") << ", total mass " << mass + rotor_mass << " kg";
+  if (m.has_rotors) out << " (links " << mass << " kg, rotors " << rotor_mass << " kg)";
+  out << "\n";
+  for (const rbdc::Joint& j : m.joints) {  // docs/model.md, "Actuators"
+    if (j.rotor.gear_ratio > 0) {
+      const rbdc::Rotor& r = j.rotor;
+      out << "rotor: joint " << j.name << ", gear ratio " << r.gear_ratio << ", mass " << r.mass
+          << " kg, spin inertia " << r.axis.dot(r.inertia * r.axis) << " kg·m², reflected "
+          << r.gear_ratio * r.gear_ratio * r.axis.dot(r.inertia * r.axis) << " kg·m², at ("
+          << r.translation.transpose() << ") on its parent\n";
+    }
+    if (j.armature > 0) out << "armature: joint " << j.name << " " << j.armature << "\n";
+  }
   for (const rbdc::Coupling& c : m.couplings) {  // the sections below are in tree coordinates
     out << "coupling: joint " << c.follower << " = " << c.multiplier << " * joint " << c.leader << " + "
         << c.offset << " (docs/model.md, \"Mimic joints\")\n";

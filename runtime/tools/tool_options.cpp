@@ -18,6 +18,8 @@ const char* const kLoadOptionsHelp =
     "  --lock-mimic        lock each mimic joint at its offset (default: couple it to its leader)\n"
     "  --independent-mimic load mimic joints as independent joints (ignore <mimic>)\n"
     "  --lock NAME=VALUE   lock joint NAME at VALUE (rad or m); repeatable\n"
+    "  --armature NAME=VALUE  reflected rotor inertia of joint NAME (kg·m² or kg), added to M's\n"
+    "                      diagonal only; repeatable (docs/model.md, \"Actuators\")\n"
     "  -h, --help          show this help\n";
 
 namespace {
@@ -59,6 +61,17 @@ bool parse_load_options(int argc, char** argv, LoadOptions& out, const ExtraOpti
         throw std::invalid_argument("--lock expects NAME=VALUE, got '" + spec + "'");
       }
       out.urdf.locked_joints[spec.substr(0, eq)] = parse_number(spec.substr(eq + 1), "--lock " + spec);
+    } else if (arg == "--armature") {
+      const std::string spec = next_argument(argc, argv, i);
+      const size_t eq = spec.find('=');
+      if (eq == std::string::npos || eq == 0) {
+        throw std::invalid_argument("--armature expects NAME=VALUE, got '" + spec + "'");
+      }
+      ActuatorSpec a;
+      a.joint = spec.substr(0, eq);
+      a.where = "--armature " + spec;
+      a.armature = parse_number(spec.substr(eq + 1), "--armature " + spec);
+      out.armature.push_back(a);
     } else if (extra && extra(argc, argv, i)) {
       continue;
     } else if (arg.size() > 1 && arg[0] == '-') {
@@ -82,6 +95,7 @@ Model load_model(const LoadOptions& opts) {
   Model model = standalone ? load_topology(opts.input, &warnings)
                            : load_urdf(opts.input, opts.urdf, &warnings);
   for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+  add_actuators(model, opts.armature);
   return model;
 }
 

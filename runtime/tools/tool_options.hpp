@@ -16,6 +16,7 @@ extern const char* const kLoadOptionsHelp;
 struct LoadOptions {
   std::string input;  ///< ROBOT.urdf, or a standalone topology .yaml/.yml
   UrdfOptions urdf;
+  std::vector<ActuatorSpec> armature;  ///< --armature NAME=VALUE, added after loading
 };
 
 /// A tool-specific option handler: given argv and the index of the option, consumes it (advancing

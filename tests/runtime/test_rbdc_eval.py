@@ -94,6 +94,49 @@ independent = run(MIMIC, "--independent-mimic")
 check(independent.returncode == 0 and json.loads(independent.stdout)["joint_names"][-2:] == ["ja", "jb"],
       f"independent mimic: {independent.stderr!r}")
 
+# Forward dynamics with rotors (robots/mini_cheetah_rotors.topology.yaml), joint torques and a body
+# wrench: inverse dynamics at the printed qdd gives back (trunk wrench; tau), since a wrench on the
+# trunk (moment; force at its origin, trunk coordinates) enters τ_e's trunk rows only.
+import os
+import tempfile
+ROTORS = ["--topology", f"{ROOT}/robots/mini_cheetah_rotors.topology.yaml"]
+WRENCH = [0.3, -0.2, 0.1, 5.0, -4.0, 30.0]
+with tempfile.TemporaryDirectory() as tmp:
+    wrench_file = os.path.join(tmp, "wrenches.json")
+    with open(wrench_file, "w", encoding="utf-8") as handle:
+        json.dump({"trunk": WRENCH}, handle)
+    fd = run(CHEETAH, *ROTORS, "--q", STANDING, "--v", V, "--tau", TAU, "--body-wrenches", wrench_file)
+    check(fd.returncode == 0, f"forward dynamics: exit {fd.returncode}: {fd.stderr}")
+    fd_out = json.loads(fd.stdout)
+    check(abs(fd_out["M"][3][3] - 8.912) < 1e-9, "with rotors the trunk block carries 8.912 kg")
+    qdd = fd_out["forward_dynamics"]["qdd"]
+    back = json.loads(run(CHEETAH, *ROTORS, "--q", STANDING, "--v", V,
+                          "--a", ",".join(map(repr, qdd))).stdout)["tau"]
+    expected = WRENCH + [0.5 * k - 3 for k in range(12)]
+    check(max(abs(b - e) for b, e in zip(back, expected)) < 1e-9, f"ID(qdd) = (wrench; tau): {back}")
+    vel = [float(x) for x in V.split(",")]
+    w, lin = vel[0:3], vel[3:6]
+    cross = [w[1] * lin[2] - w[2] * lin[1], w[2] * lin[0] - w[0] * lin[2], w[0] * lin[1] - w[1] * lin[0]]
+    spatial = fd_out["forward_dynamics"]["trunk_spatial_acceleration"]
+    check(fd_out["forward_dynamics"]["trunk_classical_acceleration"] == qdd[:6], "classical = qdd[0:6]")
+    check(all(abs(spatial[3 + k] - (qdd[3 + k] - cross[k])) < 1e-12 for k in range(3)) and
+          spatial[:3] == qdd[:3], "spatial = classical - (0, w x v)")
+    plain = json.loads(run(CHEETAH, "--q", STANDING, "--v", V, "--tau", TAU).stdout)["forward_dynamics"]["qdd"]
+    check(max(abs(a - b) for a, b in zip(plain, qdd)) > 1e-3, "rotors and the wrench change qdd")
+    with open(wrench_file, "w", encoding="utf-8") as handle:
+        json.dump({"LF_elbow": WRENCH}, handle)
+    bad_body = run(CHEETAH, "--tau", TAU, "--body-wrenches", wrench_file)
+    check(bad_body.returncode == 2 and "no body named 'LF_elbow'" in bad_body.stderr,
+          f"unknown body: {bad_body.stderr!r}")
+    with open(wrench_file, "w", encoding="utf-8") as handle:
+        json.dump({"trunk": [1, 2, 3]}, handle)
+    short = run(CHEETAH, "--body-wrenches", wrench_file)
+    check(short.returncode == 2 and "expected 6 numbers (moment; force)" in short.stderr,
+          f"short wrench: {short.stderr!r}")
+no_derivatives = run(CHEETAH, *ROTORS, "--derivatives")
+check(no_derivatives.returncode == 2 and "does not support rotors" in no_derivatives.stderr,
+      f"derivatives with rotors: {no_derivatives.stderr!r}")
+
 for f in failures:
     print("FAILED:", f)
 print(f"{checks - len(failures)} passed, {len(failures)} failed")

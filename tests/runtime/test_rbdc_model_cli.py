@@ -89,6 +89,30 @@ class RbdcInfoCli(unittest.TestCase):
         self.assertIn("mu(0) = {1, 4, 7, 10}", r.stdout)
         self.assertIn("RH_foot  12 (RH_knee)", r.stdout)
 
+    def test_mini_cheetah_with_rotors(self):
+        rotors = os.path.join(SOURCE_DIR, "robots", "mini_cheetah_rotors.topology.yaml")
+        r = run(RBDC_INFO, MINI_CHEETAH, "--topology", rotors)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("total mass 8.912 kg (links 8.252 kg, rotors 0.66 kg)", r.stdout)
+        self.assertEqual(r.stdout.count("rotor: joint "), 12)
+        self.assertIn("rotor: joint LF_knee_joint, gear ratio 9.33", r.stdout)
+        ir = json.loads(run(RBDC_MODEL, MINI_CHEETAH, "--topology", rotors).stdout)
+        knee = ir["joints"][3]["actuator"]
+        self.assertEqual((knee["armature"], knee["rotor"]["gear_ratio"]), (0, 9.33))
+        self.assertNotIn("actuator", json.loads(run(RBDC_MODEL, MINI_CHEETAH).stdout)["joints"][3])
+
+    def test_armature_from_the_command_line(self):
+        r = run(RBDC_INFO, MINI_CHEETAH, "--armature", "LF_knee_joint=0.0055")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("armature: joint LF_knee_joint 0.0055", r.stdout)
+        for spec, message in [("LF_elbow_joint=1", "--armature LF_elbow_joint=1: actuator of joint "
+                                                    "'LF_elbow_joint': no such moving joint"),
+                              ("LF_knee_joint=-1", "armature must be finite and ≥ 0"),
+                              ("LF_knee_joint", "--armature expects NAME=VALUE")]:
+            bad = run(RBDC_INFO, MINI_CHEETAH, "--armature", spec)
+            self.assertEqual(bad.returncode, 2, spec)
+            self.assertIn(message, bad.stderr)
+
     def test_q_must_have_nq_numbers(self):
         r = run(RBDC_INFO, MINI_CHEETAH, "--q", "1", "2")
         self.assertEqual(r.returncode, 2)

@@ -43,6 +43,7 @@ struct Data {
   std::vector<Vector6> a_body;   ///< body spatial accelerations a_i of the current pass
   std::vector<Vector6> f_body;   ///< body wrenches f_i of the current pass
   std::vector<Vector6> f_ext;    ///< external wrench on body i at its origin, body coordinates
+  std::vector<Vector6> f_rotor;  ///< wrench of joint i's rotor, rotor coordinates (zero without)
   VectorX c;                     ///< quadratic velocity terms (Alg. 2), nv
   VectorX g;                     ///< gravity terms (Alg. 3), nv
   VectorX tau_e;                 ///< external wrench terms (Alg. 4), nv

@@ -13,6 +13,20 @@ namespace rbdc {
 
 enum class JointType { Floating, Fixed, Revolute, Prismatic };
 
+/// Joint i's geared motor rotor (docs/model.md, "Actuators"), treated as in Featherstone's RBDA
+/// (geared motors), Jain ch. 12 and Cheetah-Software: a rigid body carried by the parent λ(i) at a
+/// constant placement X_rot, spinning at gear_ratio · q̇_i about `axis`, so its motion subspace is
+/// S_rot = gear_ratio · (axis; 0). Its mass is symmetric about the axis (the builder checks), so its
+/// spatial inertia in rotor coordinates does not depend on its angle.
+struct Rotor {
+  double gear_ratio = 0;                   ///< > 0; 0 means joint i has no rotor
+  double mass = 0;                         ///< COM at the rotor origin, on the axis
+  Matrix3 inertia = Matrix3::Zero();       ///< about the rotor origin, rotor axes
+  Matrix3 rotation = Matrix3::Identity();  ///< parent → rotor coordinates
+  Vector3 translation = Vector3::Zero();   ///< rotor origin in parent coordinates
+  Vector3 axis = Vector3::Zero();          ///< unit spin axis, rotor coordinates
+};
+
 /// Joint i connects body λ(i) to body i. Joint 0 is the root joint (Floating or Fixed).
 struct Joint {
   std::string name;
@@ -24,6 +38,8 @@ struct Joint {
   double upper = std::numeric_limits<double>::infinity();
   int q_index = 0;  ///< first entry of this joint in q
   int v_index = 0;  ///< first entry of this joint in v
+  double armature = 0;  ///< reflected rotor inertia added to M_ii only (kg·m² or kg), ≥ 0
+  Rotor rotor;          ///< the joint's motor rotor, if rotor.gear_ratio > 0
 };
 
 struct Body {
@@ -73,6 +89,12 @@ struct Model {
   std::vector<Matrix6> X_tree;   ///< X_T(i) = motion_transform(rotation, translation)
   std::vector<Matrix6> inertia;  ///< spatial inertia of body i at its origin
   std::vector<Vector6> motion_subspace;  ///< S_i for 1-DoF joints (zero for the root)
+  // Rotors (docs/model.md, "Actuators"): nb entries each when has_rotors, else empty.
+  bool has_rotors = false;
+  bool has_armature = false;
+  std::vector<Matrix6> X_rotor;          ///< X_λ(i)^rot(i): parent → rotor coordinates
+  std::vector<Matrix6> rotor_inertia;    ///< rotor spatial inertia at its origin, rotor coordinates
+  std::vector<Vector6> rotor_subspace;   ///< S_rot(i) = gear_ratio · (axis; 0), zero without rotor
 
   int num_joints() const { return nb - 1; }  ///< 1-DoF joints (actuated)
   int root_dofs() const { return floating_base ? 6 : 0; }

@@ -3,6 +3,7 @@
 // and topology-file loaders only translate their input into a ModelSpec.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -27,6 +28,22 @@ struct JointSpec {
   double upper = std::numeric_limits<double>::infinity();
 };
 
+/// Joint `joint`'s actuator (docs/model.md, "Actuators"): an armature, a geared rotor, or both.
+/// Unset placements default to the joint's own: rotor rotation = the joint's E_T, translation = its
+/// r_T (both in the parent body's frame), axis = the joint axis.
+struct ActuatorSpec {
+  std::string joint;
+  std::string where;  ///< "<file>[:line]" for messages
+  std::optional<double> armature;
+  bool has_rotor = false;
+  double gear_ratio = 0;
+  double rotor_mass = 0;
+  Matrix3 rotor_inertia = Matrix3::Zero();
+  std::optional<Matrix3> rotor_rotation;
+  std::optional<Vector3> rotor_translation;
+  std::optional<Vector3> rotor_axis;
+};
+
 struct ModelSpec {
   std::string name;
   std::string source = "<arrays>";  ///< file name used in error messages
@@ -37,6 +54,7 @@ struct ModelSpec {
   std::vector<Body> bodies;        ///< nb bodies in final numbering, body 0 = root
   std::vector<Foot> feet;
   std::vector<Coupling> couplings;  ///< joint indices in the final numbering
+  std::vector<ActuatorSpec> actuators;  ///< by joint name; empty: no rotors, no armature
   /// Optional: the line of each body's (first) definition in `source`, for messages (nb entries).
   std::vector<int> body_lines;
 };
@@ -59,5 +77,11 @@ constexpr double kInertiaRepairFloor = 1e-12;
 /// Throws ModelError on bad input; appends non-fatal findings (e.g. an inertia that breaks the
 /// triangle inequality) to `warnings` when given.
 Model build_model(const ModelSpec& spec, std::vector<std::string>* warnings = nullptr);
+
+/// Adds actuators to a built model (build_model calls it with spec.actuators; the tools with
+/// --armature): checks them (unknown or root joint, armature or rotor given twice, NaN, negative
+/// armature, mass or gear ratio ≤ 0, non-physical or not axisymmetric rotor inertia, bad rotation:
+/// ModelError naming spec.where and the joint) and derives X_rotor, rotor_inertia, rotor_subspace.
+void add_actuators(Model& model, const std::vector<ActuatorSpec>& actuators);
 
 }  // namespace rbdc

@@ -23,6 +23,7 @@ struct Topology {
   std::vector<std::string> bodies;  ///< body (link) names in final numbering, body 0 = root
   std::vector<int> pred, succ;      ///< joints 1 … nb-1, Eq. 1
   std::vector<FootSpec> feet;
+  std::vector<ActuatorSpec> actuators;  ///< the `actuators:` section (docs/model.md, "Actuators")
 };
 
 /// Reads the numbering and feet of a topology file (either form). Throws ModelError.

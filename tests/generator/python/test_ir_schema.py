@@ -93,6 +93,24 @@ class Writer(unittest.TestCase):
             self.assertEqual(errors(data, SCHEMA), [], robot)
             self.assertEqual(load_ir(data).name, robot)
 
+    def test_actuators_are_valid_and_read(self):
+        """The Mini Cheetah with rotors (robots/mini_cheetah_rotors.topology.yaml) and an armature."""
+        urdf = os.path.join(mini_cheetah.ROOT, "robots", "mini_cheetah.urdf")
+        topology = os.path.join(mini_cheetah.ROOT, "robots", "mini_cheetah_rotors.topology.yaml")
+        result = subprocess.run([mini_cheetah.model_tool(), urdf, "--topology", topology,
+                                 "--armature", "LF_abad_joint=0.001"], capture_output=True, text=True)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        data = json.loads(result.stdout)
+        self.assertEqual(errors(data, SCHEMA), [])
+        robot = load_ir(data)
+        abad = robot.joints[1].actuator
+        self.assertEqual((abad.armature, abad.rotor.gear_ratio, abad.rotor.mass), (0.001, 6, 0.055))
+        self.assertAlmostEqual(sum(j.actuator.rotor.mass for j in robot.joints[1:]), 0.66, places=12)
+        data["joints"][1]["actuator"]["armature"] = -1.0
+        self.assertNotEqual(errors(data, SCHEMA), [])
+        with self.assertRaises(IRError):
+            load_ir(data)
+
 
 if __name__ == "__main__":
     unittest.main()
