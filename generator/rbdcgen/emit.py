@@ -8,7 +8,10 @@ angles are gathered into an array and `joint_sincos` (rbdc_gen/support.hpp) comp
 (a vectorised polynomial for double and float), named by joint (`sin_LF_knee`); then
 every node used more than once becomes `const Scalar tN = …;` in the order the algorithm created
 them (expr.Expr.position, kept topological), and nodes used
-once are inlined into their single user, up to MAX_INLINE_OPS operations per expression. A comment
+once are inlined into their single user, up to MAX_INLINE_OPS operations per expression. Each output
+entry is stored right after the last temporary it needs (constant entries first), so its operands
+need not stay live to the end of the function: outputs must not overlap inputs
+(docs/generated_api.md). The trailing run of stores is headed by `// outputs`. A comment
 names the phase of the algorithm (expr labels: `// outward pass: body 3 LF_knee`) where it changes.
 Constants print in their shortest round-trip form and a negative constant operand of + or − flips
 the operator (`x + Scalar(0.5)`, never `x - Scalar(-0.5)`). Same DAG in, same text out."""
@@ -149,15 +152,53 @@ def emit_body(fn, angle_names=None):
 
     lines += _trig_block(trig, names, text, angle_names or {})
     label = None
-    for index, node in enumerate(temps):
+    index = 0
+    items = _early_stores(fn, temps)
+    tail = len(items)  # the trailing run of output stores gets the "// outputs" marker
+    while tail > 0 and isinstance(items[tail - 1], tuple):
+        tail -= 1
+    for position, item in enumerate(items):
+        if position == tail:
+            lines.append("// outputs")
+        if isinstance(item, tuple):  # an output entry, stored as soon as its value is computed
+            arg_name, k, node = item
+            lines.append("%s[%d] = %s;" % (arg_name, k, text(node, False)))
+            continue
+        node = item
         if node.label is not None and node.label != label:
             label = node.label
             lines.append(_marker(label))
         name = "t%d" % index
+        index += 1
         lines.append("const Scalar %s = %s;" % (name, text(node, False)))
         names[node.id] = name
-    lines.append("// outputs")
-    for arg in fn.outputs:
-        for k, node in enumerate(fn.values[arg.name]):
-            lines.append("%s[%d] = %s;" % (arg.name, k, text(node, False)))
     return lines
+
+
+def _early_stores(fn, temps):
+    """Creation order of the temporaries, each output entry stored right after the last temporary it
+    needs (the passes stay in order, each marker heads one pass)."""
+    place = {n.id: i for i, n in enumerate(temps)}
+    entries = [(arg.name, k, node) for arg in fn.outputs for k, node in enumerate(fn.values[arg.name])]
+
+    def finish(node):  # place of the last temporary an output entry needs (inlined nodes included)
+        best, stack, seen = -1, [node], set()
+        while stack:
+            n = stack.pop()
+            if n.id in seen:
+                continue
+            seen.add(n.id)
+            if n.id in place:
+                best = max(best, place[n.id])
+            else:
+                stack.extend(n.args)
+        return best
+
+    after = {}
+    for entry in entries:
+        after.setdefault(finish(entry[2]), []).append(entry)
+    items = list(after.get(-1, []))
+    for i, n in enumerate(temps):
+        items.append(n)
+        items += after.get(i, [])
+    return items

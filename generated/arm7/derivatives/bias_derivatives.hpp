@@ -7,11 +7,11 @@
 // bias_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   arm7/common/bias_derivatives_33f0cbc259eb.hpp
+//   arm7/common/bias_derivatives_56dc960885fb.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/bias_derivatives_33f0cbc259eb.hpp"
+#include "arm7/common/bias_derivatives_56dc960885fb.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             4391  3589    0     0    12   14   8006
-using ::rbdc_gen::arm7::common::bias_derivatives_33f0cbc259eb::bias_derivatives;
+using ::rbdc_gen::arm7::common::bias_derivatives_56dc960885fb::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_force_term_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_term_derivatives is the same code:
-//   arm7/common/feet_force_term_derivatives_6d735e7bb4a4.hpp
+//   arm7/common/feet_force_term_derivatives_fcb111936ea5.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/feet_force_term_derivatives_6d735e7bb4a4.hpp"
+#include "arm7/common/feet_force_term_derivatives_fcb111936ea5.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             740  417    0     0    14    6   1177
-using ::rbdc_gen::arm7::common::feet_force_term_derivatives_6d735e7bb4a4::feet_force_term_derivatives;
+using ::rbdc_gen::arm7::common::feet_force_term_derivatives_fcb111936ea5::feet_force_term_derivatives;
 
 /// feet_force_term_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   arm7/common/forward_dynamics_1e523b4e5784.hpp
+//   arm7/common/forward_dynamics_220500729d01.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_1e523b4e5784.hpp"
+#include "arm7/common/forward_dynamics_220500729d01.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             859  657    6     0    14    0   1536
-using ::rbdc_gen::arm7::common::forward_dynamics_1e523b4e5784::forward_dynamics;
+using ::rbdc_gen::arm7::common::forward_dynamics_220500729d01::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

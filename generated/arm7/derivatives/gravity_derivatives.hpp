@@ -7,11 +7,11 @@
 // gravity_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   arm7/common/gravity_derivatives_a8f30461f51d.hpp
+//   arm7/common/gravity_derivatives_052ac5d5cae1.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/gravity_derivatives_a8f30461f51d.hpp"
+#include "arm7/common/gravity_derivatives_052ac5d5cae1.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             563  391    0     0    12    4    970
-using ::rbdc_gen::arm7::common::gravity_derivatives_a8f30461f51d::gravity_derivatives;
+using ::rbdc_gen::arm7::common::gravity_derivatives_052ac5d5cae1::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

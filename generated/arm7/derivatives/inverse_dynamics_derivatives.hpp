@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   arm7/common/inverse_dynamics_derivatives_b4e730194e5d.hpp
+//   arm7/common/inverse_dynamics_derivatives_52ef2fc64bc0.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/inverse_dynamics_derivatives_b4e730194e5d.hpp"
+#include "arm7/common/inverse_dynamics_derivatives_52ef2fc64bc0.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             4394  3600    0     0    12   14   8020
-using ::rbdc_gen::arm7::common::inverse_dynamics_derivatives_b4e730194e5d::inverse_dynamics_derivatives;
+using ::rbdc_gen::arm7::common::inverse_dynamics_derivatives_52ef2fc64bc0::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_positions for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_positions is the same code:
-//   arm7/common/feet_positions_01a7eb8ebe0e.hpp
+//   arm7/common/feet_positions_05096384ff05.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/feet_positions_01a7eb8ebe0e.hpp"
+#include "arm7/common/feet_positions_05096384ff05.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              68   38    0     0    12    0    118
-using ::rbdc_gen::arm7::common::feet_positions_01a7eb8ebe0e::feet_positions;
+using ::rbdc_gen::arm7::common::feet_positions_05096384ff05::feet_positions;
 
 /// feet_positions on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

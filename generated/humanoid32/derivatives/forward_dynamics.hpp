@@ -7,11 +7,11 @@
 // forward_dynamics for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   humanoid32/common/forward_dynamics_d268e0f3faf1.hpp
+//   humanoid32/common/forward_dynamics_6b9fcb0ff642.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_d268e0f3faf1.hpp"
+#include "humanoid32/common/forward_dynamics_6b9fcb0ff642.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             7593  6010   33     0    64    1  13701
-using ::rbdc_gen::humanoid32::common::forward_dynamics_d268e0f3faf1::forward_dynamics;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_6b9fcb0ff642::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   humanoid32/common/inverse_dynamics_c1159cc56ad2.hpp
+//   humanoid32/common/inverse_dynamics_224b1944a234.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/inverse_dynamics_c1159cc56ad2.hpp"
+#include "humanoid32/common/inverse_dynamics_224b1944a234.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::humanoid32::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2365  1854    0     0    64    0   4283
-using ::rbdc_gen::humanoid32::common::inverse_dynamics_c1159cc56ad2::inverse_dynamics;
+using ::rbdc_gen::humanoid32::common::inverse_dynamics_224b1944a234::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_closed_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   humanoid32/common/osc_closed_chain_cc1ad44b05ce.hpp
+//   humanoid32/common/osc_closed_chain_48ba84f24a08.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_closed_chain_cc1ad44b05ce.hpp"
+#include "humanoid32/common/osc_closed_chain_48ba84f24a08.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::humanoid32::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             7962  5924   28     0    64    9  13987
-using ::rbdc_gen::humanoid32::common::osc_closed_chain_cc1ad44b05ce::osc_closed_chain;
+using ::rbdc_gen::humanoid32::common::osc_closed_chain_48ba84f24a08::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

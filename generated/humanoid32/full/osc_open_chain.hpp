@@ -7,11 +7,11 @@
 // osc_open_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   humanoid32/common/osc_open_chain_ef09b81d442b.hpp
+//   humanoid32/common/osc_open_chain_1820197b2d40.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_open_chain_ef09b81d442b.hpp"
+#include "humanoid32/common/osc_open_chain_1820197b2d40.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::humanoid32::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             8221  6075   27     0    64    9  14396
-using ::rbdc_gen::humanoid32::common::osc_open_chain_ef09b81d442b::osc_open_chain;
+using ::rbdc_gen::humanoid32::common::osc_open_chain_1820197b2d40::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

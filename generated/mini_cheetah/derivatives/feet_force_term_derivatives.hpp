@@ -7,11 +7,11 @@
 // feet_force_term_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_term_derivatives is the same code:
-//   mini_cheetah/common/feet_force_term_derivatives_3e9c97931b17.hpp
+//   mini_cheetah/common/feet_force_term_derivatives_9ab07cc9d990.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/feet_force_term_derivatives_3e9c97931b17.hpp"
+#include "mini_cheetah/common/feet_force_term_derivatives_9ab07cc9d990.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1573  1016    0     0    24   53   2666
-using ::rbdc_gen::mini_cheetah::common::feet_force_term_derivatives_3e9c97931b17::feet_force_term_derivatives;
+using ::rbdc_gen::mini_cheetah::common::feet_force_term_derivatives_9ab07cc9d990::feet_force_term_derivatives;
 
 /// feet_force_term_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_velocities for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_velocities is the same code:
-//   mini_cheetah/common/feet_velocities_bf3c7a7d6470.hpp
+//   mini_cheetah/common/feet_velocities_352778741f27.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/feet_velocities_bf3c7a7d6470.hpp"
+#include "mini_cheetah/common/feet_velocities_352778741f27.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             321  214    0     0    24    0    559
-using ::rbdc_gen::mini_cheetah::common::feet_velocities_bf3c7a7d6470::feet_velocities;
+using ::rbdc_gen::mini_cheetah::common::feet_velocities_352778741f27::feet_velocities;
 
 /// feet_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

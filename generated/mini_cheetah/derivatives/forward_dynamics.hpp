@@ -7,11 +7,11 @@
 // forward_dynamics for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah/common/forward_dynamics_03aa50087976.hpp
+//   mini_cheetah/common/forward_dynamics_dadf25921df4.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_03aa50087976.hpp"
+#include "mini_cheetah/common/forward_dynamics_dadf25921df4.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2237  1847   14     0    24    1   4123
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_03aa50087976::forward_dynamics;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_dadf25921df4::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_b147b75ecbd5.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_eb3634c35725.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_b147b75ecbd5.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_eb3634c35725.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -29,7 +29,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
 ///             19208  17026   14     0    24  128  36400
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b147b75ecbd5::forward_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_eb3634c35725::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // gravity_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   mini_cheetah/common/gravity_derivatives_bacad1ab3629.hpp
+//   mini_cheetah/common/gravity_derivatives_644244146bef.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/gravity_derivatives_bacad1ab3629.hpp"
+#include "mini_cheetah/common/gravity_derivatives_644244146bef.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             949  677    0     0    24   25   1675
-using ::rbdc_gen::mini_cheetah::common::gravity_derivatives_bacad1ab3629::gravity_derivatives;
+using ::rbdc_gen::mini_cheetah::common::gravity_derivatives_644244146bef::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   mini_cheetah/common/mass_matrix_c629e6a7599e.hpp
+//   mini_cheetah/common/mass_matrix_82ec6b930650.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/mass_matrix_c629e6a7599e.hpp"
+#include "mini_cheetah/common/mass_matrix_82ec6b930650.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             372  364    0     0    24   21    781
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_c629e6a7599e::mass_matrix;
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_82ec6b930650::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

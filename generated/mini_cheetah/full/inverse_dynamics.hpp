@@ -7,11 +7,11 @@
 // inverse_dynamics for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   mini_cheetah/common/inverse_dynamics_e09fa0fcb852.hpp
+//   mini_cheetah/common/inverse_dynamics_bcb98aee73b6.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/inverse_dynamics_e09fa0fcb852.hpp"
+#include "mini_cheetah/common/inverse_dynamics_bcb98aee73b6.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::full {
 ///
 /// operations   mul  add  div  sqrt  trig  neg  total
 ///             1029  848    0     0    24    0   1901
-using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_e09fa0fcb852::inverse_dynamics;
+using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_bcb98aee73b6::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

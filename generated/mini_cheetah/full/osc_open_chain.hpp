@@ -7,11 +7,11 @@
 // osc_open_chain for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   mini_cheetah/common/osc_open_chain_04f23c37ed5f.hpp
+//   mini_cheetah/common/osc_open_chain_59c1165daea5.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/osc_open_chain_04f23c37ed5f.hpp"
+#include "mini_cheetah/common/osc_open_chain_59c1165daea5.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2368  1830    8     0    24   21   4251
-using ::rbdc_gen::mini_cheetah::common::osc_open_chain_04f23c37ed5f::osc_open_chain;
+using ::rbdc_gen::mini_cheetah::common::osc_open_chain_59c1165daea5::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

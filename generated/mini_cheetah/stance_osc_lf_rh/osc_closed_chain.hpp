@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "stance_osc_lf_rh": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_e045d117cbab.hpp
+//   mini_cheetah/common/osc_closed_chain_e39d8d3c6c1a.hpp
 #pragma once
 
 #include "mini_cheetah/stance_osc_lf_rh.hpp"
-#include "mini_cheetah/common/osc_closed_chain_e045d117cbab.hpp"
+#include "mini_cheetah/common/osc_closed_chain_e39d8d3c6c1a.hpp"
 
 namespace rbdc_gen::mini_cheetah::stance_osc_lf_rh {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::stance_osc_lf_rh {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2285  1786    9     0    24   19   4123
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_e045d117cbab::osc_closed_chain;
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_e39d8d3c6c1a::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

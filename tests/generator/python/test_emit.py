@@ -88,8 +88,17 @@ class Emission(unittest.TestCase):
         crba = "// inward pass, composite inertias (CRBA): body "
         self.assertEqual(markers, ["// sines and cosines of the joint angles", crba + "3 slider",
                                    crba + "2 lower", crba + "1 upper", "// outputs"])
-        first_output = lines.index("// outputs") + 1
-        self.assertTrue(lines[first_output].startswith("M[0] = "), lines[first_output])
+        # each entry once, stored right after the last temporary it reads (not all at the end)
+        stores = [i for i, l in enumerate(lines) if l.startswith("M[")]
+        n = ROBOT.nv
+        self.assertEqual(sorted(int(lines[i][2:lines[i].index("]")]) for i in stores), list(range(n * n)))
+        self.assertLess(stores[0], lines.index("// outputs"))
+        for i in stores:
+            read = [int(t) for t in re.findall(r"\bt(\d+)\b", lines[i])]
+            previous = next(lines[j] for j in range(i - 1, -1, -1) if not lines[j].startswith("//"))
+            if read:
+                self.assertTrue(previous.startswith("const Scalar t%d = " % max(read))
+                                or previous.startswith("M["), (previous, lines[i]))
 
     def test_constants_are_exact_and_symmetric_entries_mirrored(self):
         self.assertEqual(format_constant(0.209), "Scalar(0.209)")

@@ -6,11 +6,11 @@
 // forward_dynamics for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   two_link/common/forward_dynamics_adbce1d2cb4e.hpp
+//   two_link/common/forward_dynamics_db7115cc00cf.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/forward_dynamics_adbce1d2cb4e.hpp"
+#include "two_link/common/forward_dynamics_db7115cc00cf.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::two_link::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              62   41    1     0     2    0    106
-using ::rbdc_gen::two_link::common::forward_dynamics_adbce1d2cb4e::forward_dynamics;
+using ::rbdc_gen::two_link::common::forward_dynamics_db7115cc00cf::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -1,0 +1,82 @@
+// bench/codegen/metrics: one out-of-line wrapper per hot generated function of the Mini Cheetah
+// (scene "full"), so that callgrind can count the instructions of one call and objdump can show the
+// stack traffic (spills) of one function body. Not a benchmark: the rough ns are a side note.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "mini_cheetah/full.hpp"
+
+namespace g = rbdc_gen::mini_cheetah::full;
+
+extern "C" {
+__attribute__((noinline)) void hot_inverse_dynamics(const double* q, const double* v, const double* a,
+                                                     double* out) {
+  g::inverse_dynamics(q, v, a, out);
+}
+__attribute__((noinline)) void hot_mass_matrix(const double* q, const double*, const double*, double* out) {
+  g::mass_matrix(q, out);
+}
+__attribute__((noinline)) void hot_forward_dynamics(const double* q, const double* v, const double* a,
+                                                     double* out) {
+  static const double f[12] = {};
+  g::forward_dynamics(q, v, a + 6, f, out);
+}
+__attribute__((noinline)) void hot_quadratic_velocity_terms(const double* q, const double* v, const double*,
+                                                             double* out) {
+  g::quadratic_velocity_terms(q, v, out);
+}
+__attribute__((noinline)) void hot_gravity_terms(const double* q, const double*, const double*, double* out) {
+  g::gravity_terms(q, out);
+}
+#ifdef RBDC_HOT_HAS_BIAS
+__attribute__((noinline)) void hot_bias(const double* q, const double* v, const double*, double* out) {
+  g::bias(q, v, out);
+}
+#endif
+}
+
+using Function = void (*)(const double*, const double*, const double*, double*);
+struct Entry { const char* name; Function function; };
+static const Entry entries[] = {
+    {"inverse_dynamics", hot_inverse_dynamics}, {"mass_matrix", hot_mass_matrix},
+    {"forward_dynamics", hot_forward_dynamics},
+    {"quadratic_velocity_terms", hot_quadratic_velocity_terms}, {"gravity_terms", hot_gravity_terms},
+#ifdef RBDC_HOT_HAS_BIAS
+    {"bias", hot_bias},
+#endif
+};
+
+// usage: hot_functions NAME CALLS [time]
+int main(int argc, char** argv) {
+  if (argc < 3) return 2;
+  const long calls = std::atol(argv[2]);
+  const bool time = argc > 3 && std::strcmp(argv[3], "time") == 0;
+  static double states[64][3][20], out[400];
+  for (int s = 0; s < 64; ++s)
+    for (int k = 0; k < 20; ++k)
+      for (int j = 0; j < 3; ++j) states[s][j][k] = std::sin(1.0 + s * 0.37 + k * 1.3 + j * 0.71);
+  for (int s = 0; s < 64; ++s) {  // unit quaternion
+    double* q = states[s][0];
+    const double n = std::sqrt(q[3] * q[3] + q[4] * q[4] + q[5] * q[5] + q[6] * q[6]);
+    for (int k = 3; k < 7; ++k) q[k] /= n;
+  }
+  for (const Entry& e : entries) {
+    if (std::strcmp(e.name, argv[1]) != 0) continue;
+    double best = 1e30, sink = 0;
+    for (int rep = 0; rep < (time ? 200 : 1); ++rep) {
+      const auto start = std::chrono::steady_clock::now();
+      for (long i = 0; i < calls; ++i) {
+        const auto& s = states[i & 63];
+        e.function(s[0], s[1], s[2], out);
+        sink += out[i % 18];
+      }
+      const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+      if (ns / calls < best) best = ns / calls;
+    }
+    if (time) std::printf("%.1f\n", best);
+    return sink == 12345.678 ? 1 : 0;
+  }
+  return 2;
+}
