@@ -23,6 +23,7 @@ DerivativeData::DerivativeData(const Model& model) {
   dv_body.assign(nb, Vector6::Zero());
   da_body.assign(nb, Vector6::Zero());
   df_body.assign(nb, Vector6::Zero());
+  df_rotor.assign(nb, Vector6::Zero());
   direction_q = VectorX::Zero(nv);
   direction_v = VectorX::Zero(nv);
   zero_nv = VectorX::Zero(nv);

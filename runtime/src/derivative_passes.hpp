@@ -61,7 +61,9 @@ inline void tangent_velocity_pass(const Model& model, const Data& data, Derivati
 /// wrench tangents δf_i in d.df_body and the accumulated primal wrenches f_i in data.f_body:
 ///   for i = nb-1 … 1: δτ_i ← S_iᵀ δf_i;  δf_λ(i) ← δf_λ(i) + (X_λ(i)^i)ᵀ (δf_i + δq_i S_i ×* f_i)
 ///   δτ_0 ← δf_0 (floating base)
-/// since δ((X_λ(i)^i)ᵀ) = −δq_i (X_λ(i)^i)ᵀ (S_i×)ᵀ = δq_i (X_λ(i)^i)ᵀ (S_i×*). Writes d.tau_column.
+/// since δ((X_λ(i)^i)ᵀ) = −δq_i (X_λ(i)^i)ᵀ (S_i×)ᵀ = δq_i (X_λ(i)^i)ᵀ (S_i×*). A rotor's placement X_rot
+/// on λ(i) is constant, so its wrench tangent d.df_rotor[i] enters like its wrench does:
+///   δτ_i ← δτ_i + S_rotᵀ δf_rot,i;  δf_λ(i) ← δf_λ(i) + X_rotᵀ δf_rot,i.   Writes d.tau_column.
 inline void tangent_inward_pass(const Model& model, const Data& data, DerivativeData& d) {
   for (int i = model.nb - 1; i >= 1; --i) {
     const size_t ui = static_cast<size_t>(i);
@@ -70,6 +72,10 @@ inline void tangent_inward_pass(const Model& model, const Data& data, Derivative
     d.tau_column[model.joints[ui].v_index] = S.dot(d.df_body[ui]);
     const Vector6 df = d.df_body[ui] + joint_entry(model, d.direction_q, ui) * (crf(S) * data.f_body[ui]);
     d.df_body[j].noalias() += data.X_up[ui].transpose() * df;
+    if (model.has_rotors) {
+      d.tau_column[model.joints[ui].v_index] += model.rotor_subspace[ui].dot(d.df_rotor[ui]);
+      d.df_body[j].noalias() += model.X_rotor[ui].transpose() * d.df_rotor[ui];
+    }
   }
   if (model.floating_base) d.tau_column.head<6>() = d.df_body[0];
 }

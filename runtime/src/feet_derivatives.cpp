@@ -47,6 +47,7 @@ void feet_force_term_derivatives(const Model& model, Data& data, DerivativeData&
     detail::set_unit_direction(d.direction_q, column);
     detail::tangent_motion_pass(model, data, d);  // ψ_i
     for (Vector6& df : d.df_body) df.setZero();
+    for (Vector6& df : d.df_rotor) df.setZero();  // rotors take no external wrench
     for (size_t k = 0; k < model.feet.size(); ++k) {
       const Foot& foot = model.feet[k];
       const size_t i = static_cast<size_t>(foot.body);

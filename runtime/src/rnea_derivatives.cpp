@@ -45,6 +45,18 @@ void rnea_tangent(const Model& model, const Data& data, DerivativeData& d, const
                     crm(dvi) * S * qd_i + crm(vi) * S * dqd_i;
     //   δf_i = I_i δa_i + δv_i ⊗ I_i v_i + v_i ⊗ I_i δv_i                               (δ of Eq. 20)
     d.df_body[ui] = Ii * d.da_body[ui] + crf(dvi) * (Ii * vi) + crf(vi) * (Ii * dvi);
+    //   rotor i on body j (rotors.hpp's rotor_wrench differentiated; X_rot is constant):
+    //   δv_r = X_rot δv_j + S_rot δq̇_i,  δa_r = X_rot δa_j + δv_r × S_rot q̇_i + v_r × S_rot δq̇_i,
+    //   δf_r = I_rot δa_r + δv_r ⊗ I_rot v_r + v_r ⊗ I_rot δv_r
+    if (model.has_rotors) {
+      const Vector6& S_r = model.rotor_subspace[ui];
+      const Matrix6& I_r = model.rotor_inertia[ui];
+      const Matrix6& X_r = model.X_rotor[ui];
+      const Vector6 v_r = X_r * data.v[j] + S_r * qd_i;
+      const Vector6 dv_r = X_r * d.dv_body[j] + S_r * dqd_i;
+      const Vector6 da_r = X_r * d.da_body[j] + crm(dv_r) * S_r * qd_i + crm(v_r) * S_r * dqd_i;
+      d.df_rotor[ui] = I_r * da_r + crf(dv_r) * (I_r * v_r) + crf(v_r) * (I_r * dv_r);
+    }
   }
   // δτ_i = S_iᵀ δf_i through the differentiated inward pass                           (δ of Eqs. 21-23)
   detail::tangent_inward_pass(model, data, d);

@@ -55,8 +55,21 @@ Model load_bundled(const std::string& name) {
   return load_urdf(RBDC_SOURCE_DIR "/robots/" + name + ".urdf", options, &warnings);
 }
 
-// The bundled robots and, for a prismatic joint and oblique axes, test_robots.hpp's branched().
-Model robot(const std::string& name) { return name == "branched" ? test::branched() : load_bundled(name); }
+// Geared motor rotors on every joint (docs/model.md, "Actuators").
+Model mini_cheetah_with_rotors() {
+  UrdfOptions options;
+  options.topology_file = RBDC_SOURCE_DIR "/robots/mini_cheetah_rotors.topology.yaml";
+  std::vector<std::string> warnings;
+  return load_urdf(RBDC_SOURCE_DIR "/robots/mini_cheetah.urdf", options, &warnings);
+}
+
+// The bundled robots, the Mini Cheetah with rotors and, for a prismatic joint and oblique axes,
+// test_robots.hpp's branched().
+Model robot(const std::string& name) {
+  if (name == "branched") return test::branched();
+  if (name == "mini_cheetah_rotors") return mini_cheetah_with_rotors();
+  return load_bundled(name);
+}
 
 class Derivatives : public ::testing::TestWithParam<std::string> {
  protected:
@@ -217,7 +230,13 @@ TEST_P(Derivatives, NonPositiveDefiniteMassMatrixGivesNaN) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Robots, Derivatives,
-                         ::testing::Values("mini_cheetah", "arm7", "humanoid32", "branched"));
+                         ::testing::Values("mini_cheetah", "arm7", "humanoid32", "branched",
+                                           "mini_cheetah_rotors"));
+
+TEST(DerivativesWithRotors, TheRotorCaseReallyHasRotors) {
+  const Model model = mini_cheetah_with_rotors();
+  EXPECT_TRUE(model.has_rotors);  // otherwise its finite-difference tests above prove nothing new
+}
 
 std::string error_of(const std::function<void()>& call) {
   try {

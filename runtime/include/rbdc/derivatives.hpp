@@ -34,6 +34,7 @@ struct DerivativeData {
   std::vector<Vector6> dv_body;    ///< δv_i
   std::vector<Vector6> da_body;    ///< δa_i
   std::vector<Vector6> df_body;    ///< δf_i
+  std::vector<Vector6> df_rotor;   ///< δf_rot,i of joint i's rotor (stays zero without rotors)
   VectorX direction_q;             ///< δq of the current pass (nv), a unit vector
   VectorX direction_v;             ///< δv of the current pass (nv), a unit vector
   VectorX zero_nv;                 ///< v = 0 or a = 0 for the bias and gravity derivatives
