@@ -13,6 +13,7 @@
 #include "rbdc/crba.hpp"
 #include "rbdc/jacobian.hpp"
 #include "rbdc/kinematics.hpp"
+#include "rotors.hpp"
 #include "tree_helpers.hpp"
 
 namespace rbdc {
@@ -28,16 +29,6 @@ void check_trunk_task(const char* function, const Model& model) {
     throw std::invalid_argument(std::string("rbdc::") + function + ": model '" + model.name +
                                 "' has mimic couplings, which the OSC recursion does not support; "
                                 "load it with MimicMode::Lock or MimicMode::Independent");
-  }
-}
-
-// The articulated-body recursions leave rotors and armature out (not implemented yet); the
-// closed-form references take them in through M.
-void check_no_actuators(const char* function, const Model& model) {
-  if (model.has_rotors || model.has_armature) {
-    throw std::invalid_argument(std::string("rbdc::") + function + ": model '" + model.name +
-                                "' has rotors or armature, which the OSC recursion does not support "
-                                "yet; use the closed-form reference (osc_closed_form*)");
   }
 }
 
@@ -111,22 +102,46 @@ void pin_contacts(const Model& model, Data& data, const std::vector<int>& contac
 //   β_p^A += ^iX_pᵀ L_iᵀ (β_i^A + I_i^A ζ_i)
 //   B_pi = -^iX_pᵀ I_i^A Φ_i D_i
 //   B_pk = ^iX_pᵀ L_iᵀ B_ik  for all k ∈ c*(i)
-void inward_pass(const Model& model, Data& data) {
+// written with U_i = ^iX_pᵀ I_i^A Φ_i (^iX_pᵀ L_iᵀ x = ^iX_pᵀ x - U_i D_i Φ_iᵀ x) so that joint i's
+// rotor (rotors.hpp), a leaf body on p spinning with q̇_i, joins in as in Cheetah-Software's
+// articulated-body algorithm, and its armature adds to the pivot:
+//   U_i += X_rotᵀ I_rot S_rot;  D_i⁻¹ += S_rotᵀ I_rot S_rot + armature_i
+//   I_p^A += X_rotᵀ I_rot X_rot;  β_p^A += X_rotᵀ p_rot, with Φ_iᵀ(β_i^A + I_i^A ζ_i) += S_rotᵀ p_rot
+//   p_rot = v_rot ×* I_rot v_rot + I_rot (v_rot × S_rot q̇_i)   (β and ζ of the rotor)
+void inward_pass(const Model& model, Data& data, const VectorRef& v) {
   for (int i = model.nb - 1; i >= 1; --i) {
     const size_t ui = static_cast<size_t>(i);
     const size_t p = static_cast<size_t>(model.parent[ui]);
     const Vector6& Phi = model.motion_subspace[ui];
     const Matrix6& X = data.X_up[ui];
     const Matrix6& IA = data.IA[ui];
-    const double D = 1.0 / Phi.dot(IA * Phi);
-    const Matrix6 K = Phi * D * Phi.transpose();
-    const Matrix6 LT = Matrix6::Identity() - IA * K;
-    const Matrix6 XT_LT = X.transpose() * LT;
-    data.IA[p] += XT_LT * IA * X;
-    data.beta[p] += XT_LT * (data.beta[ui] + IA * data.zeta[ui]);
-    data.B[p].col(i - 1) = -X.transpose() * IA * Phi * D;
+    const Vector6 bias = data.beta[ui] + IA * data.zeta[ui];
+    Vector6 U = X.transpose() * (IA * Phi);
+    double pivot = Phi.dot(IA * Phi) + model.joints[ui].armature;
+    double bias_along_joint = Phi.dot(bias);
+    Matrix6 IA_p = X.transpose() * IA * X;
+    Vector6 beta_p = X.transpose() * bias;
+    if (model.has_rotors) {
+      const Matrix6& X_r = model.X_rotor[ui];
+      const Matrix6& I_r = model.rotor_inertia[ui];
+      const Vector6& S_r = model.rotor_subspace[ui];
+      const double qd = v[model.joints[ui].v_index];
+      const Vector6 v_r = detail::rotor_velocity(model, data, ui, qd);
+      const Vector6 p_r = crf(v_r) * I_r * v_r + I_r * (crm(v_r) * S_r * qd);
+      U += X_r.transpose() * (I_r * S_r);
+      pivot += S_r.dot(I_r * S_r);
+      bias_along_joint += S_r.dot(p_r);
+      IA_p += X_r.transpose() * I_r * X_r;
+      beta_p += X_r.transpose() * p_r;
+    }
+    const double D = 1.0 / pivot;
+    data.IA[p] += IA_p - U * D * U.transpose();
+    data.beta[p] += beta_p - U * (D * bias_along_joint);
+    data.B[p].col(i - 1) = -U * D;
     for (const int k : model.subtree[ui]) {
-      if (k != i) data.B[p].col(k - 1) = XT_LT * data.B[ui].col(k - 1);
+      if (k == i) continue;
+      const auto B_ik = data.B[ui].col(k - 1);
+      data.B[p].col(k - 1) = X.transpose() * B_ik - U * (D * Phi.dot(B_ik));
     }
   }
 }
@@ -185,12 +200,11 @@ const OscQuantities& osc_open_chain(const Model& model, Data& data, const Vector
   detail::check_qv("osc_open_chain", model, data, q, v);
   detail::check_feet_matrix("osc_open_chain", "f_feet_world", model, f_feet_world);
   check_trunk_task("osc_open_chain", model);
-  check_no_actuators("osc_open_chain", model);
   // f_i^e: the measured foot forces as body wrenches (the same construction as Alg. 4's input)
   feet_force_terms(model, data, q, f_feet_world);
   kinematics(model, data, q, v);
   outward_pass(model, data, v);
-  inward_pass(model, data);
+  inward_pass(model, data, v);
   return recursion_outputs(model, data);
 }
 
@@ -199,14 +213,13 @@ const OscQuantities& osc_closed_chain(const Model& model, Data& data, const Vect
                                       double ground_mass) {
   detail::check_qv("osc_closed_chain", model, data, q, v);
   check_trunk_task("osc_closed_chain", model);
-  check_no_actuators("osc_closed_chain", model);
   check_contact_feet("osc_closed_chain", model, contact_feet);
   kinematics(model, data, q, v);
   world_transforms(model, data, q);
   for (Vector6& f : data.f_ext) f.setZero();  // no measured forces: β̃_i^A starts at v_i ×* I_i v_i
   outward_pass(model, data, v);
   pin_contacts(model, data, contact_feet, ground_mass);
-  inward_pass(model, data);
+  inward_pass(model, data, v);
   return recursion_outputs(model, data);
 }
 

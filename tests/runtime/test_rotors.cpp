@@ -7,51 +7,18 @@
 #include <Eigen/Eigenvalues>
 
 #include "model_test_support.hpp"
+#include "rbdc/actuator_mode.hpp"
 #include "rbdc/bias_terms.hpp"
 #include "rbdc/crba.hpp"
 #include "rbdc/forward_dynamics.hpp"
 #include "rbdc/inverse_dynamics.hpp"
 #include "rbdc/kinematics.hpp"
 #include "rbdc/topology_file.hpp"
+#include "rotor_robots.hpp"
 #include "test_robots.hpp"
 
 namespace rbdc::test {
 namespace {
-
-// Inertia J about `axis`, Jt across it (axisymmetric, as a rotor must be).
-Matrix3 rotor_inertia(const Vector3& axis, double J, double Jt) {
-  const Matrix3 aa = axis.normalized() * axis.normalized().transpose();
-  return J * aa + Jt * (Matrix3::Identity() - aa);
-}
-
-// A rotor on every joint, with oblique axes, placements off the joint and rotated frames, plus an
-// armature on every other joint: exercises every term of the rotor recursions.
-Model with_rotors(Model m) {
-  std::vector<ActuatorSpec> actuators;
-  for (int i = 1; i < m.nb; ++i) {
-    ActuatorSpec a;
-    a.joint = m.joints[static_cast<size_t>(i)].name;
-    a.where = "test";
-    a.has_rotor = true;
-    a.gear_ratio = 2.0 + 0.7 * i;
-    a.rotor_mass = 0.05 + 0.01 * i;
-    const Vector3 axis(0.3 * i, 1.0, -0.2 * (i % 3));
-    a.rotor_axis = axis;
-    a.rotor_inertia = rotor_inertia(axis, 6e-5, 3.3e-5);
-    a.rotor_translation = Vector3(0.02 * i, -0.01, 0.03);
-    a.rotor_rotation = rpy(0.2 * i, -0.1, 0.3).transpose();
-    if (i % 2 == 0) a.armature = 1e-3 * i;
-    actuators.push_back(a);
-  }
-  add_actuators(m, actuators);
-  return m;
-}
-
-std::vector<Model> rotor_robots() {
-  std::vector<Model> robots;
-  for (const Model& m : all_robots()) robots.push_back(with_rotors(m));
-  return robots;
-}
 
 // ½ vᵀ M v computed body by body: links, rotors (v_rot = X_rot v_λ + S_rot q̇) and armature.
 double kinetic_energy(const Model& m, Data& d, const VectorX& q, const VectorX& v) {
@@ -300,8 +267,7 @@ TEST(Rotors, MiniCheetahReproducesCheetahSoftwareModelChecks) {
   // the reflected inertias gr²·J of the sheet (1.3): 0.002268 at abad and hip, 0.005484 at the knee
   for (const Joint& j : m.joints) {
     if (j.rotor.gear_ratio == 0) continue;
-    const double reflected = j.rotor.gear_ratio * j.rotor.gear_ratio * j.rotor.axis.dot(j.rotor.inertia * j.rotor.axis);
-    EXPECT_NEAR(reflected, j.name.find("knee") != std::string::npos ? 0.005484 : 0.002268, 1e-6) << j.name;
+    EXPECT_NEAR(reflected_inertia(j.rotor), j.name.find("knee") != std::string::npos ? 0.005484 : 0.002268, 1e-6) << j.name;
   }
   // every identity holds on it too
   RandomState rs(23);
@@ -310,6 +276,36 @@ TEST(Rotors, MiniCheetahReproducesCheetahSoftwareModelChecks) {
   const VectorX tau = inverse_dynamics(m, d, q, v, a);
   const VectorX expected = mass_matrix(m, d, q) * a + quadratic_velocity_terms(m, d, q, v) + gravity_terms(m, d, q);
   EXPECT_LT((tau - expected).cwiseAbs().maxCoeff(), 1e-10);
+}
+
+// The scene key `actuators` on the runtime side: `none` is the model without actuators, `armature`
+// the model without rotors whose diagonal gains armature + gr² aᵀ I a, joint by joint.
+TEST(Rotors, ActuatorModesReduceTheModel) {
+  RandomState rs(29);
+  for (const Model& plain : all_robots()) {
+    const Model full = with_rotors(plain);
+    const Model none = with_actuator_mode(full, ActuatorMode::None);
+    const Model armature = with_actuator_mode(full, ActuatorMode::Armature);
+    EXPECT_FALSE(none.has_rotors || none.has_armature || armature.has_rotors);
+    EXPECT_TRUE(armature.has_armature);
+    Data dp(plain), dn(none), da(armature);
+    const VectorX q = rs.configuration(full), v = rs.vector(full.nv), acc = rs.vector(full.nv);
+    const MatrixX M_plain = mass_matrix(plain, dp, q);
+    EXPECT_EQ(mass_matrix(none, dn, q), M_plain) << full.name;
+    EXPECT_EQ(inverse_dynamics(none, dn, q, v, acc), inverse_dynamics(plain, dp, q, v, acc)) << full.name;
+    VectorX diagonal = VectorX::Zero(full.nv);
+    for (int i = 1; i < full.nb; ++i) {
+      const Joint& j = full.joints[static_cast<size_t>(i)];
+      diagonal[j.v_index] = j.armature + reflected_inertia(j.rotor);
+    }
+    const MatrixX expected = M_plain + MatrixX(diagonal.asDiagonal());
+    EXPECT_LT((mass_matrix(armature, da, q) - expected).cwiseAbs().maxCoeff(), 1e-15) << full.name;
+    const VectorX tau = inverse_dynamics(armature, da, q, v, acc);
+    EXPECT_LT((tau - (inverse_dynamics(plain, dp, q, v, acc) + diagonal.cwiseProduct(acc))).cwiseAbs().maxCoeff(),
+              1e-12) << full.name;
+  }
+  EXPECT_EQ(parse_actuator_mode("armature"), ActuatorMode::Armature);
+  EXPECT_THROW(parse_actuator_mode("rotors"), std::invalid_argument);
 }
 
 TEST(Rotors, ModelWithoutActuatorsIsUnchanged) {

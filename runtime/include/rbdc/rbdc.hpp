@@ -1,6 +1,7 @@
 // Umbrella header of the rbdc runtime: the model, its loaders and every reference algorithm.
 #pragma once
 
+#include "rbdc/actuator_mode.hpp"
 #include "rbdc/bias_terms.hpp"
 #include "rbdc/check_finite.hpp"
 #include "rbdc/coupling.hpp"
