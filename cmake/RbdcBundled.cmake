@@ -1,6 +1,7 @@
 # Reads robots/bundled.json, the one list of bundled robots and their scenes, into
 #   RBDC_BUNDLED_ROBOTS                  robot names, in file order
 #   RBDC_BUNDLED_<name>_URDF             absolute URDF path
+#   RBDC_BUNDLED_<name>_TOPOLOGY         absolute path of its topology overlay, or empty
 #   RBDC_BUNDLED_<name>_BASE             floating | fixed
 #   RBDC_BUNDLED_<name>_SCENES           scene names (the first one is benchmarked)
 set(_rbdc_bundled_file ${PROJECT_SOURCE_DIR}/robots/bundled.json)
@@ -13,6 +14,7 @@ foreach(_i RANGE ${_rbdc_last})
   string(JSON _name GET "${_rbdc_bundled_json}" robots ${_i} name)
   string(JSON _urdf GET "${_rbdc_bundled_json}" robots ${_i} urdf)
   string(JSON _base GET "${_rbdc_bundled_json}" robots ${_i} base)
+  string(JSON _topology ERROR_VARIABLE _no_topology GET "${_rbdc_bundled_json}" robots ${_i} topology)
   string(JSON _n_scenes LENGTH "${_rbdc_bundled_json}" robots ${_i} scenes)
   set(_scenes "")
   math(EXPR _last_scene "${_n_scenes} - 1")
@@ -23,5 +25,10 @@ foreach(_i RANGE ${_rbdc_last})
   list(APPEND RBDC_BUNDLED_ROBOTS ${_name})
   set(RBDC_BUNDLED_${_name}_URDF ${PROJECT_SOURCE_DIR}/${_urdf})
   set(RBDC_BUNDLED_${_name}_BASE ${_base})
+  if(_no_topology)
+    set(RBDC_BUNDLED_${_name}_TOPOLOGY "")
+  else()
+    set(RBDC_BUNDLED_${_name}_TOPOLOGY ${PROJECT_SOURCE_DIR}/${_topology})
+  endif()
   set(RBDC_BUNDLED_${_name}_SCENES ${_scenes})
 endforeach()

@@ -58,7 +58,7 @@ def load_robot(request: ModelRequest, layout: Layout) -> Robot:
         if request.topology or request.locks or request.mimic != "couple":
             raise RbdcError(f"{request.robot}: an IR file is already numbered; --topology, the mimic "
                             "options and locked joints apply only to URDF or topology input")
-        return without_actuators(load_ir(request.robot), request)
+        return load_ir(request.robot)
     if not layout.model_tool.exists():
         raise RbdcError(f"{layout.model_tool}: rbdc-model is not built (cmake --build build --target rbdc-model)")
     result = subprocess.run(model_command(request, layout), capture_output=True, text=True)
@@ -70,15 +70,5 @@ def load_robot(request: ModelRequest, layout: Layout) -> Robot:
         message = "\n".join(line.removeprefix("error: ") for line in errors) or \
             f"rbdc-model failed with exit code {result.returncode}"
         raise RbdcError(message)
-    return without_actuators(load_ir(json.loads(result.stdout)), request)
-
-
-def without_actuators(robot: Robot, request: ModelRequest) -> Robot:
-    """Generated code does not model rotors or armature yet (issue 14): refuse rather than emit code
-    that silently leaves them out. The runtime (rbdc-eval, rbdc-info) takes them."""
-    named = [j.name for j in robot.joints if j.actuator is not None]
-    if named:
-        raise RbdcError(f"{request.robot}: joints {', '.join(named)} have rotors or armature, which "
-                        "generated code does not support yet; the runtime does (rbdc-eval)")
-    return robot
+    return load_ir(json.loads(result.stdout))
 

@@ -2,6 +2,7 @@
 from dataclasses import dataclass, replace
 from pathlib import Path
 
+from .actuators import with_actuator_mode
 from .errors import RbdcError
 from .layout import Layout
 from .model_tool import ModelRequest, load_robot
@@ -37,7 +38,7 @@ def compile_robot(robot_path: Path, scene_path: Path | None = None, topology: Pa
     scene = load_scene(scene_path) if scene_path else default_scene()
     request = ModelRequest(robot=Path(robot_path), topology=Path(topology) if topology else None,
                            base=base or scene.base, locks=dict(scene.locked_joints), mimic=mimic)
-    robot = load_robot(request, layout)
+    robot = with_actuator_mode(load_robot(request, layout), scene.actuators)
     scene = resolve_base(scene, base, robot, robot_path)
     robot_name = name or robot.name
     if not robot_name:

@@ -1,8 +1,9 @@
 """Random robots for testing: URDF text for a seed, covering what the loader and generator must get
 right. Branching trees, oblique and negative axes, rotated joint origins and inertial frames, fixed
-joints (some to massless links, merged away), prismatic joints, 1 to 40 moving bodies.
+joints (some to massless links, merged away), prismatic joints, 1 to 40 moving bodies; or, with
+--actuators, a standalone topology file whose joints carry geared rotors and armature.
 
-    python3 -m rbdcgen.random_robot SEED [-o FILE]
+    python3 -m rbdcgen.random_robot SEED [-o FILE] [--actuators floating|fixed]
 """
 import argparse
 import math
@@ -72,12 +73,99 @@ def random_urdf(seed: int, max_links: int = 40) -> str:
             f'<robot name="random_{seed}">\n' + "".join(links) + "".join(joints) + "</robot>\n")
 
 
+def _unit(rng: random.Random):
+    while True:
+        v = [rng.uniform(-1, 1) for _ in range(3)]
+        norm = math.sqrt(sum(x * x for x in v))
+        if norm > 0.2:
+            return [x / norm for x in v]
+
+
+def _matrix(rows) -> str:
+    return "[" + ", ".join("[" + ", ".join(repr(float(x)) for x in row) + "]" for row in rows) + "]"
+
+
+def _rotated_inertia(rng: random.Random, moments):
+    """R diag(moments) Rᵀ for a random rotation R (columns: an orthonormal frame)."""
+    a = _unit(rng)
+    b = _unit(rng)
+    dot = sum(x * y for x, y in zip(a, b))
+    b = [y - dot * x for x, y in zip(a, b)]
+    norm = math.sqrt(sum(y * y for y in b)) or 1.0
+    b = [y / norm for y in b]
+    c = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    frame = (a, b, c)
+    return [[sum(frame[k][r] * moments[k] * frame[k][col] for k in range(3)) for col in range(3)]
+            for r in range(3)]
+
+
+def _actuator(rng: random.Random, joint: str) -> str:
+    """A rotor (placement, orientation and spin axis random, inertia symmetric about the axis),
+    an armature, both, or nothing, for joint `joint` (docs/model.md, "Actuators")."""
+    kind = rng.choice(("rotor", "rotor", "armature", "both", "none"))
+    if kind == "none":
+        return ""
+    entry = [f"joint: {joint}"]
+    if kind in ("armature", "both"):
+        entry.append(f"armature: {rng.uniform(0.0, 0.05)!r}")
+    if kind in ("rotor", "both"):
+        axis = _unit(rng)
+        J = rng.uniform(1e-5, 1e-4)
+        Jt = J * rng.uniform(0.5, 2.0)   # axisymmetric and within the triangle inequality
+        inertia = [[J * axis[r] * axis[c] + Jt * ((1.0 if r == c else 0.0) - axis[r] * axis[c])
+                    for c in range(3)] for r in range(3)]
+        entry += [f"gear_ratio: {rng.uniform(1.0, 12.0)!r}", f"rotor_mass: {rng.uniform(0.0, 0.3)!r}",
+                  f"xyz: [{_numbers(rng.uniform(-0.2, 0.2) for _ in range(3)).replace(' ', ', ')}]",
+                  f"rpy: [{_numbers(rng.uniform(-math.pi, math.pi) for _ in range(3)).replace(' ', ', ')}]",
+                  f"axis: [{', '.join(repr(x) for x in axis)}]", f"rotor_inertia: {_matrix(inertia)}"]
+    return "  - {" + ", ".join(entry) + "}\n"
+
+
+def random_actuated_topology(seed: int, floating_base: bool, max_links: int = 12) -> str:
+    """A standalone topology file (docs/model.md) of a random tree for `seed`: revolute and prismatic
+    joints with oblique axes and rotated origins, rotated inertias, a foot or two, and on its joints a
+    random mix of geared rotors, armature, both and neither."""
+    rng = random.Random(seed)
+    n = rng.randint(1, max_links)
+    bodies = ["base"] + [f"link{k}" for k in range(1, n + 1)]
+    pred = [k - 1 if rng.random() < 0.6 else rng.randint(0, k - 1) for k in range(1, n + 1)]
+    joints, inertias, actuators = [], [], []
+    for k in range(1, n + 1):
+        kind = "prismatic" if rng.random() < 0.2 else "revolute"
+        axis = _oblique_or_signed_axis(rng)
+        xyz = [rng.uniform(-0.3, 0.3) for _ in range(3)]
+        rpy = [rng.uniform(-math.pi, math.pi) for _ in range(3)]
+        joints.append(f"  - {{name: joint{k}, type: {kind}, axis: [{', '.join(repr(float(a)) for a in axis)}], "
+                      f"xyz: [{_numbers(xyz).replace(' ', ', ')}], rpy: [{_numbers(rpy).replace(' ', ', ')}]}}\n")
+        actuators.append(_actuator(rng, f"joint{k}"))
+    for name in bodies:
+        mass = rng.uniform(0.1, 5.0)
+        x, y, z = (rng.uniform(0.02, 0.4) for _ in range(3))
+        moments = (mass / 12 * (y * y + z * z), mass / 12 * (x * x + z * z), mass / 12 * (x * x + y * y))
+        com = [rng.uniform(-0.1, 0.1) for _ in range(3)]
+        inertias.append(f"  {name}: {{mass: {mass!r}, com: [{_numbers(com).replace(' ', ', ')}], "
+                        f"inertia: {_matrix(_rotated_inertia(rng, moments))}}}\n")
+    feet = [f"  - {{name: foot{f}, body: {rng.choice(bodies[1:])}, "
+            f"offset: [{_numbers(rng.uniform(-0.2, 0.2) for _ in range(3)).replace(' ', ', ')}]}}\n"
+            for f in range(rng.randint(1, 2))]
+    text = (f"# rbdc random robot with actuators, seed {seed}\nname: random_actuated_{seed}\n"
+            f"floating_base: {'true' if floating_base else 'false'}\ngravity: [0, 0, -9.81]\n"
+            f"bodies: [{', '.join(bodies)}]\nPRED: {pred}\nSUCC: {list(range(1, n + 1))}\n"
+            "joints:\n" + "".join(joints) + "inertias:\n" + "".join(inertias) + "feet:\n" + "".join(feet))
+    if any(actuators):
+        text += "actuators:\n" + "".join(actuators)
+    return text
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python3 -m rbdcgen.random_robot", description=__doc__.split("\n\n")[0])
     parser.add_argument("seed", type=int)
     parser.add_argument("-o", "--output", help="write here instead of stdout")
+    parser.add_argument("--actuators", choices=("floating", "fixed"),
+                        help="a standalone topology YAML with rotors and armature, this base")
     args = parser.parse_args(argv)
-    text = random_urdf(args.seed)
+    text = (random_actuated_topology(args.seed, args.actuators == "floating") if args.actuators
+            else random_urdf(args.seed))
     if args.output:
         with open(args.output, "w", encoding="utf-8") as handle:
             handle.write(text)

@@ -36,7 +36,11 @@ DERIVATIVES = ("inverse_dynamics_derivatives", "bias_derivatives", "gravity_deri
                "feet_force_term_derivatives")
 FEET_DERIVATIVES = ("feet_velocity_derivatives", "feet_force_term_derivatives")
 KEYS = ("name", "quantities", "gravity", "base", "locked_joints", "feet", "contacts", "zero_inputs",
-        "derivatives")
+        "derivatives", "actuators")
+# How the robot's actuators (docs/model.md, "Actuators") enter the generated code: `full` as the
+# runtime models them (rotor bodies and armature), `armature` with each rotor reduced to its
+# reflected inertia on M's diagonal, `none` without any (the code of a robot without actuators).
+ACTUATOR_MODES = ("full", "armature", "none")
 
 
 class SceneError(ValueError):
@@ -54,6 +58,7 @@ class Scene:
     contacts: Optional[Tuple[str, ...]] = None      # None: all kept feet
     zero_inputs: Tuple[str, ...] = ()
     derivatives: Tuple[str, ...] = ()               # none unless the scene lists them
+    actuators: str = "full"                         # full | armature | none (ACTUATOR_MODES)
     source: str = "<default>"
 
     # --- resolution against a robot -------------------------------------------------------
@@ -170,10 +175,14 @@ def scene_from_dict(data, source="<scene>") -> Scene:
                 else _string_list(fail, "contacts", data["contacts"]))
     zero = _string_list(fail, "zero_inputs", data.get("zero_inputs") or [], ZERO_INPUTS)
     derivatives = _string_list(fail, "derivatives", data.get("derivatives") or [], DERIVATIVES)
+    actuators = data.get("actuators", "full")
+    if actuators not in ACTUATOR_MODES:
+        fail("actuators", "expected %s, got %r" % (" | ".join(ACTUATOR_MODES), actuators))
     return Scene(name=data["name"], quantities=quantities, gravity=gravity, base=base,
                  locked_joints=tuple((k, float(v)) for k, v in sorted(locked.items())), feet=feet,
                  contacts=contacts, zero_inputs=tuple(x for x in ZERO_INPUTS if x in zero),
-                 derivatives=tuple(d for d in DERIVATIVES if d in derivatives), source=source)
+                 derivatives=tuple(d for d in DERIVATIVES if d in derivatives), actuators=actuators,
+                 source=source)
 
 
 def load_scene(path) -> Scene:

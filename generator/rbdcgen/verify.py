@@ -57,6 +57,7 @@ def _robot_record(compilation, robot_path: Path, args) -> dict:
         "feet": [foot.name for foot in scene.feet_for(robot)],
         "contacts": [scene.feet_for(robot).index(foot) for foot in scene.contacts_for(robot)],
         "zero_inputs": list(scene.zero_inputs),
+        "actuators": scene.actuators,
         "functions": [{"name": f.name, "inputs": [a.name for a in f.inputs], "derivative": f.name in DERIVATIVES,
                        "outputs": [{"name": a.name, "rows": a.rows, "cols": a.cols} for a in f.outputs]}
                       for f in compilation.functions],

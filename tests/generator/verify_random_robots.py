@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """rbdc verify on the random robots of seeds FIRST..LAST (generator/rbdcgen/random_robot.py): even
 seeds with a floating base, odd seeds with a fixed base, each group in one harness (one compile).
-Usage: verify_random_robots.py FIRST LAST [SCENE]   (SCENE: a scene file, e.g. the derivatives one)"""
+Usage: verify_random_robots.py FIRST LAST [SCENE] [--actuators]
+  SCENE: a scene file, e.g. the derivatives one; --actuators: the random standalone topology files
+  with geared rotors and armature (random_actuated_topology) instead of the random URDFs."""
+import argparse
 import subprocess
 import sys
 import tempfile
@@ -10,20 +13,29 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "generator"))
-from rbdcgen.random_robot import random_urdf  # noqa: E402
+from rbdcgen.random_robot import random_actuated_topology, random_urdf  # noqa: E402
 
 
 def main() -> int:
-    first, last = int(sys.argv[1]), int(sys.argv[2])
-    scene = ["--scene", sys.argv[3]] if len(sys.argv) > 3 else []
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("first", type=int)
+    parser.add_argument("last", type=int)
+    parser.add_argument("scene", nargs="?")
+    parser.add_argument("--actuators", action="store_true")
+    args = parser.parse_args()
+    scene = ["--scene", args.scene] if args.scene else []
     failed = 0
     with tempfile.TemporaryDirectory(prefix="rbdc-random-") as directory:
         for base, parity in (("floating", 0), ("fixed", 1)):
             files = []
-            for seed in range(first, last + 1):
+            for seed in range(args.first, args.last + 1):
                 if seed % 2 == parity:
-                    path = Path(directory) / f"random_{seed}.urdf"
-                    path.write_text(random_urdf(seed))
+                    if args.actuators:
+                        path = Path(directory) / f"random_actuated_{seed}.yaml"
+                        path.write_text(random_actuated_topology(seed, base == "floating"))
+                    else:
+                        path = Path(directory) / f"random_{seed}.urdf"
+                        path.write_text(random_urdf(seed))
                     files.append(str(path))
             start = time.monotonic()
             result = subprocess.run([str(ROOT / "rbdc"), "verify", *files, f"--{base}-base", "--states", "20",

@@ -11,13 +11,17 @@ std::vector<BenchRobot> bench_robots(const std::string& source_dir) {
   struct Entry {
     const char* name;
     const char* urdf;
+    const char* topology;
     bool floating_base;
   };
   static const Entry entries[] = {
 #include "rbdc_bench/bundled_robots.inc"
   };
   std::vector<BenchRobot> robots;
-  for (const Entry& e : entries) robots.push_back({e.name, source_dir + "/" + e.urdf, e.floating_base});
+  for (const Entry& e : entries) {
+    const std::string topology = *e.topology ? source_dir + "/" + e.topology : "";
+    robots.push_back({e.name, source_dir + "/" + e.urdf, topology, e.floating_base});
+  }
   return robots;
 }
 
@@ -30,6 +34,7 @@ BenchRobot bench_robot(const std::string& source_dir, const std::string& name) {
 rbdc::Model load_bench_robot(const BenchRobot& robot) {
   rbdc::UrdfOptions options;
   options.floating_base = robot.floating_base;
+  options.topology_file = robot.topology;
   return rbdc::load_urdf(robot.urdf, options);
 }
 

@@ -17,6 +17,11 @@ def mass_matrix(m):
     zero = ex.const(0.0)
     H = [[zero] * nv for _ in range(nv)]
     composite = [m.inertia(i) for i in range(robot.nb)]        # I_ci ← I_i
+    for i in range(1, robot.nb):                               # rotor i rides on λ(i)
+        if m.rotor(i) is not None:
+            X_rot, _, rotor_inertia = m.rotor(i)
+            j = robot.parent[i]
+            composite[j] = composite[j] + rotor_inertia.congruence(X_rot)
     for i in range(robot.nb - 1, 0, -1):
         m.mark("inward pass, composite inertias (CRBA)", i)
         j = robot.parent[i]
@@ -25,15 +30,30 @@ def mass_matrix(m):
         F = composite[i].apply(m.motion_subspace(i))             # Eq. 28: F_i = I_ci S_i
         col = m.joint(i).v_index
         H[col][col] = sp.dot(m.motion_subspace(i), F)             # H_ii = S_iᵀ F_i
+        rotor_force = None
+        if m.rotor(i) is not None:
+            # The rotor's spin needs F_r = I_rot S_rot (constant): H_ii += S_rotᵀ F_r, and X_rotᵀ F_r
+            # joins F_i on the carrier λ(i), so the rows of κ(λ(i)) and the trunk block take it.
+            X_rot, S_rot, rotor_inertia = m.rotor(i)
+            F_r = rotor_inertia.apply(S_rot)
+            H[col][col] = H[col][col] + sp.dot(S_rot, F_r)
+            rotor_force = X_rot.force_T(F_r)
+        if m.armature(i):
+            H[col][col] = H[col][col] + m.armature(i)             # reflected inertia, diagonal only
+
+        def to_parent(body, F):
+            F = m.X_up(body).force_T(F)
+            return sp.vadd(F, rotor_force) if body == i and rotor_force is not None else F
+
         body = i
         while robot.parent[body] != 0:                            # Eq. 27, j ∈ κ(i)
-            F = m.X_up(body).force_T(F)
+            F = to_parent(body, F)
             body = robot.parent[body]
             row = m.joint(body).v_index
             H[row][col] = sp.dot(m.motion_subspace(body), F)
             H[col][row] = H[row][col]
         if robot.floating_base:
-            F = m.X_up(body).force_T(F)                           # F_i in trunk coordinates
+            F = to_parent(body, F)                                # F_i in trunk coordinates
             for r in range(6):
                 H[r][col] = F[r]
                 H[col][r] = F[r]

@@ -119,6 +119,31 @@ class TracedModel:
             self._cache[key] = sp.Chain(X_T, X_J)
         return self._cache[key]
 
+    # --- actuators (docs/model.md, "Actuators"; runtime/src/rotors.hpp) ----------------------------
+    def rotor(self, i):
+        """Joint i's rotor as (X_rot, S_rot, I_rot), or None: the constant placement on the carrier
+        λ(i) (parent → rotor coordinates), the motion subspace gr·(axis; 0) and the spatial inertia
+        at the rotor origin (its mass sits there)."""
+        actuator = self.joint(i).actuator
+        if actuator is None or actuator.rotor is None:
+            return None
+        key = ("rotor", i)
+        if key not in self._cache:
+            rotor = actuator.rotor
+            rotation = sp.snap_rotation(rotor.rotation)
+            identity = all(rotation[r][c] == (1.0 if r == c else 0.0) for r in range(3) for c in range(3))
+            X = sp.Transform(None if identity else sp.mat(rotation),
+                             sp.vec(rotor.translation) if any(rotor.translation) else None)
+            S = sp.vec([rotor.gear_ratio * a for a in sp.snap_axis(rotor.axis)] + [0.0, 0.0, 0.0])
+            inertia = sp.Inertia(ex.const(rotor.mass), sp.zeros(3), sp.symmetric(sp.mat(rotor.inertia)))
+            self._cache[key] = (X, S, inertia)
+        return self._cache[key]
+
+    def armature(self, i):
+        """Joint i's reflected inertia on M's diagonal (0 without)."""
+        actuator = self.joint(i).actuator
+        return 0.0 if actuator is None else actuator.armature
+
     def inertia(self, i):
         key = ("inertia", i)
         if key not in self._cache:

@@ -24,7 +24,13 @@ def _recursion(m, articulated, beta, velocities):
         S = m.motion_subspace(i)
         Ia = articulated[i]
         U = sp.matvec(Ia, S)                                        # I_i^A Φ_i
-        D = ex.const(1.0) / sp.dot(S, U)                            # D_i (Eq. 35)
+        if m.rotor(i) is not None:
+            _joint_with_rotor(m, i, articulated, beta, B, velocities, U)
+            continue
+        pivot = sp.dot(S, U)
+        if m.armature(i):
+            pivot = pivot + m.armature(i)                            # reflected inertia
+        D = ex.const(1.0) / pivot                                   # D_i (Eq. 35)
         UD = sp.vscale(D, U)
 
         def propagate(x):
@@ -48,6 +54,41 @@ def _recursion(m, articulated, beta, velocities):
     correction = sp.vadd(sp.zeros(3) + m.gravity_in_base(), trunk_bias)
     b = sp.vsub(beta[0], sp.matvec(Lam, correction))                # Eq. 41
     return Lam, JbarT, b
+
+
+def _joint_with_rotor(m, i, articulated, beta, B, velocities, U):
+    """One step of the inward loop for a joint whose rotor (runtime/src/rotors.hpp) rides on the
+    parent j: the rotor is a leaf body spinning with q̇_i, so it joins the pivot and the parent's
+    articulated quantities as in Cheetah-Software's articulated-body algorithm (runtime osc.cpp):
+        U_t = Xᵀ I_i^A Φ_i + X_rotᵀ I_rot S_rot,   D_i = 1 / (Φ_iᵀ I_i^A Φ_i + S_rotᵀ I_rot S_rot + armature_i)
+        I_j^A += Xᵀ I_i^A X + X_rotᵀ I_rot X_rot − U_t D_i U_tᵀ
+        β_j^A += Xᵀ p_i + X_rotᵀ p_rot − U_t D_i (Φ_iᵀ p_i + S_rotᵀ p_rot)
+        B_ji = −U_t D_i,   B_jk = Xᵀ B_ik − U_t D_i Φ_iᵀ B_ik
+    with p_i = β_i^A + I_i^A ζ_i and p_rot = v_rot ×* I_rot v_rot + I_rot (v_rot × S_rot q̇_i)."""
+    j = m.robot.parent[i]
+    X, S = m.X_up(i), m.motion_subspace(i)
+    X_rot, S_rot, rotor_inertia = m.rotor(i)
+    zeta = sp.crm(velocities[i], sp.vscale(m.vi(i), S))
+    p = sp.vadd(beta[i], sp.matvec(articulated[i], zeta))
+    F_rot = rotor_inertia.apply(S_rot)                              # constant
+    U_t = sp.vadd(X.force_T(U), X_rot.force_T(F_rot))
+    pivot = sp.dot(S, U) + sp.dot(S_rot, F_rot)
+    if m.armature(i):
+        pivot = pivot + m.armature(i)
+    D = ex.const(1.0) / pivot
+    UD = sp.vscale(D, U_t)
+    spin = sp.vscale(m.vi(i), S_rot)
+    v_rot = sp.vadd(X_rot.motion(velocities[j]), spin)
+    p_rot = sp.vadd(sp.crf(v_rot, rotor_inertia.apply(v_rot)), rotor_inertia.apply(sp.crm(v_rot, spin)))
+    carried = sp.symmetric(tuple(sp.vsub(row, sp.vscale(UD[r], U_t))
+                                 for r, row in enumerate(sp.mat6_add(X.congruence6(articulated[i]),
+                                                                     rotor_inertia.congruence(X_rot).dense()))))
+    articulated[j] = sp.mat6_add(articulated[j], carried)
+    along = sp.dot(S, p) + sp.dot(S_rot, p_rot)
+    beta[j] = sp.vadd(beta[j], sp.vsub(sp.vadd(X.force_T(p), X_rot.force_T(p_rot)), sp.vscale(along, UD)))
+    B[j][i] = sp.vneg(UD)
+    for k, column in B[i].items():
+        B[j][k] = sp.vsub(X.force_T(column), sp.vscale(sp.dot(S, column), UD))
 
 
 def _outward(m):

@@ -21,9 +21,11 @@ def foot_wrenches(m, frames):
     return wrenches
 
 
-def inward_pass(m, forces):
+def inward_pass(m, forces, rotor_forces=None):
     """Alg. 2-4 inward loop: c_i = S_iᵀ f_i, f_λ(i) += (X_λ(i)^i)ᵀ f_i (Eqs. 22-23); the root
-    block c₀ = S₀ᵀ f₀ = f₀ for a floating base. Returns the joint-space vector (length nv)."""
+    block c₀ = S₀ᵀ f₀ = f₀ for a floating base. Returns the joint-space vector (length nv).
+    Rotor i's wrench (rotor_wrenches) also drives joint i and loads its carrier:
+    c_i += S_rotᵀ f_rot, f_λ(i) += X_rotᵀ f_rot."""
     forces = list(forces)
     tau = [None] * m.robot.nb
     for i in range(m.robot.nb - 1, 0, -1):
@@ -31,15 +33,49 @@ def inward_pass(m, forces):
         j = m.robot.parent[i]
         tau[i] = sp.dot(m.motion_subspace(i), forces[i])
         forces[j] = sp.vadd(forces[j], m.X_up(i).force_T(forces[i]))
+        if rotor_forces is not None and rotor_forces[i] is not None:
+            X_rot, S_rot, _ = m.rotor(i)
+            tau[i] = tau[i] + sp.dot(S_rot, rotor_forces[i])
+            forces[j] = sp.vadd(forces[j], X_rot.force_T(rotor_forces[i]))
     root = list(forces[0]) if m.robot.floating_base else []
     return tuple(root + tau[1:])
+
+
+def rotor_wrenches(m, velocities, accelerations, joint_accelerations):
+    """Each rotor's wrench at its origin, rotor coordinates (runtime/src/rotors.hpp), or None for a
+    robot without rotors: Eqs. 19-20 with X_rot, S_rot on the carrier j = λ(i),
+        v_r = X_rot v_j + S_rot q̇_i,  a_r = X_rot a_j + S_rot q̈_i + v_r × S_rot q̇_i,
+        f_r = I_rot a_r + v_r ×* I_rot v_r,
+    the velocity terms only with `velocities`, the q̈ term only with `joint_accelerations`."""
+    rotors = [None] + [m.rotor(i) for i in range(1, m.robot.nb)]
+    if not any(rotors):
+        return None
+    wrenches = [None] * m.robot.nb
+    for i in range(1, m.robot.nb):
+        if rotors[i] is None:
+            continue
+        m.mark("rotor of joint " + m.joint(i).name)
+        X_rot, S_rot, inertia = rotors[i]
+        j = m.robot.parent[i]
+        a_r = X_rot.motion(accelerations[j])
+        if joint_accelerations is not None:
+            a_r = sp.vadd(a_r, sp.vscale(joint_accelerations[i], S_rot))
+        if velocities is None:
+            wrenches[i] = inertia.apply(a_r)
+            continue
+        spin = sp.vscale(m.vi(i), S_rot)
+        v_r = sp.vadd(X_rot.motion(velocities[j]), spin)
+        a_r = sp.vadd(a_r, sp.crm(v_r, spin))
+        wrenches[i] = sp.vadd(inertia.apply(a_r), sp.crf(v_r, inertia.apply(v_r)))
+    return wrenches
 
 
 def rnea(m, base_acceleration, joint_accelerations, with_velocity, external=None):
     """One outward pass (Eqs. 19-20, 24) and the inward pass:
         a_i = X_λ(i)^i a_λ(i) + v_i × S_i q̇_i + S_i q̈_i,   f_i = I_i a_i + v_i ×* I_i v_i − f_i^ext.
     `base_acceleration` is a₀ (bias and gravity included), `joint_accelerations[i]` q̈_i or None,
-    `with_velocity` enables the velocity product terms, `external` the body wrenches."""
+    `with_velocity` enables the velocity product terms, `external` the body wrenches. Rotors take
+    part as bodies of their own (rotor_wrenches)."""
     nb = m.robot.nb
     velocities = body_velocities(m) if with_velocity else None
     accelerations = [base_acceleration]
@@ -63,7 +99,7 @@ def rnea(m, base_acceleration, joint_accelerations, with_velocity, external=None
         if external is not None and external[i] is not None:
             f_i = sp.vsub(f_i, external[i])
         forces.append(f_i)
-    return inward_pass(m, forces)
+    return inward_pass(m, forces, rotor_wrenches(m, velocities, accelerations, joint_accelerations))
 
 
 def velocity_bias(m):
@@ -104,9 +140,15 @@ def base_acceleration(m, trunk_acceleration):
 
 
 def inverse_dynamics(m):
-    """M a + c + g: Alg. 2 and 3 with the accelerations added (paper 000 Eq. 29)."""
+    """M a + c + g: Alg. 2 and 3 with the accelerations added (paper 000 Eq. 29), plus each joint's
+    armature: τ_i += armature_i q̈_i (reflected inertia on M's diagonal only)."""
     trunk = m.a[0:6] if m.robot.floating_base else sp.zeros(6)
-    return rnea(m, base_acceleration(m, trunk), joint_accelerations(m), True)
+    tau = list(rnea(m, base_acceleration(m, trunk), joint_accelerations(m), True))
+    for i in range(1, m.robot.nb):
+        if m.armature(i):
+            k = m.joint(i).v_index
+            tau[k] = tau[k] + m.armature(i) * m.ai(i)
+    return tuple(tau)
 
 
 def bias_minus_external(m):

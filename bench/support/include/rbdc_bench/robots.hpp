@@ -13,6 +13,7 @@ namespace rbdc_bench {
 struct BenchRobot {
   std::string name;        ///< also the generated namespace rbdc_gen::<name>
   std::string urdf;        ///< absolute path
+  std::string topology;    ///< absolute path of the topology overlay (rotors, numbering), or empty
   bool floating_base;
 };
 
@@ -22,7 +23,8 @@ std::vector<BenchRobot> bench_robots(const std::string& source_dir);
 /// The named robot of bench_robots(); throws std::invalid_argument for an unknown name.
 BenchRobot bench_robot(const std::string& source_dir, const std::string& name);
 
-/// Loads the robot's URDF with its base type, as tools/regenerate does. Throws rbdc::ModelError.
+/// Loads the robot's URDF with its base type and topology overlay, as tools/regenerate does. Throws
+/// rbdc::ModelError.
 rbdc::Model load_bench_robot(const BenchRobot& robot);
 
 /// Σ body masses, and the smallest positive body mass (m_min of paper 001 Eq. 58, as the runtime's
