@@ -195,9 +195,6 @@ int main(int argc, char** argv) {
     const Eigen::Index n_forces = 3 * static_cast<Eigen::Index>(model.feet.size());
     const VectorX f = state_vector("--f", has_f ? &f_values : nullptr, n_forces, VectorX::Zero(n_forces));
 
-    if (derivatives && (model.has_rotors || model.has_armature)) {
-      throw std::invalid_argument(opts.input + ": --derivatives does not support rotors or armature yet");
-    }
     std::vector<rbdc::Vector6> body_wrenches(static_cast<size_t>(model.nb), rbdc::Vector6::Zero());
     if (!body_wrenches_file.empty()) body_wrenches = rbdc::read_body_wrenches(body_wrenches_file, model);
 

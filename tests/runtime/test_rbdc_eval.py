@@ -133,9 +133,32 @@ with tempfile.TemporaryDirectory() as tmp:
     short = run(CHEETAH, "--body-wrenches", wrench_file)
     check(short.returncode == 2 and "expected 6 numbers (moment; force)" in short.stderr,
           f"short wrench: {short.stderr!r}")
-no_derivatives = run(CHEETAH, *ROTORS, "--derivatives")
-check(no_derivatives.returncode == 2 and "does not support rotors" in no_derivatives.stderr,
-      f"derivatives with rotors: {no_derivatives.stderr!r}")
+# --derivatives with rotors and an armature: c + g's knee column against central differences, and
+# M · ∂a/∂τ = Sᵀ (M with the rotors and the armature, from the same call).
+ACTUATED = ROTORS + ["--armature", "LF_knee_joint=0.01"]
+rotor_run = run(CHEETAH, *ACTUATED, "--q", STANDING, "--v", V, "--tau", TAU, "--derivatives")
+check(rotor_run.returncode == 0, f"derivatives with rotors: exit {rotor_run.returncode}: {rotor_run.stderr}")
+rotor_out = json.loads(rotor_run.stdout)
+rd = rotor_out["derivatives"]
+
+
+def actuated_at_knee(delta):
+    q = [float(x) for x in STANDING.split(",")]
+    q[JOINT + 1] += delta
+    return json.loads(run(CHEETAH, *ACTUATED, "--q", ",".join(map(repr, q)), "--v", V).stdout)
+
+
+plus, minus = actuated_at_knee(H), actuated_at_knee(-H)
+fd_bias = [(pc + pg - mc - mg) / (2 * H)
+           for pc, pg, mc, mg in zip(plus["c"], plus["g"], minus["c"], minus["g"])]
+check(max(abs(fd_bias[r] - rd["dbias_dq"][r][JOINT]) for r in range(18)) < 1e-6 * max(1, max(map(abs, fd_bias))),
+      "with rotors: dbias_dq knee column vs central differences of c + g")
+M_rotor = rotor_out["M"]
+M_da_dtau = [[sum(M_rotor[r][k] * rd["da_dtau"][k][c] for k in range(18)) for c in range(12)] for r in range(18)]
+check(max(abs(M_da_dtau[r][c] - (1.0 if r == c + 6 else 0.0)) for r in range(18) for c in range(12)) < 1e-9,
+      "with rotors and armature: M da_dtau = S^T")
+check(max(abs(a - b) for a, b in zip(rd["dbias_dq"][JOINT], d["dbias_dq"][JOINT])) > 1e-6,
+      "the rotors change the derivatives")
 
 for f in failures:
     print("FAILED:", f)
