@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "rbdc/control/command_line.hpp"
+#include "rbdc/control/drive_train.hpp"
 #include "rbdc/sim/robot.hpp"
 #include "rbdc/sim/trajectory_csv.hpp"
 
@@ -21,7 +22,13 @@ int main(int argc, char** argv) {
       std::fputs(usage(Program::Sim, CommandLine{}).c_str(), stdout);
       return 0;
     }
-    const Model model = load_robot(cli.urdf);
+    const ActuatorMode drive_train = parse_actuator_mode(cli.rotors);
+    const Model model = load_trot_robot(cli.urdf, drive_train);
+    if (drive_train != ActuatorMode::None && cli.dynamics == "generated") {
+      std::fprintf(stderr, "rbdc-sim: --rotors %s runs on the runtime dynamics: add --dynamics runtime\n",
+                   cli.rotors.c_str());
+      return 1;
+    }
     std::unique_ptr<DynamicsModel> dynamics;
     if (cli.dynamics == "generated")
       dynamics = make_generated_dynamics();
@@ -37,9 +44,9 @@ int main(int argc, char** argv) {
     PdTrotController controller(model, cli.gait, cli.gains, cli.sim.contact.foot_radius);
     std::optional<TrajectoryCsv> csv;
     if (!cli.out.empty()) csv.emplace(cli.out, model);
-    std::fprintf(stderr, "rbdc-sim: %s dynamics, %s, %s state, dt = %g s, %g s\n",
-                 dynamics->name().c_str(), to_string(cli.sim.integrator), to_string(cli.sim.state),
-                 cli.sim.dt, cli.run.duration);
+    std::fprintf(stderr, "rbdc-sim: %s dynamics, rotors %s, %s, %s state, dt = %g s, %g s\n",
+                 dynamics->name().c_str(), cli.rotors.c_str(), to_string(cli.sim.integrator),
+                 to_string(cli.sim.state), cli.sim.dt, cli.run.duration);
     RunCallbacks callbacks;
     if (csv) callbacks.sample = [&](Simulator& s) { csv->write(s.time(), s.q(), s.v(), s.contacts()); };
     const RunSummary summary = run(simulator, controller, cli.run, callbacks);

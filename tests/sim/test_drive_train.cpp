@@ -1,0 +1,69 @@
+// rbdc-sim --rotors (control/drive_train.hpp): the trot robot with MIT's rotors as bodies, reduced to
+// armature, or without them, and a short PD trot on the rotor model.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "rbdc/control/drive_train.hpp"
+#include "rbdc/control/pd_trot.hpp"
+#include "rbdc/sim/robot.hpp"
+#include "rbdc/sim/run.hpp"
+
+using namespace rbdc;
+
+namespace {
+
+double link_mass(const Model& m) {
+  double sum = 0;
+  for (const Body& b : m.bodies) sum += b.mass;
+  return sum;
+}
+
+TEST(DriveTrain, ModesLoadTheRotorsAsBodiesAsArmatureOrNot) {
+  const Model none = control::load_trot_robot("", ActuatorMode::None);
+  EXPECT_FALSE(none.has_rotors || none.has_armature);
+  const Model full = control::load_trot_robot("", ActuatorMode::Full);
+  ASSERT_TRUE(full.has_rotors);
+  double rotors = 0;
+  for (const Joint& j : full.joints) rotors += j.rotor.mass;
+  EXPECT_NEAR(link_mass(full) + rotors, 8.912, 1e-12);
+  const Model armature = control::load_trot_robot("", ActuatorMode::Armature);
+  EXPECT_FALSE(armature.has_rotors);
+  EXPECT_NEAR(link_mass(armature), 8.252, 1e-12);
+  for (int i = 1; i < armature.nb; ++i) {
+    const Joint& j = armature.joints[static_cast<size_t>(i)];
+    EXPECT_NEAR(j.armature, j.name.find("knee") != std::string::npos ? 0.005484 : 0.002268, 1e-6) << j.name;
+  }
+  // The same numbering and feet as the robot without rotors: the controller and CSV see one robot.
+  ASSERT_EQ(full.nb, none.nb);
+  for (int i = 0; i < none.nb; ++i) EXPECT_EQ(full.bodies[static_cast<size_t>(i)].name, none.bodies[static_cast<size_t>(i)].name);
+  EXPECT_EQ(full.feet.size(), none.feet.size());
+}
+
+TEST(DriveTrain, AUrdfWithoutRotorOverlayIsRefused) {
+  try {
+    control::load_trot_robot(std::string(RBDC_SOURCE_DIR) + "/robots/arm7.urdf", ActuatorMode::Full);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("arm7_rotors.topology.yaml"), std::string::npos) << e.what();
+  }
+}
+
+TEST(DriveTrain, ShortTrotWithRotorsStaysUpright) {
+  const Model model = control::load_trot_robot("", ActuatorMode::Full);
+  const std::unique_ptr<sim::DynamicsModel> dynamics = sim::make_runtime_dynamics(model);
+  sim::Simulator simulator(*dynamics, sim::SimOptions{});
+  control::PdTrotController controller(model, control::GaitParameters{}, control::PdGains{},
+                                       sim::SimOptions{}.contact.foot_radius);
+  sim::RunOptions options;
+  options.duration = 0.3;
+  options.sample_interval = 0;
+  options.progress = false;
+  const sim::RunSummary summary = run(simulator, controller, options);
+  EXPECT_TRUE(summary.finite);
+  EXPECT_GT(summary.min_trunk_height, 0.2);
+}
+
+}  // namespace
