@@ -23,8 +23,9 @@ from __future__ import annotations
 from . import expr as ex
 from . import spatial as sp
 from .algorithms import forward_dynamics as fd
-from .algorithms import jacobian, kinematics, rnea
+from .algorithms import feet_force_derivatives, jacobian, kinematics, rnea
 from .algorithms.crba import mass_matrix
+from .algorithms.rnea_derivatives import has_rotors, rnea_derivatives
 from .manifold import configuration_seeds, q_direction, v_direction, velocity_seeds
 
 # The primal function each derivative is compared with in `rbdc flops` (the issue's targets are
@@ -138,17 +139,38 @@ def _q_and_v(m, outputs, q_name, v_name):
             v_name: jacobian_columns(outputs, seeds, _v_dirs(m))}
 
 
+def _trunk_acceleration(m):
+    return m.a[0:6] if m.robot.floating_base else sp.zeros(6)
+
+
+def _column_major(rows):
+    n = len(rows)
+    return tuple(rows[r][c] for c in range(len(rows[0]) if rows else 0) for r in range(n))
+
+
+def _rnea_q_and_v(m, base_acceleration, joint_accelerations, with_velocity, names):
+    """∂/∂q and ∂/∂v of rnea.rnea(m, ...) (no external forces): the analytic recursion, or the
+    tangents of the traced RNEA for a robot with rotors (which the recursion does not model)."""
+    if has_rotors(m.robot):
+        tau = rnea.rnea(m, base_acceleration, joint_accelerations, with_velocity)
+        return _q_and_v(m, tau, *names)
+    dq, dv = rnea_derivatives(m, base_acceleration, joint_accelerations, with_velocity)
+    return dict(zip(names, (_column_major(dq), _column_major(dv))))
+
+
 def inverse_dynamics_derivatives(m):
-    return _q_and_v(m, rnea.inverse_dynamics(m), "dtau_dq", "dtau_dv")
+    return _rnea_q_and_v(m, rnea.base_acceleration(m, _trunk_acceleration(m)),
+                         rnea.joint_accelerations(m), True, ("dtau_dq", "dtau_dv"))
 
 
 def bias_derivatives(m):
-    bias = rnea.rnea(m, rnea.base_acceleration(m, sp.zeros(6)), None, True)   # c + g
-    return _q_and_v(m, bias, "dbias_dq", "dbias_dv")
+    return _rnea_q_and_v(m, rnea.base_acceleration(m, sp.zeros(6)), None, True,   # c + g
+                         ("dbias_dq", "dbias_dv"))
 
 
 def gravity_derivatives(m):
-    return {"dg_dq": jacobian_columns(rnea.gravity_terms(m), configuration_seeds(m), _q_dirs(m))}
+    out = _rnea_q_and_v(m, rnea.gravity_acceleration(m), None, False, ("dg_dq", "dg_dv"))
+    return {"dg_dq": out["dg_dq"]}
 
 
 def feet_velocity_derivatives(m):
@@ -157,8 +179,7 @@ def feet_velocity_derivatives(m):
 
 
 def feet_force_term_derivatives(m):
-    return {"dtau_e_dq": jacobian_columns(rnea.feet_force_terms(m), configuration_seeds(m),
-                                          _q_dirs(m))}
+    return {"dtau_e_dq": _column_major(feet_force_derivatives.feet_force_term_derivatives(m))}
 
 
 def _solve_columns(m, columns):
@@ -188,6 +209,37 @@ def substitute(outputs, replacement):
     return [new[node.id] for node in outputs]
 
 
+def _residual_derivatives(m):
+    """∂/∂q and ∂/∂v (nv × nv rows) of the forward-dynamics residual RNEA(q, v, a) − τ_e(q, f) at
+    the placeholder symbols a: the analytic recursion for the RNEA, tangents for τ_e (its world
+    forces do not turn with the bodies, so the recursion's rigid-motion argument does not cover
+    them); all tangents for a robot with rotors."""
+    nv = m.robot.nv
+    base = rnea.base_acceleration(m, _trunk_acceleration(m))
+    if has_rotors(m.robot):
+        external = rnea.foot_wrenches(m, kinematics.world_frames(m)) if m.feet else None
+        residual = rnea.rnea(m, base, rnea.joint_accelerations(m), True, external)
+        maps = propagate(list(residual), _state_seeds(m))
+        zero = ex.const(0.0)
+        return tuple([[maps[r].get(direction(c), zero) for c in range(nv)] for r in range(nv)]
+                     for direction in (q_direction, v_direction))
+    dq, dv = rnea_derivatives(m, base, rnea.joint_accelerations(m), True)
+    if m.feet:
+        external = feet_force_derivatives.feet_force_term_derivatives(m)
+        dq = [[x - y for x, y in zip(row, ext)] for row, ext in zip(dq, external)]
+    return dq, dv
+
+
+def _mirror_joint_block(robot, dtau):
+    """M⁻¹Sᵀ (column-major nv × n_joints) holds the joint block of the symmetric M⁻¹: the entries
+    above its diagonal are taken from below it, so DCE drops half of their solve's last pass."""
+    nv = robot.nv
+    dofs = [robot.joints[i].v_index for i in range(1, robot.nb)]
+    for a, row_a in enumerate(dofs):
+        for b in range(a):
+            dtau[a * nv + dofs[b]] = dtau[b * nv + row_a]
+
+
 def forward_dynamics_derivatives(m):
     """∂a = −M⁻¹ ∂(RNEA(q, v, a) − τ_e(q, f)) at a = forward_dynamics(q, v, τ, f). The residual is
     traced with placeholder symbols for a, differentiated with a held fixed, and only then are the
@@ -195,21 +247,16 @@ def forward_dynamics_derivatives(m):
     factorisation."""
     robot = m.robot
     nv = robot.nv
-    external = rnea.foot_wrenches(m, kinematics.world_frames(m)) if m.feet else None
-    trunk = m.a[0:6] if robot.floating_base else sp.zeros(6)
-    residual = rnea.rnea(m, rnea.base_acceleration(m, trunk), rnea.joint_accelerations(m), True,
-                         external)
-    maps = propagate(list(residual), _state_seeds(m))
-    zero = ex.const(0.0)
-    columns = {"da_dq": _q_dirs(m), "da_dv": _v_dirs(m)}
-    columns = {name: [[-maps[r].get(d, zero) for r in range(nv)] for d in directions]
-               for name, directions in columns.items()}
+    dq, dv = _residual_derivatives(m)
+    columns = {"da_dq": [[-dq[r][c] for r in range(nv)] for c in range(nv)],
+               "da_dv": [[-dv[r][c] for r in range(nv)] for c in range(nv)]}
     columns["da_dtau"] = [[ex.const(1.0 if r == robot.joints[i].v_index else 0.0)
                            for r in range(nv)] for i in range(1, robot.nb)]       # Sᵀ
     J = jacobian.feet_jacobian(m) if m.feet else []
     columns["da_df"] = [[J[row][c] for c in range(nv)] for row in range(len(J))]  # Jᵀ
     flat = {name: [x for col in _solve_columns(m, cols) for x in col]
             for name, cols in columns.items()}
+    _mirror_joint_block(robot, flat["da_dtau"])
     acceleration = fd.forward_dynamics(m)
     placeholders = {node.id: value for node, value in zip(m.a, acceleration)}
     order = ("da_dq", "da_dv", "da_dtau", "da_df")

@@ -7,11 +7,11 @@
 // bias_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   arm7/common/bias_derivatives_56dc960885fb.hpp
+//   arm7/common/bias_derivatives_c6d1546de1eb.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/bias_derivatives_56dc960885fb.hpp"
+#include "arm7/common/bias_derivatives_c6d1546de1eb.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param dbias_dv out 7x7: ∂c/∂v
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             4391  3589    0     0    12   14   8006
-using ::rbdc_gen::arm7::common::bias_derivatives_56dc960885fb::bias_derivatives;
+///             1772  1522    0     0    12   10   3316
+using ::rbdc_gen::arm7::common::bias_derivatives_c6d1546de1eb::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

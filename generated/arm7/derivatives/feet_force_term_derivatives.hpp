@@ -7,11 +7,11 @@
 // feet_force_term_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_term_derivatives is the same code:
-//   arm7/common/feet_force_term_derivatives_fcb111936ea5.hpp
+//   arm7/common/feet_force_term_derivatives_84d71b5d6a50.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/feet_force_term_derivatives_fcb111936ea5.hpp"
+#include "arm7/common/feet_force_term_derivatives_84d71b5d6a50.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param dtau_e_dq out 7x7: ∂(Jᵀf)/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             740  417    0     0    14    6   1177
-using ::rbdc_gen::arm7::common::feet_force_term_derivatives_fcb111936ea5::feet_force_term_derivatives;
+///             203  129    0     0    12    3    347
+using ::rbdc_gen::arm7::common::feet_force_term_derivatives_84d71b5d6a50::feet_force_term_derivatives;
 
 /// feet_force_term_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // gravity_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   arm7/common/gravity_derivatives_052ac5d5cae1.hpp
+//   arm7/common/gravity_derivatives_7b4ee1785a6d.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/gravity_derivatives_052ac5d5cae1.hpp"
+#include "arm7/common/gravity_derivatives_7b4ee1785a6d.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -21,8 +21,8 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param dg_dq out 7x7: ∂g/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             563  391    0     0    12    4    970
-using ::rbdc_gen::arm7::common::gravity_derivatives_052ac5d5cae1::gravity_derivatives;
+///             274  182    0     0    12    6    474
+using ::rbdc_gen::arm7::common::gravity_derivatives_7b4ee1785a6d::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   arm7/common/inverse_dynamics_derivatives_52ef2fc64bc0.hpp
+//   arm7/common/inverse_dynamics_derivatives_7118442831df.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/inverse_dynamics_derivatives_52ef2fc64bc0.hpp"
+#include "arm7/common/inverse_dynamics_derivatives_7118442831df.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -24,8 +24,8 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param dtau_dv out 7x7: ∂τ/∂v
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             4394  3600    0     0    12   14   8020
-using ::rbdc_gen::arm7::common::inverse_dynamics_derivatives_52ef2fc64bc0::inverse_dynamics_derivatives;
+///             1796  1548    0     0    12   10   3366
+using ::rbdc_gen::arm7::common::inverse_dynamics_derivatives_7118442831df::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

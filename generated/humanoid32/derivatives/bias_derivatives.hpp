@@ -7,11 +7,11 @@
 // bias_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   humanoid32/common/bias_derivatives_edf5903195df.hpp
+//   humanoid32/common/bias_derivatives_acbbb60ba7de.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/bias_derivatives_edf5903195df.hpp"
+#include "humanoid32/common/bias_derivatives_acbbb60ba7de.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param dbias_dv out 38x38: ∂c/∂v
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
-///             38289  31635    0     0    64   39  70027
-using ::rbdc_gen::humanoid32::common::bias_derivatives_edf5903195df::bias_derivatives;
+///             13826  11026    0     0    64   16  24932
+using ::rbdc_gen::humanoid32::common::bias_derivatives_acbbb60ba7de::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

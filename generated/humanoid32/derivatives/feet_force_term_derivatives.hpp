@@ -7,11 +7,11 @@
 // feet_force_term_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_term_derivatives is the same code:
-//   humanoid32/common/feet_force_term_derivatives_8ac52e2409d1.hpp
+//   humanoid32/common/feet_force_term_derivatives_2f1850d6f4e4.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/feet_force_term_derivatives_8ac52e2409d1.hpp"
+#include "humanoid32/common/feet_force_term_derivatives_2f1850d6f4e4.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param dtau_e_dq out 38x38: ∂(Jᵀf)/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             6693  3933    0     0    64   68  10758
-using ::rbdc_gen::humanoid32::common::feet_force_term_derivatives_8ac52e2409d1::feet_force_term_derivatives;
+///             1812  1298    0     0    46    0   3156
+using ::rbdc_gen::humanoid32::common::feet_force_term_derivatives_2f1850d6f4e4::feet_force_term_derivatives;
 
 /// feet_force_term_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

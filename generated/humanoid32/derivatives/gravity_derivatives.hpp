@@ -7,11 +7,11 @@
 // gravity_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   humanoid32/common/gravity_derivatives_8c33eb453a50.hpp
+//   humanoid32/common/gravity_derivatives_5de182ace490.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/gravity_derivatives_8c33eb453a50.hpp"
+#include "humanoid32/common/gravity_derivatives_5de182ace490.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -21,8 +21,8 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param dg_dq out 38x38: ∂g/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             6048  4127    0     0    64  116  10355
-using ::rbdc_gen::humanoid32::common::gravity_derivatives_8c33eb453a50::gravity_derivatives;
+///             3276  1924    0     0    64   61   5325
+using ::rbdc_gen::humanoid32::common::gravity_derivatives_5de182ace490::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

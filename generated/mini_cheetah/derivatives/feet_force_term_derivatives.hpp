@@ -7,11 +7,11 @@
 // feet_force_term_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_term_derivatives is the same code:
-//   mini_cheetah/common/feet_force_term_derivatives_9ab07cc9d990.hpp
+//   mini_cheetah/common/feet_force_term_derivatives_32c0af0d81a0.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/feet_force_term_derivatives_9ab07cc9d990.hpp"
+#include "mini_cheetah/common/feet_force_term_derivatives_32c0af0d81a0.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -21,9 +21,9 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param f in  3x4: foot forces, world frame, one column per foot
 /// @param dtau_e_dq out 18x18: ∂(Jᵀf)/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
-/// operations   mul   add  div  sqrt  trig  neg  total
-///             1573  1016    0     0    24   53   2666
-using ::rbdc_gen::mini_cheetah::common::feet_force_term_derivatives_9ab07cc9d990::feet_force_term_derivatives;
+/// operations  mul  add  div  sqrt  trig  neg  total
+///             891  660    0     0    24    8   1583
+using ::rbdc_gen::mini_cheetah::common::feet_force_term_derivatives_32c0af0d81a0::feet_force_term_derivatives;
 
 /// feet_force_term_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>
