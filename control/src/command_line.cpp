@@ -72,6 +72,16 @@ std::vector<Option> options(Program program, CommandLine& c) {
                     else throw std::invalid_argument("option --state: unknown state '" + t + "'");
                   },
                   [&c = c] { return std::string(to_string(c.sim.state)); }});
+  list.push_back({"--rotors", "full|armature|none",
+                  "the drive train: MIT's rotors as bodies (full), as reflected inertia on M's diagonal "
+                  "(armature), or none (paper 000); rbdc-sim: full and armature need --dynamics runtime; "
+                  "rbdc-mujoco-compare: MuJoCo gets the armature",
+                  [&c = c](const std::string& t) {
+                    if (t != "full" && t != "armature" && t != "none")
+                      throw std::invalid_argument("option --rotors: unknown value '" + t + "'");
+                    c.rotors = t;
+                  },
+                  [&c = c] { return c.rotors; }});
   if (program == Program::Sim) {
     list.push_back({"--dynamics", "generated|runtime",
                     "dynamics implementation: generated (the bundled Mini Cheetah) or runtime (any URDF)",
@@ -81,15 +91,6 @@ std::vector<Option> options(Program program, CommandLine& c) {
                       c.dynamics = t;
                     },
                     [&c = c] { return c.dynamics; }});
-    list.push_back({"--rotors", "full|armature|none",
-                    "the drive train: MIT's rotors as bodies (full), as reflected inertia on M's diagonal "
-                    "(armature), or none (paper 000); full and armature need --dynamics runtime",
-                    [&c = c](const std::string& t) {
-                      if (t != "full" && t != "armature" && t != "none")
-                        throw std::invalid_argument("option --rotors: unknown value '" + t + "'");
-                      c.rotors = t;
-                    },
-                    [&c = c] { return c.rotors; }});
     text("--out", c.out, "FILE.csv", "write the time series as CSV");
     flag("--profile", c.profile, true, "time dynamics, contact, integration and control separately");
   } else {

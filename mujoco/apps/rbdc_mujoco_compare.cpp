@@ -8,6 +8,7 @@
 #include <string>
 
 #include "rbdc/control/command_line.hpp"
+#include "rbdc/control/drive_train.hpp"
 #include "rbdc/mujoco/mujoco_run.hpp"
 #include "rbdc/sim/robot.hpp"
 #include "rbdc/sim/trajectory_csv.hpp"
@@ -71,7 +72,10 @@ int main(int argc, char** argv) {
       return 0;
     }
     std::filesystem::create_directories(cli.out);
-    const Model original = load_robot(cli.urdf);
+    // --rotors: ours with the drive train asked for, MuJoCo with its best approximation, the armature.
+    const ActuatorMode drive_train = parse_actuator_mode(cli.rotors);
+    const Model original = load_trot_robot(cli.urdf, drive_train);
+    if (drive_train != ActuatorMode::None) cli.timing = false;  // the timed generated code has no rotors
 
     mjcf::MjcfOptions mj;
     mj.timestep = cli.sim.dt;
@@ -80,13 +84,13 @@ int main(int argc, char** argv) {
     mj.contact_stiffness = cli.mj_stiffness;
     mj.contact_damping = cli.mj_damping;
     mj.friction = cli.mj_friction;
-    const mjcf::MjModelPtr m = mjcf::load_mjmodel(original, mj);
+    const mjcf::MjModelPtr m = mjcf::load_mjmodel(with_actuator_mode(original, ActuatorMode::Armature), mj);
     // MuJoCo balanced the inertias it found inconsistent: simulate exactly its robot on our side.
     Model balanced = original;
     const std::vector<mjcf::InertiaChange> changes = mjcf::adopt_mujoco_inertias(balanced, m.get());
 
-    std::fprintf(stderr, "rbdc-mujoco-compare: %g s, dt = %g s, MuJoCo %s\n", cli.run.duration,
-                 cli.sim.dt, mj_versionString());
+    std::fprintf(stderr, "rbdc-mujoco-compare: %g s, dt = %g s, rotors %s, MuJoCo %s\n", cli.run.duration,
+                 cli.sim.dt, cli.rotors.c_str(), mj_versionString());
     double wall_ours_runtime = 0;
     const Trajectory ours = run_ours(cli.balanced_inertia ? balanced : original, cli, wall_ours_runtime);
     PdTrotController mujoco_controller(balanced, cli.gait, cli.gains, cli.sim.contact.foot_radius);

@@ -79,6 +79,10 @@ class Writer {
         throw std::invalid_argument("write_mjcf: joint '" + model_.joints[i].name +
                                     "' is neither revolute nor prismatic");
     }
+    if (model_.has_rotors)  // MuJoCo has no rotor bodies: its best approximation is the armature
+      throw std::invalid_argument("write_mjcf: model '" + model_.name +
+                                  "' has geared rotors, which MJCF cannot express; reduce them to "
+                                  "armature first (rbdc::with_actuator_mode(model, ActuatorMode::Armature))");
     for (const Foot& foot : model_.feet)
       if (foot.body < 0 || foot.body >= model_.nb)
         throw std::invalid_argument("write_mjcf: foot '" + foot.name + "' is on body " +
@@ -102,7 +106,9 @@ class Writer {
       if (model_.floating_base) out_ << pad << "  <freejoint name=\"" << j.name << "\"/>\n";
     } else {
       out_ << pad << "  <joint name=\"" << j.name << "\" type=\"" << joint_type(j.type)
-           << "\" axis=\"" << vec(j.axis) << "\" limited=\"false\"/>\n";
+           << "\" axis=\"" << vec(j.axis) << "\" limited=\"false\"";
+      if (j.armature > 0) out_ << " armature=\"" << numbers({j.armature}) << "\"";  // reflected inertia
+      out_ << "/>\n";
     }
     out_ << pad << "  <inertial pos=\"" << vec(b.com) << "\" mass=\"" << numbers({b.mass})
          << "\" fullinertia=\"" << full_inertia(b.inertia_com) << "\"/>\n";

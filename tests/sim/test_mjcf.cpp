@@ -5,6 +5,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "rbdc/actuator_mode.hpp"
+#include "rbdc/control/drive_train.hpp"
 #include "rbdc/kinematics.hpp"
 #include "rbdc/mjcf/mjcf_writer.hpp"
 #include "rbdc/sim/robot.hpp"
@@ -63,5 +65,25 @@ TEST(Mjcf, AdoptedInertiasAreMujocosAndOnlyTheThighsMoved) {
     // Balanced: each principal moment at most the sum of the other two.
     const Vector3 moments = Eigen::SelfAdjointEigenSolver<Matrix3>(c.after).eigenvalues();
     EXPECT_LE(moments[2], moments[0] + moments[1] + 1e-12);
+  }
+}
+
+// Issue 14: MuJoCo gets the drive train as armature (its dof_armature, added to M's diagonal); a
+// model with rotor bodies is refused, naming the reduction to use.
+TEST(Mjcf, ArmatureIsWrittenAndRotorsAreRefused) {
+  const Model full = control::load_trot_robot("", ActuatorMode::Full);
+  try {
+    write_mjcf(full);
+    FAIL() << "rotors written to MJCF";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("ActuatorMode::Armature"), std::string::npos) << e.what();
+  }
+  const Model armature = with_actuator_mode(full, ActuatorMode::Armature);
+  const MjModelPtr m = load_mjmodel(armature);
+  for (int i = 1; i < armature.nb; ++i) {
+    const int dof = m->jnt_dofadr[mj_name2id(m.get(), mjOBJ_JOINT, armature.joints[i].name.c_str())];
+    EXPECT_NEAR(m->dof_armature[dof], armature.joints[i].armature, 1e-12 * armature.joints[i].armature)
+        << armature.joints[i].name;
+    EXPECT_GT(armature.joints[i].armature, 0.002);
   }
 }

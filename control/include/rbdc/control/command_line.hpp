@@ -17,7 +17,7 @@ struct CommandLine {
   sim::RunOptions run;
   std::string urdf;               ///< robot file
   std::string dynamics = "generated";  ///< generated | runtime (falls back to runtime when absent)
-  std::string rotors = "none";    ///< rbdc-sim: full | armature | none (drive_train.hpp)
+  std::string rotors = "none";    ///< full | armature | none (drive_train.hpp)
   std::string out;                ///< CSV output (rbdc-sim) or output directory (comparison)
   double ground_tilt_deg = 0;     ///< ground plane tilt about world x
   // Contact model choices, copied into sim.contact after parsing.

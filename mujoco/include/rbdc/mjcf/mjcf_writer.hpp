@@ -27,7 +27,8 @@ struct MjcfOptions {
 };
 
 /// The MJCF text. Body and joint names are the model's; foot spheres are named after the feet.
-/// Throws std::invalid_argument for a model MuJoCo cannot express (e.g. an unnamed body).
+/// A joint's armature (reflected rotor inertia) becomes its MJCF armature. Throws
+/// std::invalid_argument for a model MuJoCo cannot express (an unnamed body, geared rotors).
 std::string write_mjcf(const Model& model, const MjcfOptions& options = {});
 
 struct MjModelDeleter {
