@@ -80,7 +80,8 @@ double friction_slope(const ContactParameters& p, double v) {
 
 }  // namespace
 
-double implicit_friction(const ContactParameters& p, double u_free, double compliance, double f_normal) {
+double implicit_friction(const ContactParameters& p, double u_free, double compliance, double f_normal,
+                         double guess) {
   if (u_free == 0 || f_normal <= 0) return 0;
   // g(u) = u − u_free + k μ(u), k = compliance f_n: g(0) = −u_free and g(u_free) has the sign of
   // u_free, so [0, u_free] brackets a root (μ need not be monotone when μ_d < μ_s). Newton's steps,
@@ -88,7 +89,9 @@ double implicit_friction(const ContactParameters& p, double u_free, double compl
   const double k = compliance * f_normal;
   const double sign = u_free > 0 ? 1 : -1;
   double lo = 0, hi = std::abs(u_free);  // in |u|: g(lo) < 0 < g(hi)
-  double u = 0;
+  // Start from the slip the guessed force gives, if it is inside the bracket.
+  double u = u_free + compliance * guess;
+  if (!(sign * u > lo && sign * u < hi)) u = 0;
   for (int i = 0; i < 100; ++i) {
     const double g = sign * (u - u_free + k * friction_coefficient(p, u));  // increasing through the root
     if (g < 0) lo = sign * u; else hi = sign * u;

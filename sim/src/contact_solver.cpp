@@ -1,5 +1,6 @@
 #include "rbdc/sim/contact_solver.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -8,12 +9,38 @@ namespace rbdc::sim {
 namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Gauss-Seidel stops when no tangential force moved by more than this fraction of the largest
+// normal force in a sweep (or after the cap): 1e-8 is far below the friction's own resolution.
+constexpr double kSweepTolerance = 1e-8;
+constexpr int kMaxSweeps = 12;
 }  // namespace
+
+void ContactSolver::prepare(DynamicsModel& dyn) {
+  const int nv = dyn.nv(), rows = 3 * dyn.n_feet();
+  if (ltdl_ && ltdl_->size() == nv && JC_.rows() == rows) return;
+  ltdl_.emplace(dyn.dof_parents());
+  M_.setZero(nv, nv);
+  J_.setZero(rows, nv);
+  Jw_.setZero(rows, nv);
+  JC_.setZero(rows, nv);
+  JT_.setZero(2 * dyn.n_feet(), nv);
+  Y_.setZero(nv, 2 * dyn.n_feet());
+  DY_.setZero(nv, 2 * dyn.n_feet());
+  Phi_.setZero(2 * dyn.n_feet(), 2 * dyn.n_feet());
+  f_.setZero(2 * dyn.n_feet());
+  u_base_.setZero(2 * dyn.n_feet());
+  rhs_.setZero(nv);
+  impulse_.setZero(nv);
+  last_friction_.setZero(2, dyn.n_feet());
+  active_.reserve(static_cast<size_t>(dyn.n_feet()));
+}
 
 void ContactSolver::accelerations(DynamicsModel& dyn, const ContactParameters& p, const GroundPlane& ground,
                                   double dt, const VectorX& q, const Eigen::Ref<const VectorX>& v,
                                   const VectorX& tau, Matrix3X& p_feet, Matrix3X& v_feet,
                                   std::vector<FootContact>& contacts, Matrix3X& f_feet, VectorX& a) {
+  prepare(dyn);
   const int n_feet = dyn.n_feet(), nv = dyn.nv();
   dyn.feet_state(q.data(), v.data(), p_feet.data(), v_feet.data());
   const Vector3 n = ground.normal();
@@ -28,6 +55,8 @@ void ContactSolver::accelerations(DynamicsModel& dyn, const ContactParameters& p
     if (contacts[k].active) active_.push_back(k);
   }
   const bool legacy = !p.at_contact_point && p.friction_update == FrictionUpdate::Explicit;
+  for (int k = 0; k < n_feet; ++k)
+    if (!contacts[k].active) last_friction_.col(k).setZero();
   if (active_.empty() || legacy) {  // forces at the foot points: the generated forward dynamics
     for (int k : active_) f_feet.col(k) = contacts[k].force_W;
     const Clock::time_point start = timing ? Clock::now() : Clock::time_point{};
@@ -35,71 +64,98 @@ void ContactSolver::accelerations(DynamicsModel& dyn, const ContactParameters& p
     if (timing) dynamics_seconds += since(start);
     return;
   }
-  // Contact-point Jacobian rows in contact-frame coordinates: R_Cᵀ (J_fk − [d]× J_ω,k).
-  Clock::time_point start = timing ? Clock::now() : Clock::time_point{};
+  const Clock::time_point start = timing ? Clock::now() : Clock::time_point{};
   dyn.mass_matrix(q.data(), M_);
-  llt_.compute(M_);
+  ltdl_->factorise(M_);
   dyn.feet_jacobian(q.data(), J_);
+  dyn.bias_forces(q.data(), v.data(), rhs_.data());
   if (timing) dynamics_seconds += since(start);
+  // Contact-point Jacobian rows in contact-frame coordinates: R_Cᵀ (J_fk − [d]× J_ω,k).
   const int m = static_cast<int>(active_.size());
-  JC_.resize(3 * m, nv);
+  const Matrix3 C_R_W = ground.W_R_C().transpose();
   for (int i = 0; i < m; ++i) {
     const int k = active_[static_cast<size_t>(i)];
-    JC_.middleRows<3>(3 * i) = J_.middleRows<3>(3 * k);
-    if (p.at_contact_point) JC_.middleRows<3>(3 * i) -= skew(d) * Jw_.middleRows<3>(3 * k);
-    JC_.middleRows<3>(3 * i) = ground.W_R_C().transpose() * JC_.middleRows<3>(3 * i);
+    for (int c = 0; c < nv; ++c) {
+      Vector3 column = J_.block<3, 1>(3 * k, c);
+      if (p.at_contact_point) column -= d.cross(Jw_.block<3, 1>(3 * k, c));
+      JC_.block<3, 1>(3 * i, c).noalias() = C_R_W * column;
+    }
   }
-  if (timing) start = Clock::now();
-  X_ = JC_.transpose();
-  llt_.solveInPlace(X_);  // M⁻¹ J_Cᵀ
-  rhs_.resize(nv);
-  dyn.bias_forces(q.data(), v.data(), rhs_.data());
+  // The known forces (the explicit normal ones, and the explicit friction when asked for) go into
+  // a₁ = M⁻¹(Sᵀτ − c − g + J_Cᵀ f_known); only the implicit friction is left to solve for.
+  const bool implicit = p.friction_update == FrictionUpdate::Implicit;
   rhs_ = -rhs_;
   rhs_.tail(nv - 6) += tau;
-  llt_.solveInPlace(rhs_);
-  a = rhs_;  // a₀
-  if (timing) dynamics_seconds += since(start);
-  f_.resize(3 * m);
-  for (int i = 0; i < m; ++i) f_.segment<3>(3 * i) = contacts[active_[static_cast<size_t>(i)]].force_C;
-  if (p.friction_update == FrictionUpdate::Implicit) {
-    Phi_.noalias() = JC_ * X_;
-    u_base_.noalias() = JC_ * (v + dt * a);
-    implicit_friction_sweeps(p, dt);
-  }
-  a.noalias() += X_ * f_;
   for (int i = 0; i < m; ++i) {
-    FootContact& c = contacts[active_[static_cast<size_t>(i)]];
-    c.force_C = f_.segment<3>(3 * i);
+    Vector3 known = contacts[active_[static_cast<size_t>(i)]].force_C;
+    if (implicit) known.head<2>().setZero();
+    rhs_.noalias() += JC_.middleRows<3>(3 * i).transpose() * known;
+  }
+  ltdl_->solve_lt(rhs_);
+  ltdl_->solve_dinv_l(rhs_);
+  a = rhs_;
+  if (implicit) {
+    const int rows = 2 * m;  // tangential rows x, y of each foot in contact
+    for (int i = 0; i < m; ++i) JT_.middleRows<2>(2 * i) = JC_.middleRows<2>(3 * i);
+    const auto JT = JT_.topRows(rows);
+    auto Y = Y_.leftCols(rows);
+    Y = JT.transpose();
+    ltdl_->solve_lt(Y);  // Y = L⁻ᵀ J_Tᵀ
+    auto DY = DY_.leftCols(rows);
+    DY = ltdl_->inverse_pivots().asDiagonal() * Y;
+    for (int c = 0; c < rows; ++c)  // Φ = J_T M⁻¹ J_Tᵀ = Yᵀ D⁻¹ Y, symmetric
+      for (int r = 0; r <= c; ++r) Phi_(r, c) = Phi_(c, r) = DY.col(r).dot(Y.col(c));
+    rhs_ = v + dt * a;
+    for (int r = 0; r < rows; ++r) u_base_[r] = JT.row(r).dot(rhs_);  // J_T (v + dt a₁)
+    implicit_friction_sweeps(p, dt, contacts);
+    impulse_.setZero();
+    for (int r = 0; r < rows; ++r) impulse_ += f_[r] * Y.col(r);  // L⁻ᵀ J_Tᵀ f_t
+    ltdl_->solve_dinv_l(impulse_);
+    a += impulse_;  // a₁ + M⁻¹ J_Tᵀ f_t
+    for (int i = 0; i < m; ++i) contacts[active_[static_cast<size_t>(i)]].force_C.head<2>() = f_.segment<2>(2 * i);
+  }
+  for (int k : active_) {
+    FootContact& c = contacts[k];
     c.force_W = ground.W_R_C() * c.force_C;
-    f_feet.col(active_[static_cast<size_t>(i)]) = c.force_W;
+    f_feet.col(k) = c.force_W;
   }
 }
 
-void ContactSolver::implicit_friction_sweeps(const ContactParameters& p, double dt) {
-  const int m = static_cast<int>(active_.size());
-  for (int i = 0; i < m; ++i) f_.segment<2>(3 * i).setZero();
+void ContactSolver::implicit_friction_sweeps(const ContactParameters& p, double dt,
+                                             const std::vector<FootContact>& contacts) {
+  const int m = static_cast<int>(active_.size()), rows = 2 * m;
+  double largest_normal = 0;
+  for (int i = 0; i < m; ++i) {
+    f_.segment<2>(2 * i) = last_friction_.col(active_[static_cast<size_t>(i)]);  // warm start
+    largest_normal = std::max(largest_normal, contacts[active_[static_cast<size_t>(i)]].force_C.z());
+  }
   // Gauss-Seidel: each foot sees the others' latest friction through Φ's off-diagonal blocks.
-  for (int sweep = 0; sweep < 12; ++sweep) {
+  for (int sweep = 0; sweep < kMaxSweeps; ++sweep) {
+    double change = 0;
     for (int i = 0; i < m; ++i) {
-      const double f_n = f_[3 * i + 2];
+      const double f_n = contacts[active_[static_cast<size_t>(i)]].force_C.z();
+      const Eigen::Vector2d previous = f_.segment<2>(2 * i);
       // Slip velocity one step ahead without this foot's friction.
-      Eigen::Vector2d u_free = u_base_.segment<2>(3 * i) - dt * Phi_.block<2, 2>(3 * i, 3 * i) * f_.segment<2>(3 * i);
-      for (int j = 0; j < 3 * m; ++j) u_free += dt * f_[j] * Phi_.block<2, 1>(3 * i, j);
+      Eigen::Vector2d u_free = u_base_.segment<2>(2 * i) - dt * Phi_.block<2, 2>(2 * i, 2 * i) * previous;
+      for (int j = 0; j < rows; ++j) u_free += (dt * f_[j]) * Phi_.block<2, 1>(2 * i, j);
       if (p.friction == FrictionModel::PerAxis) {
         for (int axis = 0; axis < 2; ++axis) {
-          const int r = 3 * i + axis;
-          f_[r] = implicit_friction(p, u_free[axis], dt * Phi_(r, r), f_n);
+          const int r = 2 * i + axis;
+          f_[r] = implicit_friction(p, u_free[axis], dt * Phi_(r, r), f_n, previous[axis]);
           if (axis == 0) u_free[1] += dt * Phi_(r + 1, r) * f_[r];  // x's friction moves y's slip
         }
       } else {
         const double slip = u_free.norm();
-        const double compliance = 0.5 * dt * (Phi_(3 * i, 3 * i) + Phi_(3 * i + 1, 3 * i + 1));
-        f_.segment<2>(3 * i) =
-            slip > 0 ? Eigen::Vector2d(implicit_friction(p, slip, compliance, f_n) / slip * u_free)
+        const double compliance = 0.5 * dt * (Phi_(2 * i, 2 * i) + Phi_(2 * i + 1, 2 * i + 1));
+        f_.segment<2>(2 * i) =
+            slip > 0 ? Eigen::Vector2d(implicit_friction(p, slip, compliance, f_n, previous.dot(u_free) / slip) / slip * u_free)
                      : Eigen::Vector2d::Zero();
       }
+      change = std::max(change, (f_.segment<2>(2 * i) - previous).cwiseAbs().maxCoeff());
     }
+    if (change <= kSweepTolerance * largest_normal) break;
   }
+  for (int i = 0; i < m; ++i) last_friction_.col(active_[static_cast<size_t>(i)]) = f_.segment<2>(2 * i);
 }
 
 }  // namespace rbdc::sim

@@ -3,6 +3,7 @@
 #include "mini_cheetah/full.hpp"
 #include "rbdc/sim/dynamics.hpp"
 #include "rbdc/sim/feet_angular.hpp"
+#include "rbdc/sim/tree_ltdl.hpp"
 #include "rbdc/sim/robot.hpp"
 
 namespace rbdc::sim {
@@ -13,7 +14,8 @@ namespace gen = rbdc_gen::mini_cheetah::full;
 class GeneratedDynamics final : public DynamicsModel {
  public:
   // The angular rows need only the joint frames; they come from the URDF the code was generated from.
-  GeneratedDynamics() : angular_(load_robot(default_urdf())) {}
+  GeneratedDynamics() : GeneratedDynamics(load_robot(default_urdf())) {}
+  explicit GeneratedDynamics(const Model& model) : angular_(model), dof_parents_(rbdc::sim::dof_parents(model)) {}
   int nq() const override { return gen::nq; }
   int nv() const override { return gen::nv; }
   int n_feet() const override { return gen::n_feet; }
@@ -42,9 +44,11 @@ class GeneratedDynamics final : public DynamicsModel {
     J = J_;
   }
   void feet_angular_jacobian(const double* q, MatrixX& Jw) override { angular_.compute(q, Jw); }
+  const std::vector<int>& dof_parents() const override { return dof_parents_; }
 
  private:
   FeetAngularJacobian angular_;
+  std::vector<int> dof_parents_;
   gen::MassMatrix<double> M_;
   gen::FeetJacobian<double> J_;
 };

@@ -8,6 +8,7 @@
 #include "rbdc/kinematics.hpp"
 #include "rbdc/sim/dynamics.hpp"
 #include "rbdc/sim/feet_angular.hpp"
+#include "rbdc/sim/tree_ltdl.hpp"
 
 namespace rbdc::sim {
 namespace {
@@ -15,7 +16,7 @@ namespace {
 class RuntimeDynamics final : public DynamicsModel {
  public:
   explicit RuntimeDynamics(const Model& model)
-      : model_(model), data_(model_), angular_(model_), f_(Matrix3X::Zero(3, static_cast<int>(model.feet.size()))) {}
+      : model_(model), data_(model_), angular_(model_), dof_parents_(rbdc::sim::dof_parents(model_)), f_(Matrix3X::Zero(3, static_cast<int>(model.feet.size()))) {}
 
   int nq() const override { return model_.nq; }
   int nv() const override { return model_.nv; }
@@ -48,11 +49,13 @@ class RuntimeDynamics final : public DynamicsModel {
     J = rbdc::feet_jacobian(model_, data_, Eigen::Map<const VectorX>(q, model_.nq));
   }
   void feet_angular_jacobian(const double* q, MatrixX& Jw) override { angular_.compute(q, Jw); }
+  const std::vector<int>& dof_parents() const override { return dof_parents_; }
 
  private:
   Model model_;
   Data data_;
   FeetAngularJacobian angular_;
+  std::vector<int> dof_parents_;
   Matrix3X f_;  // forward_dynamics takes a Matrix3X, not a map
 };
 

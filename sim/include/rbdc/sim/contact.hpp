@@ -80,7 +80,10 @@ FootContact foot_contact(const ContactParameters& p, const GroundPlane& ground, 
 
 /// Friction of one tangential axis stepped implicitly: the f solving f = −μ(u) f_n with
 /// u = u_free + compliance · f, where u_free is the slip velocity the step would reach without this
-/// friction and compliance = dt (J M⁻¹ Jᵀ)_ii > 0. The root lies between 0 and u_free.
-double implicit_friction(const ContactParameters& p, double u_free, double compliance, double f_normal);
+/// friction and compliance = dt (J M⁻¹ Jᵀ)_ii > 0. The root lies between 0 and u_free. Newton's
+/// iteration starts from the slip of the force `guess` (e.g. the previous sweep's) when that lies
+/// inside.
+double implicit_friction(const ContactParameters& p, double u_free, double compliance, double f_normal,
+                         double guess = 0);
 
 }  // namespace rbdc::sim

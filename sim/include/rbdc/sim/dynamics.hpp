@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "rbdc/model.hpp"
 
@@ -30,6 +31,8 @@ class DynamicsModel {
   virtual void feet_jacobian(const double* q, MatrixX& J) = 0;
   /// Angular rows of the foot bodies (3·n_feet × nv, world), feet_angular.hpp.
   virtual void feet_angular_jacobian(const double* q, MatrixX& Jw) = 0;
+  /// λ over degrees of freedom (tree_ltdl.hpp): the sparsity of M's factor.
+  virtual const std::vector<int>& dof_parents() const = 0;
   virtual std::string name() const = 0;
 };
 
