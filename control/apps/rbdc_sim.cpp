@@ -24,16 +24,18 @@ int main(int argc, char** argv) {
     }
     const ActuatorMode drive_train = parse_actuator_mode(cli.rotors);
     const Model model = load_trot_robot(cli.urdf, drive_train);
-    if (drive_train != ActuatorMode::None && cli.dynamics == "generated") {
-      std::fprintf(stderr, "rbdc-sim: --rotors %s runs on the runtime dynamics: add --dynamics runtime\n",
-                   cli.rotors.c_str());
+    if (drive_train == ActuatorMode::Armature && cli.dynamics == "generated") {
+      std::fprintf(stderr, "rbdc-sim: --rotors armature has no generated dynamics (no bundled scene with "
+                           "actuators: armature): add --dynamics runtime\n");
       return 1;
     }
     std::unique_ptr<DynamicsModel> dynamics;
-    if (cli.dynamics == "generated")
-      dynamics = make_generated_dynamics();
-    else
+    if (cli.dynamics == "runtime")
       dynamics = make_runtime_dynamics(model);
+    else if (drive_train == ActuatorMode::Full)
+      dynamics = make_generated_rotor_dynamics();
+    else
+      dynamics = make_generated_dynamics();
     if (dynamics->nq() != model.nq || dynamics->n_feet() != static_cast<int>(model.feet.size())) {
       std::fprintf(stderr, "rbdc-sim: the %s dynamics do not match the robot in the URDF\n",
                    dynamics->name().c_str());

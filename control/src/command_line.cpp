@@ -74,7 +74,7 @@ std::vector<Option> options(Program program, CommandLine& c) {
                   [&c = c] { return std::string(to_string(c.sim.state)); }});
   list.push_back({"--rotors", "full|armature|none",
                   "the drive train: MIT's rotors as bodies (full), as reflected inertia on M's diagonal "
-                  "(armature), or none (paper 000); rbdc-sim: full and armature need --dynamics runtime; "
+                  "(armature), or none (paper 000); rbdc-sim: armature needs --dynamics runtime; "
                   "rbdc-mujoco-compare: MuJoCo gets the armature",
                   [&c = c](const std::string& t) {
                     if (t != "full" && t != "armature" && t != "none")

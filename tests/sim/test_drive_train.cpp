@@ -1,8 +1,10 @@
 // rbdc-sim --rotors (control/drive_train.hpp): the trot robot with MIT's rotors as bodies, reduced to
-// armature, or without them, and a short PD trot on the rotor model.
+// armature, or without them; the generated rotor dynamics against the runtime; a short PD trot on the
+// rotor model.
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -48,6 +50,46 @@ TEST(DriveTrain, AUrdfWithoutRotorOverlayIsRefused) {
     FAIL() << "no exception";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("arm7_rotors.topology.yaml"), std::string::npos) << e.what();
+  }
+}
+
+// The simulator's generated rotor dynamics (generated/mini_cheetah_rotors) against the runtime on the
+// same rotor model, at random states: forward dynamics, M, c + g and the feet.
+TEST(DriveTrain, GeneratedRotorDynamicsEqualTheRuntime) {
+  const Model model = control::load_trot_robot("", ActuatorMode::Full);
+  const std::unique_ptr<sim::DynamicsModel> generated = sim::make_generated_rotor_dynamics();
+  const std::unique_ptr<sim::DynamicsModel> runtime = sim::make_runtime_dynamics(model);
+  ASSERT_EQ(generated->nq(), model.nq);
+  std::mt19937 rng(14);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto random = [&](Eigen::Index n, double scale) {
+    VectorX x(n);
+    for (Eigen::Index k = 0; k < n; ++k) x[k] = scale * u(rng);
+    return x;
+  };
+  const auto relative = [](const MatrixX& a, const MatrixX& b) { return (a - b).norm() / b.norm(); };
+  for (int trial = 0; trial < 5; ++trial) {
+    VectorX q = random(model.nq, 1.0);
+    q.segment<4>(3).normalize();
+    const VectorX v = random(model.nv, 3.0), tau = random(model.nv - 6, 5.0);
+    const VectorX f = random(3 * static_cast<Eigen::Index>(model.feet.size()), 30.0);
+    VectorX a_gen(model.nv), a_run(model.nv), h_gen(model.nv), h_run(model.nv);
+    generated->forward_dynamics(q.data(), v.data(), tau.data(), f.data(), a_gen.data());
+    runtime->forward_dynamics(q.data(), v.data(), tau.data(), f.data(), a_run.data());
+    EXPECT_LT(relative(a_gen, a_run), 1e-12);
+    generated->bias_forces(q.data(), v.data(), h_gen.data());
+    runtime->bias_forces(q.data(), v.data(), h_run.data());
+    EXPECT_LT(relative(h_gen, h_run), 1e-12);
+    MatrixX M_gen, M_run;
+    generated->mass_matrix(q.data(), M_gen);
+    runtime->mass_matrix(q.data(), M_run);
+    EXPECT_LT(relative(M_gen, M_run), 1e-12);
+    const Eigen::Index n = 3 * static_cast<Eigen::Index>(model.feet.size());
+    VectorX p_gen(n), p_run(n), pd_gen(n), pd_run(n);
+    generated->feet_state(q.data(), v.data(), p_gen.data(), pd_gen.data());
+    runtime->feet_state(q.data(), v.data(), p_run.data(), pd_run.data());
+    EXPECT_LT(relative(p_gen, p_run), 1e-12);
+    EXPECT_LT(relative(pd_gen, pd_run), 1e-12);
   }
 }
 

@@ -42,4 +42,8 @@ std::unique_ptr<DynamicsModel> make_runtime_dynamics(const Model& model);
 /// Dynamics from generated/mini_cheetah/full.hpp (every build has them).
 std::unique_ptr<DynamicsModel> make_generated_dynamics();
 
+/// Dynamics from generated/mini_cheetah_rotors/full.hpp: the Mini Cheetah with MIT's twelve rotors as
+/// bodies (robots/mini_cheetah_rotors.topology.yaml; rbdc-sim --rotors full).
+std::unique_ptr<DynamicsModel> make_generated_rotor_dynamics();
+
 }  // namespace rbdc::sim
