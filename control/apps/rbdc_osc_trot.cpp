@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "rbdc/control/drive_train.hpp"
 #include "rbdc/control/trot_experiment.hpp"
 #include "rbdc/sim/robot.hpp"
 
@@ -24,14 +25,16 @@ struct Options {
                                             StanceControl::HipTorque};
   ExperimentOptions experiment;
   std::string out;
+  bool rotors = false;  ///< the plant with MIT's rotors (the controller's recursions stay without)
 };
 
 const char* kUsage =
     "usage: rbdc-osc-trot [--controller osc|osc-open|raibert|all] [--duration S] [--speed M/S]\n"
-    "                     [--control-period S] [--set NAME=VALUE]... [--out DIR]\n"
+    "                     [--control-period S] [--set NAME=VALUE]... [--out DIR] [--rotors full|none]\n"
     "Runs the Mini Cheetah trot under each controller and reports roll/pitch tracking during\n"
     "stance, falls and the controller's cost per call. --out writes DIR/<controller>.csv traces\n"
-    "and DIR/summary.md.\n";
+    "and DIR/summary.md. --rotors full simulates the robot with MIT's twelve rotors as bodies\n"
+    "(generated/mini_cheetah_rotors); the controllers' trunk recursions do not model them.\n";
 
 double number(const char* option, const char* text) {
   char* end = nullptr;
@@ -82,6 +85,10 @@ Options parse(int argc, char** argv) {
       set_assignment(o.experiment.trot, value);
     } else if (arg == "--out") {
       o.out = value;
+    } else if (arg == "--rotors") {
+      if (std::strcmp(value, "full") != 0 && std::strcmp(value, "none") != 0)
+        throw std::invalid_argument(std::string("--rotors: expected full or none, got '") + value + "'");
+      o.rotors = std::strcmp(value, "full") == 0;
     } else {
       throw std::invalid_argument("unknown option '" + arg + "'");
     }
@@ -109,8 +116,9 @@ std::string row(StanceControl control, const ExperimentResult& r) {
 int main(int argc, char** argv) {
   try {
     Options o = parse(argc, argv);
-    const Model model = sim::load_robot(sim::default_urdf());
-    std::unique_ptr<sim::DynamicsModel> dynamics = sim::make_generated_dynamics();
+    const Model model = load_trot_robot("", o.rotors ? ActuatorMode::Full : ActuatorMode::None);
+    std::unique_ptr<sim::DynamicsModel> dynamics =
+        o.rotors ? sim::make_generated_rotor_dynamics() : sim::make_generated_dynamics();
     if (!o.out.empty()) std::filesystem::create_directories(o.out);
     const TrotParameters& trot = o.experiment.trot;
     char header[512];
