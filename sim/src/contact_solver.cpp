@@ -135,16 +135,19 @@ void ContactSolver::implicit_friction_sweeps(const ContactParameters& p, double 
     for (int i = 0; i < m; ++i) {
       const double f_n = contacts[active_[static_cast<size_t>(i)]].force_C.z();
       const Eigen::Vector2d previous = f_.segment<2>(2 * i);
-      // Slip velocity one step ahead without this foot's friction.
-      Eigen::Vector2d u_free = u_base_.segment<2>(2 * i) - dt * Phi_.block<2, 2>(2 * i, 2 * i) * previous;
-      for (int j = 0; j < rows; ++j) u_free += (dt * f_[j]) * Phi_.block<2, 1>(2 * i, j);
       if (p.friction == FrictionModel::PerAxis) {
-        for (int axis = 0; axis < 2; ++axis) {
-          const int r = 2 * i + axis;
-          f_[r] = implicit_friction(p, u_free[axis], dt * Phi_(r, r), f_n, previous[axis]);
-          if (axis == 0) u_free[1] += dt * Phi_(r + 1, r) * f_[r];  // x's friction moves y's slip
+        // Each axis sees every other force's latest value, its own foot's other axis included:
+        // leaving Φ_xy f_y out of the x equation stalled the sweeps short of the root, and a
+        // four-foot stance crept at 0.07 mm/s.
+        for (int r = 2 * i; r < 2 * i + 2; ++r) {
+          double u_free = u_base_[r] - dt * Phi_(r, r) * f_[r];  // slip one step ahead without f_r
+          for (int j = 0; j < rows; ++j) u_free += dt * Phi_(r, j) * f_[j];
+          f_[r] = implicit_friction(p, u_free, dt * Phi_(r, r), f_n, f_[r]);
         }
       } else {
+        // Slip velocity one step ahead without this foot's friction.
+        Eigen::Vector2d u_free = u_base_.segment<2>(2 * i) - dt * Phi_.block<2, 2>(2 * i, 2 * i) * previous;
+        for (int j = 0; j < rows; ++j) u_free += (dt * f_[j]) * Phi_.block<2, 1>(2 * i, j);
         const double slip = u_free.norm();
         const double compliance = 0.5 * dt * (Phi_(2 * i, 2 * i) + Phi_(2 * i + 1, 2 * i + 1));
         f_.segment<2>(2 * i) =
