@@ -30,9 +30,13 @@ __attribute__((noinline)) void hot_quadratic_velocity_terms(const double* q, con
 __attribute__((noinline)) void hot_gravity_terms(const double* q, const double*, const double*, double* out) {
   g::gravity_terms(q, out);
 }
-#ifdef RBDC_HOT_HAS_BIAS
+#ifdef RBDC_HOT_HAS_STRUCTURED_OUTPUTS  // generated code from before bias and the factor lacks them
 __attribute__((noinline)) void hot_bias(const double* q, const double* v, const double*, double* out) {
   g::bias(q, v, out);
+}
+__attribute__((noinline)) void hot_mass_matrix_factor(const double* q, const double*, const double*,
+                                                       double* out) {
+  g::mass_matrix_factor(q, out, out + g::nv * g::nv, out + g::nv * (g::nv + 1));
 }
 #endif
 }
@@ -43,8 +47,8 @@ static const Entry entries[] = {
     {"inverse_dynamics", hot_inverse_dynamics}, {"mass_matrix", hot_mass_matrix},
     {"forward_dynamics", hot_forward_dynamics},
     {"quadratic_velocity_terms", hot_quadratic_velocity_terms}, {"gravity_terms", hot_gravity_terms},
-#ifdef RBDC_HOT_HAS_BIAS
-    {"bias", hot_bias},
+#ifdef RBDC_HOT_HAS_STRUCTURED_OUTPUTS
+    {"bias", hot_bias}, {"mass_matrix_factor", hot_mass_matrix_factor},
 #endif
 };
 

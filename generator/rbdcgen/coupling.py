@@ -13,16 +13,16 @@ from dataclasses import replace
 
 from . import expr as ex
 from .algorithms.crba import mass_matrix
-from .algorithms.forward_dynamics import ltdl, ltdl_solve
+from .algorithms.forward_dynamics import factor_outputs, ltdl, ltdl_solve
 from .algorithms.rnea import bias_minus_external
 from .errors import RbdcError
 
 # Output names whose rows (resp. columns) are velocity coordinates: Gᵀ from the left (resp. G from
 # the right). Positions and velocities of points need nothing.
-_ROWS_IN_V = {"c", "g", "tau_e", "tau", "M"}
+_ROWS_IN_V = {"c", "g", "cg", "tau_e", "tau", "M"}
 _COLS_IN_V = {"J", "M"}
 _PROJECTED = {"feet_positions", "feet_velocities", "feet_jacobian", "quadratic_velocity_terms",
-              "gravity_terms", "feet_force_terms", "inverse_dynamics", "mass_matrix"}
+              "gravity_terms", "bias", "feet_force_terms", "inverse_dynamics", "mass_matrix"}
 
 
 def _root(robot):
@@ -105,6 +105,8 @@ def traced_values(robot, name, m, build, output_specs):
         return build(m)
     if name == "forward_dynamics":
         return {"a": _forward_dynamics(robot, m)}
+    if name == "mass_matrix_factor":
+        return _mass_matrix_factor(robot, m)
     if name not in _PROJECTED:
         raise RbdcError("robot '%s': %s is not supported with mimic couplings (%d coupled joints); "
                         "load the mimic joints locked (--lock-mimic) or independent (--independent-mimic)"
@@ -121,19 +123,35 @@ def traced_values(robot, name, m, build, output_specs):
     return values
 
 
-def _forward_dynamics(robot, m):
-    """a' = M'⁻¹(S'ᵀτ' − Gᵀ(c + g − τ_e)) with M' = Gᵀ M G, factorised densely (couplings join
-    branches, so M' has no tree sparsity to exploit)."""
-    tree = tree_view(robot)
-    g = _g_columns(robot)
-    nv, n = tree.nv, robot.nv
+def _projected_mass_matrix(robot, m):
+    """M' = Gᵀ M G as rows."""
+    nv, n = tree_view(robot).nv, robot.nv
     M = mass_matrix(m)
     M_flat = tuple(M[r][c] for c in range(nv) for r in range(nv))
-    projected = _project(M_flat, nv, nv, True, True, g, n)
-    M_ind = [[projected[c * n + r] for c in range(n)] for r in range(n)]
-    bias = _project(tuple(bias_minus_external(m)), nv, 1, True, False, g, n)
+    projected = _project(M_flat, nv, nv, True, True, g=_g_columns(robot), n=n)
+    return [[projected[c * n + r] for c in range(n)] for r in range(n)]
+
+
+def _dense_chain(n):
+    """Each dof's parent is the previous one: couplings join branches, so M' has no tree
+    sparsity to exploit and is factorised densely."""
+    return list(range(-1, n - 1))
+
+
+def _mass_matrix_factor(robot, m):
+    """M' = Lᵀ D L, dense."""
+    chain = _dense_chain(robot.nv)
+    return factor_outputs(*ltdl(_projected_mass_matrix(robot, m), chain), chain)
+
+
+def _forward_dynamics(robot, m):
+    """a' = M'⁻¹(S'ᵀτ' − Gᵀ(c + g − τ_e)) with M' = Gᵀ M G, factorised densely."""
+    tree = tree_view(robot)
+    nv, n = tree.nv, robot.nv
+    M_ind = _projected_mass_matrix(robot, m)
+    bias = _project(tuple(bias_minus_external(m)), nv, 1, True, False, _g_columns(robot), n)
     root = robot.root_dofs
     rhs = [-b for b in bias[:root]] + [m.tau[k - root] - bias[k] for k in range(root, n)]
-    chain = list(range(-1, n - 1))  # dense: each dof's parent is the previous one
+    chain = _dense_chain(n)
     L, inv_diag = ltdl(M_ind, chain)
     return tuple(ltdl_solve(L, inv_diag, chain, rhs))

@@ -123,10 +123,14 @@ class _Tally:
                 self.mv6()                         # X_upᵀ F up to the trunk
         self.mm6(sum(1 for i in range(1, robot.nb) if robot.parent[i] != 0))  # X_0^i
 
-    def cholesky_solve(self, n):
-        """Dense LLᵀ (n³/6) and two triangular solves (n² each)."""
+    def cholesky_factor(self, n):
+        """Dense LLᵀ (n³/6)."""
         cubic = n * n * n // 6
         self.add(cubic, cubic, div=n * (n - 1) // 2, sqrt=n)
+
+    def cholesky_solve(self, n):
+        """Dense LLᵀ and two triangular solves (n² each)."""
+        self.cholesky_factor(n)
         self.add(n * n, n * n, div=2 * n)
 
     def foot_wrenches(self, robot, nf):
@@ -203,12 +207,15 @@ def generic_ops(robot, scene, name):
         t.world_transforms(robot)
         t.foot_wrenches(robot, nf)
         t.inward(robot)
-    elif name == "inverse_dynamics":
+    elif name in ("inverse_dynamics", "bias"):   # the runtime's bias is inverse dynamics at a = 0
         t.base_rotation(robot)
         t.velocities(robot)
         t.rnea(robot, True, True)
     elif name == "mass_matrix":
         t.crba(robot)
+    elif name == "mass_matrix_factor":
+        t.crba(robot)
+        t.cholesky_factor(nv)
     elif name == "forward_dynamics":
         t.base_rotation(robot)
         t.crba(robot)

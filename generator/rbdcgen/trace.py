@@ -104,6 +104,11 @@ def _spec(robot, nf):
             "Gravity terms g (paper 000 Alg. 3).", ("q",),
             [("g", nv, 1, "gravity terms")],
             lambda m: {"g": rnea.gravity_terms(m)}),
+        "bias": (
+            "Bias c + g in one pass (inverse dynamics at a = 0, without the acceleration terms).",
+            ("q", "v"),
+            [("cg", nv, 1, "quadratic velocity and gravity terms c + g")],
+            lambda m: {"cg": rnea.bias(m)}),
         "feet_force_terms": (
             "Generalised forces of the world foot forces (paper 000 Alg. 4).", ("q", "f"),
             [("tau_e", nv, 1, "τ_e = Jᵀ f")],
@@ -116,6 +121,14 @@ def _spec(robot, nf):
             "Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).", ("q",),
             [("M", nv, nv, "mass matrix, full symmetric")],
             lambda m: {"M": _matrix(crba.mass_matrix(m), nv)}),
+        "mass_matrix_factor": (
+            "M = Lᵀ D L over the tree's dofs (CRBA + the sparse factorisation forward_dynamics uses).",
+            ("q",),
+            [("L", nv, nv, "unit lower triangular; zero except at each dof's ancestors in the tree"),
+             ("D", nv, 1, "pivots, the diagonal of D"),
+             ("D_inv", nv, 1, "their inverses, so that a solve multiplies")],
+            lambda m: forward_dynamics.factor_outputs(*forward_dynamics.mass_matrix_factor(m),
+                                                      forward_dynamics.dof_parents(m.robot))),
         "forward_dynamics": (
             "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).",
             ("q", "v", "tau", "f"),

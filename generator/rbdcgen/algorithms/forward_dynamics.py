@@ -63,14 +63,34 @@ def ltdl_solve(L, inv_diag, parents, b):
     return x
 
 
+def factor_outputs(L, inv_diag, parents):
+    """The factor as outputs: L (unit lower triangular, zero off the dof tree's ancestor entries),
+    its pivots D and their inverses D⁻¹ (computed once by ltdl; a solve multiplies by them)."""
+    n = len(L)
+    zero, one = ex.const(0.0), ex.const(1.0)
+    rows = [[one if c == r else zero for c in range(n)] for r in range(n)]
+    for r in range(n):
+        c = parents[r]
+        while c != -1:
+            rows[r][c] = L[r][c]
+            c = parents[c]
+    return {"L": tuple(rows[r][c] for c in range(n) for r in range(n)),
+            "D": tuple(L[k][k] for k in range(n)), "D_inv": tuple(inv_diag)}
+
+
+def mass_matrix_factor(m):
+    """M = Lᵀ D L over the dof tree, M from the CRBA: (L with the pivots on its diagonal, D⁻¹)."""
+    H = mass_matrix(m)
+    m.mark("factorisation M = LᵀDL")
+    return ltdl(H, dof_parents(m.robot))
+
+
 def forward_dynamics(m):
     robot = m.robot
     bias = bias_minus_external(m)                   # c + g − τ_e
     rhs = [-b for b in bias[:robot.root_dofs]]      # unactuated trunk: Sᵀτ has zeros there
     rhs += [m.tau[i - 1] - bias[robot.joints[i].v_index] for i in range(1, robot.nb)]
     parents = dof_parents(robot)
-    H = mass_matrix(m)
-    m.mark("factorisation M = LᵀDL")
-    L, inv_diag = ltdl(H, parents)
+    L, inv_diag = mass_matrix_factor(m)
     m.mark("solve LᵀDL a = τ + τ_e − c − g")
     return tuple(ltdl_solve(L, inv_diag, parents, rhs))

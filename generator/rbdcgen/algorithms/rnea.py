@@ -139,6 +139,11 @@ def base_acceleration(m, trunk_acceleration):
     return sp.vadd(sp.vadd(trunk_acceleration, velocity_bias(m)), gravity_acceleration(m))
 
 
+def bias(m):
+    """c + g in one pass: inverse dynamics at a = 0, the accelerations' terms never traced."""
+    return rnea(m, base_acceleration(m, sp.zeros(6)), None, True)
+
+
 def inverse_dynamics(m):
     """M a + c + g: Alg. 2 and 3 with the accelerations added (paper 000 Eq. 29), plus each joint's
     armature: τ_i += armature_i q̈_i (reflected inertia on M's diagonal only)."""

@@ -57,6 +57,19 @@ def inverse(a):
     return transpose(solve(a, identity(len(a))))
 
 
+def ltdl(a):
+    """a = Lᵀ D L, L unit lower triangular: the textbook LDLᵀ of a with rows and columns reversed."""
+    n = len(a)
+    b = [[a[n - 1 - r][n - 1 - c] for c in range(n)] for r in range(n)]
+    K, E = identity(n), [0.0] * n
+    for j in range(n):
+        E[j] = b[j][j] - sum(K[j][k] ** 2 * E[k] for k in range(j))
+        for i in range(j + 1, n):
+            K[i][j] = (b[i][j] - sum(K[i][k] * K[j][k] * E[k] for k in range(j))) / E[j]
+    L = [[K[n - 1 - c][n - 1 - r] for c in range(n)] for r in range(n)]
+    return L, E[::-1]
+
+
 # --- spatial algebra (conventions.md) ------------------------------------------------------------
 
 def skew(r):

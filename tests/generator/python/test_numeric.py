@@ -7,7 +7,7 @@ import unittest
 import mini_cheetah
 from numeric_check import DATA, evaluate, flatten_columns, flatten_matrix, max_relative_error, \
     random_state
-from reference import Reference, constrained_osc
+from reference import Reference, constrained_osc, ltdl
 
 from rbdcgen.ir import load_ir
 from rbdcgen.scene import default_scene, scene_from_dict
@@ -37,8 +37,13 @@ def expected(ref, name, s, nf):
         return {"tau_e": ref.feet_force_terms(q, forces)}
     if name == "inverse_dynamics":
         return {"tau": ref.inverse_dynamics(q, v, a)}
+    if name == "bias":
+        return {"cg": ref.inverse_dynamics(q, v, [0.0] * len(v))}
     if name == "mass_matrix":
         return {"M": flatten_matrix(ref.mass_matrix(q))}
+    if name == "mass_matrix_factor":
+        L, D = ltdl(ref.mass_matrix(q))
+        return {"L": flatten_matrix(L), "D": D, "D_inv": [1.0 / d for d in D]}
     if name == "forward_dynamics":
         return {"a": ref.forward_dynamics(q, v, tau, forces)}
     if name == "osc_open_chain":
