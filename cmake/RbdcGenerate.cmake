@@ -2,7 +2,9 @@
 #               [FIXED_BASE | FLOATING_BASE] [LOCK_MIMIC])
 #
 # Generates the robot's C++ headers at build time into ${CMAKE_CURRENT_BINARY_DIR}/rbdc/<name> and
-# creates the INTERFACE target `name` whose include root is that directory:
+# creates the INTERFACE target `name` whose include root is that directory (portable code unless the
+# project sets RBDC_NATIVE=ON, which adds -march=native for whoever links it; docs/performance.md,
+# "Compiler contract"):
 #   #include "<robot>/<scene>.hpp"   // namespace rbdc_gen::<robot>::<scene>, docs/generated_api.md
 # They are regenerated when the URDF, scene, topology, templates or generator sources change.
 # Needs RBDC_LAUNCHER (the `rbdc` command) and RBDC_SHARE_DIR, both set by find_package(rbdc), or
@@ -78,4 +80,8 @@ function(rbdc_generate)
   target_include_directories(${ARG_TARGET} INTERFACE "${out}")
   target_link_libraries(${ARG_TARGET} INTERFACE Eigen3::Eigen)
   target_compile_features(${ARG_TARGET} INTERFACE cxx_std_17)
+  # FMA and AVX halve the generated code's instructions; rbdc's own build applies RBDC_NATIVE globally.
+  if(RBDC_NATIVE AND NOT CMAKE_PROJECT_NAME STREQUAL "rbdc")
+    target_compile_options(${ARG_TARGET} INTERFACE $<$<COMPILE_LANGUAGE:CXX>:-march=native>)
+  endif()
 endfunction()
