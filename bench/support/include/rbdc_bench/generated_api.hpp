@@ -23,6 +23,7 @@
   RBDC_BENCH_FORWARD(ns, feet_jacobian)                          \
   RBDC_BENCH_FORWARD(ns, quadratic_velocity_terms)               \
   RBDC_BENCH_FORWARD(ns, gravity_terms)                          \
+  RBDC_BENCH_FORWARD(ns, bias)                                   \
   RBDC_BENCH_FORWARD(ns, feet_force_terms)                       \
   RBDC_BENCH_FORWARD(ns, inverse_dynamics)                       \
   RBDC_BENCH_FORWARD(ns, mass_matrix)                            \
