@@ -26,9 +26,7 @@ namespace {
       ns::forward_dynamics<double>(q, v, tau, f, a);                                               \
     }                                                                                              \
     static void mass_matrix(const double* q, double* M) { ns::mass_matrix<double>(q, M); }         \
-    static void inverse_dynamics(const double* q, const double* v, const double* a, double* tau) { \
-      ns::inverse_dynamics<double>(q, v, a, tau);                                                  \
-    }                                                                                              \
+    static void bias(const double* q, const double* v, double* h) { ns::bias<double>(q, v, h); }   \
     static void feet_jacobian(const double* q, double* J) { ns::feet_jacobian<double>(q, J); }     \
   };
 RBDC_SIM_GENERATED_API(MiniCheetah, rbdc_gen::mini_cheetah::full, "generated")
@@ -61,10 +59,7 @@ class GeneratedDynamics final : public DynamicsModel {
     Gen::mass_matrix(q, M_.data());
     M = M_;
   }
-  void bias_forces(const double* q, const double* v, double* h) override {
-    static constexpr double zero[Gen::nv] = {};
-    Gen::inverse_dynamics(q, v, zero, h);
-  }
+  void bias_forces(const double* q, const double* v, double* h) override { Gen::bias(q, v, h); }
   void feet_jacobian(const double* q, MatrixX& J) override {
     Gen::feet_jacobian(q, J_.data());
     J = J_;
