@@ -20,7 +20,6 @@ void ContactSolver::prepare(DynamicsModel& dyn) {
   const int nv = dyn.nv(), rows = 3 * dyn.n_feet();
   if (ltdl_ && ltdl_->size() == nv && JC_.rows() == rows) return;
   ltdl_.emplace(dyn.dof_parents());
-  M_.setZero(nv, nv);
   J_.setZero(rows, nv);
   Jw_.setZero(rows, nv);
   JC_.setZero(rows, nv);
@@ -65,8 +64,7 @@ void ContactSolver::accelerations(DynamicsModel& dyn, const ContactParameters& p
     return;
   }
   const Clock::time_point start = timing ? Clock::now() : Clock::time_point{};
-  dyn.mass_matrix(q.data(), M_);
-  ltdl_->factorise(M_);
+  dyn.mass_matrix_factor(q.data(), *ltdl_);
   dyn.feet_jacobian(q.data(), J_);
   dyn.bias_forces(q.data(), v.data(), rhs_.data());
   if (timing) dynamics_seconds += since(start);

@@ -26,6 +26,9 @@ namespace {
       ns::forward_dynamics<double>(q, v, tau, f, a);                                               \
     }                                                                                              \
     static void mass_matrix(const double* q, double* M) { ns::mass_matrix<double>(q, M); }         \
+    static void mass_matrix_factor(const double* q, double* L, double* D, double* D_inv) {         \
+      ns::mass_matrix_factor<double>(q, L, D, D_inv);                                              \
+    }                                                                                              \
     static void bias(const double* q, const double* v, double* h) { ns::bias<double>(q, v, h); }   \
     static void feet_jacobian(const double* q, double* J) { ns::feet_jacobian<double>(q, J); }     \
   };
@@ -59,6 +62,11 @@ class GeneratedDynamics final : public DynamicsModel {
     Gen::mass_matrix(q, M_.data());
     M = M_;
   }
+  // The generated factor: the CRBA and the factorisation unrolled, no M to copy and factor here.
+  void mass_matrix_factor(const double* q, TreeLtdl& factor) override {
+    Gen::mass_matrix_factor(q, L_.data(), D_.data(), D_inv_.data());
+    factor.assign(L_.data(), D_.data(), D_inv_.data());
+  }
   void bias_forces(const double* q, const double* v, double* h) override { Gen::bias(q, v, h); }
   void feet_jacobian(const double* q, MatrixX& J) override {
     Gen::feet_jacobian(q, J_.data());
@@ -70,7 +78,8 @@ class GeneratedDynamics final : public DynamicsModel {
  private:
   FeetAngularJacobian angular_;
   std::vector<int> dof_parents_;
-  typename Gen::MassMatrix M_;
+  typename Gen::MassMatrix M_, L_;
+  Eigen::Matrix<double, Gen::nv, 1> D_, D_inv_;
   typename Gen::FeetJacobian J_;
 };
 

@@ -37,6 +37,9 @@ class RuntimeDynamics final : public DynamicsModel {
         Eigen::Map<const VectorX>(tau, model_.nv - model_.root_dofs()), f_);
   }
 
+  void mass_matrix_factor(const double* q, TreeLtdl& factor) override {
+    factor.factorise(rbdc::mass_matrix(model_, data_, Eigen::Map<const VectorX>(q, model_.nq)));
+  }
   void mass_matrix(const double* q, MatrixX& M) override {
     M = rbdc::mass_matrix(model_, data_, Eigen::Map<const VectorX>(q, model_.nq));
   }

@@ -55,6 +55,18 @@ void TreeLtdl::factorise(const MatrixX& M) {
   }
 }
 
+void TreeLtdl::assign(const double* L, const double* D, const double* D_inv) {
+  const int n = size();
+  for (int k = 0; k < n; ++k) {
+    d_[k] = D[k];
+    inv_d_[k] = D_inv[k];
+    for (int t = 0; t < row_length(k); ++t) {
+      const int i = ancestors_[static_cast<size_t>(row_begin(k) + t)];
+      l_[static_cast<size_t>(row_begin(k) + t)] = L[static_cast<size_t>(i) * n + k];  // L(k, i)
+    }
+  }
+}
+
 void TreeLtdl::solve_lt(Eigen::Ref<MatrixX> x) const {
   for (Eigen::Index c = 0; c < x.cols(); ++c) {
     double* column = x.col(c).data();

@@ -1,10 +1,12 @@
 // The tree factorisation M = Lᵀ D L the contact solver uses (tree_ltdl.hpp) against Eigen's dense
-// Cholesky, on the Mini Cheetah's mass matrix (floating base, four legs) at random configurations.
+// Cholesky, on the Mini Cheetah's mass matrix (floating base, four legs) at random configurations;
+// the generated factor (DynamicsModel::mass_matrix_factor) against the runtime's M factorised here.
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "rbdc/crba.hpp"
+#include "rbdc/sim/dynamics.hpp"
 #include "rbdc/sim/robot.hpp"
 #include "rbdc/sim/tree_ltdl.hpp"
 
@@ -45,6 +47,28 @@ TEST(TreeLtdl, SolvesLikeADenseCholesky) {
   const Model model = load_robot(default_urdf());
   EXPECT_EQ(dof_parents(model).size(), static_cast<size_t>(model.nv));
   expect_solves_like_cholesky(model, 1);
+}
+
+TEST(TreeLtdl, GeneratedFactorEqualsTheRuntimeOne) {
+  const Model model = load_robot(default_urdf());
+  const auto generated = make_generated_dynamics();
+  const auto runtime = make_runtime_dynamics(model);
+  TreeLtdl from_generated(dof_parents(model)), from_runtime(dof_parents(model));
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  for (int trial = 0; trial < 10; ++trial) {
+    VectorX q = VectorX::Zero(model.nq);
+    q.segment<4>(3) = Eigen::Vector4d(unit(rng), unit(rng), unit(rng), unit(rng)).normalized();
+    for (int i = 7; i < model.nq; ++i) q[i] = 2 * unit(rng);
+    generated->mass_matrix_factor(q.data(), from_generated);
+    runtime->mass_matrix_factor(q.data(), from_runtime);
+    const VectorX& d = from_runtime.inverse_pivots();
+    EXPECT_LT((from_generated.inverse_pivots() - d).norm(), 1e-12 * d.norm());
+    MatrixX x = MatrixX::NullaryExpr(model.nv, 2, [&]() { return unit(rng); }), y = x;
+    from_generated.solve_lt(x);  // L⁻ᵀ: every entry of L takes part
+    from_runtime.solve_lt(y);
+    EXPECT_LT((x - y).norm(), 1e-12 * y.norm());
+  }
 }
 
 TEST(TreeLtdl, RefusesAParentAfterItsChild) {

@@ -45,8 +45,8 @@ class ContactSolver {
 
   std::vector<int> active_;  // feet in contact, in order
   std::optional<TreeLtdl> ltdl_;
-  MatrixX M_, J_, Jw_, JC_, JT_, Y_, DY_, Phi_;  // J_C, J_T (its x, y rows), Y = L⁻ᵀ J_Tᵀ, D⁻¹Y, Φ:
-                                                 // first 3m / 2m rows or columns in use
+  MatrixX J_, Jw_, JC_, JT_, Y_, DY_, Phi_;  // J_C, J_T (its x, y rows), Y = L⁻ᵀ J_Tᵀ, D⁻¹Y, Φ:
+                                             // first 3m / 2m rows or columns in use
   VectorX f_, u_base_, rhs_, impulse_;
   Eigen::Matrix2Xd last_friction_;  // each foot's friction from the previous solve (zero when not in contact)
 };

@@ -12,6 +12,8 @@
 
 namespace rbdc::sim {
 
+class TreeLtdl;
+
 class DynamicsModel {
  public:
   virtual ~DynamicsModel() = default;
@@ -26,6 +28,8 @@ class DynamicsModel {
   /// Joint-space inertia M (nv × nv, full) and the feet Jacobian J (3·n_feet × nv, world, foot
   /// points): the contact solver (contact_solver.hpp) needs M⁻¹Jᵀ.
   virtual void mass_matrix(const double* q, MatrixX& M) = 0;
+  /// M = Lᵀ D L over dof_parents() into `factor` (sized for them), for the contact solver.
+  virtual void mass_matrix_factor(const double* q, TreeLtdl& factor) = 0;
   /// c + g (nv): the inverse dynamics at a = 0 without foot forces.
   virtual void bias_forces(const double* q, const double* v, double* h) = 0;
   virtual void feet_jacobian(const double* q, MatrixX& J) = 0;

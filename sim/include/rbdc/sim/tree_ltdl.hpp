@@ -22,6 +22,9 @@ class TreeLtdl {
 
   /// Factorises M (size × size, symmetric positive definite; only its lower triangle is read).
   void factorise(const MatrixX& M);
+  /// Takes a factor computed elsewhere with the same dof parents (the generated
+  /// mass_matrix_factor): L column-major, size × size, read at the ancestors only; D and D⁻¹.
+  void assign(const double* L, const double* D, const double* D_inv);
   /// x ← L⁻ᵀ x, in place, for each column of x (size rows).
   void solve_lt(Eigen::Ref<MatrixX> x) const;
   /// x ← L⁻¹ D⁻¹ x, in place (after solve_lt, this completes M⁻¹).
