@@ -107,6 +107,48 @@ class TangentsEqualFiniteDifferences(unittest.TestCase):
             self.assertLess(relative_error(got[output], want), MINI_CHEETAH_TOLERANCE, output)
 
 
+class AnalyticRecursionsEqualTangents(unittest.TestCase):
+    """The analytic recursions (algorithms/rnea_derivatives.py, feet_force_derivatives.py) equal the
+    tangents of the traced primal (derivatives.propagate, the method kept for robots with rotors) to
+    round-off: two independent derivations inside the generator, floating and fixed base."""
+
+    def check_robot(self, robot, seed=3):
+        from rbdcgen import derivatives, spatial as sp
+        from rbdcgen.algorithms import rnea
+        from rbdcgen.algorithms.feet_force_derivatives import feet_force_term_derivatives
+        state = random_state(robot, len(robot.feet), seed)
+        with ex.Graph():
+            m = TracedModel(robot, ALL)
+            zero = sp.zeros(6)
+            pairs = [(derivatives.inverse_dynamics_derivatives(m),
+                      derivatives._q_and_v(m, rnea.inverse_dynamics(m), "dtau_dq", "dtau_dv")),
+                     (derivatives.bias_derivatives(m),
+                      derivatives._q_and_v(m, rnea.rnea(m, rnea.base_acceleration(m, zero), None, True),
+                                           "dbias_dq", "dbias_dv"))]
+            if robot.feet:
+                tangents = derivatives.jacobian_columns(rnea.feet_force_terms(m), configuration_seeds(m),
+                                                        [q_direction(k) for k in range(robot.nv)])
+                rows = feet_force_term_derivatives(m)
+                analytic = [rows[r][c] for c in range(robot.nv) for r in range(robot.nv)]
+                pairs.append(({"dtau_e_dq": analytic}, {"dtau_e_dq": tangents}))
+            for analytic, tangent in pairs:
+                for name in tangent:
+                    got = ex.evaluate(list(analytic[name]), state)
+                    want = ex.evaluate(list(tangent[name]), state)
+                    with self.subTest(robot=robot.name, output=name):
+                        self.assertLess(relative_error(got, want), 1e-12)
+
+    def test_floating_base(self):
+        self.check_robot(FLOATING)
+
+    def test_fixed_base(self):
+        self.check_robot(FIXED)
+
+    @unittest.skipIf(mini_cheetah.skip_reason(), mini_cheetah.skip_reason())
+    def test_mini_cheetah(self):
+        self.check_robot(mini_cheetah.load("floating"))
+
+
 class ManifoldSeeding(unittest.TestCase):
     def test_seeds_are_the_derivative_of_the_step(self):
         """Quaternion and position seeds equal d(q ⊕ tδ)/dt; the seeded rotation entries equal the
