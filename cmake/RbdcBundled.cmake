@@ -4,6 +4,7 @@
 #   RBDC_BUNDLED_<name>_TOPOLOGY         absolute path of its topology overlay, or empty
 #   RBDC_BUNDLED_<name>_BASE             floating | fixed
 #   RBDC_BUNDLED_<name>_SCENES           scene names (the first one is benchmarked)
+#   RBDC_BUNDLED_<name>_VERIFIED_IN_<scene>  the scene whose verify test also checks this one, or empty
 set(_rbdc_bundled_file ${PROJECT_SOURCE_DIR}/robots/bundled.json)
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${_rbdc_bundled_file})
 file(READ ${_rbdc_bundled_file} _rbdc_bundled_json)
@@ -21,6 +22,11 @@ foreach(_i RANGE ${_rbdc_last})
   foreach(_k RANGE ${_last_scene})
     string(JSON _scene GET "${_rbdc_bundled_json}" robots ${_i} scenes ${_k})
     list(APPEND _scenes ${_scene})
+    string(JSON _host ERROR_VARIABLE _not_hosted GET "${_rbdc_bundled_json}" robots ${_i} verified_in ${_scene})
+    set(RBDC_BUNDLED_${_name}_VERIFIED_IN_${_scene} "")
+    if(NOT _not_hosted)
+      set(RBDC_BUNDLED_${_name}_VERIFIED_IN_${_scene} ${_host})
+    endif()
   endforeach()
   list(APPEND RBDC_BUNDLED_ROBOTS ${_name})
   set(RBDC_BUNDLED_${_name}_URDF ${PROJECT_SOURCE_DIR}/${_urdf})

@@ -82,6 +82,8 @@ def build_parser() -> argparse.ArgumentParser:
                     "state and joint-limit states, and prints the largest absolute and relative error "
                     "per quantity. Exit 1 when a relative error exceeds the tolerance.")
     _robot_arguments(verify, multiple=True)
+    verify.add_argument("--also-scene", type=Path, action="append", default=[], metavar="FILE",
+                        help="verify the robots with this scene too, in the same harness (repeatable)")
     verify.add_argument("--states", type=int, default=100, metavar="N", help="random states (default 100)")
     verify.add_argument("--seed", type=int, default=1, help="random seed of the states (default 1)")
     verify.add_argument("--tolerance", type=float, default=1e-9,

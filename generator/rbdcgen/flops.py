@@ -173,6 +173,9 @@ def generic_ops(robot, scene, name):
     """Operation count of the runtime's generic dense algorithm for function `name`."""
     if name in _DERIVATIVE_DIRECTIONS:
         return _generic_derivative_ops(robot, scene, name)
+    if name in _COMBINED_PARTS:  # the runtime's separate calls for the same outputs
+        parts = [generic_ops(robot, scene, part) for part in _COMBINED_PARTS[name]]
+        return _result({k: sum(p[k] for p in parts) for k in KINDS})
     nf = len(scene.feet_for(robot))
     nv = robot.nv
     t = _Tally()
@@ -231,6 +234,12 @@ def generic_ops(robot, scene, name):
     else:
         raise KeyError("unknown function '%s'" % name)
     return _result(t.c)
+
+
+# A combined function (scene.COMBINED) against the runtime calls a user makes for its outputs (the
+# angular rows and a₀ counted as the feet Jacobian and the forward dynamics).
+_COMBINED_PARTS = {"step_terms": ("feet_positions", "feet_velocities", "feet_jacobian", "feet_jacobian",
+                                  "mass_matrix_factor", "forward_dynamics")}
 
 
 # Derivatives in the runtime (runtime/src/*derivatives*.cpp): the primal pass, then one dense

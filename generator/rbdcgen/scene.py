@@ -29,7 +29,11 @@ QUANTITIES = (
     "osc_open_chain",
     "osc_closed_chain",
 )
-FEET_QUANTITIES = ("feet_positions", "feet_velocities", "feet_jacobian", "feet_force_terms")
+# Combined functions: several quantities of one use traced as one function (shared kinematics, CSE
+# across outputs), emitted after QUANTITIES and only when a scene lists them.
+COMBINED = ("step_terms",)
+FEET_QUANTITIES = ("feet_positions", "feet_velocities", "feet_jacobian", "feet_force_terms",
+                   "step_terms")
 OSC_QUANTITIES = ("osc_open_chain", "osc_closed_chain")
 ZERO_INPUTS = ("v", "a", "tau", "f")
 # Derivative quantities (rbdcgen/derivatives.py), emitted after the quantities, in this order.
@@ -94,24 +98,27 @@ class Scene:
         return tuple(f for f in kept if f.name in self.contacts)
 
     def quantities_for(self, robot):
-        """The functions to emit: the requested ones, or all that apply to this robot.
-        OSC functions need a floating base; feet functions need feet."""
+        """The functions to emit: the requested ones, or all of QUANTITIES that apply to this robot.
+        OSC functions need a floating base; feet functions need feet; neither OSC nor the combined
+        functions are implemented for mimic couplings (docs/model.md)."""
         has_feet = bool(self.feet_for(robot))
+        coupled = "mimic couplings: use --lock-mimic or --independent-mimic"
 
-        def applies(name):
-            if name in OSC_QUANTITIES and (not robot.floating_base or robot.couplings):
-                return False  # OSC of a coupled model is not implemented (docs/model.md)
-            return has_feet or name not in FEET_QUANTITIES
+        def refusal(name):
+            """Why `name` does not apply to the robot, or None."""
+            if name in OSC_QUANTITIES + COMBINED and robot.couplings:
+                return coupled
+            if name in OSC_QUANTITIES and not robot.floating_base:
+                return "fixed base"
+            return None if has_feet or name not in FEET_QUANTITIES else "no feet"
 
         if self.quantities is None:
-            return tuple(q for q in QUANTITIES if applies(q))
+            return tuple(q for q in QUANTITIES if refusal(q) is None)
         for name in self.quantities:
-            if not applies(name):
-                self.fail("quantities", "'%s' does not apply to robot '%s' (%s)" % (
-                    name, robot.name,
-                    ("mimic couplings: use --lock-mimic or --independent-mimic" if robot.couplings
-                     else "fixed base") if name in OSC_QUANTITIES else "no feet"))
-        return tuple(q for q in QUANTITIES if q in self.quantities)
+            if refusal(name) is not None:
+                self.fail("quantities", "'%s' does not apply to robot '%s' (%s)"
+                          % (name, robot.name, refusal(name)))
+        return tuple(q for q in QUANTITIES + COMBINED if q in self.quantities)
 
     def derivatives_for(self, robot):
         """The derivative functions to emit, in DERIVATIVES order; feet ones need feet."""
@@ -153,7 +160,7 @@ def scene_from_dict(data, source="<scene>") -> Scene:
         fail("name", "required, a C++ identifier (it names the namespace)")
     quantities = None
     if data.get("quantities") is not None:
-        quantities = _string_list(fail, "quantities", data["quantities"], QUANTITIES)
+        quantities = _string_list(fail, "quantities", data["quantities"], QUANTITIES + COMBINED)
     gravity = None
     if "gravity" in data:
         g = data["gravity"]

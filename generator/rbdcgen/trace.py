@@ -134,6 +134,28 @@ def _spec(robot, nf):
             ("q", "v", "tau", "f"),
             [("a", nv, 1, "acceleration")],
             lambda m: {"a": forward_dynamics.forward_dynamics(m)}),
+        "step_terms": (
+            "Everything one contact evaluation of the simulator needs at (q, v, τ), in one pass "
+            "with shared kinematics: feet, their Jacobian rows, the factor M = Lᵀ D L and the "
+            "acceleration without foot forces (sim/include/rbdc/sim/dynamics.hpp).",
+            ("q", "v", "tau"),
+            [("p", 3, nf, "foot positions, world frame, one column per foot"),
+             ("pdot", 3, nf, "foot velocities, world frame, one column per foot"),
+             ("omega", 3, nf, "angular velocity of each foot's body, world frame"),
+             ("J", 3 * nf, nv, "feet Jacobian, world-frame foot velocities from v"),
+             ("Jw", 3 * nf, nv, "angular rows of the feet's bodies, world frame (omega = Jw v)"),
+             ("L", nv, nv, "unit lower triangular; zero except at each dof's ancestors in the tree"),
+             ("D", nv, 1, "pivots, the diagonal of D"),
+             ("D_inv", nv, 1, "their inverses, so that a solve multiplies"),
+             ("a", nv, 1, "acceleration without foot forces, M⁻¹(Sᵀτ − c − g)")],
+            lambda m: {"p": _columns(kinematics.feet_positions(m)),
+                       "pdot": _columns(kinematics.feet_velocities(m)),
+                       "omega": _columns(kinematics.feet_angular_velocities(m)),
+                       "J": _matrix(jacobian.feet_jacobian(m), nv),
+                       "Jw": _matrix(jacobian.feet_angular_jacobian(m), nv),
+                       **forward_dynamics.factor_outputs(*forward_dynamics.mass_matrix_factor(m),
+                                                         forward_dynamics.dof_parents(m.robot)),
+                       "a": forward_dynamics.free_acceleration(m)}),
         "osc_open_chain": (
             "Trunk operational-space Λ, J̄ᵀ, b with measured foot forces (paper 001 Table 1).",
             ("q", "v", "f"), osc_out,

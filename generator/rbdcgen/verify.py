@@ -101,15 +101,17 @@ def _results(output: str) -> list[tuple[str, str, float, float, int]]:
 
 def run(args, layout: Layout) -> int:
     paths = [Path(p) for p in args.robots]
-    compilations = []
+    compilations, robot_paths = [], []
     if args.topology and len(paths) > 1:
         raise RbdcError("--topology applies to one robot; verify the robots one by one")
-    for path, name in zip(paths, _batch_names(paths)):
-        compilations.append(compile_robot(path, args.scene, args.topology, args.base, name, layout,
-                                          mimic=args.mimic))
+    for scene in [args.scene] + args.also_scene:
+        for path, name in zip(paths, _batch_names(paths)):
+            compilations.append(compile_robot(path, scene, args.topology, args.base, name, layout,
+                                              mimic=args.mimic))
+            robot_paths.append(path)
     directory = Path(args.keep) if args.keep else Path(tempfile.mkdtemp(prefix="rbdc-verify-"))
     try:
-        return build_and_run(paths, compilations, directory, args, layout)
+        return build_and_run(robot_paths, compilations, directory, args, layout)
     finally:
         if not args.keep:
             shutil.rmtree(directory, ignore_errors=True)

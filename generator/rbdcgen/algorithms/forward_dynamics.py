@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from .. import expr as ex
 from .crba import mass_matrix
-from .rnea import bias_minus_external
+from .rnea import bias, bias_minus_external
 
 
 def dof_parents(robot):
@@ -86,10 +86,19 @@ def mass_matrix_factor(m):
 
 
 def forward_dynamics(m):
+    return _solve_with_torques(m, bias_minus_external(m))   # c + g − τ_e
+
+
+def free_acceleration(m):
+    """a₀ = M⁻¹(Sᵀτ − c − g): the forward dynamics without foot forces (no f input)."""
+    return _solve_with_torques(m, bias(m))
+
+
+def _solve_with_torques(m, h):
+    """M⁻¹(Sᵀτ − h) for the generalised forces h."""
     robot = m.robot
-    bias = bias_minus_external(m)                   # c + g − τ_e
-    rhs = [-b for b in bias[:robot.root_dofs]]      # unactuated trunk: Sᵀτ has zeros there
-    rhs += [m.tau[i - 1] - bias[robot.joints[i].v_index] for i in range(1, robot.nb)]
+    rhs = [-b for b in h[:robot.root_dofs]]         # unactuated trunk: Sᵀτ has zeros there
+    rhs += [m.tau[i - 1] - h[robot.joints[i].v_index] for i in range(1, robot.nb)]
     parents = dof_parents(robot)
     L, inv_diag = mass_matrix_factor(m)
     m.mark("solve LᵀDL a = τ + τ_e − c − g")

@@ -34,3 +34,25 @@ def feet_jacobian(m):
         for r in range(3):
             rows.append(tuple(col[r] for col in cols))
     return rows
+
+
+def feet_angular_jacobian(m):
+    """The angular rows of each foot's body (3·n_feet × nv, world): ω_φ(k) = J_ω,k v. The trunk's ω_B
+    enters as R ω_B, a revolute joint j of the support as its world axis R_j a_j; the trunk's linear
+    velocity and prismatic joints do not turn the body."""
+    robot = m.robot
+    frames = world_frames(m)
+    rows = []
+    for foot in m.feet:
+        m.mark("angular rows of foot " + foot.name)
+        cols = [sp.zeros(3) for _ in range(robot.nv)]
+        if robot.floating_base:
+            Rt = sp.transpose(frames[0][0])
+            for c in range(3):
+                cols[c] = Rt[c]
+        for j in robot.support[foot.body]:
+            if m.joint(j).type == "revolute":
+                cols[m.joint(j).v_index] = sp.matvec(frames[j][0], sp.vec(m.axis(j)))
+        for r in range(3):
+            rows.append(tuple(col[r] for col in cols))
+    return rows

@@ -56,3 +56,14 @@ def feet_velocities(m):
         local = sp.vadd(sp.lin(v), sp.cross(sp.ang(v), sp.vec(foot.offset)))
         result.append(sp.matvec(frames[foot.body][0], local))
     return result
+
+
+def feet_angular_velocities(m):
+    """World angular velocity of each foot's body: R_φ(k) ω_φ(k)."""
+    frames = world_frames(m)
+    velocities = body_velocities(m)
+    result = []
+    for foot in m.feet:
+        m.mark("foot " + foot.name)
+        result.append(sp.matvec(frames[foot.body][0], sp.ang(velocities[foot.body])))
+    return result

@@ -5,8 +5,9 @@ import json
 import os
 import unittest
 
-from numeric_check import DATA
+from numeric_check import DATA, evaluate, max_relative_error, random_state
 from rbdcgen.emit import emit_body
+from rbdcgen.flops import count_ops
 from rbdcgen.ir import load_ir
 from rbdcgen.scene import default_scene
 from rbdcgen.trace import TraceError, trace_function, trace_scene
@@ -67,6 +68,31 @@ class DegenerateRobots(unittest.TestCase):
             trace_function(robot, default_scene(), "forward_dynamics")
         self.assertIn("forward_dynamics", str(caught.exception))
         self.assertIn("massless", str(caught.exception))
+
+
+class CombinedFunctions(unittest.TestCase):
+    def test_step_terms_equal_the_separate_functions_in_fewer_operations(self):
+        robot = load_ir(RAW)
+        scene = default_scene()
+        combined = trace_function(robot, scene, "step_terms")
+        parts = {name: trace_function(robot, scene, name) for name in
+                 ("feet_positions", "feet_velocities", "feet_jacobian", "mass_matrix_factor",
+                  "forward_dynamics")}
+        state = random_state(robot, len(robot.feet), 5)
+        state["f"] = [0.0] * len(state["f"])  # a₀: no foot forces
+        got = evaluate(combined, state)
+        for name, outputs in (("feet_positions", {"p": "p"}), ("feet_velocities", {"pdot": "pdot"}),
+                              ("feet_jacobian", {"J": "J"}), ("forward_dynamics", {"a": "a"}),
+                              ("mass_matrix_factor", {"L": "L", "D": "D", "D_inv": "D_inv"})):
+            want = evaluate(parts[name], state)
+            for ours, theirs in outputs.items():
+                self.assertLess(max_relative_error(got[ours], want[theirs]), 1e-13, ours)
+        nv, v = robot.nv, state["v"]
+        omega = [sum(got["Jw"][c * 3 * len(robot.feet) + r] * v[c] for c in range(nv))
+                 for r in range(3 * len(robot.feet))]
+        self.assertLess(max_relative_error(got["omega"], omega), 1e-13)
+        self.assertLess(count_ops(combined)["total"],
+                        sum(count_ops(fn)["total"] for fn in parts.values()))
 
 
 if __name__ == "__main__":
