@@ -20,8 +20,7 @@ void ContactSolver::prepare(DynamicsModel& dyn) {
   const int nv = dyn.nv(), rows = 3 * dyn.n_feet();
   if (ltdl_ && ltdl_->size() == nv && JC_.rows() == rows) return;
   ltdl_.emplace(dyn.dof_parents());
-  J_.setZero(rows, nv);
-  Jw_.setZero(rows, nv);
+  terms_.resize(nv, dyn.n_feet());
   JC_.setZero(rows, nv);
   JT_.setZero(2 * dyn.n_feet(), nv);
   Y_.setZero(nv, 2 * dyn.n_feet());
@@ -41,49 +40,41 @@ void ContactSolver::accelerations(DynamicsModel& dyn, const ContactParameters& p
                                   std::vector<FootContact>& contacts, Matrix3X& f_feet, VectorX& a) {
   prepare(dyn);
   const int n_feet = dyn.n_feet(), nv = dyn.nv();
-  dyn.feet_state(q.data(), v.data(), p_feet.data(), v_feet.data());
+  const Clock::time_point start = timing ? Clock::now() : Clock::time_point{};
+  dyn.step_terms(q.data(), v.data(), tau.data(), terms_, *ltdl_);
+  if (timing) dynamics_seconds += since(start);
+  p_feet = terms_.p_feet;
+  v_feet = terms_.v_feet;
   const Vector3 n = ground.normal();
   const Vector3 d = -p.foot_radius * n;  // C_k − p_fk (Eq. 33: r along the contact normal)
-  if (p.at_contact_point) dyn.feet_angular_jacobian(q.data(), Jw_);
   active_.clear();
   f_feet.setZero(3, n_feet);
   for (int k = 0; k < n_feet; ++k) {
     Vector3 v_contact = v_feet.col(k);
-    if (p.at_contact_point) v_contact += (Jw_.middleRows<3>(3 * k) * v).cross(d);  // v_Ck = v_fk + ω × d
+    if (p.at_contact_point) v_contact += terms_.omega_feet.col(k).cross(d);  // v_Ck = v_fk + ω × d
     contacts[k] = foot_contact(p, ground, p_feet.col(k), v_contact);
     if (contacts[k].active) active_.push_back(k);
+    else last_friction_.col(k).setZero();
   }
-  const bool legacy = !p.at_contact_point && p.friction_update == FrictionUpdate::Explicit;
-  for (int k = 0; k < n_feet; ++k)
-    if (!contacts[k].active) last_friction_.col(k).setZero();
-  if (active_.empty() || legacy) {  // forces at the foot points: the generated forward dynamics
-    for (int k : active_) f_feet.col(k) = contacts[k].force_W;
-    const Clock::time_point start = timing ? Clock::now() : Clock::time_point{};
-    dyn.forward_dynamics(q.data(), v.data(), tau.data(), f_feet.data(), a.data());
-    if (timing) dynamics_seconds += since(start);
+  if (active_.empty()) {
+    a = terms_.a_free;
     return;
   }
-  const Clock::time_point start = timing ? Clock::now() : Clock::time_point{};
-  dyn.mass_matrix_factor(q.data(), *ltdl_);
-  dyn.feet_jacobian(q.data(), J_);
-  dyn.bias_forces(q.data(), v.data(), rhs_.data());
-  if (timing) dynamics_seconds += since(start);
   // Contact-point Jacobian rows in contact-frame coordinates: R_Cᵀ (J_fk − [d]× J_ω,k).
   const int m = static_cast<int>(active_.size());
   const Matrix3 C_R_W = ground.W_R_C().transpose();
   for (int i = 0; i < m; ++i) {
     const int k = active_[static_cast<size_t>(i)];
     for (int c = 0; c < nv; ++c) {
-      Vector3 column = J_.block<3, 1>(3 * k, c);
-      if (p.at_contact_point) column -= d.cross(Jw_.block<3, 1>(3 * k, c));
+      Vector3 column = terms_.J.block<3, 1>(3 * k, c);
+      if (p.at_contact_point) column -= d.cross(terms_.Jw.block<3, 1>(3 * k, c));
       JC_.block<3, 1>(3 * i, c).noalias() = C_R_W * column;
     }
   }
   // The known forces (the explicit normal ones, and the explicit friction when asked for) go into
-  // a₁ = M⁻¹(Sᵀτ − c − g + J_Cᵀ f_known); only the implicit friction is left to solve for.
+  // a₁ = a₀ + M⁻¹ J_Cᵀ f_known; only the implicit friction is left to solve for.
   const bool implicit = p.friction_update == FrictionUpdate::Implicit;
-  rhs_ = -rhs_;
-  rhs_.tail(nv - 6) += tau;
+  rhs_.setZero();
   for (int i = 0; i < m; ++i) {
     Vector3 known = contacts[active_[static_cast<size_t>(i)]].force_C;
     if (implicit) known.head<2>().setZero();
@@ -91,7 +82,7 @@ void ContactSolver::accelerations(DynamicsModel& dyn, const ContactParameters& p
   }
   ltdl_->solve_lt(rhs_);
   ltdl_->solve_dinv_l(rhs_);
-  a = rhs_;
+  a = terms_.a_free + rhs_;
   if (implicit) {
     const int rows = 2 * m;  // tangential rows x, y of each foot in contact
     for (int i = 0; i < m; ++i) JT_.middleRows<2>(2 * i) = JC_.middleRows<2>(3 * i);

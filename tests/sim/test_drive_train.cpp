@@ -12,6 +12,7 @@
 #include "rbdc/control/pd_trot.hpp"
 #include "rbdc/sim/robot.hpp"
 #include "rbdc/sim/run.hpp"
+#include "rbdc/sim/tree_ltdl.hpp"
 
 using namespace rbdc;
 
@@ -54,7 +55,8 @@ TEST(DriveTrain, AUrdfWithoutRotorOverlayIsRefused) {
 }
 
 // The simulator's generated rotor dynamics (generated/mini_cheetah_rotors) against the runtime on the
-// same rotor model, at random states: forward dynamics, M, c + g and the feet.
+// same rotor model, at random states: forward dynamics, the step terms (a₀, the feet's rows, M's
+// factor), M and the feet.
 TEST(DriveTrain, GeneratedRotorDynamicsEqualTheRuntime) {
   const Model model = control::load_trot_robot("", ActuatorMode::Full);
   const std::unique_ptr<sim::DynamicsModel> generated = sim::make_generated_rotor_dynamics();
@@ -73,13 +75,18 @@ TEST(DriveTrain, GeneratedRotorDynamicsEqualTheRuntime) {
     q.segment<4>(3).normalize();
     const VectorX v = random(model.nv, 3.0), tau = random(model.nv - 6, 5.0);
     const VectorX f = random(3 * static_cast<Eigen::Index>(model.feet.size()), 30.0);
-    VectorX a_gen(model.nv), a_run(model.nv), h_gen(model.nv), h_run(model.nv);
+    VectorX a_gen(model.nv), a_run(model.nv);
     generated->forward_dynamics(q.data(), v.data(), tau.data(), f.data(), a_gen.data());
     runtime->forward_dynamics(q.data(), v.data(), tau.data(), f.data(), a_run.data());
     EXPECT_LT(relative(a_gen, a_run), 1e-12);
-    generated->bias_forces(q.data(), v.data(), h_gen.data());
-    runtime->bias_forces(q.data(), v.data(), h_run.data());
-    EXPECT_LT(relative(h_gen, h_run), 1e-12);
+    sim::StepTerms t_gen, t_run;
+    sim::TreeLtdl factor_gen(sim::dof_parents(model)), factor_run(sim::dof_parents(model));
+    generated->step_terms(q.data(), v.data(), tau.data(), t_gen, factor_gen);
+    runtime->step_terms(q.data(), v.data(), tau.data(), t_run, factor_run);
+    EXPECT_LT(relative(t_gen.a_free, t_run.a_free), 1e-12);
+    EXPECT_LT(relative(t_gen.J, t_run.J), 1e-12);
+    EXPECT_LT(relative(t_gen.Jw, t_run.Jw), 1e-12);
+    EXPECT_LT(relative(factor_gen.inverse_pivots(), factor_run.inverse_pivots()), 1e-12);
     MatrixX M_gen, M_run;
     generated->mass_matrix(q.data(), M_gen);
     runtime->mass_matrix(q.data(), M_run);

@@ -1,6 +1,6 @@
 // The tree factorisation M = Lᵀ D L the contact solver uses (tree_ltdl.hpp) against Eigen's dense
 // Cholesky, on the Mini Cheetah's mass matrix (floating base, four legs) at random configurations;
-// the generated factor (DynamicsModel::mass_matrix_factor) against the runtime's M factorised here.
+// the generated factor (DynamicsModel::step_terms) against the runtime's M factorised.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -54,14 +54,16 @@ TEST(TreeLtdl, GeneratedFactorEqualsTheRuntimeOne) {
   const auto generated = make_generated_dynamics();
   const auto runtime = make_runtime_dynamics(model);
   TreeLtdl from_generated(dof_parents(model)), from_runtime(dof_parents(model));
+  StepTerms generated_terms, runtime_terms;
   std::mt19937 rng(2);
   std::uniform_real_distribution<double> unit(-1, 1);
   for (int trial = 0; trial < 10; ++trial) {
     VectorX q = VectorX::Zero(model.nq);
     q.segment<4>(3) = Eigen::Vector4d(unit(rng), unit(rng), unit(rng), unit(rng)).normalized();
     for (int i = 7; i < model.nq; ++i) q[i] = 2 * unit(rng);
-    generated->mass_matrix_factor(q.data(), from_generated);
-    runtime->mass_matrix_factor(q.data(), from_runtime);
+    const VectorX v = VectorX::Zero(model.nv), tau = VectorX::Zero(model.nv - 6);
+    generated->step_terms(q.data(), v.data(), tau.data(), generated_terms, from_generated);
+    runtime->step_terms(q.data(), v.data(), tau.data(), runtime_terms, from_runtime);
     const VectorX& d = from_runtime.inverse_pivots();
     EXPECT_LT((from_generated.inverse_pivots() - d).norm(), 1e-12 * d.norm());
     MatrixX x = MatrixX::NullaryExpr(model.nv, 2, [&]() { return unit(rng); }), y = x;

@@ -1,9 +1,10 @@
 // Accelerations with the contact forces of paper 000 Section 5 applied at the contact points
 // C_k = p_fk − r ẑ_C (Eqs. 32-33: the force at the foot point plus its moment) and friction from
 // v_Ck (Eq. 38), stepped explicitly or linearly implicitly. Eq. 30 is split by linearity in f:
-//   a = a₁ + M⁻¹ J_Tᵀ f_t,   a₁ = M⁻¹(Sᵀτ − c − g + J_Cᵀ f_known)
+//   a = a₁ + M⁻¹ J_Tᵀ f_t,   a₁ = a₀ + M⁻¹ J_Cᵀ f_known,   a₀ = M⁻¹(Sᵀτ − c − g)
 // with f_known the explicit normal forces (and the friction, when it is explicit) and J_T the
 // tangential rows of J_C; one sparse factor M = Lᵀ D L of the tree (tree_ltdl.hpp) serves both.
+// The feet, their rows, the factor and a₀ come from one DynamicsModel::step_terms call.
 // The implicit friction picks each tangential component so that the slip velocity one step ahead,
 //   u = J_T (v + dt a₁) + dt Φ f_t,   Φ = J_T M⁻¹ J_Tᵀ   (contact-space inverse inertia),
 // satisfies f_t = −μ(u) f_n (backward Euler on the friction only; normal forces stay explicit),
@@ -32,8 +33,8 @@ class ContactSolver {
                      Matrix3X& p_feet, Matrix3X& v_feet, std::vector<FootContact>& contacts,
                      Matrix3X& f_feet, VectorX& a);
 
-  /// When on, dynamics_seconds accumulates the wall time of the dynamics calls (forward dynamics,
-  /// M and its factor, feet Jacobians); the rest of a call is contact work.
+  /// When on, dynamics_seconds accumulates the wall time of the dynamics call (step_terms: feet,
+  /// their rows, M's factor, a₀); the rest of a call is contact work.
   bool timing = false;
   double dynamics_seconds = 0;
 
@@ -45,8 +46,9 @@ class ContactSolver {
 
   std::vector<int> active_;  // feet in contact, in order
   std::optional<TreeLtdl> ltdl_;
-  MatrixX J_, Jw_, JC_, JT_, Y_, DY_, Phi_;  // J_C, J_T (its x, y rows), Y = L⁻ᵀ J_Tᵀ, D⁻¹Y, Φ:
-                                             // first 3m / 2m rows or columns in use
+  StepTerms terms_;
+  MatrixX JC_, JT_, Y_, DY_, Phi_;  // J_C, J_T (its x, y rows), Y = L⁻ᵀ J_Tᵀ, D⁻¹Y, Φ:
+                                    // first 3m / 2m rows or columns in use
   VectorX f_, u_base_, rhs_, impulse_;
   Eigen::Matrix2Xd last_friction_;  // each foot's friction from the previous solve (zero when not in contact)
 };

@@ -8,11 +8,27 @@
 #include <string>
 #include <vector>
 
-#include "rbdc/model.hpp"
+#include "rbdc/data.hpp"
 
 namespace rbdc::sim {
 
 class TreeLtdl;
+
+/// What one contact evaluation needs at (q, v, τ) besides M's factor (contact_solver.hpp); world
+/// frame, foot k in column k or rows 3k…3k+2.
+struct StepTerms {
+  Matrix3X p_feet, v_feet;  ///< foot points and their linear velocities
+  Matrix3X omega_feet;      ///< angular velocities of the feet's bodies
+  MatrixX J, Jw;            ///< linear rows of the foot points, angular rows of their bodies (3·n_feet × nv)
+  VectorX a_free;           ///< a₀ = M⁻¹(Sᵀτ − c − g), the acceleration without foot forces
+  /// Sizes every member (no allocation when the sizes are already right).
+  void resize(int nv, int n_feet) {
+    for (Matrix3X* m : {&p_feet, &v_feet, &omega_feet}) m->resize(3, n_feet);
+    J.resize(3 * n_feet, nv);
+    Jw.resize(3 * n_feet, nv);
+    a_free.resize(nv);
+  }
+};
 
 class DynamicsModel {
  public:
@@ -25,16 +41,12 @@ class DynamicsModel {
   /// a = M⁻¹(Sᵀτ + Jᵀf − c − g) (Eq. 30); τ has nv − 6 entries, f is 3 × n_feet.
   virtual void forward_dynamics(const double* q, const double* v, const double* tau,
                                 const double* f_feet, double* a) = 0;
-  /// Joint-space inertia M (nv × nv, full) and the feet Jacobian J (3·n_feet × nv, world, foot
-  /// points): the contact solver (contact_solver.hpp) needs M⁻¹Jᵀ.
+  /// Joint-space inertia M (nv × nv, full symmetric).
   virtual void mass_matrix(const double* q, MatrixX& M) = 0;
-  /// M = Lᵀ D L over dof_parents() into `factor` (sized for them), for the contact solver.
-  virtual void mass_matrix_factor(const double* q, TreeLtdl& factor) = 0;
-  /// c + g (nv): the inverse dynamics at a = 0 without foot forces.
-  virtual void bias_forces(const double* q, const double* v, double* h) = 0;
-  virtual void feet_jacobian(const double* q, MatrixX& J) = 0;
-  /// Angular rows of the foot bodies (3·n_feet × nv, world), feet_angular.hpp.
-  virtual void feet_angular_jacobian(const double* q, MatrixX& Jw) = 0;
+  /// The contact step's terms (resized to fit) and M = Lᵀ D L over dof_parents() into `factor`
+  /// (sized for them): one pass of generated code (scene `simulation`), or the runtime's calls.
+  virtual void step_terms(const double* q, const double* v, const double* tau, StepTerms& terms,
+                          TreeLtdl& factor) = 0;
   /// λ over degrees of freedom (tree_ltdl.hpp): the sparsity of M's factor.
   virtual const std::vector<int>& dof_parents() const = 0;
   virtual std::string name() const = 0;
@@ -43,10 +55,10 @@ class DynamicsModel {
 /// Dynamics from the runtime's reference algorithms on `model` (copied).
 std::unique_ptr<DynamicsModel> make_runtime_dynamics(const Model& model);
 
-/// Dynamics from generated/mini_cheetah/full.hpp (every build has them).
+/// Dynamics from generated/mini_cheetah/full.hpp and simulation.hpp (every build has them).
 std::unique_ptr<DynamicsModel> make_generated_dynamics();
 
-/// Dynamics from generated/mini_cheetah_rotors/full.hpp: the Mini Cheetah with MIT's twelve rotors as
+/// Dynamics from generated/mini_cheetah_rotors/full.hpp and simulation.hpp: the Mini Cheetah with MIT's twelve rotors as
 /// bodies (robots/mini_cheetah_rotors.topology.yaml; rbdc-sim --rotors full).
 std::unique_ptr<DynamicsModel> make_generated_rotor_dynamics();
 
