@@ -39,6 +39,15 @@ __attribute__((noinline)) void hot_mass_matrix_factor(const double* q, const dou
   g::mass_matrix_factor(q, out, out + g::nv * g::nv, out + g::nv * (g::nv + 1));
 }
 #endif
+#ifdef RBDC_HOT_HAS_LANES  // a scene "full" generated with the lane functions (docs/performance.md)
+__attribute__((noinline)) void hot_inverse_dynamics_lanes(const double* q, const double* v, const double* a,
+                                                           double* out) {
+  g::inverse_dynamics_lanes(q, v, a, out);
+}
+__attribute__((noinline)) void hot_mass_matrix_lanes(const double* q, const double*, const double*, double* out) {
+  g::mass_matrix_lanes(q, out);
+}
+#endif
 }
 
 using Function = void (*)(const double*, const double*, const double*, double*);
@@ -49,6 +58,9 @@ static const Entry entries[] = {
     {"quadratic_velocity_terms", hot_quadratic_velocity_terms}, {"gravity_terms", hot_gravity_terms},
 #ifdef RBDC_HOT_HAS_STRUCTURED_OUTPUTS
     {"bias", hot_bias}, {"mass_matrix_factor", hot_mass_matrix_factor},
+#endif
+#ifdef RBDC_HOT_HAS_LANES
+    {"inverse_dynamics_lanes", hot_inverse_dynamics_lanes}, {"mass_matrix_lanes", hot_mass_matrix_lanes},
 #endif
 };
 

@@ -14,7 +14,12 @@ need not stay live to the end of the function: outputs must not overlap inputs
 (docs/generated_api.md). The trailing run of stores is headed by `// outputs`. A comment
 names the phase of the algorithm (expr labels: `// outward pass: body 3 LF_knee`) where it changes.
 Constants print in their shortest round-trip form and a negative constant operand of + or − flips
-the operator (`x + Scalar(0.5)`, never `x - Scalar(-0.5)`). Same DAG in, same text out."""
+the operator (`x + Scalar(0.5)`, never `x - Scalar(-0.5)`). Same DAG in, same text out.
+
+A lane function (fn.lanes, lane_model.py) also declares `Lane = Lanes<Scalar>` (rbdc_gen/lanes.hpp),
+its lane inputs and constants as arrays `lane_v[…]`, `lane_c[…]` of make_lanes(…), loads the sin/cos
+of a lane angle from ex.LANES consecutive joint_trig entries, declares lane temporaries `const Lane`
+and stores lane k of a lane value as `t7[k]`."""
 
 from __future__ import annotations
 
@@ -95,17 +100,23 @@ def schedule(fn):
     return trig, temps, uses
 
 
-def _trig_block(trig, names, text, angle_names):
+def _trig_block(trig, names, text, angle_names, lanes=None):
     """Statements computing the joint sin/cos nodes `trig` in one joint_sincos call; names each node
-    after its joint (`sin_LF_knee`, angle_names: input symbol → identifier), else `sin_q_7`."""
+    after its joint (`sin_LF_knee`, angle_names: input symbol → identifier), else `sin_q_7`.
+    A lane angle (`lanes`: the function's LaneLayout) takes ex.LANES consecutive entries, so its sin
+    and cos are loaded as one lane value (lane angles sort first: their slots are aligned)."""
     if not trig:
         return []
     slot = {}  # angle symbol id -> its index in joint_angle, in trig order
     entries = []
     for node in trig:
-        if node.args[0].id not in slot:
-            slot[node.args[0].id] = len(entries)
-            entries.append(text(node.args[0], False))
+        angle = node.args[0]
+        if angle.id not in slot:
+            slot[angle.id] = len(entries)
+            if angle.lane:
+                entries += ["%s[%d]" % source for source in lanes.inputs[angle.value[0]][angle.value[1]]]
+            else:
+                entries.append(text(angle, False))
     n = len(entries)
     rows = [", ".join(entries[i:i + ANGLES_PER_LINE]) for i in range(0, n, ANGLES_PER_LINE)]
     lines = ["// sines and cosines of the joint angles",
@@ -114,8 +125,29 @@ def _trig_block(trig, names, text, angle_names):
     for node in trig:
         angle = node.args[0].value
         name = "%s_%s" % (node.op, angle_names.get(angle) or "%s_%d" % angle)
-        lines.append("const Scalar %s = joint_trig.%s[%d];" % (name, node.op, slot[node.args[0].id]))
+        if node.lane:
+            lines.append("const Lane %s = load_lanes(joint_trig.%s + %d);"
+                         % (name, node.op, slot[node.args[0].id]))
+        else:
+            lines.append("const Scalar %s = joint_trig.%s[%d];" % (name, node.op, slot[node.args[0].id]))
         names[node.id] = name
+    return lines
+
+
+def _lane_block(fn, order):
+    """A lane function's lane type, its lane inputs (those used other than by joint sin/cos) and lane
+    constants, each a lane_x[…] array of make_lanes(lane 0, …, lane 3)."""
+    lanes = fn.lanes
+    used = {n.value[0] for n in order if n.op == "sym" and n.lane} - {"lane_c"}
+    lines = ["// the isomorphic limbs, one per lane; lane_c: constants that differ between them",
+             "using Lane = Lanes<Scalar>;"]
+    arrays = [(name, ["make_lanes(%s)" % ", ".join("%s[%d]" % s for s in sources)
+                      for sources in lanes.inputs[name]]) for name in sorted(used)]
+    arrays.append(("lane_c", ["make_lanes(%s)" % ", ".join(format_constant(v) for v in values)
+                              for values in lanes.constants]))
+    for name, items in arrays:
+        if items:
+            lines.append("const Lane %s[%d] = {%s};" % (name, len(items), ",\n    ".join(items)))
     return lines
 
 
@@ -137,6 +169,8 @@ def emit_body(fn, angle_names=None):
             return format_constant(node.value)
         if node.op == "sym":
             return "%s[%d]" % node.value
+        if node.op == "lane_get":
+            return "%s[%d]" % (text(node.args[0], True), node.value)
         if node.op == "neg":
             body = "-" + text(node.args[0], True)
         elif node.op in ("add", "sub"):
@@ -150,7 +184,11 @@ def emit_body(fn, angle_names=None):
             return "%s(%s)" % (node.op, text(node.args[0], False))
         return "(%s)" % body if nested else body
 
-    lines += _trig_block(trig, names, text, angle_names or {})
+    angle_names = dict(angle_names or {})
+    if fn.lanes is not None:
+        lines += _lane_block(fn, ex.reachable(fn.output_exprs()))
+        angle_names.update(fn.lanes.angle_names)
+    lines += _trig_block(trig, names, text, angle_names, fn.lanes)
     label = None
     index = 0
     items = _early_stores(fn, temps)
@@ -170,7 +208,7 @@ def emit_body(fn, angle_names=None):
             lines.append(_marker(label))
         name = "t%d" % index
         index += 1
-        lines.append("const Scalar %s = %s;" % (name, text(node, False)))
+        lines.append("const %s %s = %s;" % ("Lane" if node.lane else "Scalar", name, text(node, False)))
         names[node.id] = name
     return lines
 

@@ -16,6 +16,12 @@ unfolded one up to round-off of the constants combined:
 Commutative operands (+, *) are ordered (constants first, then by node id) so that a + b and
 b + a are one node.
 
+Lanes (docs/performance.md, "One SIMD lane per leg"): symbols of an array named `lane_*` hold one
+value per lane (4 isomorphic limbs evaluated together, rbdcgen/lanes.py); every operation with a lane
+operand is a lane operation (scalar operands broadcast), except `lane_sum` (the sum over the lanes,
+a scalar) and `lane_get` (one lane, `value` its index). Constants that differ between lanes are
+such symbols, so folding (x·0, x·1, …) only applies where all lanes agree.
+
 Nodes carry the graph's `label` at their creation (set_label), which the emitter prints as markers,
 and a `position`: their id, or for a node rewritten after tracing the id of the node it replaces, so
 that sorting by (position, id) is a topological order that follows the algorithm.
@@ -28,6 +34,8 @@ import threading
 
 # Operation names. "const" and "sym" are leaves; the rest are the emitted operations.
 UNARY = ("neg", "sin", "cos", "sqrt")
+LANE_ARRAY_PREFIX = "lane_"  # symbols of these arrays are lane values
+LANES = 4  # lanes per lane value: one AVX register of doubles
 BINARY = ("add", "sub", "mul", "div")
 COMMUTATIVE = ("add", "mul")
 
@@ -63,6 +71,10 @@ class Graph:
     def new_node(self, op, args, value):
         node = Expr(op, args, value, len(self.nodes), self, self.label)
         node.position = node.id if self.position is None else self.position
+        if op == "sym":
+            node.lane = value[0].startswith(LANE_ARRAY_PREFIX)
+        else:
+            node.lane = op not in ("lane_sum", "lane_get") and any(a.lane for a in args)
         self.nodes.append(node)
         return node
 
@@ -80,9 +92,10 @@ def set_label(label):
 
 
 class Expr:
-    """One node. `value` is the float of a constant or the (array, index) of a symbol."""
+    """One node. `value` is the float of a constant or the (array, index) of a symbol; `lane` tells
+    whether it holds one value per lane."""
 
-    __slots__ = ("op", "args", "value", "id", "graph", "label", "position")
+    __slots__ = ("op", "args", "value", "id", "graph", "label", "position", "lane")
 
     def __init__(self, op, args, value, node_id, graph, label=None):
         self.op = op
@@ -265,6 +278,16 @@ def sqrt(x):
     return _node("sqrt", x)
 
 
+def lane_sum(x):
+    """The scalar sum of the lanes of x (4·x for a value the lanes share)."""
+    return _node("lane_sum", x) if x.lane else mul(const(float(LANES)), x)
+
+
+def lane_get(x, lane):
+    """Lane `lane` of x as a scalar (x itself when it is no lane value)."""
+    return x.graph.intern("lane_get", (x,), int(lane)) if x.lane else x
+
+
 def reachable(outputs):
     """Nodes reaching `outputs` (dead-code elimination), in a deterministic topological order:
     depth-first post-order, operands before users, outputs visited in the given order."""
@@ -361,16 +384,30 @@ _EVAL = {
 }
 
 
+def _lanewise(function, args):
+    """function over floats applied lane by lane where an argument is a lane value (a tuple)."""
+    if not any(isinstance(a, tuple) for a in args):
+        return function(*args)
+    return tuple(function(*(a[k] if isinstance(a, tuple) else a for a in args)) for k in range(LANES))
+
+
 def evaluate(outputs, inputs):
-    """Numeric value of each node in `outputs` given `inputs` = {array name: list of floats}.
-    The reference evaluator for tests and debugging."""
+    """Numeric value of each node in `outputs` given `inputs` = {array name: list of floats}; a
+    lane array holds a tuple of LANES floats per entry. The reference evaluator for tests and
+    debugging."""
     values = {}
     for node in reachable(outputs):
         if node.op == "const":
             values[node.id] = node.value
         elif node.op == "sym":
             array, index = node.value
-            values[node.id] = float(inputs[array][index])
+            value = inputs[array][index]
+            values[node.id] = tuple(map(float, value)) if node.lane else float(value)
+        elif node.op == "lane_sum":
+            x = values[node.args[0].id]
+            values[node.id] = (x[0] + x[1]) + (x[2] + x[3])
+        elif node.op == "lane_get":
+            values[node.id] = values[node.args[0].id][node.value]
         else:
-            values[node.id] = _EVAL[node.op](*(values[a.id] for a in node.args))
+            values[node.id] = _lanewise(_EVAL[node.op], [values[a.id] for a in node.args])
     return [values[node.id] for node in outputs]

@@ -7,6 +7,7 @@ and cos, `total` is the sum of all of them (every operation counts one)."""
 from __future__ import annotations
 
 from . import expr as ex
+from .lane_functions import SCALAR
 
 _KIND = {"mul": "mul", "add": "add", "sub": "add", "div": "div", "sqrt": "sqrt",
          "sin": "trig", "cos": "trig", "neg": "neg"}
@@ -20,12 +21,14 @@ def _result(counts):
 
 
 def count_ops(fn):
-    """Operations of the live DAG of `fn` after folding, CSE and DCE (what emit_body prints)."""
+    """Operations of the live DAG of `fn` after folding, CSE and DCE (what emit_body prints). A lane
+    operation counts once per lane (ex.LANES), the sum over the lanes as LANES − 1 additions."""
     counts = {}
     for node in ex.reachable(fn.output_exprs()):
-        kind = _KIND.get(node.op)
+        kind = "add" if node.op == "lane_sum" else _KIND.get(node.op)
         if kind is not None:
-            counts[kind] = counts.get(kind, 0) + 1
+            times = ex.LANES - 1 if node.op == "lane_sum" else ex.LANES if node.lane else 1
+            counts[kind] = counts.get(kind, 0) + times
     return _result(counts)
 
 
@@ -170,7 +173,9 @@ class _Tally:
 
 
 def generic_ops(robot, scene, name):
-    """Operation count of the runtime's generic dense algorithm for function `name`."""
+    """Operation count of the runtime's generic dense algorithm for function `name` (for a lane
+    function, of its scalar namesake's)."""
+    name = SCALAR.get(name, name)
     if name in _DERIVATIVE_DIRECTIONS:
         return _generic_derivative_ops(robot, scene, name)
     if name in _COMBINED_PARTS:  # the runtime's separate calls for the same outputs

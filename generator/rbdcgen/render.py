@@ -27,6 +27,7 @@ from .version import VERSION
 SUPPORT_HEADER = "rbdc_gen/support.hpp"
 COMMON_DIR = "common"  # <robot>/common/: function bodies shared by the robot's scenes
 BATCH_HEADER = "rbdc_gen/batch.hpp"  # SIMD packs of states (docs/performance.md)
+LANES_HEADER = "rbdc_gen/lanes.hpp"  # one SIMD lane per limb, for the lane functions only
 
 # The Eigen type aliases of docs/generated_api.md: name, rows, cols (as C++ expressions), doc.
 ALIASES = (
@@ -124,6 +125,8 @@ def body_record(function, arguments: list[dict], robot, robot_id: str, robot_inp
               "arguments": [{k: a[k] for k in ("name", "rows", "cols", "doc", "is_input")} for a in arguments],
               "ops_table": ops_table(count_ops(function)), "inputs": robot_inputs,
               "generator_version": VERSION}
+    if function.lanes is not None:
+        record["lanes"] = True  # the body includes LANES_HEADER
     digest = hashlib.sha256(json.dumps(record, sort_keys=True).encode()).hexdigest()
     key = f"{function.name}_{digest[:12]}"
     return {**record, "key": key, "include": f"{robot_id}/{COMMON_DIR}/{key}.hpp",
@@ -175,7 +178,8 @@ def render_robot_scene(robot, scene, functions, robot_name: str, inputs, layout:
               "umbrella_include": umbrella,
               "aliases": [{"name": n, "rows": r, "cols": c, "doc": d} for n, r, c, d in ALIASES]}
     records = [function_record(f, robot, scene, robot_id, scene_id, robot_inputs) for f in functions]
-    files = [support_file(layout), batch_file(layout),
+    lane_files = [lanes_file(layout)] if any(f.lanes is not None for f in functions) else []
+    files = [support_file(layout), batch_file(layout), *lane_files,
              GeneratedFile(umbrella, environment.get_template("robot_scene.hpp.j2").render(
                  **common, functions=records))]
     function_template = environment.get_template("function.hpp.j2")
@@ -196,3 +200,9 @@ def batch_file(layout: Layout) -> GeneratedFile:
     text = template_environment(layout).get_template("batch.hpp.j2").render(
         generator_version=VERSION, inputs=[])
     return GeneratedFile(BATCH_HEADER, text)
+
+
+def lanes_file(layout: Layout) -> GeneratedFile:
+    text = template_environment(layout).get_template("lanes.hpp.j2").render(
+        generator_version=VERSION, inputs=[])
+    return GeneratedFile(LANES_HEADER, text)

@@ -32,6 +32,9 @@ QUANTITIES = (
 # Combined functions: several quantities of one use traced as one function (shared kinematics, CSE
 # across outputs), emitted after QUANTITIES and only when a scene lists them.
 COMBINED = ("step_terms",)
+# Functions with the isomorphic limbs in SIMD lanes (lane_functions.py), emitted after those and only
+# when a scene lists them.
+LANE_QUANTITIES = ("inverse_dynamics_lanes", "mass_matrix_lanes")
 FEET_QUANTITIES = ("feet_positions", "feet_velocities", "feet_jacobian", "feet_force_terms",
                    "step_terms")
 OSC_QUANTITIES = ("osc_open_chain", "osc_closed_chain")
@@ -118,7 +121,7 @@ class Scene:
             if refusal(name) is not None:
                 self.fail("quantities", "'%s' does not apply to robot '%s' (%s)"
                           % (name, robot.name, refusal(name)))
-        return tuple(q for q in QUANTITIES + COMBINED if q in self.quantities)
+        return tuple(q for q in QUANTITIES + COMBINED + LANE_QUANTITIES if q in self.quantities)
 
     def derivatives_for(self, robot):
         """The derivative functions to emit, in DERIVATIVES order; feet ones need feet."""
@@ -160,7 +163,8 @@ def scene_from_dict(data, source="<scene>") -> Scene:
         fail("name", "required, a C++ identifier (it names the namespace)")
     quantities = None
     if data.get("quantities") is not None:
-        quantities = _string_list(fail, "quantities", data["quantities"], QUANTITIES + COMBINED)
+        quantities = _string_list(fail, "quantities", data["quantities"],
+                                  QUANTITIES + COMBINED + LANE_QUANTITIES)
     gravity = None
     if "gravity" in data:
         g = data["gravity"]

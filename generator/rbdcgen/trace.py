@@ -6,7 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Dict, Tuple
 
-from . import coupling, derivatives
+from . import coupling, derivatives, lane_functions
 from . import expr as ex
 from .algorithms import crba, forward_dynamics, jacobian, kinematics, osc, rnea
 from .algorithms.model import TracedModel
@@ -38,6 +38,7 @@ class Function:
     outputs: Tuple[Argument, ...]
     values: Dict[str, Tuple[ex.Expr, ...]]
     graph: ex.Graph
+    lanes: object = None  # lane_model.LaneLayout of a lane function (lane_functions.py), else None
 
     def output_exprs(self):
         """All output entries in signature order (column-major within each output)."""
@@ -170,7 +171,7 @@ def _spec(robot, nf):
 def trace_function(robot, scene, name):
     """Traces one function of the scene into a fresh graph."""
     nf = len(scene.feet_for(robot))
-    spec = {**_spec(robot, nf), **derivatives.spec(robot, nf)}
+    spec = {**_spec(robot, nf), **derivatives.spec(robot, nf), **lane_functions.spec(robot, nf)}
     if name not in spec:
         raise KeyError("unknown function '%s'" % name)
     doc, input_names, output_specs, build = spec[name]
@@ -180,7 +181,9 @@ def trace_function(robot, scene, name):
     args = _input_args(robot, nf)
     zero = tuple(n for n in scene.zero_inputs if n in input_names)
     with ex.Graph() as graph:
-        m = TracedModel(robot, scene, zero_inputs=zero)
+        lanes = name in lane_functions.SCALAR
+        m = (lane_functions.model(robot, scene, zero) if lanes
+             else TracedModel(robot, scene, zero_inputs=zero))
         try:
             values = coupling.traced_values(robot, name, m, build, output_specs)
         except ZeroDivisionError:
@@ -196,7 +199,8 @@ def trace_function(robot, scene, name):
         flat = iter(ex.absorb_negations([e for arg in outputs for e in values[arg.name]]))
         values = {arg.name: tuple(next(flat) for _ in range(arg.size)) for arg in outputs}
     inputs = tuple(args[n] for n in input_names if n not in zero)
-    return Function(name=name, doc=doc, inputs=inputs, outputs=outputs, values=values, graph=graph)
+    return Function(name=name, doc=doc, inputs=inputs, outputs=outputs, values=values, graph=graph,
+                    lanes=m.layout() if lanes else None)
 
 
 def trace_scene(robot, scene):

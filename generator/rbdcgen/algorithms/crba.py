@@ -26,7 +26,7 @@ def mass_matrix(m):
         m.mark("inward pass, composite inertias (CRBA)", i)
         j = robot.parent[i]
         X = m.X_up(i)
-        composite[j] = composite[j] + X.congruence(composite[i])  # Eq. 26
+        composite[j] = composite[j] + m.into_parent(i, X.congruence(composite[i]))  # Eq. 26
         F = composite[i].apply(m.motion_subspace(i))             # Eq. 28: F_i = I_ci S_i
         col = m.joint(i).v_index
         H[col][col] = sp.dot(m.motion_subspace(i), F)             # H_ii = S_iᵀ F_i

@@ -104,20 +104,24 @@ class TracedModel:
         """X_λ(i)^i = X_J(q_i) X_T(i) (Eqs. 9-11) as a chain keeping each factor's sparsity."""
         key = ("X_up", i)
         if key not in self._cache:
-            joint = self.joint(i)
-            rotation = sp.snap_rotation(joint.rotation)
-            identity = all(rotation[r][c] == (1.0 if r == c else 0.0)
-                           for r in range(3) for c in range(3))
-            E_T = sp.mat(rotation)
-            r_T = sp.vec(joint.translation) if any(joint.translation) else None
-            X_T = sp.Transform(None if identity else E_T, r_T)
-            q = self.qi(i)
-            if joint.type == "revolute":
-                X_J = sp.Transform(sp.coordinate_rotation(self.axis(i), ex.cos(q), ex.sin(q)), None)
-            else:
-                X_J = sp.Transform(None, tuple(q * a for a in sp.vec(self.axis(i))))
-            self._cache[key] = sp.Chain(X_T, X_J)
+            self._cache[key] = sp.Chain(self.X_tree(i), self.X_joint(i))
         return self._cache[key]
+
+    def X_tree(self, i):
+        """X_T(i) (Eq. 10): joint i's constant placement in λ(i)."""
+        joint = self.joint(i)
+        rotation = sp.snap_rotation(joint.rotation)
+        identity = all(rotation[r][c] == (1.0 if r == c else 0.0) for r in range(3) for c in range(3))
+        E_T = sp.mat(rotation)
+        r_T = sp.vec(joint.translation) if any(joint.translation) else None
+        return sp.Transform(None if identity else E_T, r_T)
+
+    def X_joint(self, i):
+        """X_J(q_i) (Eq. 9): a rotation about the axis by q_i, or a translation along it."""
+        q = self.qi(i)
+        if self.joint(i).type == "revolute":
+            return sp.Transform(sp.coordinate_rotation(self.axis(i), ex.cos(q), ex.sin(q)), None)
+        return sp.Transform(None, tuple(q * a for a in sp.vec(self.axis(i))))
 
     # --- actuators (docs/model.md, "Actuators"; runtime/src/rotors.hpp) ----------------------------
     def rotor(self, i):
@@ -143,6 +147,11 @@ class TracedModel:
         """Joint i's reflected inertia on M's diagonal (0 without)."""
         actuator = self.joint(i).actuator
         return 0.0 if actuator is None else actuator.armature
+
+    def into_parent(self, i, value):
+        """Body i's wrench or composite inertia (in λ(i) coordinates) as it joins λ(i)'s: unchanged
+        here; summed over the lanes where a lane limb meets the trunk (lane_model.LaneModel)."""
+        return value
 
     def inertia(self, i):
         key = ("inertia", i)

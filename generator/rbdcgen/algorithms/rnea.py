@@ -32,11 +32,11 @@ def inward_pass(m, forces, rotor_forces=None):
         m.mark("inward pass", i)
         j = m.robot.parent[i]
         tau[i] = sp.dot(m.motion_subspace(i), forces[i])
-        forces[j] = sp.vadd(forces[j], m.X_up(i).force_T(forces[i]))
+        forces[j] = sp.vadd(forces[j], m.into_parent(i, m.X_up(i).force_T(forces[i])))
         if rotor_forces is not None and rotor_forces[i] is not None:
             X_rot, S_rot, _ = m.rotor(i)
             tau[i] = tau[i] + sp.dot(S_rot, rotor_forces[i])
-            forces[j] = sp.vadd(forces[j], X_rot.force_T(rotor_forces[i]))
+            forces[j] = sp.vadd(forces[j], m.into_parent(i, X_rot.force_T(rotor_forces[i])))
     root = list(forces[0]) if m.robot.floating_base else []
     return tuple(root + tau[1:])
 

@@ -1,0 +1,192 @@
+"""The robot traced in lanes (docs/performance.md, "One SIMD lane per leg"): the trunk and ONE limb
+whose joint variables and constants hold one value per isomorphic limb (rbdcgen/limbs.py), so that
+the algorithms of this package, traced unchanged on this reduced tree, evaluate the four limbs'
+passes together as lane operations while the trunk stays scalar.
+
+Reduced tree: body 0 is the trunk, bodies 1 … n_limb the lane limb (limb k's l-th body in lane k of
+body l + 1). Its joint l has the lane inputs lane_q[l], lane_v[l], lane_a[l] (lane k = the full
+robot's coordinate of limb k's joint l); a constant that differs between limbs is the lane symbol
+lane_c[c] (values in `constants`). Where a limb's wrench joins the trunk's (into_parent) the lanes
+are summed. `scatter` maps the reduced outputs back to the full robot's coordinates."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+from .. import expr as ex
+from .. import spatial as sp
+from .model import TracedModel
+
+
+@dataclass(frozen=True)
+class LaneLayout:
+    """What the emitter needs of a lane function: the values of its lane symbols."""
+    constants: tuple   # lane_c[c]: one float per lane
+    inputs: dict       # "lane_q" / "lane_v" / "lane_a" → per lane joint l, the (array, index) per lane
+    angle_names: dict  # ("lane_q", l) → the identifier its sin/cos are named by
+
+    def with_lanes(self, inputs):
+        """Inputs {array: floats} of the full robot with the lane arrays added (expr.evaluate)."""
+        lanes = {name: [tuple(inputs[array][index] for array, index in sources) for sources in joints]
+                 for name, joints in self.inputs.items() if all(s[0] in inputs for s in joints[0])}
+        return {**inputs, **lanes, "lane_c": list(self.constants)}
+
+
+class LaneModel(TracedModel):
+    """TracedModel of the reduced tree: `robot` is the trunk and the lane limb, `full` the robot."""
+
+    def __init__(self, robot, scene, limbs, zero_inputs=()):
+        super().__init__(robot, scene, zero_inputs)
+        self.full = self.robot
+        self.limbs = limbs
+        self.constants = []  # lane constant c: (value of lane 0, …, value of lane 3)
+        self._constant_index = {}
+        self.robot = _reduced_tree(self.full, limbs)
+        # lane_x[l] in lane k is the full robot's input x[k-th limb's joint l]: (array, index) per lane.
+        self.lane_inputs = {
+            "lane_" + name: [tuple((name, getattr(self.full.joints[limb[l]], attr)) for limb in limbs)
+                             for l in range(len(limbs[0]))]
+            for name, attr in (("q", "q_index"), ("v", "v_index"), ("a", "v_index"))}
+
+    def layout(self):
+        names = {}
+        for l in range(1, self.robot.nb):
+            joint_names = [self.full.joints[b].name for b in self._lanes_of(l)]
+            suffix = joint_names[0]
+            while not all(n.endswith(suffix) for n in joint_names):
+                suffix = suffix[1:]
+            names[("lane_q", l - 1)] = "lanes_" + (suffix.strip("_") or "joint_%d" % l)
+        return LaneLayout(tuple(self.constants), self.lane_inputs, names)
+
+    # --- lane values --------------------------------------------------------------------------
+    def lane(self, values):
+        """A constant with one value per lane: an ordinary constant when the lanes agree."""
+        values = tuple(0.0 if v == 0.0 else float(v) for v in values)
+        if all(v == values[0] for v in values):
+            return ex.const(values[0])
+        if values not in self._constant_index:
+            self._constant_index[values] = len(self.constants)
+            self.constants.append(values)
+        return ex.symbol("lane_c", self._constant_index[values])
+
+    def _lane_input(self, name, i):
+        if name in self.zero_inputs:
+            return ex.const(0.0)
+        return ex.symbol("lane_" + name, i - 1)
+
+    def _lanes_of(self, i):
+        """The full robot's bodies in the lanes of reduced body i ≥ 1."""
+        return [limb[i - 1] for limb in self.limbs]
+
+    # --- the reduced tree's joints and bodies ------------------------------------------------
+    def qi(self, i):
+        return self._lane_input("q", i)
+
+    def vi(self, i):
+        return self._lane_input("v", i)
+
+    def ai(self, i):
+        return self._lane_input("a", i)
+
+    def X_tree(self, i):
+        """X_T of the lane limb's joint i: each entry a lane constant."""
+        joints = [self.full.joints[b] for b in self._lanes_of(i)]
+        rotations = [sp.snap_rotation(j.rotation) for j in joints]
+        identity = all(r[a][b] == (1.0 if a == b else 0.0)
+                       for r in rotations for a in range(3) for b in range(3))
+        E_T = tuple(tuple(self.lane([r[a][b] for r in rotations]) for b in range(3)) for a in range(3))
+        r_T = tuple(self.lane([j.translation[a] for j in joints]) for a in range(3))
+        return sp.Transform(None if identity else E_T,
+                            r_T if any(any(j.translation) for j in joints) else None)
+
+    def inertia(self, i):
+        if i == 0:
+            return super().inertia(0)
+        key = ("inertia", i)
+        if key not in self._cache:
+            lanes = [sp.Inertia.from_body(self.full.bodies[b]) for b in self._lanes_of(i)]
+            m = self.lane([x.m.value for x in lanes])
+            h = tuple(self.lane([x.h[a].value for x in lanes]) for a in range(3))
+            ibar = tuple(tuple(self.lane([x.Ibar[a][b].value for x in lanes]) for b in range(3))
+                         for a in range(3))
+            self._cache[key] = sp.Inertia(m, h, sp.symmetric(ibar))
+        return self._cache[key]
+
+    def rotor(self, i):
+        return None  # limbs.isomorphic_limbs refuses rotors
+
+    def armature(self, i):
+        values = [0.0 if j.actuator is None else j.actuator.armature
+                  for j in (self.full.joints[b] for b in self._lanes_of(i))]
+        return values[0] if all(v == values[0] for v in values) else self.lane(values)
+
+    def into_parent(self, i, value):
+        """A limb's wrench or composite inertia joins the trunk's as the sum of its lanes."""
+        return _sum_lanes(value) if self.robot.parent[i] == 0 else value
+
+    # --- outputs --------------------------------------------------------------------------------
+    def _full_index(self, x, lane):
+        """The full robot's dof of the reduced tree's dof x in lane `lane` (root dofs are shared)."""
+        root = 6 if self.full.floating_base else 0
+        return x if x < root else self.full.joints[self.limbs[lane][x - root]].v_index
+
+    def scatter(self, reduced):
+        """A joint-space vector of the reduced tree as the full robot's: lane k of the lane limb's
+        joint l goes to limb k's joint l."""
+        full = [None] * self.full.nv
+        for x, value in enumerate(reduced):
+            for k in range(ex.LANES):
+                full[self._full_index(x, k)] = ex.lane_get(value, k)
+        return tuple(full)
+
+    def scatter_matrix(self, reduced):
+        """A joint-space matrix (rows) of the reduced tree as the full robot's; entries between two
+        different limbs are zero (no body of one limb moves with the other's joints)."""
+        full = [[ex.const(0.0)] * self.full.nv for _ in range(self.full.nv)]
+        for r, row in enumerate(reduced):
+            for c, value in enumerate(row):
+                for k in range(ex.LANES):
+                    full[self._full_index(r, k)][self._full_index(c, k)] = ex.lane_get(value, k)
+        return full
+
+
+def _sum_lanes(value):
+    """The sum over the lanes of a vector (tuple) or a spatial inertia."""
+    if isinstance(value, sp.Inertia):
+        return sp.Inertia(ex.lane_sum(value.m), _sum_lanes(value.h),
+                          sp.symmetric(tuple(_sum_lanes(row) for row in value.Ibar)))
+    return tuple(ex.lane_sum(x) for x in value)
+
+
+def _reduced_tree(robot, limbs):
+    """The trunk and limb 0, renumbered 1 … n (rbdc order kept); joints keep limb 0's types and
+    axes, their q and v indices count in the reduced tree; names join the lanes' names."""
+    limb = limbs[0]
+    number = {0: 0, **{body: k + 1 for k, body in enumerate(limb)}}
+    root_q, root_v = (7, 6) if robot.floating_base else (0, 0)
+    parent = (-1,) + tuple(number[robot.parent[b]] for b in limb)
+    nb = len(parent)
+    children = tuple(tuple(c for c in range(1, nb) if parent[c] == i) for i in range(nb))
+    subtree = tuple(tuple(c for c in range(i, nb) if _is_ancestor(parent, i, c)) for i in range(nb))
+    support = tuple(tuple(a for a in range(1, nb) if _is_ancestor(parent, a, i)) for i in range(nb))
+
+    def lane_name(items, l):
+        return "/".join(items[lb[l]].name for lb in limbs)
+
+    bodies = (robot.bodies[0],) + tuple(replace(robot.bodies[b], name=lane_name(robot.bodies, l))
+                                        for l, b in enumerate(limb))
+    joints = (robot.joints[0],) + tuple(
+        replace(robot.joints[b], name=lane_name(robot.joints, l), parent=parent[l + 1],
+                q_index=root_q + l, v_index=root_v + l)
+        for l, b in enumerate(limb))
+    return replace(robot, nb=nb, nq=root_q + len(limb), nv=root_v + len(limb),
+                   pred=tuple(parent[1:]), succ=tuple(range(1, nb)), parent=parent,
+                   support=support, children=children, subtree=subtree, bodies=bodies,
+                   joints=joints, feet=(), couplings=())
+
+
+def _is_ancestor(parent, a, i):
+    """Whether a is i or on its path to the root."""
+    while i > 0 and i != a:
+        i = parent[i]
+    return i == a

@@ -1,0 +1,39 @@
+"""Functions traced with the isomorphic limbs in SIMD lanes (algorithms/lane_model.py): the same
+outputs as their scalar namesakes, emitted only when a scene lists them (scene.LANE_QUANTITIES)."""
+
+from __future__ import annotations
+
+from .algorithms import crba, rnea
+from .algorithms.lane_model import LaneModel
+from .limbs import isomorphic_limbs
+
+SCALAR = {"inverse_dynamics_lanes": "inverse_dynamics", "mass_matrix_lanes": "mass_matrix"}  # lane function → the function it equals
+
+
+def model(robot, scene, zero_inputs):
+    """The traced model of a lane function: the trunk and one lane limb."""
+    return LaneModel(robot, scene, isomorphic_limbs(robot), zero_inputs)
+
+
+def spec(robot, nf):
+    """trace.py's function table for the lane functions (same shape as trace._spec)."""
+    nv = robot.nv
+    return {
+        "inverse_dynamics_lanes": (
+            "Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3), the four isomorphic limbs' "
+            "passes evaluated together in SIMD lanes, the trunk scalar; equals inverse_dynamics.",
+            ("q", "v", "a"),
+            [("tau", nv, 1, "generalised forces M a + c + g")],
+            lambda m: {"tau": m.scatter(rnea.inverse_dynamics(m))}),
+        "mass_matrix_lanes": (
+            "Joint-space inertia matrix M (CRBA, paper 000 Alg. 5), the four isomorphic limbs' "
+            "passes evaluated together in SIMD lanes, the trunk scalar; equals mass_matrix.",
+            ("q",),
+            [("M", nv, nv, "mass matrix, full symmetric")],
+            lambda m: {"M": _columns(m.scatter_matrix(crba.mass_matrix(m)))}),
+    }
+
+
+def _columns(rows):
+    """Column-major entries of a square matrix given as rows."""
+    return tuple(rows[r][c] for c in range(len(rows)) for r in range(len(rows)))
