@@ -93,9 +93,10 @@ double implicit_friction(const ContactParameters& p, double u_free, double compl
   double u = u_free + compliance * guess;
   if (!(sign * u > lo && sign * u < hi)) u = 0;
   for (int i = 0; i < 100; ++i) {
-    const double g = sign * (u - u_free + k * friction_coefficient(p, u));  // increasing through the root
+    const double mu = friction_coefficient(p, u);
+    const double g = sign * (u - u_free + k * mu);  // increasing through the root
     if (g < 0) lo = sign * u; else hi = sign * u;
-    if (std::abs(g) < 1e-9 * p.v_static || hi - lo < 1e-12 * p.v_static) break;
+    if (std::abs(g) < 1e-9 * p.v_static || hi - lo < 1e-12 * p.v_static) return -mu * f_normal;
     const double slope = 1 + k * friction_slope(p, u);
     double next = sign * (u - sign * g / slope);
     if (!(slope > 0) || next <= lo || next >= hi) next = 0.5 * (lo + hi);
