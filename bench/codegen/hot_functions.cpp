@@ -1,14 +1,21 @@
 // bench/codegen/metrics: one out-of-line wrapper per hot generated function of the Mini Cheetah
-// (scene "full"), so that callgrind can count the instructions of one call and objdump can show the
-// stack traffic (spills) of one function body. Not a benchmark: the rough ns are a side note.
+// (scene "full"; scene "limb_lanes" with RBDC_HOT_HAS_LANES), so that callgrind can count the
+// instructions of one call and objdump can show the stack traffic (spills) of one function body.
+// Not a benchmark: the rough ns are a side note.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 
 #include "mini_cheetah/full.hpp"
+#ifdef RBDC_HOT_HAS_LANES
+#include "mini_cheetah/limb_lanes.hpp"
+#endif
 
 namespace g = rbdc_gen::mini_cheetah::full;
+#ifdef RBDC_HOT_HAS_LANES
+namespace lanes = rbdc_gen::mini_cheetah::limb_lanes;
+#endif
 
 extern "C" {
 __attribute__((noinline)) void hot_inverse_dynamics(const double* q, const double* v, const double* a,
@@ -39,13 +46,16 @@ __attribute__((noinline)) void hot_mass_matrix_factor(const double* q, const dou
   g::mass_matrix_factor(q, out, out + g::nv * g::nv, out + g::nv * (g::nv + 1));
 }
 #endif
-#ifdef RBDC_HOT_HAS_LANES  // a scene "full" generated with the lane functions (docs/performance.md)
+#ifdef RBDC_HOT_HAS_LANES  // the legs in SIMD lanes, scene "limb_lanes" (docs/performance.md)
 __attribute__((noinline)) void hot_inverse_dynamics_lanes(const double* q, const double* v, const double* a,
                                                            double* out) {
-  g::inverse_dynamics_lanes(q, v, a, out);
+  lanes::inverse_dynamics_lanes(q, v, a, out);
+}
+__attribute__((noinline)) void hot_bias_lanes(const double* q, const double* v, const double*, double* out) {
+  lanes::bias_lanes(q, v, out);
 }
 __attribute__((noinline)) void hot_mass_matrix_lanes(const double* q, const double*, const double*, double* out) {
-  g::mass_matrix_lanes(q, out);
+  lanes::mass_matrix_lanes(q, out);
 }
 #endif
 }
@@ -61,6 +71,7 @@ static const Entry entries[] = {
 #endif
 #ifdef RBDC_HOT_HAS_LANES
     {"inverse_dynamics_lanes", hot_inverse_dynamics_lanes}, {"mass_matrix_lanes", hot_mass_matrix_lanes},
+    {"bias_lanes", hot_bias_lanes},
 #endif
 };
 

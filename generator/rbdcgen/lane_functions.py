@@ -7,7 +7,8 @@ from .algorithms import crba, rnea
 from .algorithms.lane_model import LaneModel
 from .limbs import isomorphic_limbs
 
-SCALAR = {"inverse_dynamics_lanes": "inverse_dynamics", "mass_matrix_lanes": "mass_matrix"}  # lane function → the function it equals
+SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
+          "mass_matrix_lanes": "mass_matrix"}  # lane function → the function it equals
 
 
 def model(robot, scene, zero_inputs):
@@ -19,6 +20,12 @@ def spec(robot, nf):
     """trace.py's function table for the lane functions (same shape as trace._spec)."""
     nv = robot.nv
     return {
+        "bias_lanes": (
+            "Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes "
+            "evaluated together in SIMD lanes, the trunk scalar; equals bias.",
+            ("q", "v"),
+            [("cg", nv, 1, "quadratic velocity and gravity terms c + g")],
+            lambda m: {"cg": m.scatter(rnea.bias(m))}),
         "inverse_dynamics_lanes": (
             "Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3), the four isomorphic limbs' "
             "passes evaluated together in SIMD lanes, the trunk scalar; equals inverse_dynamics.",
