@@ -2,6 +2,8 @@
 and every lane function equal to its scalar namesake on random states (expr.evaluate, lane by lane),
 on the Mini Cheetah. The emitted C++ is checked against the runtime by `rbdc verify`."""
 
+import math
+import random
 import unittest
 from dataclasses import replace
 
@@ -9,6 +11,7 @@ import mini_cheetah
 from numeric_check import evaluate, max_relative_error, random_state
 
 from rbdcgen.flops import count_ops
+from rbdcgen.ir import Actuator
 from rbdcgen.lane_functions import SCALAR
 from rbdcgen.limbs import LimbError, isomorphic_limbs
 from rbdcgen.scene import default_scene
@@ -23,19 +26,31 @@ class MiniCheetahLanes(unittest.TestCase):
 
     def test_lane_functions_equal_scalar(self):
         robot = mini_cheetah.load()
+        self._check_equal(robot, seeds=(1, 2, 3))
+        for name, scalar_name in SCALAR.items():  # a lane operation counts once per lane
+            lanes, scalar = (trace_function(robot, default_scene(), n) for n in (name, scalar_name))
+            self.assertGreaterEqual(count_ops(lanes)["total"], count_ops(scalar)["total"] * 0.95)
+
+    def test_limbs_with_different_constants(self):
+        """Limbs equal only in shape: every offset, joint frame, mass, inertia and armature differs
+        between limbs (lane constants everywhere), oblique axes shared by the lanes."""
+        for base, seed in (("floating", 4), ("fixed", 5)):
+            robot = _scrambled_limbs(mini_cheetah.load(base), random.Random(seed))
+            self._check_equal(robot)
+
+    def _check_equal(self, robot, seeds=(7,)):
+        """Every lane function equals its scalar namesake on random states."""
         scene = default_scene()
         for name, scalar_name in SCALAR.items():
             lanes = trace_function(robot, scene, name)
             scalar = trace_function(robot, scene, scalar_name)
-            for seed in (1, 2, 3):
+            for seed in seeds:
                 state = random_state(robot, len(robot.feet), seed)
                 got = evaluate(lanes, lanes.lanes.with_lanes(state))
                 want = evaluate(scalar, state)
                 for output in want:
                     self.assertLess(max_relative_error(got[output], want[output]), 1e-13,
                                     (name, output, seed))
-            # a lane operation counts once per lane: no fewer operations than the scalar code
-            self.assertGreaterEqual(count_ops(lanes)["total"], count_ops(scalar)["total"] * 0.95)
 
     def test_limbs_must_match(self):
         robot = mini_cheetah.load()
@@ -43,6 +58,40 @@ class MiniCheetahLanes(unittest.TestCase):
         joints[12] = replace(joints[12], type="prismatic")  # RH knee: no longer the same chain
         with self.assertRaises(LimbError):
             isomorphic_limbs(replace(robot, joints=tuple(joints)))
+
+
+def _rotation(rng):
+    """A random rotation matrix (Gram-Schmidt of a random 3×3)."""
+    rows = []
+    while len(rows) < 3:
+        row = [rng.gauss(0, 1) for _ in range(3)]
+        for other in rows:
+            dot = sum(a * b for a, b in zip(row, other))
+            row = [a - dot * b for a, b in zip(row, other)]
+        norm = math.sqrt(sum(a * a for a in row))
+        if norm > 0.1:
+            rows.append(tuple(a / norm for a in row))
+    return tuple(rows)
+
+
+def _scrambled_limbs(robot, rng):
+    """robot with every limb body's constants drawn at random; joint l of every limb gets the same
+    random oblique axis."""
+    limbs = isomorphic_limbs(robot)
+    bodies, joints = list(robot.bodies), list(robot.joints)
+    axes = [_rotation(rng)[0] for _ in limbs[0]]
+    for limb in limbs:
+        for l, b in enumerate(limb):
+            R = _rotation(rng)
+            moments = [rng.uniform(0.01, 0.1) for _ in range(3)]
+            inertia = tuple(tuple(sum(R[k][i] * moments[k] * R[k][j] for k in range(3)) for j in range(3))
+                            for i in range(3))
+            bodies[b] = replace(bodies[b], mass=rng.uniform(0.1, 2.0), inertia_com=inertia,
+                                com=tuple(rng.uniform(-0.1, 0.1) for _ in range(3)))
+            joints[b] = replace(joints[b], axis=axes[l], rotation=_rotation(rng),
+                                translation=tuple(rng.uniform(-0.3, 0.3) for _ in range(3)),
+                                actuator=Actuator(armature=rng.uniform(0.0, 0.1)))
+    return replace(robot, bodies=tuple(bodies), joints=tuple(joints))
 
 
 if __name__ == "__main__":
