@@ -1,18 +1,13 @@
 #!/bin/sh
 # Regenerates results/sim/: the MuJoCo comparison (table, summary CSV, figures), the speed profile of
-# rbdc-sim and the Table I unit check. Usage: results/scripts/sim.sh [BUILD_DIR]   (default: build)
+# rbdc-sim (sim_speed.sh, this build only) and the Table I unit check.
+# Usage: results/scripts/sim.sh [BUILD_DIR]   (default: build)
 set -eu
 . "$(dirname "$0")/common.sh"
 out="$root/results/sim"
 mkdir -p "$out"
 
-echo "== rbdc-sim, 10 s trot, Heun, dt 1e-4 s, generated dynamics, per-phase profile" > "$out/speed.txt"
-"$build/bin/rbdc-sim" --quiet >> "$out/speed.txt"
-"$build/bin/rbdc-sim" --quiet --profile >> "$out/speed.txt"
-echo "== the same with the force at the sphere centre and explicit friction (the generated forward dynamics alone)" >> "$out/speed.txt"
-"$build/bin/rbdc-sim" --quiet --profile --contact-point off --friction isotropic --friction-update explicit >> "$out/speed.txt"
-echo "== the same on the runtime (reference) dynamics" >> "$out/speed.txt"
-"$build/bin/rbdc-sim" --quiet --dynamics runtime --profile >> "$out/speed.txt"
+"$root/results/scripts/sim_speed.sh" "$build"
 
 echo "== Table I read in plain SI (length unit 1 m): the robot sinks, the trot fails" > "$out/units.txt"
 "$build/bin/rbdc-sim" --quiet --length-unit 1 >> "$out/units.txt"
