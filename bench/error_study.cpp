@@ -6,16 +6,14 @@
 // (closed chain: the exact constrained closed form in long double, closed_chain_reference), and names
 // the benchmark case ("quantity/implementation") that times the variant.
 // Usage: rbdc-error-study [--states N]   (default 1000)
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <functional>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "error_rows.hpp"
 #include "rbdc/jacobian.hpp"
 #include "rbdc_bench/accuracy.hpp"
 #include "robot_states.hpp"
@@ -23,28 +21,6 @@
 
 namespace rbdc_bench {
 namespace {
-
-struct Statistics {
-  double max = 0, median = 0;
-};
-
-Statistics statistics(std::vector<double> errors) {
-  Statistics s;
-  if (errors.empty()) return s;
-  std::sort(errors.begin(), errors.end(), [](double a, double b) {
-    return std::isnan(b) || (!std::isnan(a) && a < b);  // NaN sorts last and so becomes the max
-  });
-  s.max = errors.back();
-  s.median = errors[errors.size() / 2];
-  return s;
-}
-
-std::string json_number(double x) {
-  if (!std::isfinite(x)) return "null";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", x);
-  return text;
-}
 
 // One variant: how to evaluate it, and which benchmark case times it.
 struct Variant {
@@ -111,17 +87,11 @@ void study(const LoadedRobot& loaded, int n_states, bool& first_row) {
     }
     for (size_t i = 0; i < variants.size(); ++i) {
       for (size_t p = 0; p < parts.size(); ++p) {
-        const Statistics st = statistics(errors[i][p]);
-        std::printf("%s\n    {\"robot\": \"%s\", \"quantity\": \"%s\", \"part\": \"%s\", \"variant\": \"%s\", "
-                    "\"bench\": \"%s/%s\", \"ground_mass\": %s, \"ground_mass_over_total\": %s, "
-                    "\"max\": %s, \"median\": %s}",
-                    first_row ? "" : ",", loaded.robot.name.c_str(), name.c_str(),
-                    parts[p].name.c_str(), variants[i].name.c_str(),
-                    variants[i].bench_quantity.c_str(), variants[i].implementation.c_str(),
-                    json_number(variants[i].ground_mass).c_str(),
-                    json_number(variants[i].ground_mass / m_total).c_str(),
-                    json_number(st.max).c_str(), json_number(st.median).c_str());
-        first_row = false;
+        const double mass = variants[i].ground_mass > 0 ? variants[i].ground_mass : NAN;
+        print_row({loaded.robot.name, name, parts[p].name, variants[i].name,
+                   variants[i].bench_quantity + "/" + variants[i].implementation, mass, mass / m_total,
+                   statistics(errors[i][p])},
+                  first_row);
       }
     }
     std::fprintf(stderr, "rbdc-error-study: %s %s done\n", loaded.robot.name.c_str(), name.c_str());
@@ -133,17 +103,15 @@ void study(const LoadedRobot& loaded, int n_states, bool& first_row) {
 
 int main(int argc, char** argv) {
   using namespace rbdc_bench;
-  int n_states = 1000;
-  for (int i = 1; i + 1 < argc; ++i)
-    if (std::strcmp(argv[i], "--states") == 0) n_states = std::atoi(argv[i + 1]);
+  const int n_states = states_argument(argc, argv);
   bool first_row = true;
-  std::printf("{\"states\": %d, \"reference\": \"generated code in __float128; closed chain: exact closed form in long double\", \"rows\": [", n_states);
+  print_study_start(n_states, "generated code in __float128; closed chain: exact closed form in long double");
   for_each_generated_robot([&](auto tag) {
     using Api = typename decltype(tag)::type;
     for_each_loaded_robot("error study", [&](const LoadedRobot& r) {
       study<Api>(r, n_states, first_row);
     }, Api::name);
   });
-  std::printf("\n]}\n");
+  print_study_end();
   return 0;
 }
