@@ -134,17 +134,23 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
     return lines
 
 
-def _lane_block(fn, order):
-    """A lane function's lane type, its lane inputs (those used other than by joint sin/cos) and lane
-    constants, each a lane_x[…] array of make_lanes(lane 0, …, lane 3)."""
+def _lane_block(fn, order, names):
+    """A lane function's lane type, its lane inputs (those used other than by joint sin/cos) and the
+    lane constants it uses, each a lane_x[…] array of make_lanes(lane 0, …, lane 3); the used lane
+    constants are numbered afresh (`names`)."""
     lanes = fn.lanes
-    used = {n.value[0] for n in order if n.op == "sym" and n.lane} - {"lane_c"}
-    lines = ["// the isomorphic limbs, one per lane; lane_c: constants that differ between them",
-             "using Lane = Lanes<Scalar>;"]
+    symbols = [n for n in order if n.op == "sym" and n.lane]
+    used = {n.value[0] for n in symbols} - {ex.LANE_CONSTANTS}
+    constants = sorted((n for n in symbols if n.value[0] == ex.LANE_CONSTANTS), key=lambda n: n.value[1])
+    for k, node in enumerate(constants):
+        names[node.id] = "%s[%d]" % (ex.LANE_CONSTANTS, k)
+    lines = ["// the isomorphic limbs, one per lane; %s: constants that differ between them"
+             % ex.LANE_CONSTANTS, "using Lane = Lanes<Scalar>;"]
     arrays = [(name, ["make_lanes(%s)" % ", ".join("%s[%d]" % s for s in sources)
                       for sources in lanes.inputs[name]]) for name in sorted(used)]
-    arrays.append(("lane_c", ["make_lanes(%s)" % ", ".join(format_constant(v) for v in values)
-                              for values in lanes.constants]))
+    arrays.append((ex.LANE_CONSTANTS, ["make_lanes(%s)" % ", ".join(format_constant(v) for v in
+                                                                   lanes.constants[n.value[1]])
+                                       for n in constants]))
     for name, items in arrays:
         if items:
             lines.append("const Lane %s[%d] = {%s};" % (name, len(items), ",\n    ".join(items)))
@@ -186,7 +192,7 @@ def emit_body(fn, angle_names=None):
 
     angle_names = dict(angle_names or {})
     if fn.lanes is not None:
-        lines += _lane_block(fn, ex.reachable(fn.output_exprs()))
+        lines += _lane_block(fn, ex.reachable(fn.output_exprs()), names)
         angle_names.update(fn.lanes.angle_names)
     lines += _trig_block(trig, names, text, angle_names, fn.lanes)
     label = None

@@ -20,7 +20,8 @@ Lanes (docs/performance.md, "One SIMD lane per leg"): symbols of an array named 
 value per lane (4 isomorphic limbs evaluated together, rbdcgen/lanes.py); every operation with a lane
 operand is a lane operation (scalar operands broadcast), except `lane_sum` (the sum over the lanes,
 a scalar) and `lane_get` (one lane, `value` its index). Constants that differ between lanes are
-such symbols, so folding (x·0, x·1, …) only applies where all lanes agree.
+such symbols (lane_const), so folding (x·0, x·1, …) only applies where all lanes agree; an operation
+on constants and lane constants folds to a lane constant.
 
 Nodes carry the graph's `label` at their creation (set_label), which the emitter prints as markers,
 and a `position`: their id, or for a node rewritten after tracing the id of the node it replaces, so
@@ -36,6 +37,7 @@ import threading
 UNARY = ("neg", "sin", "cos", "sqrt")
 LANE_ARRAY_PREFIX = "lane_"  # symbols of these arrays are lane values
 LANES = 4  # lanes per lane value: one AVX register of doubles
+LANE_CONSTANTS = "lane_c"  # the array of lane constants (lane_const)
 BINARY = ("add", "sub", "mul", "div")
 COMMUTATIVE = ("add", "mul")
 
@@ -50,6 +52,8 @@ class Graph:
         self.nodes = []
         self.label = None  # where in the algorithm new nodes come from (set_label)
         self.position = None  # where a rewritten node stands in creation order (absorb_negations)
+        self.lane_constants = []  # values of lane constant k (symbol lane_c[k]): LANES floats
+        self._lane_constant_index = {}
 
     def __enter__(self):
         self._outer = getattr(_state, "graph", None)
@@ -158,6 +162,39 @@ def const(value):
     return current_graph().intern("const", (), value)
 
 
+def lane_const(values):
+    """A constant with one value per lane: the symbol lane_c[k], or an ordinary constant when the
+    lanes agree (so that folding applies exactly where it would in every lane)."""
+    values = tuple(0.0 if v == 0.0 else float(v) for v in values)
+    if all(v == values[0] for v in values):
+        return const(values[0])
+    graph = current_graph()
+    if values not in graph._lane_constant_index:
+        graph._lane_constant_index[values] = len(graph.lane_constants)
+        graph.lane_constants.append(values)
+    return symbol(LANE_CONSTANTS, graph._lane_constant_index[values])
+
+
+def _constant_lanes(x):
+    """x's value in each lane if x is a constant or a lane constant, else None."""
+    if x.op == "const":
+        return (x.value,) * LANES
+    if x.op == "sym" and x.value[0] == LANE_CONSTANTS:
+        return x.graph.lane_constants[x.value[1]]
+    return None
+
+
+def _fold_lanes(function, *args):
+    """function over floats applied lane by lane when every operand is constant and one of them a
+    lane constant (the folding of `c1 op c2` for lanes), else None."""
+    if not any(a.lane for a in args):
+        return None
+    lanes = [_constant_lanes(a) for a in args]
+    if any(v is None for v in lanes):
+        return None
+    return lane_const(function(*(v[k] for v in lanes)) for k in range(LANES))
+
+
 def symbol(array, index):
     """The input scalar `array[index]` of the traced function."""
     return current_graph().intern("sym", (), (array, int(index)))
@@ -178,6 +215,9 @@ def _node(op, *args):
 
 
 def neg(x):
+    folded = _fold_lanes(lambda a: -a, x)
+    if folded is not None:
+        return folded
     if x.op == "const":
         return const(-x.value)
     if x.op == "neg":
@@ -190,6 +230,9 @@ def neg(x):
 def add(x, y):
     if x.op == "const" and y.op == "const":
         return const(x.value + y.value)
+    folded = _fold_lanes(lambda a, b: a + b, x, y)
+    if folded is not None:
+        return folded
     if y.is_const(0.0):
         return x
     if x.is_const(0.0):
@@ -204,6 +247,9 @@ def add(x, y):
 def sub(x, y):
     if x.op == "const" and y.op == "const":
         return const(x.value - y.value)
+    folded = _fold_lanes(lambda a, b: a - b, x, y)
+    if folded is not None:
+        return folded
     if x is y:
         return const(0.0)
     if y.is_const(0.0):
@@ -220,6 +266,9 @@ def sub(x, y):
 def mul(x, y):
     if x.op == "const" and y.op == "const":
         return const(x.value * y.value)
+    folded = _fold_lanes(lambda a, b: a * b, x, y)
+    if folded is not None:
+        return folded
     if y.op == "const":
         x, y = y, x
     if x.op == "const":
@@ -246,6 +295,9 @@ def mul(x, y):
 
 
 def div(x, y):
+    folded = _fold_lanes(lambda a, b: a / b, x, y)
+    if folded is not None:
+        return folded
     if y.op == "const":
         if y.value == 0.0:
             raise ZeroDivisionError("rbdcgen.expr: division by the constant 0")

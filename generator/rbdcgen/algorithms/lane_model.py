@@ -5,8 +5,8 @@ passes together as lane operations while the trunk stays scalar.
 
 Reduced tree: body 0 is the trunk, bodies 1 … n_limb the lane limb (limb k's l-th body in lane k of
 body l + 1). Its joint l has the lane inputs lane_q[l], lane_v[l], lane_a[l] (lane k = the full
-robot's coordinate of limb k's joint l); a constant that differs between limbs is the lane symbol
-lane_c[c] (values in `constants`). Where a limb's wrench joins the trunk's (into_parent) the lanes
+robot's coordinate of limb k's joint l); a constant that differs between limbs is a lane constant
+(expr.lane_const). Where a limb's wrench joins the trunk's (into_parent) the lanes
 are summed. `scatter` maps the reduced outputs back to the full robot's coordinates."""
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ from .model import TracedModel
 @dataclass(frozen=True)
 class LaneLayout:
     """What the emitter needs of a lane function: the values of its lane symbols."""
-    constants: tuple   # lane_c[c]: one float per lane
+    constants: tuple   # lane constant c (symbol lane_c[c]): one float per lane
     inputs: dict       # "lane_q" / "lane_v" / "lane_a" → per lane joint l, the (array, index) per lane
     angle_names: dict  # ("lane_q", l) → the identifier its sin/cos are named by
 
@@ -29,7 +29,7 @@ class LaneLayout:
         """Inputs {array: floats} of the full robot with the lane arrays added (expr.evaluate)."""
         lanes = {name: [tuple(inputs[array][index] for array, index in sources) for sources in joints]
                  for name, joints in self.inputs.items() if all(s[0] in inputs for s in joints[0])}
-        return {**inputs, **lanes, "lane_c": list(self.constants)}
+        return {**inputs, **lanes, ex.LANE_CONSTANTS: list(self.constants)}
 
 
 class LaneModel(TracedModel):
@@ -39,8 +39,7 @@ class LaneModel(TracedModel):
         super().__init__(robot, scene, zero_inputs)
         self.full = self.robot
         self.limbs = limbs
-        self.constants = []  # lane constant c: (value of lane 0, …, value of lane 3)
-        self._constant_index = {}
+        self.graph = ex.current_graph()  # holds the lane constants' values
         self.robot = _reduced_tree(self.full, limbs)
         # lane_x[l] in lane k is the full robot's input x[k-th limb's joint l]: (array, index) per lane.
         self.lane_inputs = {
@@ -56,19 +55,9 @@ class LaneModel(TracedModel):
             while not all(n.endswith(suffix) for n in joint_names):
                 suffix = suffix[1:]
             names[("lane_q", l - 1)] = "lanes_" + (suffix.strip("_") or "joint_%d" % l)
-        return LaneLayout(tuple(self.constants), self.lane_inputs, names)
+        return LaneLayout(tuple(self.graph.lane_constants), self.lane_inputs, names)
 
     # --- lane values --------------------------------------------------------------------------
-    def lane(self, values):
-        """A constant with one value per lane: an ordinary constant when the lanes agree."""
-        values = tuple(0.0 if v == 0.0 else float(v) for v in values)
-        if all(v == values[0] for v in values):
-            return ex.const(values[0])
-        if values not in self._constant_index:
-            self._constant_index[values] = len(self.constants)
-            self.constants.append(values)
-        return ex.symbol("lane_c", self._constant_index[values])
-
     def _lane_input(self, name, i):
         if name in self.zero_inputs:
             return ex.const(0.0)
@@ -94,8 +83,9 @@ class LaneModel(TracedModel):
         rotations = [sp.snap_rotation(j.rotation) for j in joints]
         identity = all(r[a][b] == (1.0 if a == b else 0.0)
                        for r in rotations for a in range(3) for b in range(3))
-        E_T = tuple(tuple(self.lane([r[a][b] for r in rotations]) for b in range(3)) for a in range(3))
-        r_T = tuple(self.lane([j.translation[a] for j in joints]) for a in range(3))
+        E_T = tuple(tuple(ex.lane_const([r[a][b] for r in rotations]) for b in range(3))
+                    for a in range(3))
+        r_T = tuple(ex.lane_const([j.translation[a] for j in joints]) for a in range(3))
         return sp.Transform(None if identity else E_T,
                             r_T if any(any(j.translation) for j in joints) else None)
 
@@ -105,9 +95,9 @@ class LaneModel(TracedModel):
         key = ("inertia", i)
         if key not in self._cache:
             lanes = [sp.Inertia.from_body(self.full.bodies[b]) for b in self._lanes_of(i)]
-            m = self.lane([x.m.value for x in lanes])
-            h = tuple(self.lane([x.h[a].value for x in lanes]) for a in range(3))
-            ibar = tuple(tuple(self.lane([x.Ibar[a][b].value for x in lanes]) for b in range(3))
+            m = ex.lane_const([x.m.value for x in lanes])
+            h = tuple(ex.lane_const([x.h[a].value for x in lanes]) for a in range(3))
+            ibar = tuple(tuple(ex.lane_const([x.Ibar[a][b].value for x in lanes]) for b in range(3))
                          for a in range(3))
             self._cache[key] = sp.Inertia(m, h, sp.symmetric(ibar))
         return self._cache[key]
@@ -118,7 +108,7 @@ class LaneModel(TracedModel):
     def armature(self, i):
         values = [0.0 if j.actuator is None else j.actuator.armature
                   for j in (self.full.joints[b] for b in self._lanes_of(i))]
-        return values[0] if all(v == values[0] for v in values) else self.lane(values)
+        return values[0] if all(v == values[0] for v in values) else ex.lane_const(values)
 
     def into_parent(self, i, value):
         """A limb's wrench or composite inertia joins the trunk's as the sum of its lanes."""

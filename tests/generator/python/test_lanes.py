@@ -10,12 +10,29 @@ from dataclasses import replace
 import mini_cheetah
 from numeric_check import evaluate, max_relative_error, random_state
 
+from rbdcgen import expr as ex
 from rbdcgen.flops import count_ops
 from rbdcgen.ir import Actuator
 from rbdcgen.lane_functions import SCALAR
 from rbdcgen.limbs import LimbError, isomorphic_limbs
 from rbdcgen.scene import default_scene
 from rbdcgen.trace import trace_function
+
+
+class LaneConstants(unittest.TestCase):
+    def test_folding(self):
+        with ex.Graph() as graph:
+            self.assertTrue(ex.lane_const((2.0,) * ex.LANES).is_const(2.0))  # lanes agree
+            c = ex.lane_const((1.0, -1.0, 2.0, 0.5))
+            self.assertTrue(c.lane)
+            twice = ex.const(2.0) * c  # constants fold lane by lane
+            self.assertEqual(graph.lane_constants[twice.value[1]], (2.0, -2.0, 4.0, 1.0))
+            self.assertEqual(graph.lane_constants[(-c).value[1]], (-1.0, 1.0, -2.0, -0.5))
+            self.assertTrue((c - c).is_const(0.0))
+            x = ex.symbol("q", 0)
+            self.assertEqual((x * c).op, "mul")  # no lane is 0 or 1 in every lane: a lane product
+            self.assertEqual(ex.lane_sum(x).op, "mul")  # a scalar summed over the lanes: 4 x
+            self.assertIs(ex.lane_get(x, 2), x)
 
 
 @unittest.skipIf(mini_cheetah.skip_reason(), mini_cheetah.skip_reason())
