@@ -139,9 +139,11 @@ def _lane_block(fn, order, names):
     lane constants it uses, each a lane_x[…] array of make_lanes(lane 0, …, lane 3); the used lane
     constants are numbered afresh (`names`)."""
     lanes = fn.lanes
-    symbols = [n for n in order if n.op == "sym" and n.lane]
-    used = {n.value[0] for n in symbols} - {ex.LANE_CONSTANTS}
-    constants = sorted((n for n in symbols if n.value[0] == ex.LANE_CONSTANTS), key=lambda n: n.value[1])
+    # lane symbols read by the statements (a lane angle's sin/cos read its lanes from joint_trig)
+    symbols = {a.id: a for n in order if not _is_joint_trig(n) for a in n.args if a.op == "sym" and a.lane}
+    used = {n.value[0] for n in symbols.values()} - {ex.LANE_CONSTANTS}
+    constants = sorted((n for n in symbols.values() if n.value[0] == ex.LANE_CONSTANTS),
+                       key=lambda n: n.value[1])
     for k, node in enumerate(constants):
         names[node.id] = "%s[%d]" % (ex.LANE_CONSTANTS, k)
     lines = ["// the isomorphic limbs, one per lane; %s: constants that differ between them"

@@ -1,15 +1,19 @@
 // The generated Mini Cheetah code instantiated with float, long double and __float128 (through the
 // Eigen surface) agrees with double to the precision of the narrower type. The constants are
 // written as double literals, so the wide types compute the same function as double, more exactly.
+// The lane functions (scene limb_lanes, the legs in SIMD lanes) agree with their scalar namesakes in
+// every scalar type.
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "mini_cheetah/full.hpp"
+#include "mini_cheetah/limb_lanes.hpp"
 
 namespace {
 
 namespace mc = rbdc_gen::mini_cheetah::full;
+namespace lanes = rbdc_gen::mini_cheetah::limb_lanes;
 using LongMatrix = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
 
 struct State {
@@ -97,5 +101,36 @@ TEST(GeneratedScalarTypes, Float128AgreesWithLongDoubleBeyondDoublePrecision) {
   }
 }
 #endif
+
+/// inverse_dynamics_lanes, bias_lanes and mass_matrix_lanes against inverse_dynamics, bias and
+/// mass_matrix, both in T.
+template <class T>
+void expect_lanes_equal(long double tolerance, unsigned seed) {
+  const State s = random_state(seed);
+  const mc::ConfigVector<T> q = s.q.cast<T>();
+  const mc::TangentVector<T> v = s.v.cast<T>(), acc = s.a.cast<T>();
+  mc::TangentVector<T> scalar, lane;
+  mc::inverse_dynamics(q, v, acc, scalar);
+  lanes::inverse_dynamics_lanes(q, v, acc, lane);
+  EXPECT_LT(relative_difference(lane.template cast<long double>(), scalar.template cast<long double>()), tolerance);
+  mc::bias(q, v, scalar);
+  lanes::bias_lanes(q, v, lane);
+  EXPECT_LT(relative_difference(lane.template cast<long double>(), scalar.template cast<long double>()), tolerance);
+  mc::MassMatrix<T> M, M_lanes;
+  mc::mass_matrix(q, M);
+  lanes::mass_matrix_lanes(q, M_lanes);
+  EXPECT_LT(relative_difference(M_lanes.template cast<long double>(), M.template cast<long double>()), tolerance);
+}
+
+TEST(GeneratedScalarTypes, LaneFunctionsEqualScalarOnes) {
+  for (unsigned seed = 0; seed < 3; ++seed) {
+    expect_lanes_equal<double>(1e-14L, seed);
+    expect_lanes_equal<float>(1e-5L, seed);
+    expect_lanes_equal<long double>(1e-17L, seed);
+#if defined(RBDC_HAS_FLOAT128)
+    expect_lanes_equal<rbdc_gen::float128>(1e-17L, seed);
+#endif
+  }
+}
 
 }  // namespace

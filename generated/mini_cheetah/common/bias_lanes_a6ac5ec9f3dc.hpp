@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::bias_lanes_65318f1b1622 {
+namespace rbdc_gen::mini_cheetah::common::bias_lanes_a6ac5ec9f3dc {
 
 /// Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes evaluated
 /// together in SIMD lanes, the trunk scalar; equals bias.
@@ -26,9 +26,6 @@ template <class Scalar>
 RBDC_HOST_DEVICE inline void bias_lanes(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
-  const Lane lane_q[3] = {make_lanes(q[7], q[10], q[13], q[16]),
-    make_lanes(q[8], q[11], q[14], q[17]),
-    make_lanes(q[9], q[12], q[15], q[18])};
   const Lane lane_v[3] = {make_lanes(v[6], v[9], v[12], v[15]),
     make_lanes(v[7], v[10], v[13], v[16]),
     make_lanes(v[8], v[11], v[14], v[17])};
@@ -182,4 +179,4 @@ RBDC_HOST_DEVICE inline void bias_lanes(const Scalar* q, const Scalar* v, Scalar
   cg[2] = (((v[0] * t42) - (v[1] * t41)) + ((v[3] * t45) - (v[4] * t44))) + t96;
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::bias_lanes_65318f1b1622
+}  // namespace rbdc_gen::mini_cheetah::common::bias_lanes_a6ac5ec9f3dc

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_caac6bc18738 {
+namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_5fb4db355655 {
 
 /// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3), the four isomorphic limbs' passes
 /// evaluated together in SIMD lanes, the trunk scalar; equals inverse_dynamics.
@@ -30,9 +30,6 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_lanes(const Scalar* q, const Scala
   const Lane lane_a[3] = {make_lanes(a[6], a[9], a[12], a[15]),
     make_lanes(a[7], a[10], a[13], a[16]),
     make_lanes(a[8], a[11], a[14], a[17])};
-  const Lane lane_q[3] = {make_lanes(q[7], q[10], q[13], q[16]),
-    make_lanes(q[8], q[11], q[14], q[17]),
-    make_lanes(q[9], q[12], q[15], q[18])};
   const Lane lane_v[3] = {make_lanes(v[6], v[9], v[12], v[15]),
     make_lanes(v[7], v[10], v[13], v[16]),
     make_lanes(v[8], v[11], v[14], v[17])};
@@ -197,4 +194,4 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_lanes(const Scalar* q, const Scala
   tau[5] = ((Scalar(3.3) * t5) + ((v[0] * t52) - (v[1] * t51))) + lane_sum(t107);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_caac6bc18738
+}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_5fb4db355655

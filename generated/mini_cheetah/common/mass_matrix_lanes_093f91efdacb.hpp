@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::mass_matrix_lanes_97d4e29038f6 {
+namespace rbdc_gen::mini_cheetah::common::mass_matrix_lanes_093f91efdacb {
 
 /// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5), the four isomorphic limbs' passes
 /// evaluated together in SIMD lanes, the trunk scalar; equals mass_matrix.
@@ -25,9 +25,6 @@ template <class Scalar>
 RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
-  const Lane lane_q[3] = {make_lanes(q[7], q[10], q[13], q[16]),
-    make_lanes(q[8], q[11], q[14], q[17]),
-    make_lanes(q[9], q[12], q[15], q[18])};
   const Lane lane_c[12] = {make_lanes(Scalar(5.8e-05), Scalar(-5.8e-05), Scalar(5.8e-05), Scalar(-5.8e-05)),
     make_lanes(Scalar(9.5e-07), Scalar(-9.5e-07), Scalar(9.5e-07), Scalar(-9.5e-07)),
     make_lanes(Scalar(0.000245), Scalar(-0.000245), Scalar(0.000245), Scalar(-0.000245)),
@@ -538,4 +535,4 @@ RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexc
   M[322] = t157;
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_lanes_97d4e29038f6
+}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_lanes_093f91efdacb
