@@ -54,6 +54,11 @@ __attribute__((noinline)) void hot_inverse_dynamics_lanes(const double* q, const
 __attribute__((noinline)) void hot_bias_lanes(const double* q, const double* v, const double*, double* out) {
   lanes::bias_lanes(q, v, out);
 }
+__attribute__((noinline)) void hot_forward_dynamics_lanes(const double* q, const double* v, const double* a,
+                                                           double* out) {
+  static const double f[12] = {};
+  lanes::forward_dynamics_lanes(q, v, a + 6, f, out);
+}
 __attribute__((noinline)) void hot_mass_matrix_lanes(const double* q, const double*, const double*, double* out) {
   lanes::mass_matrix_lanes(q, out);
 }
@@ -71,7 +76,7 @@ static const Entry entries[] = {
 #endif
 #ifdef RBDC_HOT_HAS_LANES
     {"inverse_dynamics_lanes", hot_inverse_dynamics_lanes}, {"mass_matrix_lanes", hot_mass_matrix_lanes},
-    {"bias_lanes", hot_bias_lanes},
+    {"bias_lanes", hot_bias_lanes}, {"forward_dynamics_lanes", hot_forward_dynamics_lanes},
 #endif
 };
 

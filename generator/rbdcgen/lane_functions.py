@@ -3,17 +3,19 @@ outputs as their scalar namesakes, emitted only when a scene lists them (scene.L
 
 from __future__ import annotations
 
-from .algorithms import crba, rnea
+from .algorithms import crba, forward_dynamics, rnea
 from .algorithms.lane_model import LaneModel
 from .limbs import isomorphic_limbs
 
+# lane function → the function it equals
 SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
-          "mass_matrix_lanes": "mass_matrix"}  # lane function → the function it equals
+          "mass_matrix_lanes": "mass_matrix", "forward_dynamics_lanes": "forward_dynamics"}
+WITH_FEET = ("forward_dynamics_lanes",)  # lane functions with the foot forces as lane inputs
 
 
-def model(robot, scene, zero_inputs):
-    """The traced model of a lane function: the trunk and one lane limb."""
-    return LaneModel(robot, scene, isomorphic_limbs(robot), zero_inputs)
+def model(robot, scene, zero_inputs, name):
+    """The traced model of lane function `name`: the trunk and one lane limb."""
+    return LaneModel(robot, scene, isomorphic_limbs(robot), zero_inputs, feet=name in WITH_FEET)
 
 
 def spec(robot, nf):
@@ -38,6 +40,13 @@ def spec(robot, nf):
             ("q",),
             [("M", nv, nv, "mass matrix, full symmetric")],
             lambda m: {"M": _columns(m.scatter_matrix(crba.mass_matrix(m)))}),
+        "forward_dynamics_lanes": (
+            "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ), the four "
+            "isomorphic limbs' passes and their rows of the factorisation evaluated together in SIMD "
+            "lanes, the trunk scalar; equals forward_dynamics.",
+            ("q", "v", "tau", "f"),
+            [("a", nv, 1, "acceleration")],
+            lambda m: {"a": m.scatter(forward_dynamics.forward_dynamics(m))}),
     }
 
 

@@ -182,7 +182,7 @@ def trace_function(robot, scene, name):
     zero = tuple(n for n in scene.zero_inputs if n in input_names)
     with ex.Graph() as graph:
         lanes = name in lane_functions.SCALAR
-        m = (lane_functions.model(robot, scene, zero) if lanes
+        m = (lane_functions.model(robot, scene, zero, name) if lanes
              else TracedModel(robot, scene, zero_inputs=zero))
         try:
             values = coupling.traced_values(robot, name, m, build, output_specs)

@@ -24,10 +24,15 @@ def dof_parents(robot):
     return parents
 
 
-def ltdl(H, parents):
+def _as_is(k, i, value):
+    return value
+
+
+def ltdl(H, parents, into=_as_is):
     """In place M = Lᵀ D L over the tree's dof parents (Featherstone's LTDL): returns (L, D) with L
     unit lower triangular stored below the diagonal of H and D its diagonal; inverse pivots are
-    computed once each."""
+    computed once each. into(k, i, term): dof k's term as it updates dof i's entries (the lane sum
+    where a lane limb meets the trunk, TracedModel.into_dof)."""
     n = len(H)
     H = [list(row) for row in H]
     inv_diag = [None] * n
@@ -38,21 +43,22 @@ def ltdl(H, parents):
             ratio = H[k][i] * inv_diag[k]
             j = i
             while j != -1:
-                H[i][j] = H[i][j] - ratio * H[k][j]
+                H[i][j] = H[i][j] - into(k, i, ratio * H[k][j])
                 j = parents[j]
             H[k][i] = ratio
             i = parents[i]
     return H, inv_diag
 
 
-def ltdl_solve(L, inv_diag, parents, b):
-    """Solves Lᵀ D L x = b: x ← L⁻ᵀ b, x ← D⁻¹ x, x ← L⁻¹ x, walking only tree non-zeros."""
+def ltdl_solve(L, inv_diag, parents, b, into=_as_is):
+    """Solves Lᵀ D L x = b: x ← L⁻ᵀ b, x ← D⁻¹ x, x ← L⁻¹ x, walking only tree non-zeros (`into` as
+    in ltdl)."""
     x = list(b)
     n = len(x)
     for i in range(n - 1, -1, -1):
         j = parents[i]
         while j != -1:
-            x[j] = x[j] - L[i][j] * x[i]
+            x[j] = x[j] - into(i, j, L[i][j] * x[i])
             j = parents[j]
     x = [x[i] * inv_diag[i] for i in range(n)]
     for i in range(n):
@@ -82,7 +88,7 @@ def mass_matrix_factor(m):
     """M = Lᵀ D L over the dof tree, M from the CRBA: (L with the pivots on its diagonal, D⁻¹)."""
     H = mass_matrix(m)
     m.mark("factorisation M = LᵀDL")
-    return ltdl(H, dof_parents(m.robot))
+    return ltdl(H, dof_parents(m.robot), m.into_dof)
 
 
 def forward_dynamics(m):
@@ -102,4 +108,4 @@ def _solve_with_torques(m, h):
     parents = dof_parents(robot)
     L, inv_diag = mass_matrix_factor(m)
     m.mark("solve LᵀDL a = τ + τ_e − c − g")
-    return tuple(ltdl_solve(L, inv_diag, parents, rhs))
+    return tuple(ltdl_solve(L, inv_diag, parents, rhs, m.into_dof))

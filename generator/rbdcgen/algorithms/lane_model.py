@@ -15,6 +15,7 @@ from dataclasses import dataclass, replace
 
 from .. import expr as ex
 from .. import spatial as sp
+from ..limbs import LimbError
 from .model import TracedModel
 
 
@@ -33,9 +34,11 @@ class LaneLayout:
 
 
 class LaneModel(TracedModel):
-    """TracedModel of the reduced tree: `robot` is the trunk and the lane limb, `full` the robot."""
+    """TracedModel of the reduced tree: `robot` is the trunk and the lane limb, `full` the robot.
+    With `feet`, the scene's feet become lane feet (the same number on each limb, at the same
+    bodies of the limb) with the lane input lane_f; without, the traced function uses no feet."""
 
-    def __init__(self, robot, scene, limbs, zero_inputs=()):
+    def __init__(self, robot, scene, limbs, zero_inputs=(), feet=False):
         super().__init__(robot, scene, zero_inputs)
         self.full = self.robot
         self.limbs = limbs
@@ -43,9 +46,12 @@ class LaneModel(TracedModel):
         self.robot = _reduced_tree(self.full, limbs)
         # lane_x[l] in lane k is the full robot's input x[k-th limb's joint l]: (array, index) per lane.
         self.lane_inputs = {
-            "lane_" + name: [tuple((name, getattr(self.full.joints[limb[l]], attr)) for limb in limbs)
+            "lane_" + name: [tuple((name, index(self.full.joints[limb[l]])) for limb in limbs)
                              for l in range(len(limbs[0]))]
-            for name, attr in (("q", "q_index"), ("v", "v_index"), ("a", "v_index"))}
+            for name, index in (("q", lambda j: j.q_index), ("v", lambda j: j.v_index),
+                                ("a", lambda j: j.v_index),
+                                ("tau", lambda j: j.v_index - self.full.root_dofs))}
+        self.feet = self._lane_feet() if feet else ()
 
     def layout(self):
         names = {}
@@ -58,6 +64,40 @@ class LaneModel(TracedModel):
         return LaneLayout(tuple(self.graph.lane_constants), self.lane_inputs, names)
 
     # --- lane values --------------------------------------------------------------------------
+    def _lane_feet(self):
+        """The scene's feet as lane feet of the reduced tree, and their lane input lane_f."""
+        kept = list(self.feet)
+        per_limb = [[k for k, foot in enumerate(kept) if foot.body in limb] for limb in self.limbs]
+        shapes = {tuple(limb.index(kept[k].body) for k in feet) for limb, feet in zip(self.limbs, per_limb)}
+        if len(shapes) != 1 or sum(map(len, per_limb)) != len(kept):
+            raise LimbError("robot '%s': the kept feet are not the same on every limb"
+                            % self.full.name)
+        feet = []
+        self.lane_inputs["lane_f"] = []
+        for n, body in enumerate(next(iter(shapes))):
+            lanes = [kept[feet_k[n]] for feet_k in per_limb]
+            offset = tuple(ex.lane_const([foot.offset[c] for foot in lanes]) for c in range(3))
+            feet.append(replace(lanes[0], name="/".join(f.name for f in lanes), body=body + 1,
+                                offset=offset))
+            self.lane_inputs["lane_f"] += [tuple(("f", 3 * feet_k[n] + c) for feet_k in per_limb)
+                                           for c in range(3)]
+        return tuple(feet)
+
+    @property
+    def tau(self):
+        return tuple(self._lane_input("tau", i) for i in range(1, self.robot.nb))
+
+    def foot_force(self, k):
+        if "f" in self.zero_inputs:
+            return sp.zeros(3)
+        return tuple(ex.symbol("lane_f", 3 * k + c) for c in range(3))
+
+    def into_dof(self, k, i, value):
+        """A limb dof's term in a root dof's entry (LᵀDL factorisation and solve): summed over the
+        lanes."""
+        root = self.robot.root_dofs
+        return ex.lane_sum(value) if i < root <= k else value
+
     def _lane_input(self, name, i):
         if name in self.zero_inputs:
             return ex.const(0.0)

@@ -153,6 +153,11 @@ class TracedModel:
         here; summed over the lanes where a lane limb meets the trunk (lane_model.LaneModel)."""
         return value
 
+    def into_dof(self, k, i, term):
+        """Dof k's term as it updates dof i's entries in the LᵀDL factorisation and solve: unchanged
+        here; summed over the lanes where a lane limb meets the trunk (lane_model.LaneModel)."""
+        return term
+
     def inertia(self, i):
         key = ("inertia", i)
         if key not in self._cache:
