@@ -23,7 +23,7 @@ def isomorphic_limbs(robot):
     if robot.couplings:
         raise LimbError("robot '%s': mimic couplings are not supported in lanes" % robot.name)
     if len(roots) != ex.LANES:
-        raise LimbError("robot '%s': the trunk has %d limbs, lanes need %d"
+        raise LimbError("robot '%s': the trunk carries %d subtrees, lanes need %d isomorphic limbs"
                         % (robot.name, len(roots), ex.LANES))
     limbs = tuple(tuple(sorted(robot.subtree[root])) for root in roots)
     if sum(len(limb) for limb in limbs) != robot.nb - 1:

@@ -4,10 +4,12 @@ the algorithms of this package, traced unchanged on this reduced tree, evaluate 
 passes together as lane operations while the trunk stays scalar.
 
 Reduced tree: body 0 is the trunk, bodies 1 … n_limb the lane limb (limb k's l-th body in lane k of
-body l + 1). Its joint l has the lane inputs lane_q[l], lane_v[l], lane_a[l] (lane k = the full
-robot's coordinate of limb k's joint l); a constant that differs between limbs is a lane constant
-(expr.lane_const). Where a limb's wrench joins the trunk's (into_parent) the lanes
-are summed. `scatter` maps the reduced outputs back to the full robot's coordinates."""
+body l + 1). Its joint l has the lane inputs lane_q[l], lane_v[l], lane_a[l], lane_tau[l] (lane k =
+the full robot's coordinate of limb k's joint l), its feet the foot forces lane_f; a constant that
+differs between limbs is a lane constant (expr.lane_const). Where a limb's wrench or composite
+inertia joins the trunk's (into_parent), and where a limb dof updates a trunk dof in the LᵀDL
+factorisation and solve (into_dof), the lanes are summed. `scatter` and `scatter_matrix` map the
+reduced outputs back to the full robot's coordinates."""
 
 from __future__ import annotations
 
