@@ -155,7 +155,7 @@ def _rnea_q_and_v(m, base_acceleration, joint_accelerations, with_velocity, name
         tau = rnea.rnea(m, base_acceleration, joint_accelerations, with_velocity)
         return _q_and_v(m, tau, *names)
     dq, dv = rnea_derivatives(m, base_acceleration, joint_accelerations, with_velocity)
-    return dict(zip(names, (_column_major(dq), _column_major(dv))))
+    return {name: _column_major(m.scatter_matrix(rows)) for name, rows in zip(names, (dq, dv))}
 
 
 def inverse_dynamics_derivatives(m):

@@ -175,7 +175,7 @@ def lane_const(values):
     return symbol(LANE_CONSTANTS, graph._lane_constant_index[values])
 
 
-def _constant_lanes(x):
+def constant_lanes(x):
     """x's value in each lane if x is a constant or a lane constant, else None."""
     if x.op == "const":
         return (x.value,) * LANES
@@ -189,7 +189,7 @@ def _fold_lanes(function, *args):
     lane constant (the folding of `c1 op c2` for lanes), else None."""
     if not any(a.lane for a in args):
         return None
-    lanes = [_constant_lanes(a) for a in args]
+    lanes = [constant_lanes(a) for a in args]
     if any(v is None for v in lanes):
         return None
     return lane_const(function(*(v[k] for v in lanes)) for k in range(LANES))

@@ -3,13 +3,18 @@ outputs as their scalar namesakes, emitted only when a scene lists them (scene.L
 
 from __future__ import annotations
 
+from . import derivatives
 from .algorithms import crba, forward_dynamics, rnea
 from .algorithms.lane_model import LaneModel
 from .limbs import isomorphic_limbs
 
+# derivative functions whose lane function is their own trace on the lane model (the analytic RNEA
+# recursion: a limb's composites summed over the lanes where they join the trunk's)
+DERIVATIVES = ("inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives")
 # lane function → the function it equals
 SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
-          "mass_matrix_lanes": "mass_matrix", "forward_dynamics_lanes": "forward_dynamics"}
+          "mass_matrix_lanes": "mass_matrix", "forward_dynamics_lanes": "forward_dynamics",
+          **{name + "_lanes": name for name in DERIVATIVES}}
 WITH_FEET = ("forward_dynamics_lanes",)  # lane functions with the foot forces as lane inputs
 
 
@@ -21,7 +26,12 @@ def model(robot, scene, zero_inputs, name):
 def spec(robot, nf):
     """trace.py's function table for the lane functions (same shape as trace._spec)."""
     nv = robot.nv
+    scalar = derivatives.spec(robot, nf)
+    in_lanes = {name + "_lanes": (scalar[name][0] + " The four isomorphic limbs in SIMD lanes, the "
+                                  "trunk scalar; equals %s." % name,) + scalar[name][1:]
+                for name in DERIVATIVES}
     return {
+        **in_lanes,
         "bias_lanes": (
             "Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes "
             "evaluated together in SIMD lanes, the trunk scalar; equals bias.",

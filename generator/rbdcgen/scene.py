@@ -34,7 +34,9 @@ QUANTITIES = (
 COMBINED = ("step_terms",)
 # Functions with the isomorphic limbs in SIMD lanes (lane_functions.py), emitted after those and only
 # when a scene lists them.
-LANE_QUANTITIES = ("bias_lanes", "inverse_dynamics_lanes", "mass_matrix_lanes", "forward_dynamics_lanes")
+LANE_QUANTITIES = ("bias_lanes", "inverse_dynamics_lanes", "mass_matrix_lanes", "forward_dynamics_lanes",
+                   "inverse_dynamics_derivatives_lanes", "bias_derivatives_lanes",
+                   "gravity_derivatives_lanes")
 FEET_QUANTITIES = ("feet_positions", "feet_velocities", "feet_jacobian", "feet_force_terms",
                    "step_terms")
 OSC_QUANTITIES = ("osc_open_chain", "osc_closed_chain")

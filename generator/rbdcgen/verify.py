@@ -13,6 +13,7 @@ import time
 from pathlib import Path
 
 from .errors import RbdcError
+from .lane_functions import SCALAR
 from .layout import Layout
 from .names import unique_identifiers
 from .pipeline import compile_robot, render
@@ -58,10 +59,17 @@ def _robot_record(compilation, robot_path: Path, args) -> dict:
         "contacts": [scene.feet_for(robot).index(foot) for foot in scene.contacts_for(robot)],
         "zero_inputs": list(scene.zero_inputs),
         "actuators": scene.actuators,
-        "functions": [{"name": f.name, "inputs": [a.name for a in f.inputs], "derivative": f.name in DERIVATIVES,
+        "functions": [{"name": f.name, "inputs": [a.name for a in f.inputs], **_reference(f.name),
                        "outputs": [{"name": a.name, "rows": a.rows, "cols": a.cols} for a in f.outputs]}
                       for f in compilation.functions],
     }
+
+
+def _reference(name: str) -> dict:
+    """The function whose runtime call checks `name` (a lane function's scalar namesake), and
+    whether it is a derivative (checked against the runtime's derivative members)."""
+    reference = SCALAR.get(name, name)
+    return {"reference": reference, "derivative": reference in DERIVATIVES}
 
 
 def _toolchain(layout: Layout) -> dict:

@@ -1,12 +1,13 @@
 // The generated Mini Cheetah code instantiated with float, long double and __float128 (through the
 // Eigen surface) agrees with double to the precision of the narrower type. The constants are
 // written as double literals, so the wide types compute the same function as double, more exactly.
-// The lane functions (scene limb_lanes, the legs in SIMD lanes) agree with their scalar namesakes in
-// every scalar type.
+// The lane functions (scene limb_lanes, the legs in SIMD lanes) agree with their scalar namesakes
+// (scenes full and derivatives) in every scalar type.
 #include <gtest/gtest.h>
 
 #include <random>
 
+#include "mini_cheetah/derivatives/inverse_dynamics_derivatives.hpp"
 #include "mini_cheetah/full.hpp"
 #include "mini_cheetah/limb_lanes.hpp"
 
@@ -14,6 +15,7 @@ namespace {
 
 namespace mc = rbdc_gen::mini_cheetah::full;
 namespace lanes = rbdc_gen::mini_cheetah::limb_lanes;
+namespace mc_derivatives = rbdc_gen::mini_cheetah::derivatives;
 using LongMatrix = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
 
 struct State {
@@ -124,6 +126,11 @@ void expect_lanes_equal(long double tolerance, unsigned seed) {
   mc::mass_matrix(q, M);
   lanes::mass_matrix_lanes(q, M_lanes);
   EXPECT_LT(relative_difference(M_lanes.template cast<long double>(), M.template cast<long double>()), tolerance);
+  mc::MassMatrix<T> dq, dv, dq_lanes, dv_lanes;
+  mc_derivatives::inverse_dynamics_derivatives(q, v, acc, dq, dv);
+  lanes::inverse_dynamics_derivatives_lanes(q, v, acc, dq_lanes, dv_lanes);
+  EXPECT_LT(relative_difference(dq_lanes.template cast<long double>(), dq.template cast<long double>()), tolerance);
+  EXPECT_LT(relative_difference(dv_lanes.template cast<long double>(), dv.template cast<long double>()), tolerance);
 }
 
 TEST(GeneratedScalarTypes, LaneFunctionsEqualScalarOnes) {

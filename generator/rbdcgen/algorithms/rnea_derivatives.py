@@ -51,23 +51,27 @@ def inertia_rate(inertia, v):
     Ī and h of a body are constants, so each entry of the rotational part is built as a linear
     combination of ω and υ with its constant coefficients (most vanish for principal axes)."""
     w, u = sp.ang(v), sp.lin(v)
-    ibar = [[x.value for x in row] for row in inertia.Ibar]
-    h_tilde = _skew([x.value for x in inertia.h])
-    first = sp.vadd(sp.cross(w, inertia.h), sp.vscale(inertia.m, u))
     basis = [_skew([1.0 if k == n else 0.0 for n in range(3)]) for k in range(3)]
-    spin = [[[a - b for a, b in zip(x, y)] for x, y in zip(_product(e, ibar), _product(ibar, e))]
-            for e in basis]                                          # ẽ_k Ī − Ī ẽ_k
-    shift = [[[-(a + b) for a, b in zip(x, y)] for x, y in zip(_product(e, h_tilde),
-                                                                _product(h_tilde, e))]
-             for e in basis]                                         # −(ẽ_k h̃ + h̃ ẽ_k)
+    spin, shift = [], []   # per lane (a limb's constants, lane_model.py; the same in every lane else)
+    for lane in range(ex.LANES):
+        ibar = [[ex.constant_lanes(x)[lane] for x in row] for row in inertia.Ibar]
+        h_tilde = _skew([ex.constant_lanes(x)[lane] for x in inertia.h])
+        spin.append([[[a - b for a, b in zip(x, y)] for x, y in zip(_product(e, ibar),
+                                                                    _product(ibar, e))]
+                     for e in basis])                                # ẽ_k Ī − Ī ẽ_k
+        shift.append([[[-(a + b) for a, b in zip(x, y)] for x, y in zip(_product(e, h_tilde),
+                                                                        _product(h_tilde, e))]
+                      for e in basis])                               # −(ẽ_k h̃ + h̃ ẽ_k)
+    first = sp.vadd(sp.cross(w, inertia.h), sp.vscale(inertia.m, u))
     rows = [[None] * 3 for _ in range(3)]
     for r in range(3):
         for c in range(r, 3):
             entry = ex.const(0.0)
-            for coefficient, x in [(spin[k][r][c], w[k]) for k in range(3)] + \
-                                  [(shift[k][r][c], u[k]) for k in range(3)]:
-                if coefficient != 0.0:
-                    entry = entry + ex.const(coefficient) * x
+            for coefficients, x in [([s[k][r][c] for s in spin], w[k]) for k in range(3)] + \
+                                   [([s[k][r][c] for s in shift], u[k]) for k in range(3)]:
+                coefficient = ex.lane_const(coefficients)
+                if not coefficient.is_const(0.0):
+                    entry = entry + coefficient * x
             rows[r][c] = rows[c][r] = entry
     return sp.Inertia(ex.const(0.0), first, tuple(tuple(row) for row in rows))
 
@@ -84,7 +88,10 @@ def _coriolis_transpose(rate, momentum, x):
 
 class _Tree:
     """The outward pass (velocities, accelerations, forces, momenta per body, body coordinates) and
-    the inward composites (F, I^C, İ^C, P^C) the derivative entries need."""
+    the inward composites (F, I^C, İ^C, P^C) the derivative entries need. A body's composites join
+    its parent's through m.into_parent (summed over the lanes where a lane limb meets the trunk,
+    lane_model.py); nothing else of the recursion mixes limbs: a limb's columns and rows reach the
+    trunk's rows and columns as lane values, one per limb (LaneModel.scatter_matrix)."""
 
     def __init__(self, m, base_acceleration, joint_accelerations, with_velocity):
         robot = m.robot
@@ -125,11 +132,11 @@ class _Tree:
             m.mark("derivatives: inward pass, composites", i)
             j = robot.parent[i]
             X = m.X_up(i)
-            forces[j] = sp.vadd(forces[j], X.force_T(forces[i]))
-            composite[j] = composite[j] + X.congruence(composite[i])
+            forces[j] = sp.vadd(forces[j], m.into_parent(i, X.force_T(forces[i])))
+            composite[j] = composite[j] + m.into_parent(i, X.congruence(composite[i]))
             if with_velocity:
-                momenta[j] = sp.vadd(momenta[j], X.force_T(momenta[i]))
-                rates[j] = rates[j] + X.congruence(rates[i])
+                momenta[j] = sp.vadd(momenta[j], m.into_parent(i, X.force_T(momenta[i])))
+                rates[j] = rates[j] + m.into_parent(i, X.congruence(rates[i]))
         self.F, self.inertia, self.momentum, self.rate = forces, composite, momenta, rates
 
     def coriolis(self, i, x):

@@ -43,24 +43,29 @@ class MiniCheetahLanes(unittest.TestCase):
 
     def test_lane_functions_equal_scalar(self):
         robot = mini_cheetah.load()
-        self._check_equal(robot, seeds=(1, 2, 3))
-        for name, scalar_name in SCALAR.items():  # a lane operation counts once per lane
-            lanes, scalar = (trace_function(robot, default_scene(), n) for n in (name, scalar_name))
+        for lanes, scalar in self._check_equal(robot, SCALAR, seeds=(1, 2, 3)):
+            # a lane operation counts once per lane
             self.assertGreaterEqual(count_ops(lanes)["total"], count_ops(scalar)["total"] * 0.95)
 
     def test_limbs_with_different_constants(self):
         """Limbs equal only in shape: every offset, joint frame, mass, inertia and armature differs
-        between limbs (lane constants everywhere), oblique axes shared by the lanes."""
+        between limbs (lane constants everywhere), oblique axes shared by the lanes. The bias and
+        gravity derivatives, the same recursion as ∂τ at a = 0 and v = 0, only on the Mini Cheetah
+        (each costs 0.5 s here)."""
+        names = [n for n in SCALAR if n not in ("bias_derivatives_lanes", "gravity_derivatives_lanes")]
         for base, seed in (("floating", 4), ("fixed", 5)):
             robot = _scrambled_limbs(mini_cheetah.load(base), random.Random(seed))
-            self._check_equal(robot)
+            self._check_equal(robot, names)
 
-    def _check_equal(self, robot, seeds=(7,)):
-        """Every lane function equals its scalar namesake on random states."""
+    def _check_equal(self, robot, names, seeds=(7,)):
+        """The lane functions `names` equal their scalar namesakes on random states; returns the
+        traced (lane, scalar) pairs."""
         scene = default_scene()
-        for name, scalar_name in SCALAR.items():
+        pairs = []
+        for name in names:
             lanes = trace_function(robot, scene, name)
-            scalar = trace_function(robot, scene, scalar_name)
+            scalar = trace_function(robot, scene, SCALAR[name])
+            pairs.append((lanes, scalar))
             for seed in seeds:
                 state = random_state(robot, len(robot.feet), seed)
                 got = evaluate(lanes, lanes.lanes.with_lanes(state))
@@ -68,6 +73,7 @@ class MiniCheetahLanes(unittest.TestCase):
                 for output in want:
                     self.assertLess(max_relative_error(got[output], want[output]), 1e-12,
                                     (name, output, seed))
+        return pairs
 
     def test_limbs_must_match(self):
         robot = mini_cheetah.load()
