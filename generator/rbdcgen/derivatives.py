@@ -191,7 +191,7 @@ def _solve_columns(m, columns):
 
 
 _BUILD = {"neg": ex.neg, "add": ex.add, "sub": ex.sub, "mul": ex.mul, "div": ex.div,
-          "sin": ex.sin, "cos": ex.cos, "sqrt": ex.sqrt}
+          "sin": ex.sin, "cos": ex.cos, "sqrt": ex.sqrt, "lane_sum": ex.lane_sum}
 
 
 def substitute(outputs, replacement):
@@ -204,12 +204,16 @@ def substitute(outputs, replacement):
             new[node.id] = node
         else:
             args = [new[a.id] for a in node.args]
-            same = all(x is y for x, y in zip(args, node.args))
-            new[node.id] = node if same else _BUILD[node.op](*args)
+            if all(x is y for x, y in zip(args, node.args)):
+                new[node.id] = node
+            elif node.op == "lane_get":
+                new[node.id] = ex.lane_get(args[0], node.value)
+            else:
+                new[node.id] = _BUILD[node.op](*args)
     return [new[node.id] for node in outputs]
 
 
-def _residual_derivatives(m):
+def residual_derivatives(m):
     """∂/∂q and ∂/∂v (nv × nv rows) of the forward-dynamics residual RNEA(q, v, a) − τ_e(q, f) at
     the placeholder symbols a: the analytic recursion for the RNEA, tangents for τ_e (its world
     forces do not turn with the bodies, so the recursion's rigid-motion argument does not cover
@@ -247,7 +251,7 @@ def forward_dynamics_derivatives(m):
     factorisation."""
     robot = m.robot
     nv = robot.nv
-    dq, dv = _residual_derivatives(m)
+    dq, dv = residual_derivatives(m)
     columns = {"da_dq": [[-dq[r][c] for r in range(nv)] for c in range(nv)],
                "da_dv": [[-dv[r][c] for r in range(nv)] for c in range(nv)]}
     columns["da_dtau"] = [[ex.const(1.0 if r == robot.joints[i].v_index else 0.0)

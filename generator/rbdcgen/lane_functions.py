@@ -3,19 +3,24 @@ outputs as their scalar namesakes, emitted only when a scene lists them (scene.L
 
 from __future__ import annotations
 
-from . import derivatives
+from . import derivatives, lane_derivatives
 from .algorithms import crba, forward_dynamics, rnea
 from .algorithms.lane_model import LaneModel
 from .limbs import isomorphic_limbs
 
-# derivative functions whose lane function is their own trace on the lane model (the analytic RNEA
-# recursion: a limb's composites summed over the lanes where they join the trunk's)
-DERIVATIVES = ("inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives")
+# derivative function → the trace of its lane function: its own on the lane model (the analytic RNEA
+# recursion: a limb's composites summed over the lanes where they join the trunk's), or for ∂a the
+# same method with the solves of limb columns apart (lane_derivatives.py)
+DERIVATIVES = {"inverse_dynamics_derivatives": derivatives.inverse_dynamics_derivatives,
+               "bias_derivatives": derivatives.bias_derivatives,
+               "gravity_derivatives": derivatives.gravity_derivatives,
+               "forward_dynamics_derivatives": lane_derivatives.forward_dynamics_derivatives}
 # lane function → the function it equals
 SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
           "mass_matrix_lanes": "mass_matrix", "forward_dynamics_lanes": "forward_dynamics",
           **{name + "_lanes": name for name in DERIVATIVES}}
-WITH_FEET = ("forward_dynamics_lanes",)  # lane functions with the foot forces as lane inputs
+# lane functions with the foot forces as lane inputs
+WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_derivatives_lanes")
 
 
 def model(robot, scene, zero_inputs, name):
@@ -28,8 +33,8 @@ def spec(robot, nf):
     nv = robot.nv
     scalar = derivatives.spec(robot, nf)
     in_lanes = {name + "_lanes": (scalar[name][0] + " The four isomorphic limbs in SIMD lanes, the "
-                                  "trunk scalar; equals %s." % name,) + scalar[name][1:]
-                for name in DERIVATIVES}
+                                  "trunk scalar; equals %s." % name,) + scalar[name][1:3] + (trace,)
+                for name, trace in DERIVATIVES.items()}
     return {
         **in_lanes,
         "bias_lanes": (

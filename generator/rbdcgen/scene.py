@@ -36,7 +36,7 @@ COMBINED = ("step_terms",)
 # when a scene lists them.
 LANE_QUANTITIES = ("bias_lanes", "inverse_dynamics_lanes", "mass_matrix_lanes", "forward_dynamics_lanes",
                    "inverse_dynamics_derivatives_lanes", "bias_derivatives_lanes",
-                   "gravity_derivatives_lanes")
+                   "gravity_derivatives_lanes", "forward_dynamics_derivatives_lanes")
 FEET_QUANTITIES = ("feet_positions", "feet_velocities", "feet_jacobian", "feet_force_terms",
                    "step_terms")
 OSC_QUANTITIES = ("osc_open_chain", "osc_closed_chain")

@@ -53,6 +53,12 @@ def ltdl(H, parents, into=_as_is):
 def ltdl_solve(L, inv_diag, parents, b, into=_as_is):
     """Solves Lᵀ D L x = b: x ← L⁻ᵀ b, x ← D⁻¹ x, x ← L⁻¹ x, walking only tree non-zeros (`into` as
     in ltdl)."""
+    x = ltdl_eliminate(L, inv_diag, parents, b, into)
+    return ltdl_substitute(L, parents, x, range(len(x)))
+
+
+def ltdl_eliminate(L, inv_diag, parents, b, into=_as_is):
+    """The first two steps of ltdl_solve: D⁻¹ L⁻ᵀ b (leaves to root)."""
     x = list(b)
     n = len(x)
     for i in range(n - 1, -1, -1):
@@ -60,8 +66,14 @@ def ltdl_solve(L, inv_diag, parents, b, into=_as_is):
         while j != -1:
             x[j] = x[j] - into(i, j, L[i][j] * x[i])
             j = parents[j]
-    x = [x[i] * inv_diag[i] for i in range(n)]
-    for i in range(n):
+    return [x[i] * inv_diag[i] for i in range(n)]
+
+
+def ltdl_substitute(L, parents, x, dofs):
+    """The last step of ltdl_solve, x ← L⁻¹ x, for the entries `dofs` (root to leaves; their
+    ancestors' entries of x final)."""
+    x = list(x)
+    for i in dofs:
         j = parents[i]
         while j != -1:
             x[i] = x[i] - L[i][j] * x[j]

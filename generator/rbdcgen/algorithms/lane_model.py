@@ -18,6 +18,7 @@ from dataclasses import dataclass, replace
 from .. import expr as ex
 from .. import spatial as sp
 from ..limbs import LimbError
+from . import forward_dynamics as fd
 from .model import TracedModel
 
 
@@ -100,6 +101,9 @@ class LaneModel(TracedModel):
         root = self.robot.root_dofs
         return ex.lane_sum(value) if i < root <= k else value
 
+    def into_root(self, term):
+        return ex.lane_sum(term)
+
     def _lane_input(self, name, i):
         if name in self.zero_inputs:
             return ex.const(0.0)
@@ -157,10 +161,33 @@ class LaneModel(TracedModel):
         return _sum_lanes(value) if self.robot.parent[i] == 0 else value
 
     # --- outputs --------------------------------------------------------------------------------
-    def _full_index(self, x, lane):
+    def full_index(self, x, lane):
         """The full robot's dof of the reduced tree's dof x in lane `lane` (root dofs are shared)."""
         root = 6 if self.full.floating_base else 0
         return x if x < root else self.full.joints[self.limbs[lane][x - root]].v_index
+
+    def foot_force_index(self, row, lane):
+        """The full robot's entry of f (column-major 3 × n_feet) in lane `lane` of lane_f[row]."""
+        return self.lane_inputs["lane_f"][row][lane][1]
+
+    def solve_limb_column(self, L, inv_diag, parents, b):
+        """M⁻¹ b (forward_dynamics.ltdl_solve, L and D of the reduced tree) for a right-hand side b
+        whose lane k stands for a column of limb k: non-zero in the trunk rows and limb k's rows
+        only. Returns per lane k the solution of limb k's column, a reduced vector (scatter) with
+        scalar trunk entries and limb m's entries in lane m: the solution is dense, every limb moves
+        with the trunk. The leaves-to-root pass and the trunk's rows run with the columns in lanes
+        (no lane sum: only limb k's rows reach lane k's trunk entries); then, per lane k, the
+        trunk's solution of that column leaves its lane (lane_get) and the root-to-leaves pass runs
+        with the limbs in lanes, limb k's own part of the right-hand side masked to lane k."""
+        root = self.robot.root_dofs
+        y = fd.ltdl_eliminate(L, inv_diag, parents, b)
+        trunk = fd.ltdl_substitute(L, parents, y[:root], range(root))
+        solutions = []
+        for k in range(ex.LANES):
+            mask = ex.lane_const([1.0 if lane == k else 0.0 for lane in range(ex.LANES)])
+            x = [ex.lane_get(t, k) for t in trunk] + [value * mask for value in y[root:]]
+            solutions.append(fd.ltdl_substitute(L, parents, x, range(root, len(x))))
+        return solutions
 
     def scatter(self, reduced):
         """A joint-space vector of the reduced tree as the full robot's: lane k of the lane limb's
@@ -168,7 +195,7 @@ class LaneModel(TracedModel):
         full = [None] * self.full.nv
         for x, value in enumerate(reduced):
             for k in range(ex.LANES):
-                full[self._full_index(x, k)] = ex.lane_get(value, k)
+                full[self.full_index(x, k)] = ex.lane_get(value, k)
         return tuple(full)
 
     def scatter_matrix(self, reduced):
@@ -178,7 +205,7 @@ class LaneModel(TracedModel):
         for r, row in enumerate(reduced):
             for c, value in enumerate(row):
                 for k in range(ex.LANES):
-                    full[self._full_index(r, k)][self._full_index(c, k)] = ex.lane_get(value, k)
+                    full[self.full_index(r, k)][self.full_index(c, k)] = ex.lane_get(value, k)
         return full
 
 

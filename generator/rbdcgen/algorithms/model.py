@@ -158,6 +158,11 @@ class TracedModel:
         here; summed over the lanes where a lane limb meets the trunk (lane_model.LaneModel)."""
         return term
 
+    def into_root(self, term):
+        """A foot's term in an entry between two root dofs (the trunk block of ∂(Jᵀf)/∂q):
+        unchanged here; summed over the lanes of a lane foot (lane_model.LaneModel)."""
+        return term
+
     def scatter_matrix(self, rows):
         """A joint-space matrix (rows) of the traced tree as the robot's: unchanged here; a lane
         limb's entries scattered to every limb (lane_model.LaneModel)."""
