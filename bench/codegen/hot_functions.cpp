@@ -1,5 +1,6 @@
 // bench/codegen/metrics: one out-of-line wrapper per hot generated function of the Mini Cheetah
-// (scene "full"; scene "limb_lanes" with RBDC_HOT_HAS_LANES), so that callgrind can count the
+// (scene "full"; scene "limb_lanes" with RBDC_HOT_HAS_LANES; the derivative functions only when
+// asked for, RBDC_HOT_WANTS_<name>: each takes minutes to compile), so that callgrind can count the
 // instructions of one call and objdump can show the stack traffic (spills) of one function body.
 // Not a benchmark: the rough ns are a side note.
 #include <chrono>
@@ -10,6 +11,9 @@
 #include "mini_cheetah/full.hpp"
 #ifdef RBDC_HOT_HAS_LANES
 #include "mini_cheetah/limb_lanes.hpp"
+#endif
+#if defined(RBDC_HOT_WANTS_inverse_dynamics_derivatives) || defined(RBDC_HOT_WANTS_forward_dynamics_derivatives)
+#include "mini_cheetah/derivatives.hpp"
 #endif
 
 namespace g = rbdc_gen::mini_cheetah::full;
@@ -63,6 +67,35 @@ __attribute__((noinline)) void hot_mass_matrix_lanes(const double* q, const doub
   lanes::mass_matrix_lanes(q, out);
 }
 #endif
+// The derivatives: outputs one after the other in `out`; the foot forces zero.
+#ifdef RBDC_HOT_WANTS_inverse_dynamics_derivatives
+__attribute__((noinline)) void hot_inverse_dynamics_derivatives(const double* q, const double* v, const double* a,
+                                                                 double* out) {
+  rbdc_gen::mini_cheetah::derivatives::inverse_dynamics_derivatives(q, v, a, out, out + g::nv * g::nv);
+}
+#endif
+#ifdef RBDC_HOT_WANTS_inverse_dynamics_derivatives_lanes
+__attribute__((noinline)) void hot_inverse_dynamics_derivatives_lanes(const double* q, const double* v,
+                                                                       const double* a, double* out) {
+  lanes::inverse_dynamics_derivatives_lanes(q, v, a, out, out + g::nv * g::nv);
+}
+#endif
+constexpr int at_dv = g::nv * g::nv, at_dtau = 2 * at_dv, at_df = at_dtau + g::nv * g::n_joints;
+#ifdef RBDC_HOT_WANTS_forward_dynamics_derivatives
+__attribute__((noinline)) void hot_forward_dynamics_derivatives(const double* q, const double* v, const double* a,
+                                                                 double* out) {
+  static const double f[12] = {};
+  rbdc_gen::mini_cheetah::derivatives::forward_dynamics_derivatives(q, v, a + 6, f, out, out + at_dv, out + at_dtau,
+                                                                   out + at_df);
+}
+#endif
+#ifdef RBDC_HOT_WANTS_forward_dynamics_derivatives_lanes
+__attribute__((noinline)) void hot_forward_dynamics_derivatives_lanes(const double* q, const double* v,
+                                                                       const double* a, double* out) {
+  static const double f[12] = {};
+  lanes::forward_dynamics_derivatives_lanes(q, v, a + 6, f, out, out + at_dv, out + at_dtau, out + at_df);
+}
+#endif
 }
 
 using Function = void (*)(const double*, const double*, const double*, double*);
@@ -78,6 +111,18 @@ static const Entry entries[] = {
     {"inverse_dynamics_lanes", hot_inverse_dynamics_lanes}, {"mass_matrix_lanes", hot_mass_matrix_lanes},
     {"bias_lanes", hot_bias_lanes}, {"forward_dynamics_lanes", hot_forward_dynamics_lanes},
 #endif
+#ifdef RBDC_HOT_WANTS_inverse_dynamics_derivatives
+    {"inverse_dynamics_derivatives", hot_inverse_dynamics_derivatives},
+#endif
+#ifdef RBDC_HOT_WANTS_inverse_dynamics_derivatives_lanes
+    {"inverse_dynamics_derivatives_lanes", hot_inverse_dynamics_derivatives_lanes},
+#endif
+#ifdef RBDC_HOT_WANTS_forward_dynamics_derivatives
+    {"forward_dynamics_derivatives", hot_forward_dynamics_derivatives},
+#endif
+#ifdef RBDC_HOT_WANTS_forward_dynamics_derivatives_lanes
+    {"forward_dynamics_derivatives_lanes", hot_forward_dynamics_derivatives_lanes},
+#endif
 };
 
 // usage: hot_functions NAME CALLS [time]
@@ -85,7 +130,7 @@ int main(int argc, char** argv) {
   if (argc < 3) return 2;
   const long calls = std::atol(argv[2]);
   const bool time = argc > 3 && std::strcmp(argv[3], "time") == 0;
-  static double states[64][3][20], out[400];
+  static double states[64][3][20], out[at_df + g::nv * 3 * g::n_feet];  // the largest: ∂a/∂(q, v, τ, f)
   for (int s = 0; s < 64; ++s)
     for (int k = 0; k < 20; ++k)
       for (int j = 0; j < 3; ++j) states[s][j][k] = std::sin(1.0 + s * 0.37 + k * 1.3 + j * 0.71);
