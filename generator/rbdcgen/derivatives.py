@@ -261,15 +261,16 @@ def forward_dynamics_derivatives(m):
     flat = {name: [x for col in _solve_columns(m, cols) for x in col]
             for name, cols in columns.items()}
     _mirror_joint_block(robot, flat["da_dtau"])
-    acceleration = fd.forward_dynamics(m)
-    placeholders = {node.id: value for node, value in zip(m.a, acceleration)}
     order = ("da_dq", "da_dv", "da_dtau", "da_df")
-    entries = substitute([x for name in order for x in flat[name]], placeholders)
-    out, k = {}, 0
-    for name in order:
-        out[name] = tuple(entries[k:k + len(flat[name])])
-        k += len(flat[name])
-    return out
+    return replace_symbols({name: flat[name] for name in order}, m.a, fd.forward_dynamics(m))
+
+
+def replace_symbols(named, symbols, values):
+    """{name: expressions} with each symbol replaced by its value, all lists in one substitution
+    (shared subexpressions rebuilt once); returns {name: tuple}."""
+    placeholders = {node.id: value for node, value in zip(symbols, values)}
+    entries = iter(substitute([x for xs in named.values() for x in xs], placeholders))
+    return {name: tuple(next(entries) for _ in xs) for name, xs in named.items()}
 
 
 def spec(robot, nf):

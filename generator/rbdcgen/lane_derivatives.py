@@ -47,10 +47,7 @@ def forward_dynamics_derivatives(m):
     for row in range(len(J)):                                                      # Jᵀ
         for k, column in enumerate(limb_columns(list(J[row]))):
             out["da_df"][m.foot_force_index(row, k)] = column
-    acceleration = fd.forward_dynamics(m)
     symbols = list(m.a[:root]) + [m.ai(i) for i in range(1, robot.nb)]
-    placeholders = {node.id: value for node, value in zip(symbols, acceleration)}
     order = ("da_dq", "da_dv", "da_dtau", "da_df")
-    flat = [x for name in order for column in out[name] for x in column]
-    entries = iter(derivatives.substitute(flat, placeholders))
-    return {name: tuple(next(entries) for column in out[name] for _ in column) for name in order}
+    return derivatives.replace_symbols({name: [x for column in out[name] for x in column] for name in order},
+                                       symbols, fd.forward_dynamics(m))
