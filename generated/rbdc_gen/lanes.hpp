@@ -53,9 +53,12 @@ struct LanesOf {
     return type{ {a, b, c, d} };
   }
   static RBDC_HOST_DEVICE type load(const T* p) noexcept { return make(p[0], p[1], p[2], p[3]); }
+  static RBDC_HOST_DEVICE void store(T* p, const type& x) noexcept {
+    for (int k = 0; k < 4; ++k) p[k] = x.v[k];
+  }
 };
 #if defined(RBDC_HAS_VECTOR_SINCOS)
-/// A vector literal, so that constant lanes become one vector constant; one vector load.
+/// A vector literal, so that constant lanes become one vector constant; one vector load or store.
 template <class T>
 struct PackLanesOf {
   using type = Pack<T, 4>;
@@ -65,6 +68,7 @@ struct PackLanesOf {
     std::memcpy(&x.v, p, sizeof x.v);
     return x;
   }
+  static void store(T* p, const type& x) noexcept { std::memcpy(p, &x.v, sizeof x.v); }
 };
 template <>
 struct LanesOf<double> : PackLanesOf<double> {};
@@ -86,6 +90,12 @@ RBDC_HOST_DEVICE inline Lanes<T> make_lanes(const T& a, const T& b, const T& c, 
 template <class T>
 RBDC_HOST_DEVICE inline Lanes<T> load_lanes(const T* p) noexcept {
   return LanesOf<T>::load(p);
+}
+
+/// p[0], p[1], p[2], p[3] = the lanes (x[0], x[1], x[2], x[3]).
+template <class T>
+RBDC_HOST_DEVICE inline void store_lanes(T* p, const Lanes<T>& x) noexcept {
+  LanesOf<T>::store(p, x);
 }
 
 /// The sum over the lanes, (x[0] + x[1]) + (x[2] + x[3]).

@@ -144,7 +144,9 @@ inline void sincos_checked(const Vector<double, W>& x, Vector<double, W>& s, Vec
 
 }  // namespace simd
 
-/// double: the angles in vectors of kAngleLanes (the last one zero-padded), one polynomial call each.
+/// double: the angles in vectors of kAngleLanes (the last one zero-padded), the polynomial on every
+/// vector in one unrolled run (their dependency chains overlap; g++ kept a loop), then one test
+/// of all angles and libm for those out of its range (inf, NaN, |x| > kMaxAngle).
 template <int N>
 inline JointTrig<double, N> joint_sincos(const double (&angle)[N]) noexcept {
   using V = simd::Vector<double, simd::kAngleLanes>;
@@ -153,10 +155,21 @@ inline JointTrig<double, N> joint_sincos(const double (&angle)[N]) noexcept {
   V s[n_vectors];
   V c[n_vectors];
   std::memcpy(x, angle, sizeof angle);
-  for (int i = 0; i < n_vectors; ++i) simd::sincos_checked<simd::kAngleLanes>(x[i], s[i], c[i]);
+#pragma GCC unroll 16
+  for (int i = 0; i < n_vectors; ++i) simd::sincos<simd::kAngleLanes>(x[i], s[i], c[i]);
   JointTrig<double, N> trig;
   std::memcpy(trig.sin, s, sizeof trig.sin);
   std::memcpy(trig.cos, c, sizeof trig.cos);
+  bool outside = false;
+  for (int i = 0; i < N; ++i) outside |= !(std::fabs(angle[i]) <= simd::kMaxAngle);
+  if (__builtin_expect(outside, 0)) {
+    for (int i = 0; i < N; ++i) {
+      if (!(std::fabs(angle[i]) <= simd::kMaxAngle)) {
+        trig.sin[i] = std::sin(angle[i]);
+        trig.cos[i] = std::cos(angle[i]);
+      }
+    }
+  }
   return trig;
 }
 

@@ -18,8 +18,9 @@ the operator (`x + Scalar(0.5)`, never `x - Scalar(-0.5)`). Same DAG in, same te
 
 A lane function (fn.lanes, lane_model.py) also declares `Lane = Lanes<Scalar>` (rbdc_gen/lanes.hpp),
 its lane inputs and constants as arrays `lane_v[…]`, `lane_c[…]` of make_lanes(…), loads the sin/cos
-of a lane angle from ex.LANES consecutive joint_trig entries, declares lane temporaries `const Lane`
-and stores lane k of a lane value as `t7[k]`."""
+of a lane angle from ex.LANES consecutive joint_trig entries, declares lane temporaries `const Lane`,
+reads lane k of a lane value as `t7[k]`, and writes each run of ex.LANES consecutive output entries
+with one vector store, `store_lanes(M + 8, make_lanes(…));`."""
 
 from __future__ import annotations
 
@@ -201,14 +202,18 @@ def emit_body(fn, angle_names=None):
     index = 0
     items = _early_stores(fn, temps)
     tail = len(items)  # the trailing run of output stores gets the "// outputs" marker
-    while tail > 0 and isinstance(items[tail - 1], tuple):
+    while tail > 0 and isinstance(items[tail - 1], list):
         tail -= 1
     for position, item in enumerate(items):
         if position == tail:
             lines.append("// outputs")
-        if isinstance(item, tuple):  # an output entry, stored as soon as its value is computed
-            arg_name, k, node = item
-            lines.append("%s[%d] = %s;" % (arg_name, k, text(node, False)))
+        if isinstance(item, list):  # output entries, stored as soon as their values are computed
+            arg_name, k, node = item[0]
+            if len(item) == 1:
+                lines.append("%s[%d] = %s;" % (arg_name, k, text(node, False)))
+            else:
+                lines.append("store_lanes(%s + %d, make_lanes(%s));"
+                             % (arg_name, k, ", ".join(text(e[2], False) for e in item)))
             continue
         node = item
         if node.label is not None and node.label != label:
@@ -221,11 +226,25 @@ def emit_body(fn, angle_names=None):
     return lines
 
 
+def _store_units(fn):
+    """The output entries (argument name, index, node) grouped as they are stored: one by one; in a
+    lane function, each run of ex.LANES consecutive entries of an argument as one vector store
+    (measured: the Mini Cheetah's M in lanes 139 -> 94 ns with g++, its 324 scalar stores were the
+    bottleneck; docs/performance.md), the entries past the last full run one by one."""
+    units = []
+    for arg in fn.outputs:
+        entries = [(arg.name, k, node) for k, node in enumerate(fn.values[arg.name])]
+        width = ex.LANES if fn.lanes is not None else 1
+        whole = len(entries) - len(entries) % width
+        units += [entries[i:i + width] for i in range(0, whole, width)]
+        units += [[entry] for entry in entries[whole:]]
+    return units
+
+
 def _early_stores(fn, temps):
-    """Creation order of the temporaries, each output entry stored right after the last temporary it
-    needs (the passes stay in order, each marker heads one pass)."""
+    """Creation order of the temporaries, each store unit (_store_units) right after the last
+    temporary its entries need (the passes stay in order, each marker heads one pass)."""
     place = {n.id: i for i, n in enumerate(temps)}
-    entries = [(arg.name, k, node) for arg in fn.outputs for k, node in enumerate(fn.values[arg.name])]
 
     def finish(node):  # place of the last temporary an output entry needs (inlined nodes included)
         best, stack, seen = -1, [node], set()
@@ -241,8 +260,8 @@ def _early_stores(fn, temps):
         return best
 
     after = {}
-    for entry in entries:
-        after.setdefault(finish(entry[2]), []).append(entry)
+    for unit in _store_units(fn):
+        after.setdefault(max(finish(entry[2]) for entry in unit), []).append(unit)
     items = list(after.get(-1, []))
     for i, n in enumerate(temps):
         items.append(n)

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_b587889dfca8 {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_aead3259f3ad {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ), the four isomorphic
 /// limbs' passes and their rows of the factorisation evaluated together in SIMD lanes, the trunk
@@ -379,36 +379,24 @@ RBDC_HOST_DEVICE inline void forward_dynamics_lanes(const Scalar* q, const Scala
   const Scalar t292 = ((t270 * t289) - t290) - (t274 * t291);
   const Scalar t293 = (((t288 + (t265 * t287)) + (t271 * t289)) - (t276 * t291)) - (t278 * t292);
   const Scalar t294 = (Scalar(1) / ((t272 - (t269 * t276)) - (t275 * t278))) * t293;
-  a[0] = t294;
   const Scalar t295 = (t277 * t292) - (t278 * t294);
-  a[1] = t295;
   const Scalar t296 = ((t273 * t291) - (t274 * t295)) - (t276 * t294);
-  a[2] = t296;
   const Scalar t297 = (((t266 * t289) + (t267 * t296)) + (t270 * t295)) + (t271 * t294);
-  a[3] = -t297;
+  store_lanes(a + 0, make_lanes(t294, t295, t296, -t297));
   const Scalar t298 = ((t264 * t295) - (((t257 * t287) + (t258 * t297)) + (t262 * t296))) - (t265 * t294);
-  a[4] = t298;
   const Scalar t299 = (((((t244 * t298) - (t243 * t286)) - (t249 * t297)) + (t253 * t296)) + (t254 * t295)) - (t256 * t294);
-  a[5] = t299;
   const Lane t300 = (((((t229 * t285) - (t230 * t299)) - (t236 * t298)) + (t237 * t297)) - (t239 * t296)) - (t241 * t295);
   const Lane t301 = t300 - (t242 * t294);
-  a[6] = t301[0];
-  a[9] = t301[1];
-  a[12] = t301[2];
-  a[15] = t301[3];
   const Lane t302 = (((((t213 * t279) - (t214 * t301)) - (t221 * t299)) - (t222 * t298)) - (t223 * t297)) - (t224 * t296);
   const Lane t303 = (t302 + (t226 * t295)) - (t228 * t294);
-  a[7] = t303[0];
-  a[10] = t303[1];
-  a[13] = t303[2];
+  store_lanes(a + 4, make_lanes(t298, t299, t301[0], t303[0]));
   a[16] = t303[3];
   const Lane t304 = (((((Scalar(2057.0036861506055) * t133) - (t196 * t303)) - (t204 * t301)) - (t205 * t299)) + (t206 * t298)) + (t207 * t297);
   const Lane t305 = ((t304 + (t208 * t296)) - (t210 * t295)) - (t211 * t294);
   // outputs
-  a[8] = t305[0];
-  a[11] = t305[1];
-  a[14] = t305[2];
+  store_lanes(a + 8, make_lanes(t305[0], t301[1], t303[1], t305[1]));
+  store_lanes(a + 12, make_lanes(t301[2], t303[2], t305[2], t301[3]));
   a[17] = t305[3];
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_b587889dfca8
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_aead3259f3ad

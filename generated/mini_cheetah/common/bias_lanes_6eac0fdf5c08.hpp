@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::bias_lanes_a6ac5ec9f3dc {
+namespace rbdc_gen::mini_cheetah::common::bias_lanes_6eac0fdf5c08 {
 
 /// Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes evaluated
 /// together in SIMD lanes, the trunk scalar; equals bias.
@@ -133,9 +133,6 @@ RBDC_HOST_DEVICE inline void bias_lanes(const Scalar* q, const Scalar* v, Scalar
   const Lane t72 = ((t27 * t67) - (t23 * t68)) + ((t22 * t70) - (t25 * t71));
   const Lane t73 = ((Scalar(0.000483144) * t39) + (Scalar(0.003904) * t38)) + (((t27 * t66) - (t24 * t68)) + ((t26 * t71) - (t22 * t69)));
   const Lane t74 = (((t23 * t66) - (t24 * t67)) + ((t26 * t70) - (t25 * t69))) - ((Scalar(0.000486144) * t28) + (Scalar(0.003904) * t40));
-  cg[8] = t74[0];
-  cg[11] = t74[1];
-  cg[14] = t74[2];
   cg[17] = t74[3];
   const Lane t75 = (Scalar(6e-06) * (((sin_lanes_knee_joint * t33) - (cos_lanes_knee_joint * t34)) - (lane_v[2] * t23))) + t72;
   const Lane t76 = ((Scalar(0.064) * t40) + (Scalar(0.003904) * t28)) + ((t27 * t69) + (t24 * t71));
@@ -145,9 +142,6 @@ RBDC_HOST_DEVICE inline void bias_lanes(const Scalar* q, const Scalar* v, Scalar
   const Lane t79 = (cos_lanes_knee_joint * t76) + (sin_lanes_knee_joint * t78);
   const Lane t80 = t65 + (((cos_lanes_knee_joint * t73) + (sin_lanes_knee_joint * t75)) + (Scalar(0.209) * t77));
   const Lane t81 = (t57 + (((t17 * t59) + (t16 * t61)) + ((t19 * t62) - (t18 * t64)))) + (t74 - (Scalar(0.209) * t79));
-  cg[7] = t81[0];
-  cg[10] = t81[1];
-  cg[13] = t81[2];
   cg[16] = t81[3];
   const Lane t82 = (t58 + (((t11 * t62) - (t18 * t63)) - ((t16 * t60) + (t20 * t59)))) + ((cos_lanes_knee_joint * t75) - (sin_lanes_knee_joint * t73));
   const Lane t83 = ((((t34 * lane_c[6]) + (Scalar(0.01268) * t28)) - (Scalar(0.634) * t35)) + ((t20 * t64) + (t17 * t63))) + t79;
@@ -157,26 +151,20 @@ RBDC_HOST_DEVICE inline void bias_lanes(const Scalar* q, const Scalar* v, Scalar
   const Lane t86 = (cos_lanes_hip_joint * t83) + (sin_lanes_hip_joint * t85);
   const Lane t87 = (cos_lanes_hip_joint * t85) - (sin_lanes_hip_joint * t83);
   const Lane t88 = ((((t28 * lane_c[4]) - (Scalar(4.5e-07) * t29)) + (t31 * lane_c[3])) + t54) + ((lane_c[2] * t87) - ((cos_lanes_hip_joint * t80) + (sin_lanes_hip_joint * t82)));
-  cg[6] = t88[0];
-  cg[9] = t88[1];
-  cg[12] = t88[2];
-  cg[15] = t88[3];
+  store_lanes(cg + 8, make_lanes(t74[0], t88[1], t81[1], t74[1]));
+  store_lanes(cg + 12, make_lanes(t88[2], t81[2], t74[2], t88[3]));
   const Lane t89 = (((Scalar(0.00056) * t28) - (t29 * lane_c[5])) + (((t10 * t49) - (t13 * t50)) + ((t12 * t52) - (t6 * t53)))) - t81;
   const Lane t90 = ((((t28 * lane_c[5]) - (Scalar(0.00114384) * t29)) - (t3 * lane_c[3])) + t55) + (((cos_lanes_hip_joint * t82) - (sin_lanes_hip_joint * t80)) + (lane_c[2] * t86));
   const Lane t91 = (((Scalar(0.54) * t3) + (t29 * lane_c[3])) + ((t9 * t53) - (t10 * t51))) - t86;
-  cg[3] = ((Scalar(3.3) * t3) + ((v[1] * t46) - (v[2] * t45))) + lane_sum(t91);
   const Lane t92 = ((Scalar(0.54) * t30) + ((t10 * t52) - (t13 * t53))) - t84;
   const Lane t93 = ((Scalar(0.54) * t31) + ((t13 * t51) - (t9 * t52))) + t87;
   // inward pass: body 1 LF_abad/RF_abad/LH_abad/RH_abad
   const Lane t94 = (cos_lanes_abad_joint * t92) - (sin_lanes_abad_joint * t93);
-  cg[4] = ((Scalar(3.3) * t4) + ((v[2] * t44) - (v[0] * t46))) + lane_sum(t94);
   const Lane t95 = (sin_lanes_abad_joint * t92) + (cos_lanes_abad_joint * t93);
-  cg[0] = (((v[1] * t43) - (v[2] * t42)) + ((v[4] * t46) - (v[5] * t45))) + lane_sum(t88 + (lane_c[1] * t95));
-  cg[1] = t47 + lane_sum(((cos_lanes_abad_joint * t89) - (sin_lanes_abad_joint * t90)) - (lane_c[0] * t95));
-  cg[5] = ((Scalar(3.3) * t5) + ((v[0] * t45) - (v[1] * t44))) + lane_sum(t95);
+  store_lanes(cg + 4, make_lanes(((Scalar(3.3) * t4) + ((v[2] * t44) - (v[0] * t46))) + lane_sum(t94), ((Scalar(3.3) * t5) + ((v[0] * t45) - (v[1] * t44))) + lane_sum(t95), t88[0], t81[0]));
   const Scalar t96 = lane_sum(((sin_lanes_abad_joint * t89) + (cos_lanes_abad_joint * t90)) + ((lane_c[0] * t94) - (lane_c[1] * t91)));
   // outputs
-  cg[2] = (((v[0] * t42) - (v[1] * t41)) + ((v[3] * t45) - (v[4] * t44))) + t96;
+  store_lanes(cg + 0, make_lanes((((v[1] * t43) - (v[2] * t42)) + ((v[4] * t46) - (v[5] * t45))) + lane_sum(t88 + (lane_c[1] * t95)), t47 + lane_sum(((cos_lanes_abad_joint * t89) - (sin_lanes_abad_joint * t90)) - (lane_c[0] * t95)), (((v[0] * t42) - (v[1] * t41)) + ((v[3] * t45) - (v[4] * t44))) + t96, ((Scalar(3.3) * t3) + ((v[1] * t46) - (v[2] * t45))) + lane_sum(t91)));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::bias_lanes_a6ac5ec9f3dc
+}  // namespace rbdc_gen::mini_cheetah::common::bias_lanes_6eac0fdf5c08

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_5fb4db355655 {
+namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_1e9cea7cb328 {
 
 /// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3), the four isomorphic limbs' passes
 /// evaluated together in SIMD lanes, the trunk scalar; equals inverse_dynamics.
@@ -149,9 +149,6 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_lanes(const Scalar* q, const Scala
   const Lane t84 = ((t27 * t79) - (t23 * t80)) + ((t22 * t82) - (t25 * t83));
   const Lane t85 = (((t27 * t78) - (t24 * t80)) + ((t26 * t83) - (t22 * t81))) - ((Scalar(0.000483144) * t45) + (Scalar(0.003904) * t44));
   const Lane t86 = ((Scalar(0.000486144) * t47) - (Scalar(0.003904) * t46)) + (((t23 * t78) - (t24 * t79)) + ((t26 * t82) - (t25 * t81)));
-  tau[8] = t86[0];
-  tau[11] = t86[1];
-  tau[14] = t86[2];
   tau[17] = t86[3];
   const Lane t87 = (Scalar(6e-06) * (((cos_lanes_knee_joint * t39) - (sin_lanes_knee_joint * t38)) - (lane_v[2] * t23))) + t84;
   const Lane t88 = ((Scalar(0.064) * t46) - (Scalar(0.003904) * t47)) + ((t27 * t81) + (t24 * t83));
@@ -161,9 +158,6 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_lanes(const Scalar* q, const Scala
   const Lane t91 = (cos_lanes_knee_joint * t88) + (sin_lanes_knee_joint * t90);
   const Lane t92 = t77 + (((cos_lanes_knee_joint * t85) + (sin_lanes_knee_joint * t87)) + (Scalar(0.209) * t89));
   const Lane t93 = (t69 + (((t17 * t71) + (t16 * t73)) + ((t19 * t74) - (t18 * t76)))) + (t86 - (Scalar(0.209) * t91));
-  tau[7] = t93[0];
-  tau[10] = t93[1];
-  tau[13] = t93[2];
   tau[16] = t93[3];
   const Lane t94 = (t70 + (((t11 * t74) - (t18 * t75)) - ((t16 * t72) + (t20 * t71)))) + ((cos_lanes_knee_joint * t87) - (sin_lanes_knee_joint * t85));
   const Lane t95 = (((Scalar(0.634) * t40) - ((t39 * lane_c[6]) + (Scalar(0.01268) * t42))) + ((t20 * t76) + (t17 * t75))) + t91;
@@ -173,25 +167,19 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_lanes(const Scalar* q, const Scala
   const Lane t98 = (cos_lanes_hip_joint * t95) + (sin_lanes_hip_joint * t97);
   const Lane t99 = (cos_lanes_hip_joint * t97) - (sin_lanes_hip_joint * t95);
   const Lane t100 = t66 + ((lane_c[2] * t99) - ((cos_lanes_hip_joint * t92) + (sin_lanes_hip_joint * t94)));
-  tau[6] = t100[0];
-  tau[9] = t100[1];
-  tau[12] = t100[2];
-  tau[15] = t100[3];
+  store_lanes(tau + 8, make_lanes(t86[0], t100[1], t93[1], t86[1]));
+  store_lanes(tau + 12, make_lanes(t100[2], t93[2], t86[2], t100[3]));
   const Lane t101 = ((((t35 * lane_c[4]) + (Scalar(0.00056) * t31)) + (t32 * lane_c[5])) + t65) - t93;
   const Lane t102 = t67 + (((cos_lanes_hip_joint * t94) - (sin_lanes_hip_joint * t92)) + (lane_c[2] * t98));
   const Lane t103 = (((Scalar(0.54) * t28) - (t32 * lane_c[3])) + ((t9 * t64) - (t10 * t62))) - t98;
-  tau[3] = ((Scalar(3.3) * t3) + ((v[1] * t53) - (v[2] * t52))) + lane_sum(t103);
   const Lane t104 = ((Scalar(0.54) * t33) + ((t10 * t63) - (t13 * t64))) - t96;
   const Lane t105 = (((Scalar(0.54) * t34) + (t35 * lane_c[3])) + ((t13 * t62) - (t9 * t63))) + t99;
   // inward pass: body 1 LF_abad/RF_abad/LH_abad/RH_abad
   const Lane t106 = (cos_lanes_abad_joint * t104) - (sin_lanes_abad_joint * t105);
-  tau[2] = t56 + lane_sum(((sin_lanes_abad_joint * t101) + (cos_lanes_abad_joint * t102)) + ((lane_c[0] * t106) - (lane_c[1] * t103)));
-  tau[4] = ((Scalar(3.3) * t4) + ((v[2] * t51) - (v[0] * t53))) + lane_sum(t106);
   const Lane t107 = (sin_lanes_abad_joint * t104) + (cos_lanes_abad_joint * t105);
   // outputs
-  tau[0] = t54 + lane_sum(t100 + (lane_c[1] * t107));
-  tau[1] = t55 + lane_sum(((cos_lanes_abad_joint * t101) - (sin_lanes_abad_joint * t102)) - (lane_c[0] * t107));
-  tau[5] = ((Scalar(3.3) * t5) + ((v[0] * t52) - (v[1] * t51))) + lane_sum(t107);
+  store_lanes(tau + 0, make_lanes(t54 + lane_sum(t100 + (lane_c[1] * t107)), t55 + lane_sum(((cos_lanes_abad_joint * t101) - (sin_lanes_abad_joint * t102)) - (lane_c[0] * t107)), t56 + lane_sum(((sin_lanes_abad_joint * t101) + (cos_lanes_abad_joint * t102)) + ((lane_c[0] * t106) - (lane_c[1] * t103))), ((Scalar(3.3) * t3) + ((v[1] * t53) - (v[2] * t52))) + lane_sum(t103)));
+  store_lanes(tau + 4, make_lanes(((Scalar(3.3) * t4) + ((v[2] * t51) - (v[0] * t53))) + lane_sum(t106), ((Scalar(3.3) * t5) + ((v[0] * t52) - (v[1] * t51))) + lane_sum(t107), t100[0], t93[0]));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_5fb4db355655
+}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_1e9cea7cb328
