@@ -229,8 +229,8 @@ def emit_body(fn, angle_names=None):
 def _store_units(fn):
     """The output entries (argument name, index, node) grouped as they are stored: one by one; in a
     lane function, each run of ex.LANES consecutive entries of an argument as one vector store
-    (measured: the Mini Cheetah's M in lanes 139 -> 94 ns with g++, its 324 scalar stores were the
-    bottleneck; docs/performance.md), the entries past the last full run one by one."""
+    (the Mini Cheetah's M in lanes: its 324 scalar stores were the bottleneck, 172 -> 110 ns with
+    g++; docs/performance.md), the entries past the last full run one by one."""
     units = []
     for arg in fn.outputs:
         entries = [(arg.name, k, node) for k, node in enumerate(fn.values[arg.name])]

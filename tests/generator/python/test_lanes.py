@@ -4,6 +4,7 @@ on the Mini Cheetah. The emitted C++ is checked against the runtime by `rbdc ver
 
 import math
 import random
+import re
 import unittest
 from dataclasses import replace
 
@@ -11,6 +12,7 @@ import mini_cheetah
 from numeric_check import evaluate, max_relative_error, random_state
 
 from rbdcgen import expr as ex
+from rbdcgen.emit import emit_body
 from rbdcgen.flops import count_ops
 from rbdcgen.ir import Actuator
 from rbdcgen.lane_functions import SCALAR
@@ -74,6 +76,36 @@ class MiniCheetahLanes(unittest.TestCase):
                     self.assertLess(max_relative_error(got[output], want[output]), 1e-12,
                                     (name, output, seed))
         return pairs
+
+    def test_outputs_stored_four_at_a_time_once_each(self):
+        """Emission of a lane function: each run of four consecutive output entries is one
+        store_lanes, the rest one by one; every entry written exactly once, each store after the
+        temporaries it reads (the scalar functions keep one store per entry)."""
+        robot = mini_cheetah.load()
+        for name in ("mass_matrix_lanes", "inverse_dynamics_lanes"):
+            fn = trace_function(robot, default_scene(), name)
+            lines = emit_body(fn)
+            defined = set()
+            written = {arg.name: [] for arg in fn.outputs}
+            for line in (l for l in lines if not l.startswith("//")):
+                declared = re.match(r"const (?:Scalar|Lane) (t\d+) = ", line)
+                if declared:
+                    defined.add(declared.group(1))
+                    continue
+                vector = re.match(r"store_lanes\((\w+) \+ (\d+), make_lanes\((.*)\)\);$", line)
+                scalar = re.match(r"(\w+)\[(\d+)\] = (.*);$", line)
+                match = vector or scalar
+                if match is None or match.group(1) not in written:
+                    continue
+                first = int(match.group(2))
+                written[match.group(1)] += range(first, first + (ex.LANES if vector else 1))
+                self.assertLessEqual(set(re.findall(r"\bt\d+\b", match.group(3))), defined, line)
+            for arg in fn.outputs:
+                self.assertEqual(sorted(written[arg.name]), list(range(arg.size)), (name, arg.name))
+            stores = sum(line.startswith("store_lanes(") for line in lines)
+            self.assertEqual(stores, sum(arg.size // ex.LANES for arg in fn.outputs), name)
+        scalar_lines = emit_body(trace_function(robot, default_scene(), "mass_matrix"))
+        self.assertFalse(any(line.startswith("store_lanes(") for line in scalar_lines))
 
     def test_limbs_must_match(self):
         robot = mini_cheetah.load()
