@@ -67,6 +67,15 @@ __attribute__((noinline)) void hot_mass_matrix_lanes(const double* q, const doub
   lanes::mass_matrix_lanes(q, out);
 }
 #endif
+#ifdef RBDC_HOT_HAS_LOWER  // M's lower triangle alone, scalar and in lanes (scene limb_lanes)
+__attribute__((noinline)) void hot_mass_matrix_lower(const double* q, const double*, const double*, double* out) {
+  lanes::mass_matrix_lower(q, out);
+}
+__attribute__((noinline)) void hot_mass_matrix_lower_lanes(const double* q, const double*, const double*,
+                                                            double* out) {
+  lanes::mass_matrix_lower_lanes(q, out);
+}
+#endif
 // The derivatives: outputs one after the other in `out`; the foot forces zero.
 #ifdef RBDC_HOT_WANTS_inverse_dynamics_derivatives
 __attribute__((noinline)) void hot_inverse_dynamics_derivatives(const double* q, const double* v, const double* a,
@@ -110,6 +119,9 @@ static const Entry entries[] = {
 #ifdef RBDC_HOT_HAS_LANES
     {"inverse_dynamics_lanes", hot_inverse_dynamics_lanes}, {"mass_matrix_lanes", hot_mass_matrix_lanes},
     {"bias_lanes", hot_bias_lanes}, {"forward_dynamics_lanes", hot_forward_dynamics_lanes},
+#endif
+#ifdef RBDC_HOT_HAS_LOWER
+    {"mass_matrix_lower", hot_mass_matrix_lower}, {"mass_matrix_lower_lanes", hot_mass_matrix_lower_lanes},
 #endif
 #ifdef RBDC_HOT_WANTS_inverse_dynamics_derivatives
     {"inverse_dynamics_derivatives", hot_inverse_dynamics_derivatives},

@@ -15,6 +15,7 @@ QUANTITY_TITLES = {
     "bias": "c + g",
     "inverse_dynamics": "inverse dynamics M a + c + g",
     "mass_matrix": "M (CRBA)",
+    "mass_matrix_lower": "M, lower triangle only",
     "forward_dynamics": "forward dynamics",
     "osc_open_chain": "open-chain OSC (Table 1)",
     "osc_closed_chain": "closed-chain OSC (Table 2)",

@@ -10,14 +10,17 @@ import statistics
 from .common import QUANTITY_TITLES, format_ns, ratio, say
 from .runner import run_bench
 
-LANE_QUANTITIES = ["bias", "inverse_dynamics", "mass_matrix", "forward_dynamics",
+LANE_QUANTITIES = ["bias", "inverse_dynamics", "mass_matrix", "mass_matrix_lower", "forward_dynamics",
                    "inverse_dynamics_derivatives", "forward_dynamics_derivatives"]
 LANE_IMPLEMENTATIONS = ["generated_double_lanes", "generated_double", "generated_float_lanes",
                         "generated_float", "runtime"]
 # Issue 11's goals at the minimum of interleaved repetitions (ns), Mini Cheetah; for the derivatives
 # issue 12's absolute figures ("about 1 µs", "about 3 µs"; their ratio targets are in the derivatives
-# section). The derivative cases exist only in a build with RBDC_BENCH_DERIVATIVES.
-GOALS_NS = {"bias": 170, "inverse_dynamics": 190, "mass_matrix": 145, "forward_dynamics": 630,
+# section). The derivative cases exist only in a build with RBDC_BENCH_DERIVATIVES. M's lower
+# triangle is held to the stretch (≤ 90 ns): it is Pinocchio's convention (one triangle) that the
+# issue's peer timing used.
+GOALS_NS = {"bias": 170, "inverse_dynamics": 190, "mass_matrix": 145, "mass_matrix_lower": 90,
+            "forward_dynamics": 630,
             "inverse_dynamics_derivatives": 1000, "forward_dynamics_derivatives": 3000}
 TITLES = dict(QUANTITY_TITLES, inverse_dynamics_derivatives="∂τ/∂q, ∂τ/∂v",
               forward_dynamics_derivatives="∂a/∂q, ∂a/∂v, ∂a/∂τ, ∂a/∂f")

@@ -227,17 +227,24 @@ def emit_body(fn, angle_names=None):
 
 
 def _store_units(fn):
-    """The output entries (argument name, index, node) grouped as they are stored: one by one; in a
-    lane function, each run of ex.LANES consecutive entries of an argument as one vector store
-    (the Mini Cheetah's M in lanes: its 324 scalar stores were the bottleneck, 172 -> 110 ns with
-    g++; docs/performance.md), the entries past the last full run one by one."""
+    """The written output entries (argument name, index, node) grouped as they are stored: one by
+    one; in a lane function, each run of consecutive written entries of an argument in vector
+    stores of ex.LANES from the run's start (the Mini Cheetah's M in lanes: its 324 scalar stores
+    were the bottleneck, 172 -> 110 ns with g++; docs/performance.md), the rest one by one."""
+    width = ex.LANES if fn.lanes is not None else 1
     units = []
     for arg in fn.outputs:
-        entries = [(arg.name, k, node) for k, node in enumerate(fn.values[arg.name])]
-        width = ex.LANES if fn.lanes is not None else 1
-        whole = len(entries) - len(entries) % width
-        units += [entries[i:i + width] for i in range(0, whole, width)]
-        units += [[entry] for entry in entries[whole:]]
+        runs = []  # maximal runs of consecutive written entries
+        for k, node in enumerate(fn.values[arg.name]):
+            if node is None:
+                continue
+            if not runs or runs[-1][-1][1] != k - 1:
+                runs.append([])
+            runs[-1].append((arg.name, k, node))
+        for run in runs:
+            whole = len(run) - len(run) % width
+            units += [run[i:i + width] for i in range(0, whole, width)]
+            units += [[entry] for entry in run[whole:]]
     return units
 
 

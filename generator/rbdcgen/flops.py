@@ -219,7 +219,7 @@ def generic_ops(robot, scene, name):
         t.base_rotation(robot)
         t.velocities(robot)
         t.rnea(robot, True, True)
-    elif name == "mass_matrix":
+    elif name in ("mass_matrix", "mass_matrix_lower"):  # the runtime computes all of M
         t.crba(robot)
     elif name == "mass_matrix_factor":
         t.crba(robot)

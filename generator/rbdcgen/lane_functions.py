@@ -17,7 +17,8 @@ DERIVATIVES = {"inverse_dynamics_derivatives": derivatives.inverse_dynamics_deri
                "forward_dynamics_derivatives": lane_derivatives.forward_dynamics_derivatives}
 # lane function → the function it equals
 SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
-          "mass_matrix_lanes": "mass_matrix", "forward_dynamics_lanes": "forward_dynamics",
+          "mass_matrix_lanes": "mass_matrix", "mass_matrix_lower_lanes": "mass_matrix_lower",
+          "forward_dynamics_lanes": "forward_dynamics",
           **{name + "_lanes": name for name in DERIVATIVES}}
 # lane functions with the foot forces as lane inputs
 WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_derivatives_lanes")
@@ -55,6 +56,13 @@ def spec(robot, nf):
             ("q",),
             [("M", nv, nv, "mass matrix, full symmetric")],
             lambda m: {"M": _columns(m.scatter_matrix(crba.mass_matrix(m)))}),
+        "mass_matrix_lower_lanes": (
+            "The lower triangle of M (CRBA, paper 000 Alg. 5), the four isomorphic limbs' passes "
+            "evaluated together in SIMD lanes, the trunk scalar; equals mass_matrix_lower.",
+            ("q",),
+            [("M", nv, nv, "mass matrix, lower triangle (row ≥ column); the entries above the "
+              "diagonal are not written")],
+            lambda m: {"M": crba.lower_triangle(_columns(m.scatter_matrix(crba.mass_matrix(m))), nv)}),
         "forward_dynamics_lanes": (
             "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ), the four "
             "isomorphic limbs' passes and their rows of the factorisation evaluated together in SIMD "

@@ -30,11 +30,13 @@ QUANTITIES = (
     "osc_closed_chain",
 )
 # Combined functions: several quantities of one use traced as one function (shared kinematics, CSE
-# across outputs), emitted after QUANTITIES and only when a scene lists them.
-COMBINED = ("step_terms",)
+# across outputs), and other layouts of a quantity's outputs (M's lower triangle alone), emitted
+# after QUANTITIES and only when a scene lists them.
+COMBINED = ("step_terms", "mass_matrix_lower")
 # Functions with the isomorphic limbs in SIMD lanes (lane_functions.py), emitted after those and only
 # when a scene lists them.
-LANE_QUANTITIES = ("bias_lanes", "inverse_dynamics_lanes", "mass_matrix_lanes", "forward_dynamics_lanes",
+LANE_QUANTITIES = ("bias_lanes", "inverse_dynamics_lanes", "mass_matrix_lanes", "mass_matrix_lower_lanes",
+                   "forward_dynamics_lanes",
                    "inverse_dynamics_derivatives_lanes", "bias_derivatives_lanes",
                    "gravity_derivatives_lanes", "forward_dynamics_derivatives_lanes")
 FEET_QUANTITIES = ("feet_positions", "feet_velocities", "feet_jacobian", "feet_force_terms",

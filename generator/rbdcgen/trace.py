@@ -31,7 +31,8 @@ class Argument:
 @dataclass(frozen=True)
 class Function:
     """One generated function: `outputs[k]` is written from `values[outputs[k].name]`, a tuple of
-    rows·cols expressions in column-major order, all nodes of `graph`."""
+    rows·cols expressions in column-major order, all nodes of `graph`; an entry None is not written
+    (the upper triangle of mass_matrix_lower)."""
     name: str
     doc: str
     inputs: Tuple[Argument, ...]
@@ -41,8 +42,8 @@ class Function:
     lanes: object = None  # lane_model.LaneLayout of a lane function (lane_functions.py), else None
 
     def output_exprs(self):
-        """All output entries in signature order (column-major within each output)."""
-        return [e for arg in self.outputs for e in self.values[arg.name]]
+        """All written output entries in signature order (column-major within each output)."""
+        return [e for arg in self.outputs for e in self.values[arg.name] if e is not None]
 
     def __hash__(self):
         return hash((self.name, self.inputs, self.outputs))
@@ -122,6 +123,13 @@ def _spec(robot, nf):
             "Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).", ("q",),
             [("M", nv, nv, "mass matrix, full symmetric")],
             lambda m: {"M": _matrix(crba.mass_matrix(m), nv)}),
+        "mass_matrix_lower": (
+            "Joint-space inertia matrix M (CRBA, paper 000 Alg. 5), its lower triangle only (n(n+1)/2 "
+            "stores instead of n²): for Eigen's M.selfadjointView<Eigen::Lower>() and its LDLᵀ/LLᵀ.",
+            ("q",),
+            [("M", nv, nv, "mass matrix, lower triangle (row ≥ column); the entries above the "
+              "diagonal are not written")],
+            lambda m: {"M": crba.lower_triangle(_matrix(crba.mass_matrix(m), nv), nv)}),
         "mass_matrix_factor": (
             "M = Lᵀ D L over the tree's dofs (CRBA + the sparse factorisation forward_dynamics uses).",
             ("q",),
@@ -196,8 +204,9 @@ def trace_function(robot, scene, name):
             if len(values[arg.name]) != arg.size:
                 raise AssertionError("%s: output %s has %d entries, expected %d"
                                      % (name, arg.name, len(values[arg.name]), arg.size))
-        flat = iter(ex.absorb_negations([e for arg in outputs for e in values[arg.name]]))
-        values = {arg.name: tuple(next(flat) for _ in range(arg.size)) for arg in outputs}
+        flat = iter(ex.absorb_negations([e for arg in outputs for e in values[arg.name] if e is not None]))
+        values = {arg.name: tuple(None if e is None else next(flat) for e in values[arg.name])
+                  for arg in outputs}
     inputs = tuple(args[n] for n in input_names if n not in zero)
     return Function(name=name, doc=doc, inputs=inputs, outputs=outputs, values=values, graph=graph,
                     lanes=m.layout() if lanes else None)

@@ -63,3 +63,9 @@ def mass_matrix(m):
             for c in range(6):
                 H[r][c] = I0[min(r, c)][max(r, c)]
     return H
+
+
+def lower_triangle(entries, n):
+    """The column-major n × n `entries` with those above the diagonal (row < column) marked None:
+    not written (mass_matrix_lower, whose callers read M through its lower triangle)."""
+    return tuple(None if k % n < k // n else e for k, e in enumerate(entries))
