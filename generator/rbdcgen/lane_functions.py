@@ -4,7 +4,7 @@ outputs as their scalar namesakes, emitted only when a scene lists them (scene.L
 from __future__ import annotations
 
 from . import derivatives, lane_derivatives
-from .algorithms import crba, forward_dynamics, rnea
+from .algorithms import crba, forward_dynamics, osc, rnea
 from .algorithms.lane_model import LaneModel
 from .limbs import isomorphic_limbs
 
@@ -18,10 +18,10 @@ DERIVATIVES = {"inverse_dynamics_derivatives": derivatives.inverse_dynamics_deri
 # lane function → the function it equals
 SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
           "mass_matrix_lanes": "mass_matrix", "mass_matrix_lower_lanes": "mass_matrix_lower",
-          "forward_dynamics_lanes": "forward_dynamics",
+          "forward_dynamics_lanes": "forward_dynamics", "osc_open_chain_lanes": "osc_open_chain",
           **{name + "_lanes": name for name in DERIVATIVES}}
 # lane functions with the foot forces as lane inputs
-WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_derivatives_lanes")
+WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_derivatives_lanes", "osc_open_chain_lanes")
 
 
 def model(robot, scene, zero_inputs, name):
@@ -70,9 +70,25 @@ def spec(robot, nf):
             ("q", "v", "tau", "f"),
             [("a", nv, 1, "acceleration")],
             lambda m: {"a": m.scatter(forward_dynamics.forward_dynamics(m))}),
+        "osc_open_chain_lanes": (
+            "Trunk operational-space Λ, J̄ᵀ, b with measured foot forces (paper 001 Table 1), the four "
+            "isomorphic limbs' inward passes evaluated together in SIMD lanes, the trunk scalar; "
+            "equals osc_open_chain.",
+            ("q", "v", "f"),
+            [("Lambda", 6, 6, "operational-space inertia Λ_t of the trunk task"),
+             ("JbarT", 6, robot.n_joints, "dynamically consistent J̄_tᵀ (joint columns)"),
+             ("b", 6, 1, "operational-space bias force b_t")],
+            lambda m: _osc_outputs(m, osc.osc_open_chain(m))),
     }
 
 
+def _osc_outputs(m, result):
+    """Λ_t and b_t (trunk quantities: the limbs' lanes already summed into them) and J̄_tᵀ with
+    its limb joint columns scattered to the full robot's joints."""
+    Lam, JbarT, b = result
+    return {"Lambda": _columns(Lam), "JbarT": _columns(m.scatter_joint_columns(JbarT)), "b": tuple(b)}
+
+
 def _columns(rows):
-    """Column-major entries of a square matrix given as rows."""
-    return tuple(rows[r][c] for c in range(len(rows)) for r in range(len(rows)))
+    """Column-major entries of a matrix given as (non-empty) rows."""
+    return tuple(rows[r][c] for c in range(len(rows[0])) for r in range(len(rows)))

@@ -36,12 +36,12 @@ COMBINED = ("step_terms", "mass_matrix_lower")
 # Functions with the isomorphic limbs in SIMD lanes (lane_functions.py), emitted after those and only
 # when a scene lists them.
 LANE_QUANTITIES = ("bias_lanes", "inverse_dynamics_lanes", "mass_matrix_lanes", "mass_matrix_lower_lanes",
-                   "forward_dynamics_lanes",
+                   "forward_dynamics_lanes", "osc_open_chain_lanes",
                    "inverse_dynamics_derivatives_lanes", "bias_derivatives_lanes",
                    "gravity_derivatives_lanes", "forward_dynamics_derivatives_lanes")
 FEET_QUANTITIES = ("feet_positions", "feet_velocities", "feet_jacobian", "feet_force_terms",
                    "step_terms")
-OSC_QUANTITIES = ("osc_open_chain", "osc_closed_chain")
+OSC_QUANTITIES = ("osc_open_chain", "osc_closed_chain", "osc_open_chain_lanes")
 ZERO_INPUTS = ("v", "a", "tau", "f")
 # Derivative quantities (rbdcgen/derivatives.py), emitted after the quantities, in this order.
 DERIVATIVES = ("inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives",

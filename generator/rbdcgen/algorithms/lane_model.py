@@ -198,6 +198,17 @@ class LaneModel(TracedModel):
                 full[self.full_index(x, k)] = ex.lane_get(value, k)
         return tuple(full)
 
+    def scatter_joint_columns(self, rows):
+        """A matrix (rows) whose columns are the reduced tree's joints as the full robot's: lane k of
+        the lane limb's joint l goes to limb k's joint l's column."""
+        root = 6 if self.full.floating_base else 0
+        full = [[None] * self.full.n_joints for _ in rows]
+        for r, row in enumerate(rows):
+            for c, value in enumerate(row):
+                for k in range(ex.LANES):
+                    full[r][self.full_index(root + c, k) - root] = ex.lane_get(value, k)
+        return tuple(tuple(row) for row in full)
+
     def scatter_matrix(self, reduced):
         """A joint-space matrix (rows) of the reduced tree as the full robot's; entries between two
         different limbs are zero (no body of one limb moves with the other's joints)."""
@@ -210,11 +221,13 @@ class LaneModel(TracedModel):
 
 
 def _sum_lanes(value):
-    """The sum over the lanes of a vector (tuple) or a spatial inertia."""
+    """The sum over the lanes of a value, a vector or matrix (nested tuples) or a spatial inertia."""
     if isinstance(value, sp.Inertia):
         return sp.Inertia(ex.lane_sum(value.m), _sum_lanes(value.h),
                           sp.symmetric(tuple(_sum_lanes(row) for row in value.Ibar)))
-    return tuple(ex.lane_sum(x) for x in value)
+    if isinstance(value, tuple):
+        return tuple(_sum_lanes(x) for x in value)
+    return ex.lane_sum(value)
 
 
 def _reduced_tree(robot, limbs):

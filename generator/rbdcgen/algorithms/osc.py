@@ -40,8 +40,8 @@ def _recursion(m, articulated, beta, velocities):
         zeta = sp.crm(velocities[i], sp.vscale(m.vi(i), S))        # ζ_i (Eq. 29)
         p = sp.vadd(beta[i], sp.matvec(Ia, zeta))
         LIa = sp.symmetric(tuple(sp.vsub(Ia[r], sp.vscale(UD[r], U)) for r in range(6)))
-        articulated[j] = sp.mat6_add(articulated[j], X.congruence6(LIa))
-        beta[j] = sp.vadd(beta[j], X.force_T(propagate(p)))
+        articulated[j] = sp.mat6_add(articulated[j], m.into_parent(i, X.congruence6(LIa)))
+        beta[j] = sp.vadd(beta[j], m.into_parent(i, X.force_T(propagate(p))))
         B[j][i] = sp.vneg(X.force_T(UD))
         for k, column in B[i].items():
             B[j][k] = X.force_T(propagate(column))
