@@ -21,6 +21,7 @@ template <class T>
 struct LaneContext {
   StateArrays<T> s;
   std::vector<T> out = std::vector<T>(ml::nv * ml::nv);
+  std::vector<T> JbarT = std::vector<T>(6 * ml::n_joints), b = std::vector<T>(6);  // OSC
 };
 
 template <class T>
@@ -52,6 +53,10 @@ void add_lane_cases(const LoadedRobot& loaded, const std::string& implementation
   add("forward_dynamics", [](void* p, int k) {
     Context& c = *static_cast<Context*>(p);
     ml::forward_dynamics_lanes(c.s.q_at(k), c.s.v_at(k), c.s.tau_at(k), c.s.f_at(k), c.out.data());
+  });
+  add("osc_open_chain", [](void* p, int k) {
+    Context& c = *static_cast<Context*>(p);
+    ml::osc_open_chain_lanes(c.s.q_at(k), c.s.v_at(k), c.s.f_at(k), c.out.data(), c.JbarT.data(), c.b.data());
   });
 }
 
