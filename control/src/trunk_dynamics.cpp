@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "mini_cheetah/full.hpp"
+#include "mini_cheetah/limb_lanes.hpp"
 #include "mini_cheetah/stance_osc_lf_rh.hpp"
 #include "mini_cheetah/stance_osc_rf_lh.hpp"
 
@@ -32,8 +33,8 @@ void closed_chain_dynamics(const double* q, const double* v, StancePair pair, do
 }
 
 void open_chain_dynamics(const double* q, const double* v, const FeetForces& f, TrunkTaskDynamics& out) {
-  rbdc_gen::mini_cheetah::full::osc_open_chain<double>(q, v, f.data(), out.Lambda.data(),
-                                                       out.JbarT.data(), out.b.data());
+  rbdc_gen::mini_cheetah::limb_lanes::osc_open_chain_lanes<double>(q, v, f.data(), out.Lambda.data(),
+                                                                   out.JbarT.data(), out.b.data());
 }
 
 }  // namespace rbdc::control

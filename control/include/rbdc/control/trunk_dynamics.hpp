@@ -2,8 +2,9 @@
 //  - closed chain (paper 001 Table 2, Eq. 48): generated/mini_cheetah/stance_osc_lf_rh and
 //    stance_osc_rf_lh, the stance pair's two feet pinned by the big-ground-inertia approximation;
 //    no contact forces needed.
-//  - open chain (Table 1, Eq. 28 / Eq. 50): generated/mini_cheetah/full osc_open_chain with the
-//    contact forces measured by the simulator.
+//  - open chain (Table 1, Eq. 28 / Eq. 50): generated/mini_cheetah/limb_lanes osc_open_chain_lanes
+//    (the legs in SIMD lanes; equals full's osc_open_chain) with the contact forces measured by the
+//    simulator.
 #pragma once
 
 #include "rbdc/control/mini_cheetah.hpp"
