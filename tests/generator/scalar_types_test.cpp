@@ -2,7 +2,8 @@
 // Eigen surface) agrees with double to the precision of the narrower type. The constants are
 // written as double literals, so the wide types compute the same function as double, more exactly.
 // The lane functions (scene limb_lanes, the legs in SIMD lanes) agree with their scalar namesakes
-// (scenes full and derivatives) in every scalar type.
+// (scenes full and derivatives) in every scalar type, and mass_matrix_lower writes M's lower
+// triangle alone.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -126,6 +127,21 @@ void expect_lanes_equal(long double tolerance, unsigned seed) {
   mc::mass_matrix(q, M);
   lanes::mass_matrix_lanes(q, M_lanes);
   EXPECT_LT(relative_difference(M_lanes.template cast<long double>(), M.template cast<long double>()), tolerance);
+  // M's lower triangle alone, scalar and in lanes: the triangle equals M's, the entries above stay
+  mc::MassMatrix<T> lower = mc::MassMatrix<T>::Zero(), lower_lanes = mc::MassMatrix<T>::Zero();
+  lanes::mass_matrix_lower(q, lower);
+  lanes::mass_matrix_lower_lanes(q, lower_lanes);
+  const mc::MassMatrix<T> M_lower = M.template triangularView<Eigen::Lower>();
+  EXPECT_LT(relative_difference(lower.template cast<long double>(), M_lower.template cast<long double>()), tolerance);
+  EXPECT_LT(relative_difference(lower_lanes.template cast<long double>(), M_lower.template cast<long double>()), tolerance);
+  mc::OscInertia<T> Lambda, Lambda_lanes;
+  mc::OscJacobianT<T> JbarT, JbarT_lanes;
+  mc::Wrench<T> b, b_lanes;
+  mc::osc_open_chain(q, v, f, Lambda, JbarT, b);
+  lanes::osc_open_chain_lanes(q, v, f, Lambda_lanes, JbarT_lanes, b_lanes);
+  EXPECT_LT(relative_difference(Lambda_lanes.template cast<long double>(), Lambda.template cast<long double>()), tolerance);
+  EXPECT_LT(relative_difference(JbarT_lanes.template cast<long double>(), JbarT.template cast<long double>()), tolerance);
+  EXPECT_LT(relative_difference(b_lanes.template cast<long double>(), b.template cast<long double>()), tolerance);
   mc::MassMatrix<T> dq, dv, dq_lanes, dv_lanes;
   mc_derivatives::inverse_dynamics_derivatives(q, v, acc, dq, dv);
   lanes::inverse_dynamics_derivatives_lanes(q, v, acc, dq_lanes, dv_lanes);
