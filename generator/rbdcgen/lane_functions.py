@@ -60,8 +60,7 @@ def spec(robot, nf):
             "The lower triangle of M (CRBA, paper 000 Alg. 5), the four isomorphic limbs' passes "
             "evaluated together in SIMD lanes, the trunk scalar; equals mass_matrix_lower.",
             ("q",),
-            [("M", nv, nv, "mass matrix, lower triangle (row ≥ column); the entries above the "
-              "diagonal are not written")],
+            [("M", nv, nv, crba.LOWER_TRIANGLE_DOC)],
             lambda m: {"M": crba.lower_triangle(_columns(m.scatter_matrix(crba.mass_matrix(m))), nv)}),
         "forward_dynamics_lanes": (
             "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ), the four "
@@ -75,9 +74,7 @@ def spec(robot, nf):
             "isomorphic limbs' inward passes evaluated together in SIMD lanes, the trunk scalar; "
             "equals osc_open_chain.",
             ("q", "v", "f"),
-            [("Lambda", 6, 6, "operational-space inertia Λ_t of the trunk task"),
-             ("JbarT", 6, robot.n_joints, "dynamically consistent J̄_tᵀ (joint columns)"),
-             ("b", 6, 1, "operational-space bias force b_t")],
+            osc.output_specs(robot.n_joints),
             lambda m: _osc_outputs(m, osc.osc_open_chain(m))),
     }
 

@@ -82,9 +82,7 @@ def _spec(robot, nf):
         Lam, JbarT, b = result
         return {"Lambda": _matrix(Lam, 6), "JbarT": _matrix(JbarT, nj), "b": tuple(b)}
 
-    osc_out = [("Lambda", 6, 6, "operational-space inertia Λ_t of the trunk task"),
-               ("JbarT", 6, nj, "dynamically consistent J̄_tᵀ (joint columns)"),
-               ("b", 6, 1, "operational-space bias force b_t")]
+    osc_out = osc.output_specs(nj)
     return {
         "feet_positions": (
             "World positions of the feet (paper 000 Eqs. 16-18).", ("q",),
@@ -127,8 +125,7 @@ def _spec(robot, nf):
             "Joint-space inertia matrix M (CRBA, paper 000 Alg. 5), its lower triangle only (n(n+1)/2 "
             "stores instead of n²): for Eigen's M.selfadjointView<Eigen::Lower>() and its LDLᵀ/LLᵀ.",
             ("q",),
-            [("M", nv, nv, "mass matrix, lower triangle (row ≥ column); the entries above the "
-              "diagonal are not written")],
+            [("M", nv, nv, crba.LOWER_TRIANGLE_DOC)],
             lambda m: {"M": crba.lower_triangle(_matrix(crba.mass_matrix(m), nv), nv)}),
         "mass_matrix_factor": (
             "M = Lᵀ D L over the tree's dofs (CRBA + the sparse factorisation forward_dynamics uses).",

@@ -65,6 +65,11 @@ def mass_matrix(m):
     return H
 
 
+# The doc of the output M of mass_matrix_lower and its lane version.
+LOWER_TRIANGLE_DOC = ("mass matrix, lower triangle (row ≥ column); the entries above the diagonal "
+                      "are not written")
+
+
 def lower_triangle(entries, n):
     """The column-major n × n `entries` with those above the diagonal (row < column) marked None:
     not written (mass_matrix_lower, whose callers read M through its lower triangle)."""

@@ -11,6 +11,13 @@ from .kinematics import body_velocities, world_frames
 from .rnea import foot_wrenches
 
 
+def output_specs(n_joints):
+    """The outputs of the OSC functions (name, rows, cols, doc), scalar and in lanes."""
+    return [("Lambda", 6, 6, "operational-space inertia Λ_t of the trunk task"),
+            ("JbarT", 6, n_joints, "dynamically consistent J̄_tᵀ (joint columns)"),
+            ("b", 6, 1, "operational-space bias force b_t")]
+
+
 def _recursion(m, articulated, beta, velocities):
     """Table 1 inward loop. `articulated[i]` (I_i^A, dense 6×6) and `beta[i]` (β_i^A) are
     initialised by the caller; returns (Λ_t, J̄_tᵀ as 6 × n_joints rows, b_t)."""
