@@ -18,12 +18,13 @@ import yaml
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from numeric_check import DATA
-from rbdcgen.ir import IRError, load_ir
-from rbdcgen.scene import SceneError, load_scene
+from rbdcgen.frontend.ir import IRError, load_ir
+from rbdcgen.frontend.scene import SceneError, load_scene
 
-settings.register_profile("ci", max_examples=40, deadline=None, derandomize=True,
+# No example database: nothing is written into the source tree.
+settings.register_profile("ci", max_examples=40, deadline=None, derandomize=True, database=None,
                           suppress_health_check=[HealthCheck.too_slow])
-settings.register_profile("long", max_examples=10_000, deadline=None,
+settings.register_profile("long", max_examples=10_000, deadline=None, database=None,
                           suppress_health_check=[HealthCheck.too_slow])
 settings.load_profile(os.environ.get("RBDC_HYPOTHESIS_PROFILE", "ci"))
 
