@@ -7,6 +7,8 @@
 #include <set>
 #include <sstream>
 
+#include "text_checks.hpp"
+
 namespace rbdc {
 namespace {
 
@@ -64,18 +66,28 @@ void check_sizes(const ModelSpec& spec) {
   if (!all_finite(spec.gravity)) fail(spec, "gravity is not finite");
 }
 
-void check_unique_names(const ModelSpec& spec) {
+// Names must be plain text (text_checks.hpp) and bodies, joints unique.
+void check_names(const ModelSpec& spec) {
+  const auto check_text = [&](const std::string& what, const std::string& name) {
+    if (!is_plain_text(name)) {
+      fail(spec, what + " '" + escaped(name) + "' is not plain text (UTF-8 without control characters)");
+    }
+  };
+  check_text("robot name", spec.name);
   std::set<std::string> bodies, joints;
   for (const Body& b : spec.bodies) {
+    check_text("body name", b.name);
     if (!b.name.empty() && !bodies.insert(b.name).second) {
       fail(spec, "body name '" + b.name + "' is used twice");
     }
   }
   for (const JointSpec& j : spec.joints) {
+    check_text("joint name", j.name);
     if (!j.name.empty() && !joints.insert(j.name).second) {
       fail(spec, "joint name '" + j.name + "' is used twice");
     }
   }
+  for (const Foot& f : spec.feet) check_text("foot name", f.name);
 }
 
 // λ(i) = min(PRED(i), SUCC(i)) (Eq. 2); regular numbering requires the other endpoint to be i and
@@ -299,7 +311,7 @@ Body repair_mass_properties(const Body& body, const std::string& where,
 Model build_model(const ModelSpec& spec_in, std::vector<std::string>* warnings) {
   ModelSpec spec = spec_in;  // axes get normalized
   check_sizes(spec);
-  check_unique_names(spec);
+  check_names(spec);
   const std::vector<int> parent = derive_parents(spec);
   const int nb = static_cast<int>(spec.bodies.size());
   for (int i = 1; i < nb; ++i) check_joint(spec, i, spec.joints[static_cast<size_t>(i - 1)]);

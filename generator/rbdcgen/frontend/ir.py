@@ -7,6 +7,7 @@ a malformed file gets an error naming the file, the element and the problem.
 from __future__ import annotations
 
 import json
+import math
 from dataclasses import dataclass, replace
 from typing import Optional, Tuple
 
@@ -131,7 +132,13 @@ class _Reader:
     def number(self, x, where):
         if isinstance(x, bool) or not isinstance(x, (int, float)):
             self.fail(where, "expected a number, got %r" % (x,))
-        return float(x)
+        try:
+            value = float(x)
+        except OverflowError:
+            value = math.inf
+        if not math.isfinite(value):  # NaN, ±Infinity, or an integer beyond the doubles
+            self.fail(where, "expected a finite number, got %r" % (x,))
+        return value
 
     def integer(self, x, where):
         if isinstance(x, bool) or not isinstance(x, int):
@@ -141,6 +148,8 @@ class _Reader:
     def string(self, x, where):
         if not isinstance(x, str):
             self.fail(where, "expected a string, got %r" % (x,))
+        if any(c < " " or c == "\x7f" for c in x):  # names reach comments of the generated C++
+            self.fail(where, "expected plain text (no control characters), got %r" % (x,))
         return x
 
     def vec3(self, x, where):
@@ -195,8 +204,10 @@ def load_ir(source) -> Robot:
                 data = json.load(handle)
         except OSError as err:
             raise IRError("%s: cannot read: %s" % (name, err.strerror)) from None
-        except json.JSONDecodeError as err:
+        except ValueError as err:  # bad JSON, not UTF-8, an integer of more than 4300 digits
             raise IRError("%s: invalid JSON: %s" % (name, err)) from None
+        except RecursionError:
+            raise IRError("%s: invalid JSON: nested too deeply" % name) from None
     r = _Reader(name)
     if r.get(data, "format", "top level") != FORMAT:
         r.fail("format", "expected '%s', got %r" % (FORMAT, data.get("format")))

@@ -8,6 +8,7 @@ graph and from the signatures; `base` and `locked_joints` are applied by the C++
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Optional, Tuple
 
@@ -158,6 +159,16 @@ def _string_list(scene_fail, key, value, allowed=None):
     return tuple(value)
 
 
+def _finite_number(x) -> bool:
+    """An int or float (not a bool) that is a finite double."""
+    if isinstance(x, bool) or not isinstance(x, (int, float)):
+        return False
+    try:
+        return math.isfinite(x)
+    except OverflowError:  # an int beyond the doubles
+        return False
+
+
 def scene_from_dict(data, source="<scene>") -> Scene:
     def fail(key, problem):
         raise SceneError("%s: %s: %s" % (source, key, problem))
@@ -178,19 +189,17 @@ def scene_from_dict(data, source="<scene>") -> Scene:
         g = data["gravity"]
         if g is None or g == "none":
             gravity = (0.0, 0.0, 0.0)
-        elif (isinstance(g, list) and len(g) == 3
-              and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in g)):
+        elif isinstance(g, list) and len(g) == 3 and all(_finite_number(x) for x in g):
             gravity = tuple(float(x) for x in g)
         else:
-            fail("gravity", "expected [x, y, z] or none, got %r" % (g,))
+            fail("gravity", "expected [x, y, z] of finite numbers or none, got %r" % (g,))
     base = data.get("base", "floating")
     if base not in ("floating", "fixed"):
         fail("base", "expected floating or fixed, got %r" % (base,))
     locked = data.get("locked_joints") or {}
     if not isinstance(locked, dict) or not all(
-            isinstance(k, str) and isinstance(v, (int, float)) and not isinstance(v, bool)
-            for k, v in locked.items()):
-        fail("locked_joints", "expected a mapping joint name → value")
+            isinstance(k, str) and _finite_number(v) for k, v in locked.items()):
+        fail("locked_joints", "expected a mapping joint name → finite value")
     feet = None if data.get("feet") is None else _string_list(fail, "feet", data["feet"])
     contacts = (None if data.get("contacts") is None
                 else _string_list(fail, "contacts", data["contacts"]))
@@ -217,6 +226,8 @@ def load_scene(path) -> Scene:
             data = yaml.safe_load(handle)
     except OSError as err:
         raise SceneError("%s: cannot read: %s" % (path, err.strerror)) from None
-    except yaml.YAMLError as err:
+    except (yaml.YAMLError, ValueError) as err:  # ValueError: not UTF-8, an integer of 4300+ digits
         raise SceneError("%s: invalid YAML: %s" % (path, err)) from None
+    except RecursionError:
+        raise SceneError("%s: invalid YAML: nested too deeply" % path) from None
     return scene_from_dict(data, source=path)
