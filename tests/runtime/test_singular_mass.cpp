@@ -25,6 +25,7 @@ using ::testing::AllOf;
 using ::testing::Contains;
 using ::testing::HasSubstr;
 using test::data_path;
+using test::RandomState;
 
 std::string refusal(const std::function<void()>& call) {
   try {

@@ -8,13 +8,10 @@ graph and from the signatures; `base` and `locked_joints` are applied by the C++
 
 from __future__ import annotations
 
-import sys
 from dataclasses import dataclass
 from typing import Optional, Tuple
 
 import yaml
-
-from .singular_mass import NEEDS_INVERSE, singularity
 
 # Function names of docs/generated_api.md, in emission order.
 QUANTITIES = (
@@ -124,15 +121,9 @@ class Scene:
                 return coupled
             if name in OSC_QUANTITIES and not robot.floating_base:
                 return "fixed base"
-            if name in FEET_QUANTITIES and not has_feet:
-                return "no feet"
-            return singularity(robot) if name in NEEDS_INVERSE else None
+            return None if has_feet or name not in FEET_QUANTITIES else "no feet"
 
         if self.quantities is None:
-            dropped = [q for q in QUANTITIES if refusal(q) is not None and refusal(q) == singularity(robot)]
-            if dropped:
-                print("rbdc: warning: robot '%s': %s; left out: %s" % (robot.name, singularity(robot),
-                                                                      ", ".join(dropped)), file=sys.stderr)
             return tuple(q for q in QUANTITIES if refusal(q) is None)
         for name in self.quantities:
             if refusal(name) is not None:
@@ -147,10 +138,6 @@ class Scene:
                 if name in FEET_DERIVATIVES:
                     self.fail("derivatives", "'%s' does not apply to robot '%s' (no feet)"
                               % (name, robot.name))
-        for name in self.derivatives:
-            if name in NEEDS_INVERSE and singularity(robot):
-                self.fail("derivatives", "'%s' does not apply to robot '%s' (%s)"
-                          % (name, robot.name, singularity(robot)))
         return tuple(d for d in DERIVATIVES if d in self.derivatives)
 
 

@@ -2,13 +2,16 @@
 (rbdc::mass_matrix_singularity): M at one generic configuration, factored M = Lᵀ D L from the last
 dof to the first as the generated factor is, is singular when a pivot D_k ≤ 1e-12 · M_kk. The
 functions that need M⁻¹ (NEEDS_INVERSE) are then left out of a default scene and refused when a
-scene asks for them, while kinematics and inverse dynamics are generated as usual."""
+scene asks for them (applicable), while kinematics and inverse dynamics are generated as usual."""
 from __future__ import annotations
 
 import functools
 import math
+import sys
 
-from . import expr as ex
+from ..frontend.scene import default_scene
+from ..graph import expr as ex
+from .trace import trace_function
 
 SINGULAR_PIVOT = 1e-12
 NEEDS_INVERSE = ("mass_matrix_factor", "forward_dynamics", "step_terms", "osc_open_chain",
@@ -38,8 +41,6 @@ def _dof_label(robot, k):
 @functools.lru_cache(maxsize=None)
 def singularity(robot):
     """Why the robot's M is singular by the rule, or None when it is positive definite."""
-    from .scene import default_scene
-    from .trace import trace_function
     M = trace_function(robot, default_scene(), "mass_matrix").values["M"]
     n = robot.nv
     flat = ex.evaluate(list(M), {"q": generic_configuration(robot)})
@@ -56,3 +57,19 @@ def singularity(robot):
                 H[i][j] -= ratio * H[k][j]
             H[k][i] = ratio
     return None
+
+
+def applicable(robot, scene, names):
+    """`names` without the functions that need M⁻¹ when the robot's M is singular: left out with a
+    warning when the scene lists no quantities (all that apply), refused when it names them."""
+    needing = [name for name in names if name in NEEDS_INVERSE]
+    reason = singularity(robot) if needing else None
+    if reason is None:
+        return names
+    for name in needing:
+        if name in (scene.quantities or ()) or name in scene.derivatives:
+            scene.fail("quantities" if name not in scene.derivatives else "derivatives",
+                       "'%s' does not apply to robot '%s' (%s)" % (name, robot.name, reason))
+    print("rbdc: warning: robot '%s': %s; left out: %s" % (robot.name, reason, ", ".join(needing)),
+          file=sys.stderr)
+    return tuple(name for name in names if name not in NEEDS_INVERSE)
