@@ -43,4 +43,13 @@ inline void check_feet_matrix(const char* function, const char* argument, const 
   check_size(function, argument, f.cols(), static_cast<Eigen::Index>(model.feet.size()));
 }
 
+// Functions that need M⁻¹ refuse a model whose M is singular (Model::singular_mass_matrix).
+inline void check_invertible_mass(const char* function, const Model& model) {
+  if (!model.singular_mass_matrix.empty()) {
+    throw std::invalid_argument(std::string("rbdc::") + function + ": model '" + model.name + "': " +
+                                model.singular_mass_matrix + "; this function needs M⁻¹ (docs/model.md, "
+                                "\"Singular mass matrix\")");
+  }
+}
+
 }  // namespace rbdc::detail

@@ -28,6 +28,7 @@ void forward_dynamics_derivatives(const Model& model, Data& data, DerivativeData
                                   const Matrix3X& f_world) {
   detail::check_derivative_data("forward_dynamics_derivatives", model, derivatives);
   detail::check_qv("forward_dynamics_derivatives", model, data, q, v);
+  detail::check_invertible_mass("forward_dynamics_derivatives", model);
   detail::check_size("forward_dynamics_derivatives", "tau", tau.size(), model.num_joints());
   detail::check_feet_matrix("forward_dynamics_derivatives", "f_world", model, f_world);
   DerivativeData& d = derivatives;

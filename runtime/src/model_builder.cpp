@@ -232,30 +232,10 @@ void check_couplings(const ModelSpec& spec) {
   }
 }
 
-// A joint whose subtree carries no inertia about its axis gives M a zero diagonal entry
-// (d_i = S_iᵀ I^c_i S_i = 0), e.g. a massless leaf: refuse it.
-void check_moving_inertia(const ModelSpec& spec, const Model& m) {
-  std::vector<Matrix6> composite = m.inertia;
-  for (int i = m.nb - 1; i >= 1; --i) {
-    const size_t ui = static_cast<size_t>(i);
-    const Vector6& S = m.motion_subspace[ui];
-    if (S.dot(composite[ui] * S) <= 1e-15) {
-      std::string reason = m.bodies[ui].mass == 0 && m.children[ui].empty()
-                               ? body_label(spec, i) + " is a moving leaf with zero mass"
-                               : "the subtree of " + body_label(spec, i) +
-                                     " has no inertia about the joint axis";
-      fail(spec, joint_label(spec, i) + ": " + reason +
-                     ", so the mass matrix would be singular");
-    }
-    const Matrix6& X = m.X_tree[ui];  // I^c_λ += X_Tᵀ I^c_i X_T (joint at q = 0)
-    composite[static_cast<size_t>(m.parent[ui])] += X.transpose() * composite[ui] * X;
-  }
-}
-
 }  // namespace
 
 Body repair_mass_properties(const Body& body, const std::string& where,
-                            std::vector<std::string>* warnings) {
+                            std::vector<std::string>* warnings, Indefinite indefinite) {
   const auto refuse = [&](const std::string& problem) { throw ModelError(where + ": " + problem); };
   const auto warn = [&](const std::string& problem) {
     if (warnings != nullptr) warnings->push_back(where + ": " + problem);
@@ -291,9 +271,9 @@ Body repair_mass_properties(const Body& body, const std::string& where,
     std::ostringstream s;
     s << "rotational inertia is not positive semi-definite (principal moments " << moments.transpose()
       << ")";
-    refuse(s.str());
-  }
-  if (moments(0) < 0) {
+    if (indefinite == Indefinite::Refuse) refuse(s.str());
+    warn(s.str() + "; fixed joints merge the link with others, so their merged inertia is checked instead");
+  } else if (moments(0) < 0) {
     I = eigen.eigenvectors() * moments.cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
     if (-moments(0) > silent) {
       std::ostringstream s;
@@ -366,8 +346,14 @@ Model build_model(const ModelSpec& spec_in, std::vector<std::string>* warnings) 
   }
   for (const Body& b : m.bodies) m.inertia.push_back(spatial_inertia(b.mass, b.com, b.inertia_com));
   derive_sets(m);
-  check_moving_inertia(spec, m);
   add_actuators(m, spec.actuators);
+  // A singular M (e.g. a massless moving leaf) loads: kinematics and inverse dynamics work; the
+  // functions that need M⁻¹ refuse the model (docs/model.md, "Singular mass matrix").
+  if (!m.singular_mass_matrix.empty() && warnings != nullptr) {
+    warnings->push_back(spec.source + ": " + m.singular_mass_matrix + "; kinematics and inverse dynamics "
+                        "work, forward dynamics and OSC refuse it (lock the joint, or give the body mass "
+                        "or the joint armature)");
+  }
   return m;
 }
 

@@ -96,6 +96,11 @@ struct Model {
   std::vector<Matrix6> rotor_inertia;    ///< rotor spatial inertia at its origin, rotor coordinates
   std::vector<Vector6> rotor_subspace;   ///< S_rot(i) = gear_ratio · (axis; 0), zero without rotor
 
+  /// Why M is singular by the rule of docs/model.md (rbdc::mass_matrix_singularity), "" when it is
+  /// positive definite. Set by the builder and by with_actuator_mode; a non-empty reason makes the
+  /// functions that need M⁻¹ (forward dynamics, its derivatives, OSC) throw std::invalid_argument.
+  std::string singular_mass_matrix;
+
   int num_joints() const { return nb - 1; }  ///< 1-DoF joints (actuated)
   int root_dofs() const { return floating_base ? 6 : 0; }
 };
