@@ -25,7 +25,7 @@ from . import _home
 
 KEY_VERSION = "rbdc-compile-1"
 # -march=native as ./run and bench/report build; the generated code is written for -O3.
-DEFAULT_FLAGS = ("-O3", "-march=native", "-DNDEBUG", "-std=c++17", "-fPIC", "-shared", "-fvisibility=hidden")
+DEFAULT_FLAGS = ("-O3", "-march=native", "-DNDEBUG", "-std=c++17", "-fPIC", "-fvisibility=hidden")
 
 
 @dataclass(frozen=True)
@@ -117,8 +117,8 @@ def _load(entry: Path):
     return module
 
 
-def _generate(target: Target, work: Path, module_name: str) -> Path:
-    """Writes the inputs, the generated headers and the module's source into `work`; returns the source."""
+def _generate(target: Target, work: Path, module_name: str) -> list[Path]:
+    """Writes the inputs, the generated headers and the module's sources into `work`; returns the sources."""
     sys.path.insert(0, str(_home.generator_dir()))
     try:
         from rbdcgen.layout import find_layout
@@ -140,11 +140,27 @@ def _generate(target: Target, work: Path, module_name: str) -> Path:
     if layout.in_source_tree and not layout.model_tool.is_file():
         _home.build_target("rbdc-model")
     compilation = compile_robot(robot, scene, topology, target.base, None, layout, mimic=target.mimic)
-    for generated in render(compilation, layout) + [render_python_module(compilation, layout, module_name)]:
+    module_sources = render_python_module(compilation, layout, module_name)
+    for generated in render(compilation, layout) + module_sources:
         path = work / "src" / generated.path
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(generated.text)
-    return work / "src" / f"{module_name}.cpp"
+    return [work / "src" / generated.path for generated in module_sources]
+
+
+def _run_all(commands: list[list[str]], jobs: int) -> None:
+    """Runs the compiler commands, `jobs` at a time; raises with the first failure's messages."""
+    pending, running = list(commands), []
+    while pending or running:
+        while pending and len(running) < jobs:
+            command = pending.pop(0)
+            running.append((command, subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)))
+        command, process = running.pop(0)
+        output = process.communicate()[0]
+        if process.returncode != 0:
+            for _, other in running:
+                other.kill()
+            raise RuntimeError(f"rbdc.compile: the compiler failed:\n{shlex.join(command)}\n{output[-4000:]}")
 
 
 def _build(target: Target, key: str, entry: Path) -> None:
@@ -152,14 +168,15 @@ def _build(target: Target, key: str, entry: Path) -> None:
     work = Path(tempfile.mkdtemp(prefix=f".{key}-", dir=entry.parent))
     try:
         module_name = f"rbdc_compiled_{key}"
-        source = _generate(target, work, module_name)
-        output = work / (module_name + sysconfig.get_config_var("EXT_SUFFIX"))
-        command = [*_compiler(), *_flags(), *(f"-I{d}" for d in [work / "src", *_include_dirs()]),
-                   str(source), "-o", str(output)]
-        (work / "command.txt").write_text(shlex.join(command) + "\n")
-        run = subprocess.run(command, capture_output=True, text=True)
-        if run.returncode != 0:
-            raise RuntimeError(f"rbdc.compile: the compiler failed ({shlex.join(command[:1])}):\n{run.stderr[-4000:]}")
+        sources = _generate(target, work, module_name)
+        includes = [f"-I{d}" for d in [work / "src", *_include_dirs()]]
+        objects = [source.with_suffix(".o") for source in sources]
+        compiles = [[*_compiler(), *_flags(), *includes, "-c", str(s), "-o", str(o)] for s, o in zip(sources, objects)]
+        link = [*_compiler(), *_flags(), "-shared", *map(str, objects), "-o",
+                str(work / (module_name + sysconfig.get_config_var("EXT_SUFFIX")))]
+        (work / "commands.txt").write_text("".join(shlex.join(c) + "\n" for c in compiles + [link]))
+        _run_all(compiles, int(os.environ.get("RBDC_COMPILE_JOBS", 0)) or os.cpu_count() or 1)
+        _run_all([link], 1)
         os.rename(work, entry)  # atomic: readers see no entry or a whole one
     finally:
         shutil.rmtree(work, ignore_errors=True)

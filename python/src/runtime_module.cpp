@@ -51,12 +51,12 @@ const rbdc::Matrix3X& forces(Workspace& w, const double* f) {
 std::map<std::string, Algorithm> algorithms(const Model& model) {
   const int nq = model.nq, nv = model.nv, nj = model.num_joints(), nf = static_cast<int>(model.feet.size());
   const int quaternion = model.floating_base ? 3 : -1;
-  const rbdc_py::ArgSpec q{"q", nq, 1, quaternion}, v{"v", nv, 1}, a{"a", nv, 1}, tau{"tau", nj, 1}, f{"f", 3, nf};
+  const rbdc_py::ArgSpec q{"q", nq, 1, quaternion}, v{"v", nv, 1}, a{"a", nv, 1}, tau{"tau", nj, 1}, f{"f", 3, nf, -1, true};
   const char *dq = "configuration (position, quaternion w x y z, joints) or joint positions",
              *dv = "velocity (trunk ω, v in trunk coordinates, joints) or joint velocities",
              *da = "acceleration, ordered like v", *dtau = "joint torques / forces",
              *df = "foot forces, world frame, one column per foot";
-  auto out = [](const char* name, int rows, int cols) { return rbdc_py::ArgSpec{name, rows, cols}; };
+  auto out = [](const char* name, int rows, int cols) { return rbdc_py::ArgSpec{name, rows, cols, -1, cols != 1}; };
   std::map<std::string, Algorithm> table;
   auto add = [&](const char* name, std::vector<rbdc_py::ArgSpec> in, std::vector<rbdc_py::ArgSpec> outs,
                  std::vector<const char*> docs, const char* doc, Run run) {
@@ -181,7 +181,6 @@ struct PyModel {
   std::map<std::string, Algorithm> table;
 
   struct Kernel {
-    static constexpr bool double_only = true;
     const Model* model;
     const Run* run;
     struct Worker {
@@ -200,7 +199,9 @@ struct PyModel {
     if (inputs.size() != algorithm.spec.inputs.size())
       throw py::type_error("rbdc: " + name + " takes " + std::to_string(algorithm.spec.inputs.size()) + " inputs");
     std::vector<py::handle> values(inputs.begin(), inputs.end());
-    return rbdc_py::call<rbdc_py::NoPack, 1, 1>(algorithm.spec, Kernel{model.get(), &algorithm.run}, values.data(), out, threads);
+    const Kernel kernel{model.get(), &algorithm.run};
+    const rbdc_py::Runner runner{&rbdc_py::run_kernel<Kernel, double, rbdc_py::NoPack, 1>, nullptr, &kernel};
+    return rbdc_py::call(algorithm.spec, runner, values.data(), out, threads);
   }
 };
 
