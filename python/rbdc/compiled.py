@@ -121,9 +121,9 @@ def _generate(target: Target, work: Path, module_name: str) -> list[Path]:
     """Writes the inputs, the generated headers and the module's sources into `work`; returns the sources."""
     sys.path.insert(0, str(_home.generator_dir()))
     try:
-        from rbdcgen.layout import find_layout
-        from rbdcgen.pipeline import compile_robot, render
-        from rbdcgen.python_module import render_python_module
+        from rbdcgen.backend.python_module import render_python_module
+        from rbdcgen.commands.pipeline import compile_robot, render
+        from rbdcgen.frontend.layout import find_layout
     finally:
         sys.path.pop(0)
     inputs = work / "inputs"

@@ -1,10 +1,10 @@
 """Back end for rbdc.compile: the C++ source of a Python extension module with one numpy function per
 generated function, rendered from the same traced Function table as the headers (templates/
 python_module.cpp.j2). The numpy boundary itself is python/rbdc/native/rbdc_py/batch_call.hpp."""
-from .layout import Layout
+from ..frontend.layout import Layout
+from ..version import VERSION
 from .names import cpp_identifier
 from .render import ALIASES, BATCH_HEADER, GeneratedFile, eigen_type, input_records, template_environment
-from .version import VERSION
 
 QUATERNION_W = 3  # q = (p, quaternion w x y z, joints) for a floating base (docs/conventions.md)
 # Lanes per call of the Pack kernels (rbdc_gen::Batch<T>: one AVX-512 register, two AVX2 ones).
