@@ -48,6 +48,15 @@ inline void body_jacobian(const Model& model, const Data& data, int i, Matrix6X&
   if (model.floating_base) J.leftCols<6>() = X_j_to_i;
 }
 
+/// v × m without forming crm(v): (ω × m_ω, ω × m_v + v_O × m_ω). Exactly zero when m is v itself
+/// (each 3-D cross product of a vector with itself is), where the 6 × 6 product leaves round-off; so
+/// a first joint on a fixed base has J̇v = 0 exactly, as the generated code has it.
+inline Vector6 cross_motion(const Vector6& v, const Vector6& m) {
+  Vector6 out;
+  out << v.head<3>().cross(m.head<3>()), v.head<3>().cross(m.tail<3>()) + v.tail<3>().cross(m.head<3>());
+  return out;
+}
+
 /// The velocity-product accelerations a_i at a = 0 into data.a_body, after kinematics(q, v):
 ///   a_0 ← (0, -ω_0 × v_0)  (a floating trunk's spatial acceleration when a[0:6] = 0, as in Alg. 2)
 ///   a_i ← X_λ(i)^i a_λ(i) + v_i × S_i q̇_i                                          (Eq. 19)
@@ -58,7 +67,7 @@ inline void bias_accelerations(const Model& model, Data& data, const VectorRef& 
     const size_t ui = static_cast<size_t>(i);
     const size_t j = static_cast<size_t>(model.parent[ui]);
     data.a_body[ui] = data.X_up[ui] * data.a_body[j] +
-                      crm(data.v[ui]) * model.motion_subspace[ui] * v[model.joints[ui].v_index];
+                      cross_motion(data.v[ui], model.motion_subspace[ui] * v[model.joints[ui].v_index]);
   }
 }
 
