@@ -20,7 +20,8 @@ inline void check_size(const char* function, const char* argument, Eigen::Index 
 
 inline void check_data(const char* function, const Model& model, const Data& data) {
   if (static_cast<int>(data.v.size()) != model.nb || data.c.size() != model.nv ||
-      data.feet_position.cols() != static_cast<Eigen::Index>(model.feet.size())) {
+      data.feet_position.cols() != static_cast<Eigen::Index>(model.feet.size()) ||
+      data.frame_position.cols() != static_cast<Eigen::Index>(model.frames.size())) {
     throw std::invalid_argument(std::string("rbdc::") + function +
                                 ": data was built for a different model than '" + model.name +
                                 "'");

@@ -115,6 +115,10 @@ std::vector<int> derive_parents(const ModelSpec& spec) {
   return parent;
 }
 
+bool is_proper_rotation(const Matrix3& E) {
+  return (E.transpose() * E - Matrix3::Identity()).norm() <= kOrthonormalTol && E.determinant() > 0;
+}
+
 void check_joint(const ModelSpec& spec, int i, JointSpec& j) {
   const std::string label = joint_label(spec, i);
   if (j.type != JointType::Revolute && j.type != JointType::Prismatic) {
@@ -129,8 +133,26 @@ void check_joint(const ModelSpec& spec, int i, JointSpec& j) {
   if (norm < kAxisNormMin) fail(spec, label + ": axis is zero");
   j.axis /= norm;
   const Matrix3& E = j.rotation;
-  if ((E.transpose() * E - Matrix3::Identity()).norm() > kOrthonormalTol || E.determinant() < 0) {
+  if (!is_proper_rotation(E)) {
     fail(spec, label + ": rotation is not a proper orthonormal matrix");
+  }
+}
+
+// Frames (docs/model.md, "Frames"): an existing body, a finite pose with a proper rotation, and a
+// name no other frame has (a bad name in a scene could not tell which one it meant).
+void check_frames(const ModelSpec& spec) {
+  std::set<std::string> names;
+  const int nb = static_cast<int>(spec.bodies.size());
+  for (const Frame& f : spec.frames) {
+    const std::string label = "frame '" + f.name + "'";
+    if (f.name.empty()) fail(spec, "a frame has no name");
+    if (!names.insert(f.name).second) fail(spec, label + ": the name is used twice");
+    if (f.body < 0 || f.body >= nb) fail(spec, label + ": body " + std::to_string(f.body) + " does not exist");
+    if (!all_finite(f.rotation) || !all_finite(f.translation)) fail(spec, label + ": pose has NaN or Inf");
+    const Matrix3& E = f.rotation;
+    if (!is_proper_rotation(E)) {
+      fail(spec, label + ": rotation is not a proper orthonormal matrix");
+    }
   }
 }
 
@@ -304,6 +326,7 @@ Model build_model(const ModelSpec& spec_in, std::vector<std::string>* warnings) 
     }
     if (!all_finite(f.offset)) fail(spec, label + ": offset has NaN or Inf");
   }
+  check_frames(spec);
 
   Model m;
   m.name = spec.name;
@@ -319,6 +342,8 @@ Model build_model(const ModelSpec& spec_in, std::vector<std::string>* warnings) 
   m.parent = parent;
   m.bodies = spec.bodies;
   m.feet = spec.feet;
+  m.frames = spec.frames;  // grouped by body, keeping the source's order within a body
+  std::stable_sort(m.frames.begin(), m.frames.end(), [](const Frame& a, const Frame& b) { return a.body < b.body; });
   m.couplings = spec.couplings;
   std::sort(m.couplings.begin(), m.couplings.end(),
             [](const Coupling& a, const Coupling& b) { return a.follower < b.follower; });

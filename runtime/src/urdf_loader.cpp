@@ -342,6 +342,30 @@ class UrdfTranslator {
     return {f.name, it->second.body, pose.R * f.offset + pose.p};
   }
 
+  // A declared frame: its pose in its link's frame, composed with the link's placement in its body.
+  Frame resolve_frame(const FrameSpec& f, const std::string& source, const std::vector<int>& number_of) const {
+    const auto it = placement_.find(f.link);
+    if (it == placement_.end()) {
+      throw ModelError(source + ": frame '" + f.name + "': link '" + f.link + "' is not a link of the model");
+    }
+    const Pose& link = it->second.pose;
+    return {f.name, number_of[static_cast<size_t>(it->second.body)], (link.R * f.rotation).transpose(),
+            link.R * f.translation + link.p};
+  }
+
+  // One frame per link (docs/model.md, "Frames"), merged links included, in body order and, within
+  // a body, in the order the depth-first visit met them (the body's own link first).
+  std::vector<Frame> link_frames(const std::vector<int>& order, const std::vector<int>& number_of) const {
+    std::vector<Frame> frames;
+    for (const int draft : order) {
+      for (const std::string& link : drafts_[static_cast<size_t>(draft)].links) {
+        const Pose& pose = placement_.at(link).pose;
+        frames.push_back({link, number_of[static_cast<size_t>(draft)], pose.R.transpose(), pose.p});
+      }
+    }
+    return frames;
+  }
+
   // Default feet: one per leaf body, at its last merged massless tip link (toe/foot links) if any,
   // else at the body origin.
   std::vector<Foot> default_feet() const {
@@ -455,6 +479,10 @@ class UrdfTranslator {
     }
     for (Foot& f : feet) f.body = number_of[static_cast<size_t>(f.body)];
     spec.feet = feet;
+    spec.frames = link_frames(order, number_of);
+    if (topo) {
+      for (const FrameSpec& f : topo->frames) spec.frames.push_back(resolve_frame(f, topo->source, number_of));
+    }
     if (topo) spec.actuators = topo->actuators;
     return spec;
   }

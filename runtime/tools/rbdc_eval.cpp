@@ -131,6 +131,75 @@ void write_forward_dynamics(std::ostream& out, const Model& model, rbdc::Data& d
   out << "\n  }";
 }
 
+/// The frames named in `list` ("all" or "A,B,…"), as model indices; an unknown name throws
+/// std::invalid_argument naming it (frame_index).
+std::vector<int> selected_frames(const Model& model, const std::string& list) {
+  std::vector<int> frames;
+  if (list == "all") {
+    for (size_t k = 0; k < model.frames.size(); ++k) frames.push_back(static_cast<int>(k));
+    return frames;
+  }
+  std::stringstream items(list);
+  std::string name;
+  while (std::getline(items, name, ',')) frames.push_back(rbdc::frame_index(model, name));
+  return frames;
+}
+
+/// "frames" (docs/runtime.md, "rbdc-eval"): per selected frame its placement, velocities,
+/// Jacobians and J̇v (rbdc/frames.hpp), keyed by frame name.
+void write_frames(std::ostream& out, const Model& model, rbdc::Data& data, const VectorX& q,
+                  const VectorX& v, const std::vector<int>& frames) {
+  rbdc::frame_placements(model, data, q);
+  rbdc::frame_velocities(model, data, q, v);
+  rbdc::frame_jacobians(model, data, q);
+  rbdc::frame_bias_accelerations(model, data, q, v);
+  out << ",\n  \"frames\": {";
+  for (size_t n = 0; n < frames.size(); ++n) {
+    const size_t k = static_cast<size_t>(frames[n]);
+    const Eigen::Index col = frames[n];
+    out << (n ? ",\n    " : "\n    ") << std::quoted(model.frames[k].name) << ": {\n      \"position\": ";
+    write_vector(out, data.frame_position.col(col));
+    out << ",\n      \"world_R_frame\": ";
+    write_rows(out, data.world_R_frame[k], "      ");
+    out << ",\n      \"velocity_local\": ";
+    write_vector(out, data.frame_velocity_local.col(col));
+    out << ",\n      \"velocity_world\": ";
+    write_vector(out, data.frame_velocity_world.col(col));
+    out << ",\n      \"jacobian_local\": ";
+    write_rows(out, data.frame_jacobian_local[k], "      ");
+    out << ",\n      \"jacobian_world\": ";
+    write_rows(out, data.frame_jacobian_world[k], "      ");
+    out << ",\n      \"bias_spatial\": ";
+    write_vector(out, data.frame_bias_spatial.col(col));
+    out << ",\n      \"bias_classical\": ";
+    write_vector(out, data.frame_bias_classical.col(col));
+    out << "\n    }";
+  }
+  out << "\n  }";
+}
+
+/// "centroidal" (rbdc/centroidal.hpp) and "M_inverse" (rbdc/crba.hpp).
+void write_centroidal(std::ostream& out, const Model& model, rbdc::Data& data, const VectorX& q,
+                      const VectorX& v) {
+  rbdc::center_of_mass(model, data, q, v);
+  const rbdc::Vector3 com = data.com, com_velocity = data.com_velocity;
+  rbdc::center_of_mass_jacobian(model, data, q);
+  rbdc::centroidal_momentum_matrix(model, data, q);
+  rbdc::centroidal_bias(model, data, q, v);
+  out << ",\n  \"centroidal\": {\n    \"com\": ";
+  write_vector(out, com);
+  out << ",\n    \"com_velocity\": ";
+  write_vector(out, com_velocity);
+  out << ",\n    \"com_jacobian\": ";
+  write_rows(out, data.com_jacobian, "    ");
+  out << ",\n    \"momentum_matrix\": ";
+  write_rows(out, data.A_G, "    ");
+  out << ",\n    \"bias\": ";
+  write_vector(out, data.centroidal_bias);
+  out << "\n  },\n  \"M_inverse\": ";
+  write_rows(out, rbdc::mass_matrix_inverse(model, data, q), "  ");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -140,10 +209,15 @@ int main(int argc, char** argv) {
     std::vector<double> q_values, v_values, a_values, tau_values, f_values;
     bool has_q = false, has_v = false, has_a = false, has_tau = false, has_f = false;
     bool derivatives = false;
-    std::string body_wrenches_file;
+    std::string body_wrenches_file, frame_list;
     const ExtraOption state_options = [&](int n, char** args, int& i) {
       const std::string arg = args[i];
       if (arg == "--derivatives") return derivatives = true;
+      if (arg == "--frames") {
+        if (i + 1 >= n) throw std::invalid_argument("--frames expects 'all' or comma-separated frame names");
+        frame_list = args[++i];
+        return true;
+      }
       if (arg == "--body-wrenches") {
         if (i + 1 >= n) throw std::invalid_argument("--body-wrenches expects a JSON file");
         body_wrenches_file = args[++i];
@@ -165,7 +239,7 @@ int main(int argc, char** argv) {
     if (!parse_load_options(argc, argv, opts, state_options)) {
       std::cout << "usage: rbdc-eval ROBOT [options] [--q Q0,Q1,…] [--v V0,V1,…] [--a A0,A1,…]\n"
                    "                 [--tau T0,…] [--f F0x,F0y,F0z,F1x,…] [--body-wrenches FILE.json]\n"
-                   "                 [--derivatives]\n"
+                   "                 [--derivatives] [--frames all|NAME,…]\n"
                    "Prints the runtime's M, c, g, feet positions and feet Jacobian (and with --a the\n"
                    "inverse dynamics tau) at one state as JSON. Defaults: q neutral (identity\n"
                    "quaternion), v, a, tau and the world foot forces f (foot-major) zero.\n"
@@ -175,7 +249,12 @@ int main(int argc, char** argv) {
                    "(moment; force) at the body origin in body coordinates (docs/runtime.md).\n"
                    "--derivatives adds \"derivatives\": dtau_dq, dtau_dv (at a), dbias_dq, dbias_dv,\n"
                    "dg_dq, da_dq, da_dv, da_dtau, da_df (at tau, f), dpdot_dq, dtau_e_dq (at f), with\n"
-                   "respect to q on the manifold (docs/conventions.md).\n\n"
+                   "respect to q on the manifold (docs/conventions.md).\n"
+                   "Always printed too: the feet's J̇v (\"feet\": \"bias_accelerations\"), \"centroidal\"\n"
+                   "(com, com_velocity, com_jacobian, momentum_matrix A_G, bias Ȧ_G v) and \"M_inverse\".\n"
+                   "--frames adds \"frames\": for each named frame (all: every frame of the model) its\n"
+                   "position, world_R_frame, velocity_local/_world, jacobian_local/_world (6 x nv),\n"
+                   "bias_spatial (local) and bias_classical (world-aligned); an unknown name exits 2.\n\n"
                 << kLoadOptionsHelp;
       return 0;
     }
@@ -204,6 +283,8 @@ int main(int argc, char** argv) {
     const VectorX g = rbdc::gravity_terms(model, data, q);
     const rbdc::Matrix3X feet = rbdc::feet_positions(model, data, q);
     const MatrixX J = rbdc::feet_jacobian(model, data, q);
+    const rbdc::Matrix3X feet_bias = rbdc::feet_bias_accelerations(model, data, q, v);
+    const std::vector<int> frames = frame_list.empty() ? std::vector<int>{} : selected_frames(model, frame_list);
     std::vector<std::string> feet_names;
     for (const rbdc::Foot& f : model.feet) feet_names.push_back(f.name);
 
@@ -227,7 +308,11 @@ int main(int argc, char** argv) {
     write_rows(out, feet.transpose(), "    ");
     out << ",\n    \"jacobian\": ";
     write_rows(out, J, "    ");
+    out << ",\n    \"bias_accelerations\": ";
+    write_rows(out, feet_bias.transpose(), "    ");
     out << "\n  }";
+    write_centroidal(out, model, data, q, v);
+    if (!frame_list.empty()) write_frames(out, model, data, q, v, frames);
     if (has_tau || !body_wrenches_file.empty()) {
       write_forward_dynamics(out, model, data, q, v, tau,
                              Eigen::Map<const rbdc::Matrix3X>(f.data(), 3, n_forces / 3), body_wrenches);

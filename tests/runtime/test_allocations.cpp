@@ -114,6 +114,15 @@ TEST_P(Allocations, NoAlgorithmCallAllocates) {
   EXPECT_EQ(allocations_during([&] { feet_jacobian(model, data, q); }), 0);
   EXPECT_EQ(allocations_during([&] { feet_jacobian_contact(model, data, q, world_R_contact); }), 0);
   EXPECT_EQ(allocations_during([&] { forward_dynamics(model, data, q, v, tau, f); }), 0);
+  EXPECT_EQ(allocations_during([&] { frame_placements(model, data, q); }), 0);
+  EXPECT_EQ(allocations_during([&] { frame_velocities(model, data, q, v); }), 0);
+  EXPECT_EQ(allocations_during([&] { frame_jacobians(model, data, q); }), 0);
+  EXPECT_EQ(allocations_during([&] { frame_bias_accelerations(model, data, q, v); }), 0);
+  EXPECT_EQ(allocations_during([&] { center_of_mass(model, data, q, v); }), 0);
+  EXPECT_EQ(allocations_during([&] { center_of_mass_jacobian(model, data, q); }), 0);
+  EXPECT_EQ(allocations_during([&] { centroidal_momentum_matrix(model, data, q); }), 0);
+  EXPECT_EQ(allocations_during([&] { centroidal_bias(model, data, q, v); }), 0);
+  EXPECT_EQ(allocations_during([&] { mass_matrix_inverse(model, data, q); }), 0);
   if (!model.floating_base) return;
   OscReferenceData ref(model);  // sized here, outside the counted calls
   EXPECT_EQ(allocations_during([&] { osc_open_chain(model, data, q, v, f); }), 0);

@@ -37,6 +37,22 @@ check(len(out["feet"]["names"]) == 4 and len(out["feet"]["positions"]) == 4, "fo
 check(len(out["feet"]["jacobian"]) == 12 and len(out["feet"]["jacobian"][0]) == 18, "Jacobian shape")
 check(abs(out["g"][5] - 8.252 * 9.81) < 1e-9, "g: the trunk carries the weight upright")
 check("tau" not in out, "no tau without --a")
+check(len(out["feet"]["bias_accelerations"]) == 4, "feet J̇v, one row per foot")
+cen = out["centroidal"]
+check(len(cen["momentum_matrix"]) == 6 and len(cen["momentum_matrix"][0]) == 18, "A_G shape")
+check(abs(cen["momentum_matrix"][3][3] - 8.252) < 1e-9, "A_G: linear momentum of the trunk's v is m")
+check(len(out["M_inverse"]) == 18, "M_inverse rows")
+MMinv = [[sum(M[r][k] * out["M_inverse"][k][c] for k in range(18)) for c in range(18)] for r in range(18)]
+check(all(abs(MMinv[r][c] - (r == c)) < 1e-9 for r in range(18) for c in range(18)), "M · M⁻¹ = 1")
+check("frames" not in out, "no frames without --frames")
+framed = json.loads(run(CHEETAH, "--q", STANDING, "--frames", "LF_foot,trunk").stdout)["frames"]
+check(list(framed) == ["LF_foot", "trunk"], "frames in the order asked")
+check(len(framed["LF_foot"]["jacobian_world"]) == 6 and len(framed["LF_foot"]["jacobian_world"][0]) == 18,
+      "frame Jacobian 6 x nv")
+check(all(abs(a - b) < 1e-12 for a, b in zip(framed["LF_foot"]["position"], out["feet"]["positions"][0])),
+      "the LF_foot link frame is the LF foot point")
+unknown = run(CHEETAH, "--frames", "LF_shin")
+check(unknown.returncode == 2 and "no frame 'LF_shin'" in unknown.stderr, "unknown frame: exit 2 naming it")
 
 with_a = json.loads(run(CHEETAH, "--q", STANDING, "--a", ",".join(["0"] * 18)).stdout)
 check(with_a["tau"] == with_a["g"], "tau at v = a = 0 equals g")

@@ -234,9 +234,60 @@ def generic_ops(robot, scene, name):
         t.base_rotation(robot)
         t.osc(robot, nf if name == "osc_open_chain" else len(scene.contacts_for(robot)),
               closed=name == "osc_closed_chain")
+    elif name in _WHOLE_BODY_GENERIC:
+        _WHOLE_BODY_GENERIC[name](t, robot, scene)
     else:
         raise KeyError("unknown function '%s'" % name)
     return _result(t.c)
+
+
+def _frame_jacobian_ops(t, robot, bodies):
+    """Per frame or point on body i: X_j^i S_j along κ(i) (Alg. 6), X_i^F J (6 × nv) and its rotation."""
+    for body in bodies:
+        depth = len(robot.support[body])
+        t.mm6(depth)
+        t.mv6(depth + robot.nv)
+        t.mv3(2 * robot.nv)
+        if robot.floating_base:
+            t.mm6()
+
+
+def _bias_pass_ops(t, robot, n_points):
+    """Velocities, the a = 0 outward pass (Eq. 19) and each point's X_i^F a, X_i^F v, ω × v, R."""
+    t.world_transforms(robot)
+    t.velocities(robot)
+    t.mv6(2 * robot.n_joints)
+    t.scale6(robot.n_joints)
+    t.v6(robot.n_joints)
+    t.mv6(2 * n_points)
+    t.mv3(3 * n_points)
+
+
+def _com_ops(t, robot):
+    t.world_transforms(robot)
+    t.mv3(2 * robot.nb)
+    t.add(3, 3, times=robot.nb)
+
+
+# The runtime's calls for the whole-body functions (runtime/src/frames.cpp, centroidal.cpp,
+# mass_matrix_inverse.cpp), counted with the same dense building blocks.
+_WHOLE_BODY_GENERIC = {
+    "frame_placements": lambda t, r, s: (t.world_transforms(r), t.mm6(len(s.frames_for(r))),
+                                         t.mm3(len(s.frames_for(r)))),
+    "frame_velocities": lambda t, r, s: (t.world_transforms(r), t.velocities(r), t.mv6(len(s.frames_for(r))),
+                                         t.mv3(2 * len(s.frames_for(r)))),
+    "frame_jacobians": lambda t, r, s: (t.world_transforms(r),
+                                        _frame_jacobian_ops(t, r, [f.body for f in s.frames_for(r)])),
+    "frame_bias_accelerations": lambda t, r, s: _bias_pass_ops(t, r, len(s.frames_for(r))),
+    "feet_bias_accelerations": lambda t, r, s: _bias_pass_ops(t, r, len(s.feet_for(r))),
+    "center_of_mass": lambda t, r, s: (_com_ops(t, r), t.velocities(r), t.mv3(2 * r.nb)),
+    "center_of_mass_jacobian": lambda t, r, s: (t.world_transforms(r),
+                                                _frame_jacobian_ops(t, r, range(r.nb))),
+    "centroidal_momentum_matrix": lambda t, r, s: (t.crba(r), _com_ops(t, r), t.mm6(r.nb), t.mv6(r.nb)),
+    "centroidal_bias": lambda t, r, s: (_com_ops(t, r), t.velocities(r), t.rnea(r, True, False), t.mm6()),
+    "mass_matrix_inverse": lambda t, r, s: (t.crba(r), t.cholesky_factor(r.nv),
+                                            t.add(r.nv * r.nv, r.nv * r.nv, times=r.nv)),
+}
 
 
 # A combined function (scene.COMBINED) against the runtime calls a user makes for its outputs (the

@@ -8,7 +8,7 @@ from typing import Dict, Tuple
 
 from . import differentiate, lane_functions, project
 from ..graph import expr as ex
-from ..algorithms import crba, forward_dynamics, jacobian, kinematics, osc, rnea
+from ..algorithms import centroidal, crba, forward_dynamics, frames, jacobian, kinematics, osc, rnea
 from ..views import coupled
 from ..views.scalar import TracedModel
 
@@ -176,10 +176,77 @@ def _spec(robot, nf):
     }
 
 
+def _whole_body_spec(robot, nf, n_frames):
+    """The whole-body controller's functions (scene.WHOLE_BODY; issue 21), as _spec; n_frames is the
+    number of frames the scene lists (docs/generated_api.md, "Frames and centroidal quantities")."""
+    nv = robot.nv
+
+    def placements(m):
+        rotations, positions = frames.frame_placements(m)
+        return {"R": tuple(x for R in rotations for c in range(3) for x in (R[0][c], R[1][c], R[2][c])),
+                "p": _columns(positions)}
+
+    def pair(names, result):
+        return {name: _columns(values) for name, values in zip(names, result)}
+
+    def pair_matrices(names, result):
+        return {name: _matrix(rows, nv) for name, rows in zip(names, result)}
+
+    return {
+        "frame_placements": (
+            "Placements of the scene's frames: W_R_F and the origin (paper 000 Eqs. 15-18).", ("q",),
+            [("R", 3, 3 * n_frames, "frame k's rotation frame → world in columns 3k … 3k+2"),
+             ("p", 3, n_frames, "frame origins, world frame, one column per frame")],
+            placements),
+        "frame_velocities": (
+            "Spatial velocities (ω; v) of the scene's frames at their origins.", ("q", "v"),
+            [("v_local", 6, n_frames, "frame axes (Pinocchio's LOCAL, rows angular first)"),
+             ("v_world", 6, n_frames, "world axes (LOCAL_WORLD_ALIGNED, rows angular first)")],
+            lambda m: pair(("v_local", "v_world"), frames.frame_velocities(m))),
+        "frame_jacobians": (
+            "6 × nv Jacobians of the scene's frames (paper 000 Eq. B3 moved to the frame).", ("q",),
+            [("J_local", 6 * n_frames, nv, "rows 6k … 6k+5: frame k's J, frame axes (J v = v_local)"),
+             ("J_world", 6 * n_frames, nv, "rows 6k … 6k+5: frame k's J, world axes (J v = v_world)")],
+            lambda m: pair_matrices(("J_local", "J_world"), frames.frame_jacobians(m))),
+        "frame_bias_accelerations": (
+            "J̇v of the scene's frames: their accelerations at a = 0.", ("q", "v"),
+            [("spatial", 6, n_frames, "J̇_local v: spatial acceleration, frame axes"),
+             ("classical", 6, n_frames, "J̇_world v: (ω̇; p̈ of the origin), world axes")],
+            lambda m: pair(("spatial", "classical"), frames.frame_bias_accelerations(m))),
+        "feet_bias_accelerations": (
+            "J̇v of the feet: each foot point's classical acceleration at a = 0, world frame.",
+            ("q", "v"),
+            [("Jdot_v", 3, nf, "one column per foot, world frame")],
+            lambda m: {"Jdot_v": _columns(frames.feet_bias_accelerations(m))}),
+        "center_of_mass": (
+            "Centre of mass and its velocity, world frame (bodies and rotors).", ("q", "v"),
+            [("com", 3, 1, "centre of mass"), ("com_velocity", 3, 1, "its velocity")],
+            lambda m: {"com": tuple(centroidal.center_of_mass(m)),
+                       "com_velocity": tuple(centroidal.center_of_mass_velocity(m))}),
+        "center_of_mass_jacobian": (
+            "Centre-of-mass Jacobian J_c, ċ = J_c v, world frame.", ("q",),
+            [("J_c", 3, nv, "centre-of-mass Jacobian")],
+            lambda m: {"J_c": _matrix(centroidal.center_of_mass_jacobian(m), nv)}),
+        "centroidal_momentum_matrix": (
+            "Centroidal momentum matrix A_G (Orin, Goswami & Lee 2013): h_G = A_G v.", ("q",),
+            [("A_G", 6, nv, "rows: angular momentum about the CoM, then linear momentum, world axes")],
+            lambda m: {"A_G": _matrix(centroidal.centroidal_momentum_matrix(m), nv)}),
+        "centroidal_bias": (
+            "Centroidal momentum drift Ȧ_G v: the rate of h_G at a = 0.", ("q", "v"),
+            [("Adot_v", 6, 1, "(k̇_G; l̇) at a = 0, world axes")],
+            lambda m: {"Adot_v": tuple(centroidal.centroidal_bias(m))}),
+        "mass_matrix_inverse": (
+            "M⁻¹ from the sparse factor M = Lᵀ D L (CRBA, paper 000 Alg. 5).", ("q",),
+            [("M_inv", nv, nv, "inverse mass matrix, full symmetric")],
+            lambda m: {"M_inv": _matrix(forward_dynamics.mass_matrix_inverse(m), nv)}),
+    }
+
+
 def trace_function(robot, scene, name):
     """Traces one function of the scene into a fresh graph."""
     nf = len(scene.feet_for(robot))
-    spec = {**_spec(robot, nf), **differentiate.spec(robot, nf), **lane_functions.spec(robot, nf)}
+    spec = {**_spec(robot, nf), **_whole_body_spec(robot, nf, len(scene.frames_for(robot))),
+            **differentiate.spec(robot, nf), **lane_functions.spec(robot, nf)}
     if name not in spec:
         raise KeyError("unknown function '%s'" % name)
     doc, input_names, output_specs, build = spec[name]

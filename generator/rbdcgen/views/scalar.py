@@ -21,6 +21,7 @@ class TracedModel:
         self.coupled = robot                     # the inputs have its independent coordinates
         self.scene = scene
         self.feet = scene.feet_for(robot)
+        self.frames = scene.frames_for(robot)
         self.contacts = scene.contacts_for(robot)
         self.gravity = sp.vec(scene.gravity_for(robot))
         self.zero_inputs = tuple(zero_inputs)

@@ -53,6 +53,7 @@ struct ModelSpec {
   std::vector<JointSpec> joints;   ///< joints 1 … nb-1, same order as pred/succ
   std::vector<Body> bodies;        ///< nb bodies in final numbering, body 0 = root
   std::vector<Foot> feet;
+  std::vector<Frame> frames;       ///< operational frames (names unique among frames)
   std::vector<Coupling> couplings;  ///< joint indices in the final numbering
   std::vector<ActuatorSpec> actuators;  ///< by joint name; empty: no rotors, no armature
   /// Optional: the line of each body's (first) definition in `source`, for messages (nb entries).
