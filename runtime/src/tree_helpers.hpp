@@ -1,5 +1,6 @@
 // Small pieces shared by several runtime algorithms: the joint transform X_J(q), the foot
-// transform X_i^fk (paper 000 Eq. 16) and the inward force pass common to Algs. 2-4 and the RNEA.
+// transform X_i^fk (paper 000 Eq. 16), the solve with the factor of M and the inward force pass
+// common to Algs. 2-4 and the RNEA.
 #pragma once
 
 #include "rbdc/data.hpp"
@@ -21,6 +22,14 @@ inline Matrix6 foot_transform(const Foot& foot) {
 
 /// Rotation block R_A^B of a motion transform X_A^B.
 inline Matrix3 rotation_of(const Matrix6& X) { return X.topLeftCorner<3, 3>(); }
+
+/// X ← M⁻¹ X, column by column with the factor in data.M_llt (vector solves need no scratch).
+inline void solve_with_mass_matrix(const Data& data, MatrixX& X) {
+  for (Eigen::Index k = 0; k < X.cols(); ++k) {
+    auto column = X.col(k);
+    data.M_llt.solveInPlace(column);
+  }
+}
 
 /// The inward pass shared by Algs. 2, 3 and 4 (and the full RNEA), over data.f_body:
 ///   for i = nb-1 … 1:  out_i ← S_iᵀ f_i;  f_λ(i) ← f_λ(i) + (X_λ(i)^i)ᵀ f_i

@@ -4,6 +4,7 @@
 #include "rbdc/actuator_mode.hpp"
 #include "rbdc/bias_terms.hpp"
 #include "rbdc/check_finite.hpp"
+#include "rbdc/contact_dynamics.hpp"
 #include "rbdc/coupling.hpp"
 #include "rbdc/crba.hpp"
 #include "rbdc/data.hpp"
