@@ -13,7 +13,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "generator"))
-from rbdcgen.random_robot import random_actuated_topology, random_urdf  # noqa: E402
+from rbdcgen.frontend.random_robot import random_actuated_topology, random_urdf  # noqa: E402
 
 
 def main() -> int:

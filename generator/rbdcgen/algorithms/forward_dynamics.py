@@ -4,7 +4,7 @@ the tree induces (no fill-in: row k of L is non-zero only at the ancestors of do
 
 from __future__ import annotations
 
-from .. import expr as ex
+from ..graph import expr as ex
 from .crba import mass_matrix
 from .rnea import bias, bias_minus_external
 

@@ -4,7 +4,7 @@ contribute. Written with world axes and lever arms, the cheapest form of the sam
 
 from __future__ import annotations
 
-from .. import spatial as sp
+from ..graph import spatial as sp
 from .kinematics import feet_positions, world_frames
 
 

@@ -3,7 +3,7 @@ velocities."""
 
 from __future__ import annotations
 
-from .. import spatial as sp
+from ..graph import spatial as sp
 
 
 def body_velocities(m):

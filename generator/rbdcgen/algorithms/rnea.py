@@ -4,7 +4,7 @@ dynamics M a + c + g, all one outward and one inward pass with different inputs.
 
 from __future__ import annotations
 
-from .. import spatial as sp
+from ..graph import spatial as sp
 from .kinematics import body_velocities, world_frames
 
 

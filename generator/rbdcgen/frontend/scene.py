@@ -33,7 +33,7 @@ QUANTITIES = (
 # across outputs), and other layouts of a quantity's outputs (M's lower triangle alone), emitted
 # after QUANTITIES and only when a scene lists them.
 COMBINED = ("step_terms", "mass_matrix_lower")
-# Functions with the isomorphic limbs in SIMD lanes (lane_functions.py), emitted after those and only
+# Functions with the isomorphic limbs in SIMD lanes (passes/lane_functions.py), emitted after those and only
 # when a scene lists them.
 LANE_QUANTITIES = ("bias_lanes", "inverse_dynamics_lanes", "mass_matrix_lanes", "mass_matrix_lower_lanes",
                    "forward_dynamics_lanes", "osc_open_chain_lanes",
@@ -43,13 +43,16 @@ FEET_QUANTITIES = ("feet_positions", "feet_velocities", "feet_jacobian", "feet_f
                    "step_terms")
 OSC_QUANTITIES = ("osc_open_chain", "osc_closed_chain", "osc_open_chain_lanes")
 ZERO_INPUTS = ("v", "a", "tau", "f")
-# Derivative quantities (rbdcgen/derivatives.py), emitted after the quantities, in this order.
+# Derivative quantities (passes/differentiate.py), emitted after the quantities, in this order.
 DERIVATIVES = ("inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives",
                "forward_dynamics_derivatives", "feet_velocity_derivatives",
                "feet_force_term_derivatives")
 FEET_DERIVATIVES = ("feet_velocity_derivatives", "feet_force_term_derivatives")
 KEYS = ("name", "quantities", "gravity", "base", "locked_joints", "feet", "contacts", "zero_inputs",
-        "derivatives", "actuators")
+        "derivatives", "actuators", "schedule")
+# How a quantity is evaluated (passes/schedule.py): `auto` picks the cheaper of the scalar tree and
+# the isomorphic limbs in SIMD lanes, the other two force one.
+SCHEDULES = ("auto", "scalar", "limb_lanes")
 # How the robot's actuators (docs/model.md, "Actuators") enter the generated code: `full` as the
 # runtime models them (rotor bodies and armature), `armature` with each rotor reduced to its
 # reflected inertia on M's diagonal, `none` without any (the code of a robot without actuators).
@@ -72,6 +75,7 @@ class Scene:
     zero_inputs: Tuple[str, ...] = ()
     derivatives: Tuple[str, ...] = ()               # none unless the scene lists them
     actuators: str = "full"                         # full | armature | none (ACTUATOR_MODES)
+    schedule: str = "scalar"                        # auto | scalar | limb_lanes (SCHEDULES)
     source: str = "<default>"
 
     # --- resolution against a robot -------------------------------------------------------
@@ -195,11 +199,14 @@ def scene_from_dict(data, source="<scene>") -> Scene:
     actuators = data.get("actuators", "full")
     if actuators not in ACTUATOR_MODES:
         fail("actuators", "expected %s, got %r" % (" | ".join(ACTUATOR_MODES), actuators))
+    schedule = data.get("schedule", Scene.schedule)
+    if schedule not in SCHEDULES:
+        fail("schedule", "expected %s, got %r" % (" | ".join(SCHEDULES), schedule))
     return Scene(name=data["name"], quantities=quantities, gravity=gravity, base=base,
                  locked_joints=tuple((k, float(v)) for k, v in sorted(locked.items())), feet=feet,
                  contacts=contacts, zero_inputs=tuple(x for x in ZERO_INPUTS if x in zero),
                  derivatives=tuple(d for d in DERIVATIVES if d in derivatives), actuators=actuators,
-                 source=source)
+                 schedule=schedule, source=source)
 
 
 def load_scene(path) -> Scene:

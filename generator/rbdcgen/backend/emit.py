@@ -16,7 +16,7 @@ names the phase of the algorithm (expr labels: `// outward pass: body 3 LF_knee`
 Constants print in their shortest round-trip form and a negative constant operand of + or − flips
 the operator (`x + Scalar(0.5)`, never `x - Scalar(-0.5)`). Same DAG in, same text out.
 
-A lane function (fn.lanes, lane_model.py) also declares `Lane = Lanes<Scalar>` (rbdc_gen/lanes.hpp),
+A lane function (fn.lanes, views/limb_lanes.py) also declares `Lane = Lanes<Scalar>` (rbdc_gen/lanes.hpp),
 its lane inputs and constants as arrays `lane_v[…]`, `lane_c[…]` of make_lanes(…), loads the sin/cos
 of a lane angle from ex.LANES consecutive joint_trig entries, declares lane temporaries `const Lane`,
 reads lane k of a lane value as `t7[k]`, and writes each run of ex.LANES consecutive output entries
@@ -24,7 +24,7 @@ with one vector store, `store_lanes(M + 8, make_lanes(…));`."""
 
 from __future__ import annotations
 
-from . import expr as ex
+from ..graph import expr as ex
 
 _BINARY_SYMBOL = {"add": "+", "sub": "-", "mul": "*", "div": "/"}
 # A single-use node whose inlined text would hold more operations than this gets a temporary

@@ -5,12 +5,12 @@ import os
 import sys
 from pathlib import Path
 
-from . import commands
-from .errors import RbdcError
-from .ir import IRError
-from .layout import find_layout
-from .scene import SceneError
-from .trace import TraceError
+from . import subcommands
+from ..errors import RbdcError
+from ..frontend.ir import IRError
+from ..frontend.layout import find_layout
+from ..frontend.scene import SceneError
+from ..passes.trace import TraceError
 
 DESCRIPTION = """rbdc: a rigid-body dynamics compiler. Turns a robot (URDF, topology YAML or rbdc IR JSON)
 and a scene (which quantities, feet, gravity, base, zero inputs, locked joints) into header-only,
@@ -134,7 +134,7 @@ def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
     layout = find_layout()
     try:
-        return commands.COMMANDS[args.command](args, layout)
+        return subcommands.COMMANDS[args.command](args, layout)
     except (RbdcError, IRError, SceneError, TraceError) as error:
         print(f"error: {error}", file=sys.stderr)
         return 2

@@ -1,25 +1,27 @@
-"""Functions traced with the isomorphic limbs in SIMD lanes (algorithms/lane_model.py): the same
+"""Functions traced with the isomorphic limbs in SIMD lanes (views/limb_lanes.py): the same
 outputs as their scalar namesakes, emitted only when a scene lists them (scene.LANE_QUANTITIES)."""
 
 from __future__ import annotations
 
-from . import derivatives, lane_derivatives
-from .algorithms import crba, forward_dynamics, osc, rnea
-from .algorithms.lane_model import LaneModel
-from .limbs import isomorphic_limbs
+from . import differentiate, lane_derivatives
+from ..algorithms import crba, forward_dynamics, osc, rnea
+from ..views.limb_lanes import LaneModel
+from ..views.limbs import isomorphic_limbs
 
 # derivative function → the trace of its lane function: its own on the lane model (the analytic RNEA
 # recursion: a limb's composites summed over the lanes where they join the trunk's), or for ∂a the
 # same method with the solves of limb columns apart (lane_derivatives.py)
-DERIVATIVES = {"inverse_dynamics_derivatives": derivatives.inverse_dynamics_derivatives,
-               "bias_derivatives": derivatives.bias_derivatives,
-               "gravity_derivatives": derivatives.gravity_derivatives,
+DERIVATIVES = {"inverse_dynamics_derivatives": differentiate.inverse_dynamics_derivatives,
+               "bias_derivatives": differentiate.bias_derivatives,
+               "gravity_derivatives": differentiate.gravity_derivatives,
                "forward_dynamics_derivatives": lane_derivatives.forward_dynamics_derivatives}
 # lane function → the function it equals
 SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
           "mass_matrix_lanes": "mass_matrix", "mass_matrix_lower_lanes": "mass_matrix_lower",
           "forward_dynamics_lanes": "forward_dynamics", "osc_open_chain_lanes": "osc_open_chain",
           **{name + "_lanes": name for name in DERIVATIVES}}
+# function → its lane function
+LANE_NAME = {scalar: lanes for lanes, scalar in SCALAR.items()}
 # lane functions with the foot forces as lane inputs
 WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_derivatives_lanes", "osc_open_chain_lanes")
 
@@ -32,7 +34,7 @@ def model(robot, scene, zero_inputs, name):
 def spec(robot, nf):
     """trace.py's function table for the lane functions (same shape as trace._spec)."""
     nv = robot.nv
-    scalar = derivatives.spec(robot, nf)
+    scalar = differentiate.spec(robot, nf)
     in_lanes = {name + "_lanes": (scalar[name][0] + " The four isomorphic limbs in SIMD lanes, the "
                                   "trunk scalar; equals %s." % name,) + scalar[name][1:3] + (trace,)
                 for name, trace in DERIVATIVES.items()}

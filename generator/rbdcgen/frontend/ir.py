@@ -7,10 +7,9 @@ a malformed file gets an error naming the file, the element and the problem.
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Optional, Tuple
 
-from .coupling import independent_view
 
 FORMAT = "rbdc-ir-1"
 ROOT_TYPES = ("floating", "fixed")
@@ -309,3 +308,19 @@ def load_ir(source) -> Robot:
         parent=parent,
         support=sets("kappa"), children=sets("mu"), subtree=sets("nu"),
         bodies=tuple(bodies), joints=tuple(joints), feet=tuple(feet), couplings=tuple(couplings)))
+
+
+def independent_view(tree):
+    """The robot in independent coordinates; `tree` as the IR describes it (tree indices)."""
+    if not tree.couplings:
+        return tree
+    q0, v0 = (7, 6) if tree.floating_base else (0, 0)
+    followers = {c.follower: c for c in tree.couplings}
+    index, joints = {}, list(tree.joints)
+    for i in range(1, tree.nb):
+        if i not in followers:
+            index[i] = len(index)
+    for i in range(1, tree.nb):
+        k = index[followers[i].leader if i in followers else i]
+        joints[i] = replace(joints[i], q_index=q0 + k, v_index=v0 + k)
+    return replace(tree, nq=q0 + len(index), nv=v0 + len(index), joints=tuple(joints))

@@ -20,13 +20,13 @@ Quantities (docs/conventions.md "Derivatives", docs/generator.md says why each t
 
 from __future__ import annotations
 
-from . import expr as ex
-from . import spatial as sp
-from .algorithms import forward_dynamics as fd
-from .algorithms import feet_force_derivatives, jacobian, kinematics, rnea
-from .algorithms.crba import mass_matrix
-from .algorithms.rnea_derivatives import has_rotors, rnea_derivatives
-from .manifold import configuration_seeds, q_direction, v_direction, velocity_seeds
+from ..graph import expr as ex
+from ..graph import spatial as sp
+from ..algorithms import forward_dynamics as fd
+from ..algorithms import feet_force_derivatives, jacobian, kinematics, rnea
+from ..algorithms.crba import mass_matrix
+from ..algorithms.rnea_derivatives import has_rotors, rnea_derivatives
+from ..graph.manifold import configuration_seeds, q_direction, v_direction, velocity_seeds
 
 # The primal function each derivative is compared with in `rbdc flops` (the targets are
 # ratios to one primal call). bias_derivatives differentiates inverse dynamics at a = 0.

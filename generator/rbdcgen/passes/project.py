@@ -5,77 +5,43 @@ The IR describes the tree; `load_ir` gives the generator the robot in its indepe
 coordinates of the generated signatures. Tracing runs the tree algorithms on `tree_view(robot)`
 with the inputs expanded (q_tree = expand(q), v_tree = G v, a_tree = G a, multiplier and offset as
 constants) and projects the outputs: M' = Gᵀ M G, c' = Gᵀ c, g' = Gᵀ g, τ' = Gᵀ τ, J' = J G.
-G is constant, so the projection adds no velocity-product term.
+G is constant, so the projection adds no velocity-product term, and a derivative projects the same
+way: ∂τ'/∂q' = Gᵀ (∂τ/∂q) G (the expansion's Jacobian is G, on the manifold too: a follower is a
+joint). The forward-dynamics derivatives keep their method (differentiate.py) in the independent
+coordinates: the tree's residual derivatives at a_tree = G a', projected, solved with M'.
 """
 from __future__ import annotations
 
-from dataclasses import replace
-
-from . import expr as ex
-from .algorithms.crba import mass_matrix
-from .algorithms.forward_dynamics import factor_outputs, ltdl, ltdl_solve
-from .algorithms.rnea import bias_minus_external
-from .errors import RbdcError
+from ..graph import expr as ex
+from ..algorithms.crba import mass_matrix
+from ..algorithms.jacobian import feet_jacobian
+from ..algorithms.rnea_derivatives import has_rotors
+from ..algorithms.forward_dynamics import factor_outputs, ltdl, ltdl_solve
+from ..algorithms.rnea import bias_minus_external
+from ..errors import RbdcError
+from ..views.coupled import root_coordinates, tree_view
+from .differentiate import replace_symbols, residual_derivatives
 
 # Output names whose rows (resp. columns) are velocity coordinates: Gᵀ from the left (resp. G from
 # the right). Positions and velocities of points need nothing.
-_ROWS_IN_V = {"c", "g", "cg", "tau_e", "tau", "M"}
-_COLS_IN_V = {"J", "M"}
+# A derivative of a v-vector along q or v tangents has both.
+_DERIVATIVES_IN_V = {"dtau_dq", "dtau_dv", "dbias_dq", "dbias_dv", "dg_dq", "dtau_e_dq"}
+_ROWS_IN_V = {"c", "g", "cg", "tau_e", "tau", "M"} | _DERIVATIVES_IN_V
+_COLS_IN_V = {"J", "M"} | _DERIVATIVES_IN_V
+# Derivatives come from the analytic recursions only: the tangent-propagated ones
+# (feet_velocity_derivatives, any derivative of a robot with rotors) seed the tree's coordinates,
+# which a coupled robot's expanded inputs are not.
+_ANALYTIC_DERIVATIVES = {"inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives",
+                         "feet_force_term_derivatives"}
 _PROJECTED = {"feet_positions", "feet_velocities", "feet_jacobian", "quadratic_velocity_terms",
-              "gravity_terms", "bias", "feet_force_terms", "inverse_dynamics", "mass_matrix"}
-
-
-def _root(robot):
-    return (7, 6) if robot.floating_base else (0, 0)
-
-
-def independent_view(tree):
-    """The robot in independent coordinates; `tree` as the IR describes it (tree indices)."""
-    if not tree.couplings:
-        return tree
-    q0, v0 = _root(tree)
-    followers = {c.follower: c for c in tree.couplings}
-    index, joints = {}, list(tree.joints)
-    for i in range(1, tree.nb):
-        if i not in followers:
-            index[i] = len(index)
-    for i in range(1, tree.nb):
-        k = index[followers[i].leader if i in followers else i]
-        joints[i] = replace(joints[i], q_index=q0 + k, v_index=v0 + k)
-    return replace(tree, nq=q0 + len(index), nv=v0 + len(index), joints=tuple(joints))
-
-
-def tree_view(robot):
-    """The tree with every joint a coordinate of its own (the IR's numbering), no couplings."""
-    if not robot.couplings:
-        return robot
-    q0, v0 = _root(robot)
-    joints = [robot.joints[0]] + [replace(j, q_index=q0 + i - 1, v_index=v0 + i - 1)
-                                  for i, j in enumerate(robot.joints[1:], start=1)]
-    return replace(robot, nq=q0 + robot.nb - 1, nv=v0 + robot.nb - 1, joints=tuple(joints), couplings=())
-
-
-def expand(robot, name, values):
-    """Tree-sized q (name 'q': q_f = m·q_l + o) or v/a (G v) from the independent inputs."""
-    if not robot.couplings:
-        return values
-    coupling = {c.follower: c for c in robot.couplings}
-    q0, v0 = _root(robot)
-    start = q0 if name == "q" else v0
-    out = list(values[:start])
-    for i in range(1, robot.nb):
-        j = robot.joints[i]
-        x = values[j.q_index if name == "q" else j.v_index]
-        if i in coupling:
-            x = coupling[i].multiplier * x + (coupling[i].offset if name == "q" else 0.0)
-        out.append(x)
-    return tuple(out)
+              "gravity_terms", "bias", "feet_force_terms", "inverse_dynamics",
+              "mass_matrix"} | _ANALYTIC_DERIVATIVES
 
 
 def _g_columns(robot):
     """G as, per tree velocity row, (independent column, weight)."""
     coupling = {c.follower: c.multiplier for c in robot.couplings}
-    _, v0 = _root(robot)
+    _, v0 = root_coordinates(robot)
     rows = [(k, 1.0) for k in range(v0)]
     rows += [(robot.joints[i].v_index, coupling.get(i, 1.0)) for i in range(1, robot.nb)]
     return rows
@@ -107,6 +73,11 @@ def traced_values(robot, name, m, build, output_specs):
         return {"a": _forward_dynamics(robot, m)}
     if name == "mass_matrix_factor":
         return _mass_matrix_factor(robot, m)
+    if name in _ANALYTIC_DERIVATIVES | {"forward_dynamics_derivatives"} and has_rotors(m.robot):
+        raise RbdcError("robot '%s': %s is not supported with mimic couplings and rotors together"
+                        % (robot.name, name))
+    if name == "forward_dynamics_derivatives":
+        return _forward_dynamics_derivatives(robot, m)
     if name not in _PROJECTED:
         raise RbdcError("robot '%s': %s is not supported with mimic couplings (%d coupled joints); "
                         "load the mimic joints locked (--lock-mimic) or independent (--independent-mimic)"
@@ -123,13 +94,17 @@ def traced_values(robot, name, m, build, output_specs):
     return values
 
 
+def _projected_square(robot, rows):
+    """Gᵀ X G of a tree nv × nv matrix given as rows, as rows."""
+    nv, n = tree_view(robot).nv, robot.nv
+    flat = tuple(rows[r][c] for c in range(nv) for r in range(nv))
+    projected = _project(flat, nv, nv, True, True, g=_g_columns(robot), n=n)
+    return [[projected[c * n + r] for c in range(n)] for r in range(n)]
+
+
 def _projected_mass_matrix(robot, m):
     """M' = Gᵀ M G as rows."""
-    nv, n = tree_view(robot).nv, robot.nv
-    M = mass_matrix(m)
-    M_flat = tuple(M[r][c] for c in range(nv) for r in range(nv))
-    projected = _project(M_flat, nv, nv, True, True, g=_g_columns(robot), n=n)
-    return [[projected[c * n + r] for c in range(n)] for r in range(n)]
+    return _projected_square(robot, mass_matrix(m))
 
 
 def _dense_chain(n):
@@ -155,3 +130,24 @@ def _forward_dynamics(robot, m):
     chain = _dense_chain(n)
     L, inv_diag = ltdl(M_ind, chain)
     return tuple(ltdl_solve(L, inv_diag, chain, rhs))
+
+
+def _forward_dynamics_derivatives(robot, m):
+    """∂a'/∂(q', v', τ', f) = −M'⁻¹ Gᵀ ∂(RNEA − τ_e) G at a_tree = G a', M'⁻¹S'ᵀ, M'⁻¹(J G)ᵀ, with
+    the placeholders a' replaced by the forward dynamics afterwards (differentiate.py's method)."""
+    n, root = robot.nv, robot.root_dofs
+    dq, dv = (_projected_square(robot, x) for x in residual_derivatives(m))
+    columns = {"da_dq": [[-dq[r][c] for r in range(n)] for c in range(n)],
+               "da_dv": [[-dv[r][c] for r in range(n)] for c in range(n)],
+               "da_dtau": [[ex.const(1.0 if r == root + k else 0.0) for r in range(n)]
+                           for k in range(robot.n_joints)]}                          # S'ᵀ
+    J = feet_jacobian(m) if m.feet else []
+    tree_nv = tree_view(robot).nv
+    JG = _project(tuple(J[r][c] for c in range(tree_nv) for r in range(len(J))), len(J), tree_nv,
+                  False, True, _g_columns(robot), n)
+    columns["da_df"] = [[JG[c * len(J) + row] for c in range(n)] for row in range(len(J))]  # (J G)ᵀ
+    chain = _dense_chain(n)
+    L, inv_diag = ltdl(_projected_mass_matrix(robot, m), chain)
+    solved = {name: [x for col in cols for x in ltdl_solve(L, inv_diag, chain, col)]
+              for name, cols in columns.items()}
+    return replace_symbols(solved, m.input("a", n), _forward_dynamics(robot, m))

@@ -1,5 +1,5 @@
 """forward_dynamics_derivatives with the isomorphic limbs in SIMD lanes (docs/performance.md, "One
-SIMD lane per leg"): the method of derivatives.forward_dynamics_derivatives, ∂a = −M⁻¹ ∂(RNEA − τ_e)
+SIMD lane per leg"): the method of differentiate.forward_dynamics_derivatives, ∂a = −M⁻¹ ∂(RNEA − τ_e)
 at the forward-dynamics result, M⁻¹Sᵀ and M⁻¹Jᵀ, on the lane model. The residual derivatives, the
 factor and the forward dynamics are traced unchanged; what differs is how a right-hand side is
 solved and where its solution goes: a trunk column (a trunk dof) is one column with the limbs'
@@ -9,18 +9,18 @@ meet (LaneModel.solve_limb_column)."""
 
 from __future__ import annotations
 
-from . import derivatives
-from . import expr as ex
-from .algorithms import forward_dynamics as fd
-from .algorithms import jacobian
-from .algorithms.crba import mass_matrix
+from . import differentiate
+from ..graph import expr as ex
+from ..algorithms import forward_dynamics as fd
+from ..algorithms import jacobian
+from ..algorithms.crba import mass_matrix
 
 
 def forward_dynamics_derivatives(m):
-    """The outputs of derivatives.forward_dynamics_derivatives for the lane model m (feet=True)."""
+    """The outputs of differentiate.forward_dynamics_derivatives for the lane model m (feet=True)."""
     robot, full = m.robot, m.full
     n, root = robot.nv, robot.root_dofs
-    dq, dv = derivatives.residual_derivatives(m)
+    dq, dv = differentiate.residual_derivatives(m)
     parents = fd.dof_parents(robot)
     L, inv_diag = fd.ltdl(mass_matrix(m), parents, m.into_dof)
 
@@ -49,5 +49,5 @@ def forward_dynamics_derivatives(m):
             out["da_df"][m.foot_force_index(row, k)] = column
     symbols = list(m.a[:root]) + [m.ai(i) for i in range(1, robot.nb)]
     order = ("da_dq", "da_dv", "da_dtau", "da_df")
-    return derivatives.replace_symbols({name: [x for column in out[name] for x in column] for name in order},
+    return differentiate.replace_symbols({name: [x for column in out[name] for x in column] for name in order},
                                        symbols, fd.forward_dynamics(m))

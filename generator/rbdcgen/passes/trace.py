@@ -6,10 +6,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Dict, Tuple
 
-from . import coupling, derivatives, lane_functions
-from . import expr as ex
-from .algorithms import crba, forward_dynamics, jacobian, kinematics, osc, rnea
-from .algorithms.model import TracedModel
+from . import differentiate, lane_functions, project
+from ..graph import expr as ex
+from ..algorithms import crba, forward_dynamics, jacobian, kinematics, osc, rnea
+from ..views import coupled
+from ..views.scalar import TracedModel
 
 
 class TraceError(ValueError):
@@ -39,7 +40,9 @@ class Function:
     outputs: Tuple[Argument, ...]
     values: Dict[str, Tuple[ex.Expr, ...]]
     graph: ex.Graph
-    lanes: object = None  # lane_model.LaneLayout of a lane function (lane_functions.py), else None
+    computes: str = ""    # the quantity it equals: its own name, or a lane function's scalar namesake
+    schedule: str = ""    # the view it was traced on and why, when passes/schedule.py chose one
+    lanes: object = None  # views/limb_lanes.LaneLayout of a lane function (lane_functions.py), else None
 
     def output_exprs(self):
         """All written output entries in signature order (column-major within each output)."""
@@ -176,13 +179,13 @@ def _spec(robot, nf):
 def trace_function(robot, scene, name):
     """Traces one function of the scene into a fresh graph."""
     nf = len(scene.feet_for(robot))
-    spec = {**_spec(robot, nf), **derivatives.spec(robot, nf), **lane_functions.spec(robot, nf)}
+    spec = {**_spec(robot, nf), **differentiate.spec(robot, nf), **lane_functions.spec(robot, nf)}
     if name not in spec:
         raise KeyError("unknown function '%s'" % name)
     doc, input_names, output_specs, build = spec[name]
-    tree = coupling.tree_view(robot)
-    if tree is not robot:  # mimic couplings: trace on the tree, then project (coupling.py)
-        build = {**_spec(tree, nf), **derivatives.spec(tree, nf)}[name][3]
+    tree = coupled.tree_view(robot)
+    if tree is not robot:  # mimic couplings: trace on the tree, then project (passes/project.py)
+        build = {**_spec(tree, nf), **differentiate.spec(tree, nf)}[name][3]
     args = _input_args(robot, nf)
     zero = tuple(n for n in scene.zero_inputs if n in input_names)
     with ex.Graph() as graph:
@@ -190,7 +193,7 @@ def trace_function(robot, scene, name):
         m = (lane_functions.model(robot, scene, zero, name) if lanes
              else TracedModel(robot, scene, zero_inputs=zero))
         try:
-            values = coupling.traced_values(robot, name, m, build, output_specs)
+            values = project.traced_values(robot, name, m, build, output_specs)
         except ZeroDivisionError:
             raise TraceError(
                 "robot '%s': %s divides by a pivot that is exactly zero: a joint moves no mass "
@@ -206,11 +209,5 @@ def trace_function(robot, scene, name):
                   for arg in outputs}
     inputs = tuple(args[n] for n in input_names if n not in zero)
     return Function(name=name, doc=doc, inputs=inputs, outputs=outputs, values=values, graph=graph,
-                    lanes=m.layout() if lanes else None)
+                    computes=lane_functions.SCALAR.get(name, name), lanes=m.layout() if lanes else None)
 
-
-def trace_scene(robot, scene):
-    """All functions of the scene: its quantities in the order of scene.QUANTITIES, then its
-    derivatives in the order of scene.DERIVATIVES."""
-    names = scene.quantities_for(robot) + scene.derivatives_for(robot)
-    return [trace_function(robot, scene, name) for name in names]

@@ -1,9 +1,9 @@
 """Operation counts of a compilation, generated vs generic, as a readable table or as JSON.
 A derivative quantity is also compared with its primal function (derivatives.PRIMAL, traced for the
 same robot and scene): the targets of issue 12 are ratios to one primal call."""
-from .derivatives import PRIMAL
-from .flops import count_ops, generic_ops
-from .trace import trace_function
+from ..passes.differentiate import PRIMAL
+from ..graph.flops import count_ops, generic_ops
+from ..passes.trace import trace_function
 
 KINDS = ("mul", "add", "div", "sqrt", "trig", "neg", "total")
 
@@ -13,7 +13,7 @@ def rows(compilation) -> list[dict]:
     primal_counts = {}
     for f in compilation.functions:
         row = {"function": f.name, "generated": count_ops(f),
-               "generic": generic_ops(compilation.robot, compilation.scene, f.name)}
+               "generic": generic_ops(compilation.robot, compilation.scene, f.computes)}
         if f.name in PRIMAL:
             name = PRIMAL[f.name]
             if name not in primal_counts:

@@ -8,9 +8,9 @@ constants). Rotors and mimic couplings are not supported in lanes."""
 
 from __future__ import annotations
 
-from . import expr as ex
-from . import spatial as sp
-from .errors import RbdcError
+from ..graph import expr as ex
+from ..graph import spatial as sp
+from ..errors import RbdcError
 
 
 class LimbError(RbdcError):

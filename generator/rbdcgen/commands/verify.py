@@ -12,14 +12,14 @@ import tempfile
 import time
 from pathlib import Path
 
-from .errors import RbdcError
-from .lane_functions import SCALAR
-from .layout import Layout
-from .names import unique_identifiers
+from ..errors import RbdcError
+from ..passes.lane_functions import SCALAR
+from ..frontend.layout import Layout
+from ..backend.names import unique_identifiers
 from .pipeline import compile_robot, render
-from .render import template_environment
-from .scene import DERIVATIVES
-from .version import VERSION
+from ..backend.render import template_environment
+from ..frontend.scene import DERIVATIVES
+from ..version import VERSION
 
 HARNESS_TEMPLATE = "verify_harness.cpp.j2"
 

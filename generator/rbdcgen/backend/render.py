@@ -18,11 +18,11 @@ from pathlib import Path
 import jinja2
 
 from .emit import emit_body
-from .errors import RbdcError
-from .flops import KINDS, count_ops
-from .layout import Layout, display_path
+from ..errors import RbdcError
+from ..graph.flops import KINDS, count_ops
+from ..frontend.layout import Layout, display_path
 from .names import cpp_identifier, unique_identifiers
-from .version import VERSION
+from ..version import VERSION
 
 SUPPORT_HEADER = "rbdc_gen/support.hpp"
 COMMON_DIR = "common"  # <robot>/common/: function bodies shared by the robot's scenes
@@ -127,6 +127,8 @@ def body_record(function, arguments: list[dict], robot, robot_id: str, robot_inp
               "generator_version": VERSION}
     if function.lanes is not None:
         record["lanes"] = True  # the body includes LANES_HEADER
+    if function.schedule:
+        record["schedule"] = function.schedule  # the view passes/schedule.py chose, and why
     digest = hashlib.sha256(json.dumps(record, sort_keys=True).encode()).hexdigest()
     key = f"{function.name}_{digest[:12]}"
     return {**record, "key": key, "include": f"{robot_id}/{COMMON_DIR}/{key}.hpp",

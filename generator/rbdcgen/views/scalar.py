@@ -5,9 +5,9 @@ Section 3 (X_T, X_J, S_i, I_i) built once per traced function."""
 from __future__ import annotations
 
 
-from .. import coupling
-from .. import expr as ex
-from .. import spatial as sp
+from . import coupled
+from ..graph import expr as ex
+from ..graph import spatial as sp
 
 
 class TracedModel:
@@ -17,7 +17,7 @@ class TracedModel:
     scene declares zero is all constant zeros, so everything depending on it folds away."""
 
     def __init__(self, robot, scene, zero_inputs=()):
-        self.robot = coupling.tree_view(robot)  # the algorithms see the tree (coupling.py)
+        self.robot = coupled.tree_view(robot)  # the algorithms see the tree (views/coupled.py)
         self.coupled = robot                     # the inputs have its independent coordinates
         self.scene = scene
         self.feet = scene.feet_for(robot)
@@ -37,10 +37,10 @@ class TracedModel:
         return self._cache[key]
 
     def tree_input(self, name, size):
-        """Input `name` of `size` independent coordinates, expanded to the tree's (coupling.py)."""
+        """Input `name` of `size` independent coordinates, expanded to the tree's (views/coupled.py)."""
         key = ("tree", name)
         if key not in self._cache:
-            self._cache[key] = coupling.expand(self.coupled, name, self.input(name, size))
+            self._cache[key] = coupled.expand(self.coupled, name, self.input(name, size))
         return self._cache[key]
 
     @property
@@ -150,22 +150,22 @@ class TracedModel:
 
     def into_parent(self, i, value):
         """Body i's wrench or composite inertia (in λ(i) coordinates) as it joins λ(i)'s: unchanged
-        here; summed over the lanes where a lane limb meets the trunk (lane_model.LaneModel)."""
+        here; summed over the lanes where a lane limb meets the trunk (views/limb_lanes.LaneModel)."""
         return value
 
     def into_dof(self, k, i, term):
         """Dof k's term as it updates dof i's entries in the LᵀDL factorisation and solve: unchanged
-        here; summed over the lanes where a lane limb meets the trunk (lane_model.LaneModel)."""
+        here; summed over the lanes where a lane limb meets the trunk (views/limb_lanes.LaneModel)."""
         return term
 
     def into_root(self, term):
         """A foot's term in an entry between two root dofs (the trunk block of ∂(Jᵀf)/∂q):
-        unchanged here; summed over the lanes of a lane foot (lane_model.LaneModel)."""
+        unchanged here; summed over the lanes of a lane foot (views/limb_lanes.LaneModel)."""
         return term
 
     def scatter_matrix(self, rows):
         """A joint-space matrix (rows) of the traced tree as the robot's: unchanged here; a lane
-        limb's entries scattered to every limb (lane_model.LaneModel)."""
+        limb's entries scattered to every limb (views/limb_lanes.LaneModel)."""
         return rows
 
     def inertia(self, i):

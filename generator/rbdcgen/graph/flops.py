@@ -7,7 +7,6 @@ and cos, `total` is the sum of all of them (every operation counts one)."""
 from __future__ import annotations
 
 from . import expr as ex
-from .lane_functions import SCALAR
 
 _KIND = {"mul": "mul", "add": "add", "sub": "add", "div": "div", "sqrt": "sqrt",
          "sin": "trig", "cos": "trig", "neg": "neg"}
@@ -173,9 +172,8 @@ class _Tally:
 
 
 def generic_ops(robot, scene, name):
-    """Operation count of the runtime's generic dense algorithm for function `name` (for a lane
-    function, of its scalar namesake's)."""
-    name = SCALAR.get(name, name)
+    """Operation count of the runtime's generic dense algorithm for quantity `name` (a traced
+    function's `computes`: a lane function counts as its scalar namesake)."""
     if name in _DERIVATIVE_DIRECTIONS:
         return _generic_derivative_ops(robot, scene, name)
     if name in _COMBINED_PARTS:  # the runtime's separate calls for the same outputs

@@ -6,7 +6,7 @@ import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .errors import RbdcError
+from ..errors import RbdcError
 from .ir import Robot, load_ir
 from .layout import Layout
 

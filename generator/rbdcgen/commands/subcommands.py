@@ -6,12 +6,12 @@ import sys
 from pathlib import Path
 
 from . import flops_report, verify
-from .errors import RbdcError
-from . import model_tool
-from .layout import Layout
-from .model_tool import ModelRequest
+from ..errors import RbdcError
+from ..frontend import model_tool
+from ..frontend.layout import Layout
+from ..frontend.model_tool import ModelRequest
 from .pipeline import compile_robot, render
-from .render import COMMON_DIR
+from ..backend.render import COMMON_DIR
 
 _INCLUDE = re.compile(r'^#include "([^"]+)"', re.MULTILINE)
 

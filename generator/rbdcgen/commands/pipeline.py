@@ -2,14 +2,14 @@
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from .actuators import with_actuator_mode
-from .errors import RbdcError
-from .layout import Layout
-from .model_tool import ModelRequest, load_robot
-from .names import cpp_identifier
-from .render import GeneratedFile, render_robot_scene
-from .scene import Scene, default_scene, load_scene
-from .trace import trace_scene
+from ..frontend.actuators import with_actuator_mode
+from ..errors import RbdcError
+from ..frontend.layout import Layout
+from ..frontend.model_tool import ModelRequest, load_robot
+from ..backend.names import cpp_identifier
+from ..backend.render import GeneratedFile, render_robot_scene
+from ..frontend.scene import Scene, default_scene, load_scene
+from ..passes.schedule import trace_scene
 
 
 @dataclass(frozen=True)

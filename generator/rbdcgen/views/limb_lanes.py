@@ -1,5 +1,5 @@
 """The robot traced in lanes (docs/performance.md, "One SIMD lane per leg"): the trunk and ONE limb
-whose joint variables and constants hold one value per isomorphic limb (rbdcgen/limbs.py), so that
+whose joint variables and constants hold one value per isomorphic limb (views/limbs.py), so that
 the algorithms of this package, traced unchanged on this reduced tree, evaluate the four limbs'
 passes together as lane operations while the trunk stays scalar.
 
@@ -15,11 +15,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
-from .. import expr as ex
-from .. import spatial as sp
-from ..limbs import LimbError
-from . import forward_dynamics as fd
-from .model import TracedModel
+from ..graph import expr as ex
+from ..graph import spatial as sp
+from .limbs import LimbError
+from ..algorithms import forward_dynamics as fd
+from .scalar import TracedModel
 
 
 @dataclass(frozen=True)
