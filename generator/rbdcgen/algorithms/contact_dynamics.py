@@ -18,9 +18,9 @@ from .jacobian import feet_jacobian
 from .kinematics import feet_bias_accelerations
 
 # The runtime's kContactDampingRelative, kContactDampingFloor, kContactProximalSteps.
-DAMPING_RELATIVE = 1e-8
+DAMPING_RELATIVE = 1e-5
 DAMPING_FLOOR = 1e-30
-PROXIMAL_STEPS = 3
+PROXIMAL_STEPS = 5
 
 
 def contact_rows(m, feet_rows):

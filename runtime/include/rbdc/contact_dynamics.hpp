@@ -28,11 +28,11 @@ struct BaumgarteGains {
 /// matrix A = J M⁻¹ Jᵀ is factorised as A + μ1 with μ = kContactDampingRelative · tr(A)/m
 /// + kContactDampingFloor (m = rows), and kContactProximalSteps proximal steps
 /// λ ← λ + (A + μ1)⁻¹(b − A λ) from λ = 0 solve A λ = b. For a full-rank A they converge to the
-/// exact solution (error factor μ/σ_min(A) per step); for a rank-deficient A (redundant contacts)
+/// exact solution (error factor μ/σ_min(A) per step, docs/runtime.md); for a rank-deficient A (redundant contacts)
 /// to the least-norm λ, with a unique, finite acceleration. Never NaN for finite input.
-inline constexpr double kContactDampingRelative = 1e-8;
+inline constexpr double kContactDampingRelative = 1e-5;
 inline constexpr double kContactDampingFloor = 1e-30;
-inline constexpr int kContactProximalSteps = 3;
+inline constexpr int kContactProximalSteps = 5;
 
 /// Results and workspace of the contact algorithms for one contact set; every matrix is sized in
 /// the constructor (m = 3 · contact_feet.size() rows), so no call below touches the heap.
