@@ -86,6 +86,19 @@ void write_rows(std::ostream& out, const Matrix& m, const char* indent) {
   out << "\n" << indent << "]";
 }
 
+using NamedMatrix = std::pair<const char*, const MatrixX*>;
+
+/// ",\n  "key": {"name": rows, …}": matrices under their names, as row lists.
+template <size_t N>
+void write_matrices(std::ostream& out, const char* key, const NamedMatrix (&matrices)[N]) {
+  out << ",\n  " << std::quoted(key) << ": {";
+  for (size_t k = 0; k < N; ++k) {
+    out << (k ? ",\n    " : "\n    ") << std::quoted(matrices[k].first) << ": ";
+    write_rows(out, *matrices[k].second, "    ");
+  }
+  out << "\n  }";
+}
+
 /// "derivatives": every output of rbdc/derivatives.hpp under its own name, as row lists.
 void write_derivatives(std::ostream& out, const Model& model, rbdc::Data& data, const VectorX& q,
                        const VectorX& v, const VectorX& a, const VectorX& tau, const rbdc::Matrix3X& f) {
@@ -96,17 +109,12 @@ void write_derivatives(std::ostream& out, const Model& model, rbdc::Data& data, 
   rbdc::gravity_derivatives(model, data, d, q);
   rbdc::forward_dynamics_derivatives(model, data, d, q, v, tau, f);
   rbdc::feet_velocity_derivatives(model, data, d, q, v);
-  const std::pair<const char*, const MatrixX*> outputs[] = {
+  const NamedMatrix outputs[] = {
       {"dtau_dq", &dtau_dq}, {"dtau_dv", &dtau_dv},     {"dbias_dq", &d.dbias_dq},
       {"dbias_dv", &d.dbias_dv}, {"dg_dq", &d.dg_dq},     {"da_dq", &d.da_dq},
       {"da_dv", &d.da_dv},   {"da_dtau", &d.da_dtau}, {"da_df", &d.da_df},
       {"dpdot_dq", &d.dpdot_dq}, {"dtau_e_dq", &d.dtau_e_dq}};
-  out << ",\n  \"derivatives\": {";
-  for (size_t k = 0; k < std::size(outputs); ++k) {
-    out << (k ? ",\n    " : "\n    ") << std::quoted(outputs[k].first) << ": ";
-    write_rows(out, *outputs[k].second, "    ");
-  }
-  out << "\n  }";
+  write_matrices(out, "derivatives", outputs);
 }
 
 /// "forward_dynamics" (docs/runtime.md, "rbdc-eval"): q̈ = M⁻¹(Sᵀτ + τ_e − c − g) with τ_e from the
@@ -172,16 +180,11 @@ void write_contact_dynamics(std::ostream& out, const Model& model, rbdc::Data& d
   if (!derivatives) return;
   rbdc::DerivativeData d(model);
   rbdc::contact_dynamics_derivatives(model, data, d, contact, q, v, tau);
-  const std::pair<const char*, const MatrixX*> outputs[] = {
+  const NamedMatrix outputs[] = {
       {"da_dq", &contact.da_dq},           {"da_dv", &contact.da_dv},
       {"da_dtau", &contact.da_dtau},       {"dlambda_dq", &contact.dlambda_dq},
       {"dlambda_dv", &contact.dlambda_dv}, {"dlambda_dtau", &contact.dlambda_dtau}};
-  out << ",\n  \"contact_dynamics_derivatives\": {";
-  for (size_t k = 0; k < std::size(outputs); ++k) {
-    out << (k ? ",\n    " : "\n    ") << std::quoted(outputs[k].first) << ": ";
-    write_rows(out, *outputs[k].second, "    ");
-  }
-  out << "\n  }";
+  write_matrices(out, "contact_dynamics_derivatives", outputs);
 }
 
 }  // namespace
