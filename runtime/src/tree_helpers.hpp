@@ -1,5 +1,6 @@
 // Small pieces shared by several runtime algorithms: the joint transform X_J(q), the foot
-// transform X_i^fk (paper 000 Eq. 16) and the inward force pass common to Algs. 2-4 and the RNEA.
+// transform X_i^fk (paper 000 Eq. 16), the solve with the factor of M and the inward force pass
+// common to Algs. 2-4 and the RNEA.
 #pragma once
 
 #include "rbdc/data.hpp"
@@ -77,6 +78,14 @@ inline Vector6 classical_acceleration(const Vector6& a, const Vector6& v) {
   Vector6 classical = a;
   classical.tail<3>() += v.head<3>().cross(v.tail<3>());
   return classical;
+}
+
+/// X ← M⁻¹ X, column by column with the factor in data.M_llt (vector solves need no scratch).
+inline void solve_with_mass_matrix(const Data& data, MatrixX& X) {
+  for (Eigen::Index k = 0; k < X.cols(); ++k) {
+    auto column = X.col(k);
+    data.M_llt.solveInPlace(column);
+  }
 }
 
 /// The inward pass shared by Algs. 2, 3 and 4 (and the full RNEA), over data.f_body:

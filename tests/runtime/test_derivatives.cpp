@@ -3,47 +3,20 @@
 // ∂a/∂f = M⁻¹Jᵀ, ∂τ/∂q = ∂(c + g)/∂q + ∂(M a)/∂q, ∂τ/∂v = ∂(c + g)/∂v, zero trunk-position columns.
 #include <gtest/gtest.h>
 
-#include <functional>
 #include <limits>
 #include <string>
 
+#include "finite_differences.hpp"
 #include "rbdc/rbdc.hpp"
 #include "test_robots.hpp"
 
 namespace rbdc {
 namespace {
 
-constexpr double kStep = 1e-5;         // central differences: O(h²) truncation, O(ε/h) round-off
-constexpr double kFdTolerance = 1e-6;  // relative to max(1, largest entry)
-
-using Function = std::function<VectorX(const VectorX&)>;
-
-/// Central differences of f along the manifold tangent of q: column k = (f(q ⊕ h e_k) − f(q ⊕ −h e_k)) / 2h.
-MatrixX manifold_differences(const Model& model, const VectorX& q, const Function& f) {
-  MatrixX out(f(q).size(), model.nv);
-  VectorX q_plus(model.nq), q_minus(model.nq);
-  for (Eigen::Index k = 0; k < model.nv; ++k) {
-    const VectorX step = kStep * VectorX::Unit(model.nv, k);
-    integrate(model, q, step, q_plus);
-    integrate(model, q, -step, q_minus);
-    out.col(k) = (f(q_plus) - f(q_minus)) / (2 * kStep);
-  }
-  return out;
-}
-
-/// Central differences of f in plain coordinates of x.
-MatrixX plain_differences(const VectorX& x, const Function& f) {
-  MatrixX out(f(x).size(), x.size());
-  for (Eigen::Index k = 0; k < x.size(); ++k) {
-    const VectorX step = kStep * VectorX::Unit(x.size(), k);
-    out.col(k) = (f(x + step) - f(x - step)) / (2 * kStep);
-  }
-  return out;
-}
-
-double relative_error(const MatrixX& actual, const MatrixX& expected) {
-  return (actual - expected).cwiseAbs().maxCoeff() / std::max(1.0, expected.cwiseAbs().maxCoeff());
-}
+using test::kFdTolerance;
+using test::manifold_differences;
+using test::plain_differences;
+using test::relative_error;
 
 VectorX flat(const Matrix3X& m) { return Eigen::Map<const VectorX>(m.data(), m.size()); }
 Matrix3X unflat(const VectorX& x) { return Eigen::Map<const Matrix3X>(x.data(), 3, x.size() / 3); }

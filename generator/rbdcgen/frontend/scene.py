@@ -46,6 +46,9 @@ LANE_QUANTITIES = ("bias_lanes", "inverse_dynamics_lanes", "mass_matrix_lanes", 
                    "forward_dynamics_lanes", "osc_open_chain_lanes",
                    "inverse_dynamics_derivatives_lanes", "bias_derivatives_lanes",
                    "gravity_derivatives_lanes", "forward_dynamics_derivatives_lanes")
+# Rigid-contact functions for the scene's contact feet (algorithms/contact_dynamics.py), emitted
+# after those and only when a scene lists them.
+CONTACT_QUANTITIES = ("contact_dynamics", "impulse_dynamics")
 FEET_QUANTITIES = ("feet_positions", "feet_velocities", "feet_jacobian", "feet_force_terms",
                    "feet_bias_accelerations",
                    "step_terms")
@@ -54,7 +57,8 @@ ZERO_INPUTS = ("v", "a", "tau", "f")
 # Derivative quantities (passes/differentiate.py), emitted after the quantities, in this order.
 DERIVATIVES = ("inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives",
                "forward_dynamics_derivatives", "feet_velocity_derivatives",
-               "feet_force_term_derivatives")
+               "feet_force_term_derivatives", "contact_dynamics_derivatives")
+CONTACT_DERIVATIVES = ("contact_dynamics_derivatives",)
 FEET_DERIVATIVES = ("feet_velocity_derivatives", "feet_force_term_derivatives")
 KEYS = ("name", "quantities", "gravity", "base", "locked_joints", "feet", "frames", "contacts", "zero_inputs",
         "derivatives", "actuators", "schedule")
@@ -115,7 +119,7 @@ class Scene:
         return tuple(by_name[name] for name in self.frames)
 
     def contacts_for(self, robot):
-        """The kept feet in contact (osc_closed_chain)."""
+        """The kept feet in contact (osc_closed_chain and the contact functions), in the robot's order."""
         kept = self.feet_for(robot)
         if self.contacts is None:
             return kept
@@ -135,10 +139,12 @@ class Scene:
 
         def refusal(name):
             """Why `name` does not apply to the robot, or None."""
-            if name in OSC_QUANTITIES + COMBINED + WHOLE_BODY and robot.couplings:
+            if name in OSC_QUANTITIES + COMBINED + WHOLE_BODY + CONTACT_QUANTITIES and robot.couplings:
                 return coupled
             if name in FRAME_QUANTITIES and not self.frames_for(robot):
                 return "the scene lists no frames"
+            if name in CONTACT_QUANTITIES:
+                return self.contact_refusal(robot)
             if name in OSC_QUANTITIES and not robot.floating_base:
                 return "fixed base"
             return None if has_feet or name not in FEET_QUANTITIES else "no feet"
@@ -149,7 +155,17 @@ class Scene:
             if refusal(name) is not None:
                 self.fail("quantities", "'%s' does not apply to robot '%s' (%s)"
                           % (name, robot.name, refusal(name)))
-        return tuple(q for q in QUANTITIES + COMBINED + WHOLE_BODY + LANE_QUANTITIES if q in self.quantities)
+        return tuple(q for q in QUANTITIES + COMBINED + WHOLE_BODY + LANE_QUANTITIES + CONTACT_QUANTITIES
+                     if q in self.quantities)
+
+    def contact_refusal(self, robot):
+        """Why the contact functions do not apply to the robot and scene, or None: they need a
+        non-empty contact set (without contacts they are forward_dynamics) and no mimic couplings."""
+        if robot.couplings:
+            return "mimic couplings: use --lock-mimic or --independent-mimic"
+        if not self.contacts_for(robot):
+            return "no contacts: the scene lists none or the robot has no feet (use forward_dynamics)"
+        return None
 
     def derivatives_for(self, robot):
         """The derivative functions to emit, in DERIVATIVES order; feet ones need feet."""
@@ -158,6 +174,10 @@ class Scene:
                 if name in FEET_DERIVATIVES:
                     self.fail("derivatives", "'%s' does not apply to robot '%s' (no feet)"
                               % (name, robot.name))
+        for name in self.derivatives:
+            if name in CONTACT_DERIVATIVES and self.contact_refusal(robot) is not None:
+                self.fail("derivatives", "'%s' does not apply to robot '%s' (%s)"
+                          % (name, robot.name, self.contact_refusal(robot)))
         return tuple(d for d in DERIVATIVES if d in self.derivatives)
 
 
@@ -202,7 +222,7 @@ def scene_from_dict(data, source="<scene>") -> Scene:
     quantities = None
     if data.get("quantities") is not None:
         quantities = _string_list(fail, "quantities", data["quantities"],
-                                  QUANTITIES + COMBINED + WHOLE_BODY + LANE_QUANTITIES)
+                                  QUANTITIES + COMBINED + WHOLE_BODY + LANE_QUANTITIES + CONTACT_QUANTITIES)
     gravity = None
     if "gravity" in data:
         g = data["gravity"]

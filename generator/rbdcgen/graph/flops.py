@@ -135,6 +135,21 @@ class _Tally:
         self.cholesky_factor(n)
         self.add(n * n, n * n, div=2 * n)
 
+    def delassus(self, robot, nf, nc):
+        """The runtime's contact solve (runtime/src/contact_dynamics.cpp): the feet Jacobian, M⁻¹Jᵀ
+        by 3·nc solves with the factor of M, A = J M⁻¹Jᵀ, LLᵀ of A + μ1, three proximal steps
+        (A x and two triangular solves each) and M⁻¹Jᵀ λ."""
+        n, m = robot.nv, 3 * nc
+        self.world_transforms(robot)
+        for foot in robot.feet[:nf]:
+            self.mm6(1 + len(robot.support[foot.body]))
+            self.mv6(len(robot.support[foot.body]))
+        self.add(n * n, n * n, div=2 * n, times=m)
+        self.add(m * m * n, m * m * n)
+        self.cholesky_factor(m)
+        self.add(2 * m * m, 2 * m * m, div=2 * m, times=3)
+        self.add(n * m, n * m)
+
     def foot_wrenches(self, robot, nf):
         """Alg. 4 outward loop: world force → body wrench via X̄ (rotation + 6×6 product)."""
         self.mv3(nf)
@@ -230,6 +245,17 @@ def generic_ops(robot, scene, name):
         t.world_transforms(robot)
         t.foot_wrenches(robot, nf)
         t.cholesky_solve(nv)
+    elif name == "contact_dynamics":
+        t = _Tally()                               # the forward dynamics' count has the joint transforms
+        fd = generic_ops(robot, scene, "forward_dynamics")
+        t.add(**{k: fd[k] for k in ("mul", "add", "div", "sqrt", "trig")})
+        t.velocities(robot)
+        t.mv6(2 * (robot.nb - 1))                  # J̇v: the velocity-product accelerations
+        t.delassus(robot, nf, len(scene.contacts_for(robot)))
+    elif name == "impulse_dynamics":
+        t.crba(robot)
+        t.cholesky_factor(nv)
+        t.delassus(robot, nf, len(scene.contacts_for(robot)))
     elif name in ("osc_open_chain", "osc_closed_chain"):
         t.base_rotation(robot)
         t.osc(robot, nf if name == "osc_open_chain" else len(scene.contacts_for(robot)),
@@ -308,6 +334,7 @@ _DERIVATIVE_DIRECTIONS = {   # name → (primal, directions as a function of (nv
     "forward_dynamics_derivatives": ("forward_dynamics", lambda nv, nj, nf: 2 * nv),
     "feet_velocity_derivatives": ("feet_velocities", lambda nv, nj, nf: nv),
     "feet_force_term_derivatives": ("feet_force_terms", lambda nv, nj, nf: nv),
+    "contact_dynamics_derivatives": ("contact_dynamics", lambda nv, nj, nf: 2 * nv),
 }
 
 
@@ -323,4 +350,7 @@ def _generic_derivative_ops(robot, scene, name):
           times=directions(nv, nj, nf))
     if name == "forward_dynamics_derivatives":
         t.add(nv * nv, nv * nv, times=2 * nv + nj + 3 * nf)
+    if name == "contact_dynamics_derivatives":   # per column: a Delassus solve and a solve with M
+        m = 3 * len(scene.contacts_for(robot))
+        t.add(nv * nv + 8 * m * m, nv * nv + 8 * m * m, times=2 * nv + nj)
     return _result(t.c)

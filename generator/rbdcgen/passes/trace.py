@@ -8,7 +8,8 @@ from typing import Dict, Tuple
 
 from . import differentiate, lane_functions, project
 from ..graph import expr as ex
-from ..algorithms import centroidal, crba, forward_dynamics, frames, jacobian, kinematics, osc, rnea
+from ..algorithms import (centroidal, contact_dynamics, crba, forward_dynamics, frames, jacobian,
+                          kinematics, osc, rnea)
 from ..views import coupled
 from ..views.scalar import TracedModel
 
@@ -74,12 +75,16 @@ def _input_args(robot, nf):
         "f": Argument("f", 3, nf, "foot forces, world frame, one column per foot"),
         "ground_mass": Argument("ground_mass", 1, 1, "ground inertia of the big-ground-inertia "
                                 "approximation (paper 001 Eq. 43)"),
+        "restitution": Argument("restitution", 1, 1, "restitution coefficient e in [0, 1] of the "
+                                "impact: J v⁺ = −e J v⁻"),
     }
 
 
-def _spec(robot, nf):
-    """name → (doc, input names, [(output name, rows, cols, doc)], trace(m) → {name: values})."""
+def _spec(robot, nf, nc):
+    """name → (doc, input names, [(output name, rows, cols, doc)], trace(m) → {name: values});
+    nf feet, nc of them in contact."""
     nv, nj = robot.nv, robot.n_joints
+    contact_rows = "rows 3k + r: contact k (the scene's contacts in the robot's foot order), world axis r"
 
     def osc_outputs(result):
         Lam, JbarT, b = result
@@ -173,6 +178,20 @@ def _spec(robot, nf):
             "Trunk operational-space Λ, J̄ᵀ, b with feet in contact (paper 001 Table 2).",
             ("q", "v", "ground_mass"), osc_out,
             lambda m: osc_outputs(osc.osc_closed_chain(m))),
+        "contact_dynamics": (
+            "Rigid-contact dynamics of the scene's contact feet: a and λ of M a − Jᵀλ = Sᵀτ − c − g, "
+            "J a = −J̇v (Schur complement, damped proximal Delassus solve; docs/runtime.md).",
+            ("q", "v", "tau"),
+            [("a", nv, 1, "acceleration"),
+             ("lambda", 3 * nc, 1, "contact forces on the feet, world; " + contact_rows)],
+            lambda m: dict(zip(("a", "lambda"), contact_dynamics.contact_dynamics(m)))),
+        "impulse_dynamics": (
+            "Impulse dynamics of a touchdown of the scene's contact feet: v⁺ and Λ of "
+            "M (v⁺ − v) = JᵀΛ, J v⁺ = −e J v (docs/runtime.md).",
+            ("q", "v", "restitution"),
+            [("v_plus", nv, 1, "velocity after the impact"),
+             ("impulse", 3 * nc, 1, "contact impulses, world; " + contact_rows)],
+            lambda m: dict(zip(("v_plus", "impulse"), contact_dynamics.impulse_dynamics(m)))),
     }
 
 
@@ -244,15 +263,15 @@ def _whole_body_spec(robot, nf, n_frames):
 
 def trace_function(robot, scene, name):
     """Traces one function of the scene into a fresh graph."""
-    nf = len(scene.feet_for(robot))
-    spec = {**_spec(robot, nf), **_whole_body_spec(robot, nf, len(scene.frames_for(robot))),
-            **differentiate.spec(robot, nf), **lane_functions.spec(robot, nf)}
+    nf, nc = len(scene.feet_for(robot)), len(scene.contacts_for(robot))
+    spec = {**_spec(robot, nf, nc), **_whole_body_spec(robot, nf, len(scene.frames_for(robot))),
+            **differentiate.spec(robot, nf, nc), **lane_functions.spec(robot, nf)}
     if name not in spec:
         raise KeyError("unknown function '%s'" % name)
     doc, input_names, output_specs, build = spec[name]
     tree = coupled.tree_view(robot)
     if tree is not robot:  # mimic couplings: trace on the tree, then project (passes/project.py)
-        build = {**_spec(tree, nf), **differentiate.spec(tree, nf)}[name][3]
+        build = {**_spec(tree, nf, nc), **differentiate.spec(tree, nf, nc)}[name][3]
     args = _input_args(robot, nf)
     zero = tuple(n for n in scene.zero_inputs if n in input_names)
     with ex.Graph() as graph:

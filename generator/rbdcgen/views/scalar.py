@@ -13,7 +13,7 @@ from ..graph import spatial as sp
 class TracedModel:
     """Per-function view of (robot, scene) with symbolic inputs.
 
-    `inputs` maps an input array name (q, v, a, tau, f, ground_mass) to its length; an input the
+    `inputs` maps an input array name (q, v, a, tau, f, ground_mass, restitution) to its length; an input the
     scene declares zero is all constant zeros, so everything depending on it folds away."""
 
     def __init__(self, robot, scene, zero_inputs=()):
@@ -67,6 +67,10 @@ class TracedModel:
     @property
     def ground_mass(self):
         return self.input("ground_mass", 1)[0]
+
+    @property
+    def restitution(self):
+        return self.input("restitution", 1)[0]
 
     def foot_force(self, k):
         return self.f[3 * k:3 * k + 3]

@@ -5,6 +5,7 @@
 #include "rbdc/bias_terms.hpp"
 #include "rbdc/centroidal.hpp"
 #include "rbdc/check_finite.hpp"
+#include "rbdc/contact_dynamics.hpp"
 #include "rbdc/coupling.hpp"
 #include "rbdc/crba.hpp"
 #include "rbdc/data.hpp"
