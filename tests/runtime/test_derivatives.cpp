@@ -7,6 +7,7 @@
 #include <string>
 
 #include "finite_differences.hpp"
+#include "model_test_support.hpp"
 #include "rbdc/rbdc.hpp"
 #include "test_robots.hpp"
 
@@ -211,14 +212,7 @@ TEST(DerivativesWithRotors, TheRotorCaseReallyHasRotors) {
   EXPECT_TRUE(model.has_rotors);  // otherwise its finite-difference tests above prove nothing new
 }
 
-std::string error_of(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::argument_error;
 
 TEST(DerivativeArguments, WrongSizesAreRefusedNamingFunctionAndArgument) {
   const Model model = test::quadruped();
@@ -227,25 +221,25 @@ TEST(DerivativeArguments, WrongSizesAreRefusedNamingFunctionAndArgument) {
   test::RandomState random(3);
   const VectorX q = random.configuration(model), v = VectorX::Zero(model.nv);
   const Matrix3X f = random.forces(model);
-  EXPECT_EQ(error_of([&] { inverse_dynamics_derivatives(model, data, derivatives, q, v, VectorX(3)); }),
+  EXPECT_EQ(argument_error([&] { inverse_dynamics_derivatives(model, data, derivatives, q, v, VectorX(3)); }),
             "rbdc::inverse_dynamics_derivatives: a has 3 entries, expected 18");
-  EXPECT_EQ(error_of([&] { bias_derivatives(model, data, derivatives, q, VectorX(17)); }),
+  EXPECT_EQ(argument_error([&] { bias_derivatives(model, data, derivatives, q, VectorX(17)); }),
             "rbdc::bias_derivatives: v has 17 entries, expected 18");
-  EXPECT_EQ(error_of([&] { gravity_derivatives(model, data, derivatives, VectorX(18)); }),
+  EXPECT_EQ(argument_error([&] { gravity_derivatives(model, data, derivatives, VectorX(18)); }),
             "rbdc::gravity_derivatives: q has 18 entries, expected 19");
-  EXPECT_EQ(error_of([&] {
+  EXPECT_EQ(argument_error([&] {
               forward_dynamics_derivatives(model, data, derivatives, q, v, VectorX(18), f);
             }),
             "rbdc::forward_dynamics_derivatives: tau has 18 entries, expected 12");
-  EXPECT_EQ(error_of([&] { feet_force_term_derivatives(model, data, derivatives, q, Matrix3X(3, 2)); }),
+  EXPECT_EQ(argument_error([&] { feet_force_term_derivatives(model, data, derivatives, q, Matrix3X(3, 2)); }),
             "rbdc::feet_force_term_derivatives: f_world has 2 entries, expected 4");
   const Model arm = test::arm7();
   DerivativeData arm_derivatives(arm);
-  EXPECT_EQ(error_of([&] { feet_velocity_derivatives(model, data, arm_derivatives, q, v); }),
+  EXPECT_EQ(argument_error([&] { feet_velocity_derivatives(model, data, arm_derivatives, q, v); }),
             "rbdc::feet_velocity_derivatives: derivative data was built for a different model than "
             "'quadruped'");
   VectorX out(model.nq);
-  EXPECT_EQ(error_of([&] { integrate(model, q, VectorX(19), out); }),
+  EXPECT_EQ(argument_error([&] { integrate(model, q, VectorX(19), out); }),
             "rbdc::integrate: delta has 19 entries, expected 18");
 }
 
@@ -321,7 +315,7 @@ TEST(Manifold, SwapTrunkAngularLinearIsAnInvolutionOnTheTrunkBlock) {
   swap_trunk_angular_linear(model, m, false);
   EXPECT_EQ(m.col(4), original.col(1));
   MatrixX small(2, 2);
-  EXPECT_EQ(error_of([&] { swap_trunk_angular_linear(model, small, false); }),
+  EXPECT_EQ(argument_error([&] { swap_trunk_angular_linear(model, small, false); }),
             "rbdc::swap_trunk_angular_linear: the matrix has 2 columns, expected at least 6 (a "
             "floating base's velocity block)");
 }
