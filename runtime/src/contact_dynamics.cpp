@@ -147,6 +147,7 @@ void check_contact_call(const char* function, const Model& model, const Data& da
                         const ContactDynamicsData& contact, const VectorRef& q, const VectorRef& v,
                         const VectorRef& tau) {
   check_qv(function, model, data, q, v);
+  check_invertible_mass(function, model);
   check_contact_data(function, model, contact);
   check_size(function, "tau", tau.size(), model.num_joints());
 }

@@ -8,6 +8,7 @@ namespace rbdc {
 
 const MatrixX& mass_matrix_inverse(const Model& model, Data& data, const VectorRef& q) {
   detail::check_q("mass_matrix_inverse", model, data, q);
+  detail::check_invertible_mass("mass_matrix_inverse", model);
   // M = L Lᵀ in the preallocated factor
   data.M_llt.compute(mass_matrix(model, data, q));
   if (data.M_llt.info() != Eigen::Success) {

@@ -16,7 +16,9 @@ from .trace import trace_function
 SINGULAR_PIVOT = 1e-12
 NEEDS_INVERSE = ("mass_matrix_factor", "forward_dynamics", "step_terms", "osc_open_chain",
                  "osc_closed_chain", "forward_dynamics_lanes", "osc_open_chain_lanes",
-                 "forward_dynamics_derivatives", "forward_dynamics_derivatives_lanes")
+                 "forward_dynamics_derivatives", "forward_dynamics_derivatives_lanes",
+                 "mass_matrix_inverse", "contact_dynamics", "impulse_dynamics",
+                 "contact_dynamics_derivatives")
 GENERIC_CAUSE = "its motion moves no inertia that the dofs after it cannot move as well"
 
 
