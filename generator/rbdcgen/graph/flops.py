@@ -137,7 +137,7 @@ class _Tally:
 
     def delassus(self, robot, nf, nc):
         """The runtime's contact solve (runtime/src/contact_dynamics.cpp): the feet Jacobian, M⁻¹Jᵀ
-        by 3·nc solves with the factor of M, A = J M⁻¹Jᵀ, LLᵀ of A + μ1, three proximal steps
+        by 3·nc solves with the factor of M, A = J M⁻¹Jᵀ, LLᵀ of A + μ1, five proximal steps
         (A x and two triangular solves each) and M⁻¹Jᵀ λ."""
         n, m = robot.nv, 3 * nc
         self.world_transforms(robot)
@@ -147,7 +147,7 @@ class _Tally:
         self.add(n * n, n * n, div=2 * n, times=m)
         self.add(m * m * n, m * m * n)
         self.cholesky_factor(m)
-        self.add(2 * m * m, 2 * m * m, div=2 * m, times=3)
+        self.add(2 * m * m, 2 * m * m, div=2 * m, times=5)   # kContactProximalSteps
         self.add(n * m, n * m)
 
     def foot_wrenches(self, robot, nf):
