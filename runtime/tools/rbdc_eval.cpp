@@ -205,7 +205,13 @@ void write_centroidal(std::ostream& out, const Model& model, rbdc::Data& data, c
   out << ",\n    \"bias\": ";
   write_vector(out, data.centroidal_bias);
   out << "\n  },\n  \"M_inverse\": ";
-  write_rows(out, rbdc::mass_matrix_inverse(model, data, q), "  ");
+  if (model.singular_mass_matrix.empty()) {
+    write_rows(out, rbdc::mass_matrix_inverse(model, data, q), "  ");
+  } else {
+    out << "null";  // M is singular (docs/model.md, "Singular mass matrix")
+  }
+}
+
 /// Foot names "LF,RH,…" → indices into model.feet; an unknown name is refused with the feet listed.
 std::vector<int> contact_feet(const Model& model, const std::string& names) {
   std::vector<int> feet;
@@ -318,7 +324,7 @@ int main(int argc, char** argv) {
                    "(com, com_velocity, com_jacobian, momentum_matrix A_G, bias Ȧ_G v) and \"M_inverse\".\n"
                    "--frames adds \"frames\": for each named frame (all: every frame of the model) its\n"
                    "position, world_R_frame, velocity_local/_world, jacobian_local/_world (6 x nv),\n"
-                   "bias_spatial (local) and bias_classical (world-aligned); an unknown name exits 2.\n\n"
+                   "bias_spatial (local) and bias_classical (world-aligned); an unknown name exits 2.\n"
                    "--contacts LF,RH,… (foot names; a repeated foot is a redundant contact) adds\n"
                    "\"contact_dynamics\": qdd, lambda (world contact forces, contact-major), damping (the μ\n"
                    "of the Delassus solve), with the Baumgarte velocity gain --kd (default 0), and\n"
