@@ -7,6 +7,7 @@ rotate them by R_F^Wᵀ = E R_iᵀ. Spatial vectors are (angular; linear)."""
 from __future__ import annotations
 
 from ..graph import spatial as sp
+from .jacobian import point_jacobian_columns
 from .kinematics import body_velocities, world_frames
 from .rnea import velocity_bias
 
@@ -64,35 +65,6 @@ def frame_velocities(m):
         local.append(_rotate(E, w) + _rotate(E, u))
         world.append(sp.matvec(R_i, w) + sp.matvec(R_i, u))
     return local, world
-
-
-def point_jacobian_columns(m, frames, body, point):
-    """World columns (angular, linear) of the motion of a point fixed to `body` at world position
-    `point` (Eq. B3 in world axes): the trunk's ω_B as (R ω_B, R ω_B × (p − p_0)), its v_B as (0, R
-    v_B), a revolute joint j of κ(body) as (a_j, a_j × (p − p_j)) with its world axis a_j, a
-    prismatic one as (0, a_j); other columns zero."""
-    robot = m.robot
-    zero = sp.zeros(3)
-    angular = [zero] * robot.nv
-    linear = [zero] * robot.nv
-    if robot.floating_base:
-        R, p0 = frames[0]
-        lever = sp.vsub(point, p0)
-        Rt = sp.transpose(R)
-        for c in range(3):
-            angular[c] = Rt[c]
-            linear[c] = sp.cross(Rt[c], lever)
-            linear[3 + c] = Rt[c]
-    for j in robot.support[body]:
-        R_j, p_j = frames[j]
-        axis = sp.matvec(R_j, sp.vec(m.axis(j)))
-        col = m.joint(j).v_index
-        if m.joint(j).type == "revolute":
-            angular[col] = axis
-            linear[col] = sp.cross(axis, sp.vsub(point, p_j))
-        else:
-            linear[col] = axis
-    return angular, linear
 
 
 def frame_jacobians(m):
