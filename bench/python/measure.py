@@ -123,7 +123,9 @@ def main():
         os.environ["RBDC_CACHE_DIR"] = tempfile.mkdtemp(prefix="rbdc-measure-")
     results = {"load_average_before": os.getloadavg()}
     module = compile_times(results)
+    print(json.dumps(results, indent=1), flush=True)  # each stage as it ends: the whole run takes minutes
     python_figures(module, args.states, results)
+    print(json.dumps(results, indent=1), flush=True)
     if not args.no_dask:
         dask_figures(module, args.dask_states, results)
     results["load_average_after"] = os.getloadavg()
