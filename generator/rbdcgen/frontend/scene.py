@@ -75,7 +75,7 @@ class Scene:
     zero_inputs: Tuple[str, ...] = ()
     derivatives: Tuple[str, ...] = ()               # none unless the scene lists them
     actuators: str = "full"                         # full | armature | none (ACTUATOR_MODES)
-    schedule: str = "scalar"                        # auto | scalar | limb_lanes (SCHEDULES)
+    schedule: str = "auto"                          # auto | scalar | limb_lanes (SCHEDULES)
     source: str = "<default>"
 
     # --- resolution against a robot -------------------------------------------------------
