@@ -3,9 +3,9 @@
 // single-state time (ns per call, states cycled) and the batch time of N states stored one after
 // another (ns per state, Batch<double> packs: pack, call, unpack, as the bindings do).
 // Usage: cxx_baseline N
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <random>
 #include <vector>
 
@@ -14,13 +14,13 @@
 
 namespace mc = rbdc_gen::mini_cheetah::full;
 using P = rbdc_gen::Batch<double>;
-using Clock = std::chrono::steady_clock;
 
+/// CPU seconds of this process (not wall time: the figures stay meaningful on a shared machine).
 template <class F>
 double seconds(F&& f) {
-  const auto start = Clock::now();
+  const std::clock_t start = std::clock();
   f();
-  return std::chrono::duration<double>(Clock::now() - start).count();
+  return static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
 }
 
 int main(int argc, char** argv) {

@@ -177,6 +177,8 @@ def _build(target: Target, key: str, entry: Path) -> None:
         (work / "commands.txt").write_text("".join(shlex.join(c) + "\n" for c in compiles + [link]))
         _run_all(compiles, int(os.environ.get("RBDC_COMPILE_JOBS", 0)) or os.cpu_count() or 1)
         _run_all([link], 1)
+        for o in objects:  # the module is linked; the sources stay for reading
+            o.unlink()
         os.rename(work, entry)  # atomic: readers see no entry or a whole one
     finally:
         shutil.rmtree(work, ignore_errors=True)

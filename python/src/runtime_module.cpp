@@ -57,20 +57,21 @@ std::map<std::string, Algorithm> algorithms(const Model& model) {
              *da = "acceleration, ordered like v", *dtau = "joint torques / forces",
              *df = "foot forces, world frame, one column per foot";
   auto out = [](const char* name, int rows, int cols) { return rbdc_py::ArgSpec{name, rows, cols, -1, cols != 1}; };
+  auto feet = [](const char* name, int n_feet) { return rbdc_py::ArgSpec{name, 3, n_feet, -1, true}; };
   std::map<std::string, Algorithm> table;
   auto add = [&](const char* name, std::vector<rbdc_py::ArgSpec> in, std::vector<rbdc_py::ArgSpec> outs,
                  std::vector<const char*> docs, const char* doc, Run run) {
     table[name] = Algorithm{rbdc_py::FunctionSpec{name, std::move(in), std::move(outs)}, std::move(docs), doc, std::move(run)};
   };
-  add("feet_positions", {q}, {out("p", 3, nf)}, {dq, "foot positions, world frame"}, "Feet positions (paper 000 Eq. 18).",
+  add("feet_positions", {q}, {feet("p", nf)}, {dq, "foot positions, world frame"}, "Feet positions (paper 000 Eq. 18).",
       [](const Model& m, Workspace& w, const double* const* in, double* const* o) {
         mat(o[0], 3, w.f.cols()) = rbdc::feet_positions(m, w.data, vec(in[0], m.nq));
       });
-  add("feet_velocities", {q, v}, {out("pdot", 3, nf)}, {dq, dv, "foot velocities, world frame"},
+  add("feet_velocities", {q, v}, {feet("pdot", nf)}, {dq, dv, "foot velocities, world frame"},
       "Feet linear velocities (paper 000 Eq. 37).", [](const Model& m, Workspace& w, const double* const* in, double* const* o) {
         mat(o[0], 3, w.f.cols()) = rbdc::feet_velocities(m, w.data, vec(in[0], m.nq), vec(in[1], m.nv));
       });
-  add("feet_bias_accelerations", {q, v}, {out("pddot", 3, nf)}, {dq, dv, "J̇ v per foot, world frame"},
+  add("feet_bias_accelerations", {q, v}, {feet("pddot", nf)}, {dq, dv, "J̇ v per foot, world frame"},
       "Feet accelerations at a = 0 (J̇ v).", [](const Model& m, Workspace& w, const double* const* in, double* const* o) {
         mat(o[0], 3, w.f.cols()) = rbdc::feet_bias_accelerations(m, w.data, vec(in[0], m.nq), vec(in[1], m.nv));
       });

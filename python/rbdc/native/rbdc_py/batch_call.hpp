@@ -134,11 +134,13 @@ py::object call_as(const FunctionSpec& f, const Runner& runner, Runner::Run run,
     bad = run(runner.context, f, in, outs, n, thread_count(n, threads));
   }
   if (bad >= 0) {
-    for (const ArgSpec& a : f.inputs) {
-      if (a.quaternion < 0) continue;
+    for (size_t i = 0; i < f.inputs.size(); ++i) {
+      const ArgSpec& a = f.inputs[i];
+      if (a.quaternion < 0 || !bad_quaternion(in[i], a, n < 0 ? 0 : bad)) continue;
       const std::string state = n < 0 ? std::string(a.name) : std::string(a.name) + "[" + std::to_string(bad) + "]";
       throw py::value_error(where(f, state.c_str()) + ": the quaternion " + a.name + "[" + std::to_string(a.quaternion) + ":" +
-                            std::to_string(a.quaternion + 4) + "] is zero and cannot be normalised");
+                            std::to_string(a.quaternion + 4) + "] has norm " + std::to_string(std::sqrt(quaternion_norm2(in[i], a, n < 0 ? 0 : bad))) +
+                            ", expected a unit quaternion (w x y z); normalise it");
     }
   }
   if (outputs.size() == 1) return outputs[0];

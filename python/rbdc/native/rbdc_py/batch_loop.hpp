@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <thread>
 #include <vector>
@@ -17,7 +18,7 @@ struct ArgSpec {
   const char* name;
   int rows;
   int cols;
-  int quaternion = -1;  ///< q of a floating base: index of the quaternion's w (checked non-zero)
+  int quaternion = -1;  ///< q of a floating base: index of the quaternion's w (checked unit)
   bool matrix = false;  ///< numpy shape (rows, cols) even for one column (feet matrices of one foot)
   int size() const { return rows * cols; }
 };
@@ -52,12 +53,20 @@ inline T read(const Strided& s, std::ptrdiff_t n, int r, int c) {
                      : static_cast<T>(*reinterpret_cast<const float*>(p));
 }
 
-/// True if state n's quaternion has norm zero (it cannot be normalised; a NaN one passes as NaN).
-inline bool zero_quaternion(const Strided& s, const ArgSpec& arg, std::ptrdiff_t n) {
-  if (arg.quaternion < 0) return false;
+/// |‖quaternion‖² − 1| above which a state is refused: the generated code assumes a unit quaternion
+/// (the runtime normalises it); float32 rounding of a unit quaternion stays far below.
+constexpr double kQuaternionTolerance = 1e-5;
+
+/// ‖quaternion‖² of state n's argument (its entries quaternion … quaternion + 3).
+inline double quaternion_norm2(const Strided& s, const ArgSpec& arg, std::ptrdiff_t n) {
   double norm2 = 0;
   for (int k = 0; k < 4; ++k) norm2 += read<double>(s, n, arg.quaternion + k, 0) * read<double>(s, n, arg.quaternion + k, 0);
-  return norm2 == 0;
+  return norm2;
+}
+
+/// True if state n's quaternion is not a unit one (a NaN one passes: NaN in, NaN out).
+inline bool bad_quaternion(const Strided& s, const ArgSpec& arg, std::ptrdiff_t n) {
+  return arg.quaternion >= 0 && std::abs(quaternion_norm2(s, arg, n) - 1) > kQuaternionTolerance;
 }
 
 /// Entry (r, c) of state n goes to dst[(c·rows + r)·step]: column-major, `step` apart (pack lanes).
@@ -99,7 +108,7 @@ template <class Scalar>
 struct lanes_of { static constexpr int value = 1; using type = Scalar; };
 
 /// States [begin, end) through `kernel` with Scalar = P (a Pack of W lanes of T, or T itself):
-/// gathered into lanes, computed, scattered. Returns the first state whose quaternion is zero, or -1.
+/// gathered into lanes, computed, scattered. Returns the first state whose quaternion is not a unit one, or -1.
 template <class T, class P, int W, class Worker>
 std::ptrdiff_t run_lanes(const FunctionSpec& f, Worker& kernel, const std::vector<Strided>& in,
                       const std::vector<Strided>& out, std::ptrdiff_t begin, std::ptrdiff_t end, Workspace<P>& ws) {
@@ -111,7 +120,7 @@ std::ptrdiff_t run_lanes(const FunctionSpec& f, Worker& kernel, const std::vecto
     for (size_t i = 0; i < f.inputs.size(); ++i) {
       for (int k = 0; k < W; ++k) {
         gather(in[i], f.inputs[i], n + k, in_lanes + offset * W + k, W);
-        if (bad < 0 && zero_quaternion(in[i], f.inputs[i], n + k)) bad = n + k;
+        if (bad < 0 && bad_quaternion(in[i], f.inputs[i], n + k)) bad = n + k;
       }
       offset += static_cast<size_t>(f.inputs[i].size());
     }
@@ -178,7 +187,7 @@ inline int thread_count(std::ptrdiff_t n, int requested) {
 
 
 /// What the numpy layer calls to run a function over checked arguments: `n` states (-1: one state,
-/// in the calling thread), in double or in float. Returns the first state whose quaternion is zero,
+/// in the calling thread), in double or in float. Returns the first state whose quaternion is not a unit one,
 /// or -1. `context` is the kernel object of a kernel with state (the runtime's), else null.
 struct Runner {
   using Run = std::ptrdiff_t (*)(const void* context, const FunctionSpec& f, const std::vector<Strided>& in,
