@@ -2,10 +2,12 @@
 right. Branching trees, oblique and negative axes, rotated joint origins and inertial frames, fixed
 joints (some to massless links, merged away), prismatic joints, 1 to 40 moving bodies; with
 --massless also massless bodies anywhere (the base, inner bodies, leaves; without any inertia or with
-a pure rotational one), so that some have a singular M (docs/model.md, "Singular mass matrix"); or,
+a pure rotational one), so that some have a singular M (docs/model.md, "Singular mass matrix"); with
+--extremes masses over twelve decades and near-singular inertias; with --mimic mimic joints; or,
 with --actuators, a standalone topology file whose joints carry geared rotors and armature.
 
-    python3 -m rbdcgen.random_robot SEED [-o FILE] [--massless | --actuators floating|fixed]
+    python3 -m rbdcgen.random_robot SEED [-o FILE] [--massless | --extremes | --mimic |
+                                              --actuators floating|fixed]
 """
 import argparse
 import math
@@ -29,10 +31,16 @@ def _oblique_or_signed_axis(rng: random.Random):
             return [a / norm for a in axis]
 
 
-def _inertial(rng: random.Random) -> str:
-    """A body with mass, a shifted and rotated inertial frame and box-like (physical) inertia."""
+def _inertial(rng: random.Random, extremes: bool = False) -> str:
+    """A body with mass, a shifted and rotated inertial frame and box-like (physical) inertia;
+    `extremes`: the mass scaled by 1e-6..1e6 and, one time in three, a thin rod whose inertia about
+    its axis is ~1e-8 of the others (near-singular)."""
     mass = rng.uniform(0.1, 5.0)
     x, y, z = (rng.uniform(0.02, 0.4) for _ in range(3))
+    if extremes:
+        mass *= 10.0 ** rng.uniform(-6.0, 6.0)
+        if rng.random() < 1 / 3:
+            x, y = 1e-4 * z, 1e-4 * z
     ixx, iyy, izz = mass / 12 * (y * y + z * z), mass / 12 * (x * x + z * z), mass / 12 * (x * x + y * y)
     com = [rng.uniform(-0.1, 0.1) for _ in range(3)]
     rpy = [rng.uniform(-math.pi, math.pi) for _ in range(3)]
@@ -51,14 +59,18 @@ def _massless_inertial(rng: random.Random) -> str:
             f'ixz="0" iyy="{_numbers([moments[1]])}" iyz="0" izz="{_numbers([moments[2]])}"/>\n    </inertial>\n')
 
 
-def random_urdf(seed: int, max_links: int = 40, massless: bool = False) -> str:
+def random_urdf(seed: int, max_links: int = 40, massless: bool = False, extremes: bool = False,
+                mimic: bool = False) -> str:
     """URDF text of the random robot for `seed`: sizes mostly small, sometimes up to max_links;
-    `massless`: about a third of the bodies, the base included, are massless (_massless_inertial)."""
+    `massless`: about a third of the bodies, the base included, are massless (_massless_inertial);
+    `extremes`: masses over twelve decades and near-singular inertias (_inertial); `mimic`: about a
+    third of the moving joints after the first mimic an earlier independent one of the same type."""
     rng = random.Random(seed)
     n_links = rng.choice((rng.randint(1, 8), rng.randint(1, 16), rng.randint(1, max_links)))
+    leaders = {"revolute": [], "continuous": [], "prismatic": []}
 
     def inertial():
-        return _massless_inertial(rng) if massless and rng.random() < 0.35 else _inertial(rng)
+        return _massless_inertial(rng) if massless and rng.random() < 0.35 else _inertial(rng, extremes)
 
     links = ['  <link name="base">\n' + inertial() + "  </link>\n"]
     joints = []
@@ -84,6 +96,11 @@ def random_urdf(seed: int, max_links: int = 40, massless: bool = False) -> str:
             text += f'    <limit lower="{_numbers([lower])}" upper="{_numbers([lower + rng.uniform(0.2, 3.0)])}" effort="50" velocity="10"/>\n'
         if kind == "prismatic":
             text += '    <limit lower="-0.2" upper="0.3" effort="100" velocity="1"/>\n'
+        if mimic and kind != "fixed" and leaders[kind] and rng.random() < 1 / 3:
+            text += (f'    <mimic joint="{rng.choice(leaders[kind])}" multiplier="{_numbers([rng.uniform(-2, 2)])}" '
+                     f'offset="{_numbers([rng.uniform(-0.1, 0.1)])}"/>\n')
+        elif kind != "fixed":
+            leaders[kind].append(f"joint{k}")
         joints.append(text + "  </joint>\n")
     return (f'<?xml version="1.0"?>\n<!-- rbdc random robot, seed {seed} -->\n'
             f'<robot name="random_{seed}">\n' + "".join(links) + "".join(joints) + "</robot>\n")
@@ -179,11 +196,13 @@ def main(argv=None) -> int:
     parser.add_argument("-o", "--output", help="write here instead of stdout")
     kind = parser.add_mutually_exclusive_group()
     kind.add_argument("--massless", action="store_true", help="massless bodies anywhere in the tree")
+    kind.add_argument("--extremes", action="store_true", help="masses over 12 decades, near-singular inertias")
+    kind.add_argument("--mimic", action="store_true", help="mimic joints")
     kind.add_argument("--actuators", choices=("floating", "fixed"),
                       help="a standalone topology YAML with rotors and armature, this base")
     args = parser.parse_args(argv)
     text = (random_actuated_topology(args.seed, args.actuators == "floating") if args.actuators
-            else random_urdf(args.seed, massless=args.massless))
+            else random_urdf(args.seed, massless=args.massless, extremes=args.extremes, mimic=args.mimic))
     if args.output:
         with open(args.output, "w", encoding="utf-8") as handle:
             handle.write(text)
