@@ -6,6 +6,7 @@ DIR/lf_contact.png). Standard library + matplotlib only.
 """
 import csv
 import math
+import os
 import sys
 from pathlib import Path
 
@@ -13,6 +14,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after the backend choice)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from result_files import save_figure  # noqa: E402
 
 
 def read_columns(path):
@@ -40,7 +43,7 @@ def trunk_pose_figure(ours, mujoco, out):
     axes[0][0].legend()
     fig.suptitle("Trunk position and orientation (paper 000 Fig. 5)")
     fig.tight_layout()
-    fig.savefig(out, dpi=120)
+    save_figure(fig, out, dpi=120)
 
 
 def contact_figure(ours, mujoco, out, foot="LF_foot"):
@@ -57,7 +60,7 @@ def contact_figure(ours, mujoco, out, foot="LF_foot"):
     axes[1].set_xlabel("t (s)")
     fig.suptitle("Left foreleg contact (paper 000 Fig. 6)")
     fig.tight_layout()
-    fig.savefig(out, dpi=120)
+    save_figure(fig, out, dpi=120)
 
 
 def main():

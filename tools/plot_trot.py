@@ -12,6 +12,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from result_files import save_figure  # noqa: E402
 
 
 def main(argv):
@@ -42,7 +43,7 @@ def main(argv):
     force.legend(loc="upper right", ncol=len(feet))
     fig.suptitle("rbdc-sim: PD trot on the generated Mini Cheetah dynamics")
     fig.tight_layout()
-    fig.savefig(argv[2], dpi=110)
+    save_figure(fig, argv[2], dpi=110)
     print(f"plot_trot: wrote {argv[2]}")
     return 0
 

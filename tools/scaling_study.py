@@ -26,6 +26,8 @@ import subprocess
 import sys
 import tempfile
 
+from result_files import replacing, save_figure
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUDGET_FLOPS = 200e3  # paper 001 Fig. 8: what the closed form could spend at 1 kHz
 
@@ -188,7 +190,7 @@ def plot(rows, out):
     ax.legend(fontsize=7)
     ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "scaling_flops.png"), dpi=120)
+    save_figure(fig, os.path.join(out, "scaling_flops.png"), dpi=120)
     if not any("ns_generated_recursion" in r for r in rows):
         return
     fig, ax = plt.subplots(figsize=(7, 4.5))
@@ -210,7 +212,7 @@ def plot(rows, out):
     ax.legend(fontsize=7)
     ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "scaling_time.png"), dpi=120)
+    save_figure(fig, os.path.join(out, "scaling_time.png"), dpi=120)
 
 
 def table(rows, timing):
@@ -269,10 +271,10 @@ def main():
                 row["ns_runtime_closed_form"] = runtime["runtime_closed_form_ns"]
             print(json.dumps(row), file=sys.stderr)
             rows.append(row)
-    with open(os.path.join(args.out, "scaling.json"), "w") as f:
+    with replacing(os.path.join(args.out, "scaling.json")) as partial, open(partial, "w") as f:
         json.dump(rows, f, indent=1, sort_keys=True)
         f.write("\n")
-    with open(os.path.join(args.out, "scaling.md"), "w") as f:
+    with replacing(os.path.join(args.out, "scaling.md")) as partial, open(partial, "w") as f:
         f.write("# Scaling study (paper 001 Fig. 8), written by tools/scaling_study.py\n\n"
                 "FLOPs: every operation counts one (rbdc flops). Closed form = generated H, C, G, J_c plus the "
                 "dense operations of Eqs. 20-26 counted analytically. Times: mean CPU time per call over "

@@ -1,4 +1,6 @@
 """The run-time-against-error plot of bench/report (results/bench/error_vs_time.png)."""
+from result_files import save_figure  # tools/, put on sys.path by bench/report
+
 from .common import QUANTITY_TITLES
 
 TITLES = dict(QUANTITY_TITLES, inverse_dynamics_derivatives="derivatives ∂τ/∂(q, v)",
@@ -61,5 +63,5 @@ def plot_error_vs_time(rows, derivative_rows, path):
     axes.grid(True, which="major", alpha=0.3)
     axes.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     figure.tight_layout()
-    figure.savefig(path, dpi=120)
+    save_figure(figure, path, dpi=120)
     plt.close(figure)

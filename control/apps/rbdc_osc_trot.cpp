@@ -12,6 +12,7 @@
 
 #include "rbdc/control/drive_train.hpp"
 #include "rbdc/control/trot_experiment.hpp"
+#include "rbdc/result_file.hpp"
 #include "rbdc/sim/robot.hpp"
 
 using namespace rbdc;
@@ -144,7 +145,7 @@ int main(int argc, char** argv) {
       if (r.fell) std::fprintf(stderr, "rbdc-osc-trot: %s fell at %.3f s: %s\n", to_string(control),
                                r.fall_time, r.fall_reason.c_str());
     }
-    if (!o.out.empty()) std::ofstream(o.out + "/summary.md") << table;
+    if (!o.out.empty()) write_result_file(o.out + "/summary.md", table);
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "rbdc-osc-trot: %s\n", e.what());

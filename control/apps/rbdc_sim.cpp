@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
     RunCallbacks callbacks;
     if (csv) callbacks.sample = [&](Simulator& s) { csv->write(s.time(), s.q(), s.v(), s.contacts()); };
     const RunSummary summary = run(simulator, controller, cli.run, callbacks);
+    if (csv) csv->finish();
     const double simulated = summary.steps * cli.sim.dt;
     std::printf("simulated %.3f s in %.3f s wall: real-time factor %.1f (%ld steps, %.2f us/step)\n",
                 simulated, summary.wall_seconds, simulated / summary.wall_seconds, summary.steps,

@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <stdexcept>
+#include <optional>
+#include <ostream>
 
+#include "rbdc/result_file.hpp"
 #include "rbdc/sim/run.hpp"
 
 namespace rbdc::control {
@@ -14,14 +15,14 @@ constexpr double kDeg = 180.0 / M_PI;
 constexpr double kFallHeight = 0.12;      // m, trunk origin
 constexpr double kFallAngle = 45.0 / kDeg;
 
-void write_trace_header(std::ofstream& out) {
+void write_trace_header(std::ostream& out) {
   out << "t,x,y,z,vx,roll,pitch,yaw,roll_desired,pitch_desired,pair,attitude_control";
   for (const char* foot : {"LF", "RF", "LH", "RH"})
     out << ',' << foot << "_fx," << foot << "_fy," << foot << "_fz";
   out << '\n';
 }
 
-void write_trace_row(std::ofstream& out, sim::Simulator& simulator, const ControllerStatus& s) {
+void write_trace_row(std::ostream& out, sim::Simulator& simulator, const ControllerStatus& s) {
   const VectorX& q = simulator.q();
   const VectorX& v = simulator.v();
   const Matrix3 W_R_B = Eigen::Quaterniond(q[3], q[4], q[5], q[6]).normalized().toRotationMatrix();
@@ -47,16 +48,15 @@ ExperimentResult run_trot_experiment(const Model& model, sim::DynamicsModel& dyn
                                      const ExperimentOptions& options) {
   sim::Simulator simulator(dynamics, options.sim);
   OscTrotController controller(model, options.trot, options.control, options.sim.contact.foot_radius);
-  std::ofstream trace;
+  std::optional<ResultFile> trace;  // the previous trace stays until this run ends
   if (!options.trace_csv.empty()) {
-    trace.open(options.trace_csv);
-    if (!trace) throw std::runtime_error("cannot write the trace '" + options.trace_csv + "'");
-    write_trace_header(trace);
+    trace.emplace(options.trace_csv);
+    write_trace_header(trace->stream());
   }
   sim::RunOptions run;
   run.duration = options.duration;
   run.control_period = options.control_period;
-  run.sample_interval = trace.is_open() ? 1e-3 : 0;
+  run.sample_interval = trace ? 1e-3 : 0;
 
   ExperimentResult result;
   const long total_steps = std::lround(options.duration / options.sim.dt);
@@ -74,7 +74,7 @@ ExperimentResult run_trot_experiment(const Model& model, sim::DynamicsModel& dyn
   };
   // A row per millisecond of a state the controller acted on: none for the final state.
   callbacks.sample = [&](sim::Simulator& s) {
-    if (steps < total_steps) write_trace_row(trace, s, controller.status());
+    if (steps < total_steps) write_trace_row(trace->stream(), s, controller.status());
   };
   // After each step: the half-way position for the mean speed, then the fall criteria.
   callbacks.stop = [&](sim::Simulator& s) -> const char* {
@@ -86,6 +86,7 @@ ExperimentResult run_trot_experiment(const Model& model, sim::DynamicsModel& dyn
     return nullptr;
   };
   const sim::RunSummary summary = sim::run(simulator, controller, run, callbacks);
+  if (trace) trace->commit();
 
   result.controller_seconds = summary.controller_seconds;
   result.controller_calls = summary.controller_calls;

@@ -1,6 +1,6 @@
 """`python3 -m rbdcgen` (what the ./rbdc launcher runs)."""
 import sys
 
-from .cli import main
+from .commands.cli import main
 
 sys.exit(main())

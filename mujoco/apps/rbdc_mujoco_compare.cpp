@@ -10,6 +10,7 @@
 #include "rbdc/control/command_line.hpp"
 #include "rbdc/control/drive_train.hpp"
 #include "rbdc/mujoco/mujoco_run.hpp"
+#include "rbdc/result_file.hpp"
 #include "rbdc/sim/robot.hpp"
 #include "rbdc/sim/trajectory_csv.hpp"
 
@@ -56,6 +57,7 @@ double time_mujoco(const Model& model, const mjModel* m, const CommandLine& cli)
 void write_csv(const std::string& path, const Model& model, const Trajectory& run) {
   TrajectoryCsv csv(path, model);
   for (const Sample& s : run) csv.write(s.t, s.q, s.v, s.contacts);
+  csv.finish();
 }
 
 }  // namespace
@@ -104,7 +106,8 @@ int main(int argc, char** argv) {
     write_csv(cli.out + "/ours.csv", balanced, ours);
     write_csv(cli.out + "/mujoco.csv", balanced, theirs.trajectory);
 
-    std::ofstream table(cli.out + "/comparison.md");
+    ResultFile table_file(cli.out + "/comparison.md");
+    std::ostream& table = table_file.stream();
     table << "# Our simulator vs MuJoCo " << mj_versionString() << " (" << cli.run.duration
           << " s trot, dt " << cli.sim.dt << " s)\n\n"
           << "| measure | ours vs MuJoCo | paper 000 |\n|---|---|---|\n";
@@ -141,9 +144,10 @@ int main(int argc, char** argv) {
                     1e6 * c.after(2, 2));
       table << line;
     }
-    table.close();
+    table_file.commit();
 
-    std::ofstream summary(cli.out + "/comparison_summary.csv");
+    ResultFile summary_file(cli.out + "/comparison_summary.csv");
+    std::ostream& summary = summary_file.stream();
     summary << "measure,value\n"
             << "pos_mae_x_mm," << metrics.position_mae_mm.x() << "\npos_mae_y_mm," << metrics.position_mae_mm.y()
             << "\npos_mae_z_mm," << metrics.position_mae_mm.z() << "\nroll_mae_deg," << metrics.euler_mae_deg.x()
@@ -153,7 +157,7 @@ int main(int argc, char** argv) {
             << "\nlf_touchdown_shift_ms," << metrics.touchdown_shift_ms << "\nlf_normal_force_mae_n,"
             << metrics.normal_force_mae << "\nwall_ours_" << fastest << "_s," << wall_ours_fast
             << "\nwall_ours_runtime_sampled_s," << wall_ours_runtime << "\nwall_mujoco_s," << wall_mujoco << "\n";
-    summary.close();
+    summary_file.commit();
 
     std::ifstream shown(cli.out + "/comparison.md");
     std::printf("%s", std::string(std::istreambuf_iterator<char>(shown), {}).c_str());

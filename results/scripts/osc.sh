@@ -11,7 +11,7 @@ mkdir -p "$out"
 
 # The per-millisecond traces stay out of git (MBs); the table and figures are committed.
 "$build/bin/rbdc-osc-trot" --duration 10 --out "$scratch"
-cp "$scratch/summary.md" "$out/trot_summary.md"
+publish "$scratch/summary.md" "$out/trot_summary.md"
 /usr/bin/python3 "$root/results/scripts/plot_osc_trot.py" "$scratch" "$out"
 /usr/bin/python3 "$root/tools/scaling_study.py" --build-dir "$build" --out "$out"
 "$root/results/scripts/osc_ground_mass.sh" "$build"

@@ -17,6 +17,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from result_files import replacing, save_figure  # noqa: E402
 
 
 def within_a_decade(ratios):
@@ -54,11 +56,11 @@ def main(path, out_dir):
     right.set_title("%d random trot configurations, LF + RH pinned" % n)
     right.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, "ground_mass.png"), dpi=120)
+    save_figure(fig, os.path.join(out_dir, "ground_mass.png"), dpi=120)
 
     i_best = {key: min(range(len(d["ratios"])), key=lambda i: d[key][i]) for key in ("error_Lambda", "error_b")}
     i_heur = min(range(len(d["ratios"])), key=lambda i: abs(math.log10(d["ratios"][i] / heuristic)))
-    with open(os.path.join(out_dir, "ground_mass.md"), "w") as f:
+    with replacing(os.path.join(out_dir, "ground_mass.md")) as partial, open(partial, "w") as f:
         f.write("# Paper 001 Fig. 7: closed-chain error against ground mass (Mini Cheetah, LF + RH pinned)\n\n")
         f.write("Written by `results/scripts/osc_ground_mass.sh` (`rbdc-osc-ground-mass`, runtime recursion of "
                 "Table 2 against the constrained closed form of Eqs. 16-26, both in double). Figure: "

@@ -10,11 +10,14 @@ open chain with measured forces, as Fig. 11).
 import argparse
 import csv
 import os
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from result_files import save_figure  # noqa: E402
 
 CONTROLLERS = [("osc", "OSC, closed chain (no force sensing)", "C0"),
                ("osc-open", "OSC, open chain + measured forces (Eq. 50)", "C1"),
@@ -64,7 +67,7 @@ def main():
         ax.grid(alpha=0.3)
     fig.suptitle("Mini Cheetah trot, 4 steps (cf. paper 001 Figs. 9 and 12)")
     fig.tight_layout()
-    fig.savefig(os.path.join(args.out, "trot_attitude.png"), dpi=110)
+    save_figure(fig, os.path.join(args.out, "trot_attitude.png"), dpi=110)
 
     fig, axes = plt.subplots(3, 1, figsize=(8, 7), sharex=True)
     for name, label, color in CONTROLLERS[:2]:
@@ -81,7 +84,7 @@ def main():
     axes[2].set_xlabel("time in stance (s)")
     fig.suptitle("Ground reaction force of the LF foot over one stance (cf. paper 001 Fig. 11)")
     fig.tight_layout()
-    fig.savefig(os.path.join(args.out, "trot_grf.png"), dpi=110)
+    save_figure(fig, os.path.join(args.out, "trot_grf.png"), dpi=110)
 
 
 if __name__ == "__main__":

@@ -9,10 +9,12 @@ mkdir -p "$out"
 
 "$root/results/scripts/sim_speed.sh" "$build"
 
-echo "== Table I read in plain SI (length unit 1 m): the robot sinks, the trot fails" > "$out/units.txt"
-"$build/bin/rbdc-sim" --quiet --length-unit 1 >> "$out/units.txt"
-echo "== Table I read with the penetration in mm (our default)" >> "$out/units.txt"
-"$build/bin/rbdc-sim" --quiet >> "$out/units.txt"
+units="$(partial "$out/units.txt")"
+echo "== Table I read in plain SI (length unit 1 m): the robot sinks, the trot fails" > "$units"
+"$build/bin/rbdc-sim" --quiet --length-unit 1 >> "$units"
+echo "== Table I read with the penetration in mm (our default)" >> "$units"
+"$build/bin/rbdc-sim" --quiet >> "$units"
+commit "$out/units.txt"
 
 # Chatter: the share and RMS of the feet forces above 500 Hz over 1-10 s of trot, before (force at
 # the sphere centre, isotropic explicit friction) and after (contact point, Eq. 38 per axis, implicit).
@@ -29,10 +31,12 @@ echo "== Table I read with the penetration in mm (our default)" >> "$out/units.t
     /usr/bin/python3 "$root/results/scripts/force_spectrum.py" "$scratch/trot_$variant.csv" --label "$variant"
     echo
   done
-} > "$out/chatter.md"
+} > "$(partial "$out/chatter.md")"
+commit "$out/chatter.md"
 
 # Full time series stay out of git (tens of MB); the table, summary and figures are committed.
 "$build/bin/rbdc-mujoco-compare" --quiet --out "$scratch"
-cp "$scratch/comparison.md" "$scratch/comparison_summary.csv" "$scratch/trunk_pose.png" \
-   "$scratch/lf_contact.png" "$out/"
+for f in comparison.md comparison_summary.csv trunk_pose.png lf_contact.png; do
+  publish "$scratch/$f" "$out/$f"
+done
 echo "results written to $out"

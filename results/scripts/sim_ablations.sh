@@ -17,7 +17,7 @@ duration="${DURATION:-10}"
   echo
   echo "| variant | options | pos MAE x, y, z (mm) | roll, pitch, yaw MAE (deg) | LF contact agreement | LF f_n MAE (N) |"
   echo "|---|---|---|---|---|---|"
-} > "$out"
+} > "$(partial "$out")"
 
 row() {
   name="$1"; shift
@@ -29,9 +29,9 @@ row() {
       END { printf "| %s | `%s` | %.1f, %.1f, %.1f | %.2f, %.2f, %.2f | %.1f %% | %.2f |\n", name, opts,
               v["pos_mae_x_mm"], v["pos_mae_y_mm"], v["pos_mae_z_mm"], v["roll_mae_deg"], v["pitch_mae_deg"],
               v["yaw_mae_deg"], 100 * v["lf_contact_agreement"], v["lf_normal_force_mae_n"] }' \
-      "$dir/comparison_summary.csv" >> "$out"
+      "$dir/comparison_summary.csv" >> "$(partial "$out")"
   else
-    echo "| $name | \`$*\` | failed: $(tail -1 "$dir.log") | | | |" >> "$out"
+    echo "| $name | \`$*\` | failed: $(tail -1 "$dir.log") | | | |" >> "$(partial "$out")"
   fi
 }
 
@@ -47,4 +47,5 @@ row "MuJoCo 100x stiffer (solref -160000)" --mj-stiffness 160000 --mj-damping 10
 row "MuJoCo softer damping (solref damping -40)" --mj-damping 40
 row "ours on MIT's thigh inertia" --original-inertia
 row "Table I in SI metres (K = 1e4 N/m^2.2)" --length-unit 1
+commit "$out"
 echo "results written to $out"

@@ -66,4 +66,5 @@ done
   for run in none armature full generated generated_full; do
     echo "- $run: $(grep '^simulated' "$scratch/$run.txt")"
   done
-} > "$out"
+} > "$(partial "$out")"
+commit "$out"

@@ -44,5 +44,6 @@ min_median() {  # of the numbers on stdin
     valgrind --tool=callgrind --callgrind-out-file="$scratch/callgrind.out" "$build/bin/rbdc-sim" --duration 1.5 --quiet \
       2>&1 | sed -n 's/.*Collected : \([0-9]*\)/instructions: \1/p'
   fi
-} > "$out"
+} > "$(partial "$out")"
+commit "$out"
 echo "written $out"

@@ -1,14 +1,11 @@
 #include "rbdc/sim/trajectory_csv.hpp"
 
-#include <stdexcept>
-
 #include "rbdc/sim/orientation.hpp"
 
 namespace rbdc::sim {
 
 TrajectoryCsv::TrajectoryCsv(const std::string& path, const Model& model)
-    : out_(path), n_joints_(model.nv - 6) {
-  if (!out_) throw std::runtime_error("cannot write the CSV file '" + path + "'");
+    : file_(path), out_(file_.stream()), n_joints_(model.nv - 6) {
   out_.precision(9);
   out_ << "t,x,y,z,roll,pitch,yaw";
   for (int i = 1; i < model.nb; ++i) out_ << ",q_" << model.joints[i].name;

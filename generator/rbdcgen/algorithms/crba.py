@@ -7,8 +7,8 @@ upper triangle is mirrored."""
 
 from __future__ import annotations
 
-from .. import expr as ex
-from .. import spatial as sp
+from ..graph import expr as ex
+from ..graph import spatial as sp
 
 
 def mass_matrix(m):

@@ -11,8 +11,8 @@ where the trunk's six dofs are one body (r, c both trunk dofs)."""
 
 from __future__ import annotations
 
-from .. import expr as ex
-from .. import spatial as sp
+from ..graph import expr as ex
+from ..graph import spatial as sp
 from .jacobian import feet_jacobian
 from .kinematics import world_frames
 

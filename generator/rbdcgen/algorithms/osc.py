@@ -5,8 +5,8 @@ the big-ground-inertia approximation. The task is body 0 (the trunk) in trunk co
 
 from __future__ import annotations
 
-from .. import expr as ex
-from .. import spatial as sp
+from ..graph import expr as ex
+from ..graph import spatial as sp
 from .kinematics import body_velocities, world_frames
 from .rnea import foot_wrenches
 

@@ -25,8 +25,8 @@ also moves a₀: column e gets I^C (v₀ × e − (0, ∂(ω × v)/∂e)) instea
 
 from __future__ import annotations
 
-from .. import expr as ex
-from .. import spatial as sp
+from ..graph import expr as ex
+from ..graph import spatial as sp
 from .kinematics import body_velocities
 from .rnea import gravity_acceleration
 
@@ -52,7 +52,7 @@ def inertia_rate(inertia, v):
     combination of ω and υ with its constant coefficients (most vanish for principal axes)."""
     w, u = sp.ang(v), sp.lin(v)
     basis = [_skew([1.0 if k == n else 0.0 for n in range(3)]) for k in range(3)]
-    spin, shift = [], []   # per lane (a limb's constants, lane_model.py; the same in every lane else)
+    spin, shift = [], []   # per lane (a limb's constants, views/limb_lanes.py; the same in every lane else)
     for lane in range(ex.LANES):
         ibar = [[ex.constant_lanes(x)[lane] for x in row] for row in inertia.Ibar]
         h_tilde = _skew([ex.constant_lanes(x)[lane] for x in inertia.h])
@@ -90,7 +90,7 @@ class _Tree:
     """The outward pass (velocities, accelerations, forces, momenta per body, body coordinates) and
     the inward composites (F, I^C, İ^C, P^C) the derivative entries need. A body's composites join
     its parent's through m.into_parent (summed over the lanes where a lane limb meets the trunk,
-    lane_model.py); nothing else of the recursion mixes limbs: a limb's columns and rows reach the
+    views/limb_lanes.py); nothing else of the recursion mixes limbs: a limb's columns and rows reach the
     trunk's rows and columns as lane values, one per limb (LaneModel.scatter_matrix)."""
 
     def __init__(self, m, base_acceleration, joint_accelerations, with_velocity):

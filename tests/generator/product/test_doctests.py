@@ -5,7 +5,8 @@ import sys
 from rbdc_cli import ROOT
 
 sys.path.insert(0, str(ROOT / "generator"))
-from rbdcgen import emit, names, verify  # noqa: E402
+from rbdcgen.backend import emit, names
+from rbdcgen.commands import verify  # noqa: E402
 
 
 def load_tests(loader, tests, pattern):

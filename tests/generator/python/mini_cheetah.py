@@ -8,7 +8,7 @@ import os
 import subprocess
 
 from numeric_check import HERE
-from rbdcgen.ir import load_ir
+from rbdcgen.frontend.ir import load_ir
 
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 URDF = os.path.join(ROOT, "robots", "mini_cheetah.urdf")

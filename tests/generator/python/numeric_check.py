@@ -10,7 +10,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "generator"))
 DATA = os.path.join(HERE, "..", "data")
 
-from rbdcgen import expr as ex  # noqa: E402
+from rbdcgen.graph import expr as ex  # noqa: E402
 
 
 def random_state(robot, nf, seed):

@@ -9,10 +9,10 @@ from dataclasses import replace
 
 from numeric_check import DATA, evaluate, random_state
 
-from rbdcgen.actuators import reflected_inertia, with_actuator_mode
-from rbdcgen.ir import Actuator, Rotor, load_ir
-from rbdcgen.scene import SceneError, scene_from_dict
-from rbdcgen.trace import trace_function
+from rbdcgen.frontend.actuators import reflected_inertia, with_actuator_mode
+from rbdcgen.frontend.ir import Actuator, Rotor, load_ir
+from rbdcgen.frontend.scene import SceneError, scene_from_dict
+from rbdcgen.passes.trace import trace_function
 
 
 def with_actuators(robot):

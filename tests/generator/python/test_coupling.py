@@ -1,6 +1,7 @@
-"""Mimic couplings in the generator (rbdcgen/coupling.py): the two-finger gripper of
+"""Mimic couplings in the generator (rbdcgen/passes/project.py, views/coupled.py): the two-finger gripper of
 tests/data/two_finger_gripper.urdf traced and evaluated against the hand calculation of
-tests/runtime/test_coupling.cpp, and the IR's tree turned into independent coordinates."""
+tests/runtime/test_coupling.cpp, the IR's tree turned into independent coordinates, and the
+derivatives of coupled robots against central differences of their primal functions."""
 
 import json
 import os
@@ -8,14 +9,17 @@ import subprocess
 import unittest
 
 from mini_cheetah import ROOT, model_tool, skip_reason
-from rbdcgen import expr as ex
-from rbdcgen.coupling import tree_view
+from numeric_check import evaluate as numeric_evaluate, random_state
+from test_derivatives import ALL, CASES, TOLERANCE, central_difference, relative_error
+from rbdcgen.graph import expr as ex
+from rbdcgen.views.coupled import tree_view
 from rbdcgen.errors import RbdcError
-from rbdcgen.ir import load_ir
-from rbdcgen.scene import Scene
-from rbdcgen.trace import trace_function
+from rbdcgen.frontend.ir import load_ir
+from rbdcgen.frontend.scene import Scene
+from rbdcgen.passes.trace import trace_function
 
 GRIPPER = os.path.join(ROOT, "tests", "data", "two_finger_gripper.urdf")
+MIMIC_CHAIN = os.path.join(ROOT, "tests", "data", "mimic_chain.urdf")
 
 
 def load(path, base="fixed"):
@@ -66,6 +70,40 @@ class TwoFingerGripper(unittest.TestCase):
     def test_functions_without_a_projection_are_refused(self):
         with self.assertRaisesRegex(RbdcError, "osc_open_chain is not supported with mimic couplings"):
             trace_function(load(GRIPPER, "floating"), Scene(base="floating"), "osc_open_chain")
+
+
+@unittest.skipIf(skip_reason(), skip_reason())
+class CoupledDerivatives(unittest.TestCase):
+    """∂τ' = Gᵀ ∂τ G and the forward-dynamics derivatives in independent coordinates equal central
+    differences of the coupled robot's own inverse and forward dynamics (on the manifold for a
+    floating base): a chain of two mimics (one with offset and multiplier -3) and the gripper."""
+
+    def check(self, robot):
+        state = random_state(robot, len(robot.feet), 5)
+        for name in ("inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives",
+                     "forward_dynamics_derivatives", "feet_force_term_derivatives"):
+            if name == "feet_force_term_derivatives" and not robot.feet:
+                continue
+            got = numeric_evaluate(trace_function(robot, ALL, name), state)
+            for output, primal_name, primal_output, wrt in CASES[name]:
+                at = dict(state, a=[0.0] * robot.nv) if name == "bias_derivatives" else state
+                primal = trace_function(robot, ALL, primal_name)
+                want = central_difference(robot, primal, primal_output, at, wrt)
+                with self.subTest(robot=robot.name, base=robot.floating_base, output=output):
+                    self.assertEqual(len(got[output]), len(want))
+                    self.assertLess(relative_error(got[output], want), TOLERANCE)
+
+    def test_mimic_chain(self):
+        for base in ("fixed", "floating"):
+            self.check(load(MIMIC_CHAIN, base))
+
+    def test_gripper(self):
+        for base in ("fixed", "floating"):
+            self.check(load(GRIPPER, base))
+
+    def test_tangent_propagated_derivatives_are_refused(self):
+        with self.assertRaisesRegex(RbdcError, "feet_velocity_derivatives is not supported with mimic"):
+            trace_function(load(GRIPPER), ALL, "feet_velocity_derivatives")
 
 
 if __name__ == "__main__":

@@ -9,16 +9,17 @@ import mini_cheetah
 from mini_cheetah import SCENES
 from numeric_check import DATA, evaluate, operator_count, random_state
 
-from rbdcgen import expr as ex
-from rbdcgen import flops_report
-from rbdcgen.algorithms.model import TracedModel
-from rbdcgen.emit import emit_body
-from rbdcgen.flops import count_ops, generic_ops
-from rbdcgen.ir import load_ir
-from rbdcgen.pipeline import Compilation
-from rbdcgen.manifold import configuration_seeds, integrate, q_direction
-from rbdcgen.scene import DERIVATIVES, SceneError, default_scene, load_scene, scene_from_dict
-from rbdcgen.trace import trace_function, trace_scene
+from rbdcgen.graph import expr as ex
+from rbdcgen.commands import flops_report
+from rbdcgen.views.scalar import TracedModel
+from rbdcgen.backend.emit import emit_body
+from rbdcgen.graph.flops import count_ops, generic_ops
+from rbdcgen.frontend.ir import load_ir
+from rbdcgen.commands.pipeline import Compilation
+from rbdcgen.graph.manifold import configuration_seeds, integrate, q_direction
+from rbdcgen.frontend.scene import CONTACT_DERIVATIVES, DERIVATIVES, SceneError, default_scene, load_scene, scene_from_dict
+from rbdcgen.passes.trace import trace_function
+from rbdcgen.passes.schedule import trace_scene
 
 STEP = 1e-6
 # Central differences: truncation h² ~ 1e-12 and round-off ε/h ~ 1e-10, relative to the largest entry.
@@ -109,24 +110,25 @@ class TangentsEqualFiniteDifferences(unittest.TestCase):
 
 class AnalyticRecursionsEqualTangents(unittest.TestCase):
     """The analytic recursions (algorithms/rnea_derivatives.py, feet_force_derivatives.py) equal the
-    tangents of the traced primal (derivatives.propagate, the method kept for robots with rotors) to
+    tangents of the traced primal (differentiate.propagate, the method kept for robots with rotors) to
     round-off: two independent derivations inside the generator, floating and fixed base."""
 
     def check_robot(self, robot, seed=3):
-        from rbdcgen import derivatives, spatial as sp
+        from rbdcgen.passes import differentiate
+        from rbdcgen.graph import spatial as sp
         from rbdcgen.algorithms import rnea
         from rbdcgen.algorithms.feet_force_derivatives import feet_force_term_derivatives
         state = random_state(robot, len(robot.feet), seed)
         with ex.Graph():
             m = TracedModel(robot, ALL)
             zero = sp.zeros(6)
-            pairs = [(derivatives.inverse_dynamics_derivatives(m),
-                      derivatives._q_and_v(m, rnea.inverse_dynamics(m), "dtau_dq", "dtau_dv")),
-                     (derivatives.bias_derivatives(m),
-                      derivatives._q_and_v(m, rnea.rnea(m, rnea.base_acceleration(m, zero), None, True),
+            pairs = [(differentiate.inverse_dynamics_derivatives(m),
+                      differentiate._q_and_v(m, rnea.inverse_dynamics(m), "dtau_dq", "dtau_dv")),
+                     (differentiate.bias_derivatives(m),
+                      differentiate._q_and_v(m, rnea.rnea(m, rnea.base_acceleration(m, zero), None, True),
                                            "dbias_dq", "dbias_dv"))]
             if robot.feet:
-                tangents = derivatives.jacobian_columns(rnea.feet_force_terms(m), configuration_seeds(m),
+                tangents = differentiate.jacobian_columns(rnea.feet_force_terms(m), configuration_seeds(m),
                                                         [q_direction(k) for k in range(robot.nv)])
                 rows = feet_force_term_derivatives(m)
                 analytic = [rows[r][c] for c in range(robot.nv) for r in range(robot.nv)]
@@ -215,8 +217,12 @@ class Scenes(unittest.TestCase):
                           if f.name.endswith("_derivatives")], [])
 
     def test_the_bundled_derivatives_scene_asks_for_every_derivative(self):
+        """Every one but the contact dynamics', which the contact scene asks for."""
         scene = load_scene(os.path.join(SCENES, "derivatives.yaml"))
-        self.assertEqual(scene.derivatives_for(FLOATING), DERIVATIVES)
+        self.assertEqual(scene.derivatives_for(FLOATING),
+                         tuple(d for d in DERIVATIVES if d not in CONTACT_DERIVATIVES))
+        self.assertEqual(load_scene(os.path.join(SCENES, "contact.yaml")).derivatives_for(FLOATING),
+                         CONTACT_DERIVATIVES)
         self.assertIn("inverse_dynamics", scene.quantities_for(FLOATING))
 
     def test_bad_derivative_lists_are_refused(self):

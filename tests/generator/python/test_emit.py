@@ -9,21 +9,22 @@ import sys
 import unittest
 
 from numeric_check import DATA, HERE, operator_count
-from rbdcgen import expr as ex
-from rbdcgen.emit import MAX_INLINE_OPS, emit_body, format_constant
-from rbdcgen.ir import load_ir
-from rbdcgen.scene import default_scene
-from rbdcgen.trace import Argument, Function, trace_function, trace_scene
+from rbdcgen.graph import expr as ex
+from rbdcgen.backend.emit import MAX_INLINE_OPS, emit_body, format_constant
+from rbdcgen.frontend.ir import load_ir
+from rbdcgen.frontend.scene import default_scene
+from rbdcgen.passes.trace import Argument, Function, trace_function
+from rbdcgen.passes.schedule import trace_scene
 
 ROBOT = load_ir(os.path.join(DATA, "tiny_floating.json"))
 
 SCRIPT = """
 import sys
 sys.path.insert(0, %r)
-from rbdcgen.ir import load_ir
-from rbdcgen.scene import default_scene
-from rbdcgen.trace import trace_scene
-from rbdcgen.emit import emit_body
+from rbdcgen.frontend.ir import load_ir
+from rbdcgen.frontend.scene import default_scene
+from rbdcgen.passes.schedule import trace_scene
+from rbdcgen.backend.emit import emit_body
 robot = load_ir(%r)
 for fn in trace_scene(robot, default_scene()):
     print(fn.name)

@@ -1,10 +1,10 @@
-"""Folding rules, hash-consing (CSE), reachability (DCE) and the DAG evaluator of rbdcgen.expr."""
+"""Folding rules, hash-consing (CSE), reachability (DCE) and the DAG evaluator of rbdcgen.graph.expr."""
 
 import math
 import unittest
 
 import numeric_check  # noqa: F401  (puts the generator on sys.path)
-from rbdcgen import expr as ex
+from rbdcgen.graph import expr as ex
 
 
 class Folding(unittest.TestCase):

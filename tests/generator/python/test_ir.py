@@ -8,7 +8,7 @@ import os
 import unittest
 
 from numeric_check import DATA
-from rbdcgen.ir import IRError, load_ir
+from rbdcgen.frontend.ir import IRError, load_ir
 
 PATH = os.path.join(DATA, "tiny_floating.json")
 with open(PATH, encoding="utf-8") as handle:

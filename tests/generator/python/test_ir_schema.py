@@ -1,5 +1,5 @@
 """docs/ir.schema.json against both sides of the IR: what rbdc-model writes for every bundled robot
-is valid, every valid fixture loads in rbdcgen.ir, and what the schema refuses (a required key
+is valid, every valid fixture loads in rbdcgen.frontend.ir, and what the schema refuses (a required key
 missing, a value of the wrong type) the reader refuses too."""
 
 import copy
@@ -12,7 +12,7 @@ import unittest
 import mini_cheetah
 from json_schema import SchemaError, errors
 from numeric_check import DATA
-from rbdcgen.ir import IRError, load_ir
+from rbdcgen.frontend.ir import IRError, load_ir
 
 SCHEMA_PATH = os.path.join(mini_cheetah.ROOT, "docs", "ir.schema.json")
 with open(SCHEMA_PATH, encoding="utf-8") as handle:

@@ -11,14 +11,14 @@ from dataclasses import replace
 import mini_cheetah
 from numeric_check import evaluate, max_relative_error, random_state
 
-from rbdcgen import expr as ex
-from rbdcgen.emit import emit_body
-from rbdcgen.flops import count_ops
-from rbdcgen.ir import Actuator
-from rbdcgen.lane_functions import SCALAR
-from rbdcgen.limbs import LimbError, isomorphic_limbs
-from rbdcgen.scene import default_scene
-from rbdcgen.trace import trace_function
+from rbdcgen.graph import expr as ex
+from rbdcgen.backend.emit import emit_body
+from rbdcgen.graph.flops import count_ops
+from rbdcgen.frontend.ir import Actuator
+from rbdcgen.passes.lane_functions import SCALAR
+from rbdcgen.views.limbs import LimbError, isomorphic_limbs
+from rbdcgen.frontend.scene import default_scene
+from rbdcgen.passes.trace import trace_function
 
 
 class LaneConstants(unittest.TestCase):

@@ -9,9 +9,9 @@ from numeric_check import DATA, evaluate, flatten_columns, flatten_matrix, max_r
     random_state
 from reference import Reference, constrained_osc, ltdl
 
-from rbdcgen.ir import load_ir
-from rbdcgen.scene import default_scene, scene_from_dict
-from rbdcgen.trace import trace_function
+from rbdcgen.frontend.ir import load_ir
+from rbdcgen.frontend.scene import default_scene, scene_from_dict
+from rbdcgen.passes.trace import trace_function
 
 TOLERANCE = 1e-12
 # The reference inverts the mass matrix augmented by ground masses up to 1e3 kg; its condition

@@ -6,10 +6,10 @@ import unittest
 
 from numeric_check import DATA
 from rbdcgen.errors import RbdcError
-from rbdcgen.ir import load_ir
-from rbdcgen.layout import find_layout
-from rbdcgen.pipeline import compile_robot, resolve_base
-from rbdcgen.scene import Scene, default_scene
+from rbdcgen.frontend.ir import load_ir
+from rbdcgen.frontend.layout import find_layout
+from rbdcgen.commands.pipeline import compile_robot, resolve_base
+from rbdcgen.frontend.scene import Scene, default_scene
 
 FIXED = os.path.join(DATA, "tiny_fixed.json")
 FLOATING = os.path.join(DATA, "tiny_floating.json")

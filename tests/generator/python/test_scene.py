@@ -7,10 +7,11 @@ import unittest
 
 from mini_cheetah import SCENES
 from numeric_check import DATA, evaluate, random_state
-from rbdcgen.flops import count_ops
-from rbdcgen.ir import load_ir
-from rbdcgen.scene import QUANTITIES, SceneError, default_scene, load_scene, scene_from_dict
-from rbdcgen.trace import trace_function, trace_scene
+from rbdcgen.graph.flops import count_ops
+from rbdcgen.frontend.ir import load_ir
+from rbdcgen.frontend.scene import QUANTITIES, SceneError, default_scene, load_scene, scene_from_dict
+from rbdcgen.passes.trace import trace_function
+from rbdcgen.passes.schedule import trace_scene
 
 ROBOT = load_ir(os.path.join(DATA, "tiny_floating.json"))
 FIXED = load_ir(os.path.join(DATA, "tiny_fixed.json"))

@@ -7,8 +7,8 @@ import unittest
 
 import reference as ref
 from numeric_check import max_relative_error
-from rbdcgen import expr as ex
-from rbdcgen import spatial as sp
+from rbdcgen.graph import expr as ex
+from rbdcgen.graph import spatial as sp
 
 ROTATION = ref.transpose(ref.axis_rotation([0.2, -0.5, 0.7], 0.8))
 TRANSLATION = [0.1, -0.25, 0.3]

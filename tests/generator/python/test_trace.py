@@ -6,11 +6,12 @@ import os
 import unittest
 
 from numeric_check import DATA, evaluate, max_relative_error, random_state
-from rbdcgen.emit import emit_body
-from rbdcgen.flops import count_ops
-from rbdcgen.ir import load_ir
-from rbdcgen.scene import default_scene
-from rbdcgen.trace import TraceError, trace_function, trace_scene
+from rbdcgen.backend.emit import emit_body
+from rbdcgen.graph.flops import count_ops
+from rbdcgen.frontend.ir import load_ir
+from rbdcgen.frontend.scene import default_scene
+from rbdcgen.passes.trace import TraceError, trace_function
+from rbdcgen.passes.schedule import trace_scene
 
 with open(os.path.join(DATA, "tiny_floating.json"), encoding="utf-8") as handle:
     RAW = json.load(handle)

@@ -1,0 +1,1 @@
+"""How a traced function is written out: emission order and lanes, names, the templates."""

@@ -1,0 +1,276 @@
+"""Back end of the middle: a traced Function's DAG as straight-line C++ statements.
+
+The statements are the body of
+    template <class Scalar> void NAME(const Scalar* q, …, Scalar* out, …) noexcept
+Inputs are read as `q[k]`, each output entry is written exactly once as `M[k] = …;` (column-major,
+zeros and mirrored entries included). sin/cos of the joint angles come first, in one block: the
+angles are gathered into an array and `joint_sincos` (rbdc_gen/support.hpp) computes them all at once
+(a vectorised polynomial for double and float), named by joint (`sin_LF_knee`); then
+every node used more than once becomes `const Scalar tN = …;` in the order the algorithm created
+them (expr.Expr.position, kept topological), and nodes used
+once are inlined into their single user, up to MAX_INLINE_OPS operations per expression. Each output
+entry is stored right after the last temporary it needs (constant entries first), so its operands
+need not stay live to the end of the function: outputs must not overlap inputs
+(docs/generated_api.md). The trailing run of stores is headed by `// outputs`. A comment
+names the phase of the algorithm (expr labels: `// outward pass: body 3 LF_knee`) where it changes.
+Constants print in their shortest round-trip form and a negative constant operand of + or − flips
+the operator (`x + Scalar(0.5)`, never `x - Scalar(-0.5)`). Same DAG in, same text out.
+
+A lane function (fn.lanes, views/limb_lanes.py) also declares `Lane = Lanes<Scalar>` (rbdc_gen/lanes.hpp),
+its lane inputs and constants as arrays `lane_v[…]`, `lane_c[…]` of make_lanes(…), loads the sin/cos
+of a lane angle from ex.LANES consecutive joint_trig entries, declares lane temporaries `const Lane`,
+reads lane k of a lane value as `t7[k]`, and writes each run of ex.LANES consecutive output entries
+with one vector store, `store_lanes(M + 8, make_lanes(…));`."""
+
+from __future__ import annotations
+
+from ..graph import expr as ex
+
+_BINARY_SYMBOL = {"add": "+", "sub": "-", "mul": "*", "div": "/"}
+# A single-use node whose inlined text would hold more operations than this gets a temporary
+# anyway: readable lines and bounded recursion for long chains (e.g. sums over many children).
+MAX_INLINE_OPS = 12
+ANGLES_PER_LINE = 8  # entries per line of the joint angle array
+
+
+def format_constant(value):
+    """The double in its shortest form that reads back exactly (Python's repr), whole numbers
+    without a fraction.
+
+    >>> format_constant(0.049), format_constant(1e-05), format_constant(2.0), format_constant(-1e+16)
+    ('Scalar(0.049)', 'Scalar(1e-05)', 'Scalar(2)', 'Scalar(-1e+16)')
+    """
+    return "Scalar(%s)" % repr(value).removesuffix(".0")
+
+
+def _is_negative_const(node):
+    return node.op == "const" and node.value < 0.0
+
+
+def _signed_operands(node):
+    """(left, symbol, right) of a + or − node, the sign of a negative constant operand folded into
+    the operator: x − (−c) → x + c, x + (−c) → x − c, (−c) + x → x − c (right is then the float c).
+    Same value, same cost."""
+    x, y = node.args
+    symbol = _BINARY_SYMBOL[node.op]
+    if node.op == "add" and _is_negative_const(x) and not _is_negative_const(y):
+        x, y = y, x
+    if _is_negative_const(y):
+        return x, "-" if symbol == "+" else "+", -y.value
+    return x, symbol, y
+
+
+def _is_joint_trig(node):
+    return node.op in ("sin", "cos") and node.args[0].op == "sym"
+
+
+def schedule(fn):
+    """(trig block, ordered temporaries, use counts) of the function's live DAG."""
+    outputs = fn.output_exprs()
+    order = ex.reachable(outputs)
+    uses = {}
+    for node in order:
+        for arg in node.args:
+            uses[arg.id] = uses.get(arg.id, 0) + 1
+    for node in outputs:
+        uses[node.id] = uses.get(node.id, 0) + 1
+    trig = sorted((n for n in order if _is_joint_trig(n)),
+                  key=lambda n: (n.args[0].value, n.op == "cos"))
+    temp_ids = set()
+    size = {}  # operations in a node's inlined text
+    for n in order:
+        if n.op in ("const", "sym") or _is_joint_trig(n):
+            size[n.id] = 0
+            continue
+        while 1 + sum(size[a.id] for a in n.args) > MAX_INLINE_OPS:
+            largest = max(n.args, key=lambda a: size[a.id])  # give it its own statement
+            temp_ids.add(largest.id)
+            size[largest.id] = 0
+        size[n.id] = 1 + sum(size[a.id] for a in n.args)
+        if uses[n.id] > 1:
+            temp_ids.add(n.id)
+            size[n.id] = 0
+    # In the order the algorithm created them, so that its phases read top to bottom. A node's place
+    # is its creation position, moved after its operands' places where a rewrite reused a later node;
+    # ties keep the depth-first order, so operands still come first.
+    place = {}
+    for index, n in enumerate(order):
+        operands = [place[a.id][0] for a in n.args if a.op not in ("const", "sym")]
+        place[n.id] = (max([n.position] + operands), index)
+    temps = sorted((n for n in order if n.id in temp_ids), key=lambda n: place[n.id])
+    return trig, temps, uses
+
+
+def _trig_block(trig, names, text, angle_names, lanes=None):
+    """Statements computing the joint sin/cos nodes `trig` in one joint_sincos call; names each node
+    after its joint (`sin_LF_knee`, angle_names: input symbol → identifier), else `sin_q_7`.
+    A lane angle (`lanes`: the function's LaneLayout) takes ex.LANES consecutive entries, so its sin
+    and cos are loaded as one lane value (lane angles sort first: their slots are aligned)."""
+    if not trig:
+        return []
+    slot = {}  # angle symbol id -> its index in joint_angle, in trig order
+    entries = []
+    for node in trig:
+        angle = node.args[0]
+        if angle.id not in slot:
+            slot[angle.id] = len(entries)
+            if angle.lane:
+                entries += ["%s[%d]" % source for source in lanes.inputs[angle.value[0]][angle.value[1]]]
+            else:
+                entries.append(text(angle, False))
+    n = len(entries)
+    rows = [", ".join(entries[i:i + ANGLES_PER_LINE]) for i in range(0, n, ANGLES_PER_LINE)]
+    lines = ["// sines and cosines of the joint angles",
+             "const Scalar joint_angle[%d] = {%s};" % (n, (",\n    ").join(rows)),
+             "const auto joint_trig = joint_sincos(joint_angle);"]
+    for node in trig:
+        angle = node.args[0].value
+        name = "%s_%s" % (node.op, angle_names.get(angle) or "%s_%d" % angle)
+        if node.lane:
+            lines.append("const Lane %s = load_lanes(joint_trig.%s + %d);"
+                         % (name, node.op, slot[node.args[0].id]))
+        else:
+            lines.append("const Scalar %s = joint_trig.%s[%d];" % (name, node.op, slot[node.args[0].id]))
+        names[node.id] = name
+    return lines
+
+
+def _lane_block(fn, order, names):
+    """A lane function's lane type, its lane inputs (those used other than by joint sin/cos) and the
+    lane constants it uses, each a lane_x[…] array of make_lanes(lane 0, …, lane 3); the used lane
+    constants are numbered afresh (`names`)."""
+    lanes = fn.lanes
+    # lane symbols read by the statements (a lane angle's sin/cos read its lanes from joint_trig)
+    symbols = {a.id: a for n in order if not _is_joint_trig(n) for a in n.args if a.op == "sym" and a.lane}
+    used = {n.value[0] for n in symbols.values()} - {ex.LANE_CONSTANTS}
+    constants = sorted((n for n in symbols.values() if n.value[0] == ex.LANE_CONSTANTS),
+                       key=lambda n: n.value[1])
+    for k, node in enumerate(constants):
+        names[node.id] = "%s[%d]" % (ex.LANE_CONSTANTS, k)
+    lines = ["// the isomorphic limbs, one per lane; %s: constants that differ between them"
+             % ex.LANE_CONSTANTS, "using Lane = Lanes<Scalar>;"]
+    arrays = [(name, ["make_lanes(%s)" % ", ".join("%s[%d]" % s for s in sources)
+                      for sources in lanes.inputs[name]]) for name in sorted(used)]
+    arrays.append((ex.LANE_CONSTANTS, ["make_lanes(%s)" % ", ".join(format_constant(v) for v in
+                                                                   lanes.constants[n.value[1]])
+                                       for n in constants]))
+    for name, items in arrays:
+        if items:
+            lines.append("const Lane %s[%d] = {%s};" % (name, len(items), ",\n    ".join(items)))
+    return lines
+
+
+def _marker(label):
+    return "// " + " ".join(label.split())  # one line, whatever the robot's names hold
+
+
+def emit_body(fn, angle_names=None):
+    """C++ statements (list of str, no indentation) computing every output of `fn`; `angle_names`
+    maps an input symbol such as ("q", 7) to the identifier its sin/cos are named by."""
+    trig, temps, uses = schedule(fn)
+    names = {}
+    lines = []
+
+    def text(node, nested):
+        if node.id in names:
+            return names[node.id]
+        if node.op == "const":
+            return format_constant(node.value)
+        if node.op == "sym":
+            return "%s[%d]" % node.value
+        if node.op == "lane_get":
+            return "%s[%d]" % (text(node.args[0], True), node.value)
+        if node.op == "neg":
+            body = "-" + text(node.args[0], True)
+        elif node.op in ("add", "sub"):
+            x, symbol, y = _signed_operands(node)
+            right = format_constant(y) if isinstance(y, float) else text(y, True)
+            body = "%s %s %s" % (text(x, True), symbol, right)
+        elif node.op in _BINARY_SYMBOL:
+            body = "%s %s %s" % (text(node.args[0], True), _BINARY_SYMBOL[node.op],
+                                 text(node.args[1], True))
+        else:
+            return "%s(%s)" % (node.op, text(node.args[0], False))
+        return "(%s)" % body if nested else body
+
+    angle_names = dict(angle_names or {})
+    if fn.lanes is not None:
+        lines += _lane_block(fn, ex.reachable(fn.output_exprs()), names)
+        angle_names.update(fn.lanes.angle_names)
+    lines += _trig_block(trig, names, text, angle_names, fn.lanes)
+    label = None
+    index = 0
+    items = _early_stores(fn, temps)
+    tail = len(items)  # the trailing run of output stores gets the "// outputs" marker
+    while tail > 0 and isinstance(items[tail - 1], list):
+        tail -= 1
+    for position, item in enumerate(items):
+        if position == tail:
+            lines.append("// outputs")
+        if isinstance(item, list):  # output entries, stored as soon as their values are computed
+            arg_name, k, node = item[0]
+            if len(item) == 1:
+                lines.append("%s[%d] = %s;" % (arg_name, k, text(node, False)))
+            else:
+                lines.append("store_lanes(%s + %d, make_lanes(%s));"
+                             % (arg_name, k, ", ".join(text(e[2], False) for e in item)))
+            continue
+        node = item
+        if node.label is not None and node.label != label:
+            label = node.label
+            lines.append(_marker(label))
+        name = "t%d" % index
+        index += 1
+        lines.append("const %s %s = %s;" % ("Lane" if node.lane else "Scalar", name, text(node, False)))
+        names[node.id] = name
+    return lines
+
+
+def _store_units(fn):
+    """The written output entries (argument name, index, node) grouped as they are stored: one by
+    one; in a lane function, each run of consecutive written entries of an argument in vector
+    stores of ex.LANES from the run's start (the Mini Cheetah's M in lanes: its 324 scalar stores
+    were the bottleneck, 172 -> 110 ns with g++; docs/performance.md), the rest one by one."""
+    width = ex.LANES if fn.lanes is not None else 1
+    units = []
+    for arg in fn.outputs:
+        runs = []  # maximal runs of consecutive written entries
+        for k, node in enumerate(fn.values[arg.name]):
+            if node is None:
+                continue
+            if not runs or runs[-1][-1][1] != k - 1:
+                runs.append([])
+            runs[-1].append((arg.name, k, node))
+        for run in runs:
+            whole = len(run) - len(run) % width
+            units += [run[i:i + width] for i in range(0, whole, width)]
+            units += [[entry] for entry in run[whole:]]
+    return units
+
+
+def _early_stores(fn, temps):
+    """Creation order of the temporaries, each store unit (_store_units) right after the last
+    temporary its entries need (the passes stay in order, each marker heads one pass)."""
+    place = {n.id: i for i, n in enumerate(temps)}
+
+    def finish(node):  # place of the last temporary an output entry needs (inlined nodes included)
+        best, stack, seen = -1, [node], set()
+        while stack:
+            n = stack.pop()
+            if n.id in seen:
+                continue
+            seen.add(n.id)
+            if n.id in place:
+                best = max(best, place[n.id])
+            else:
+                stack.extend(n.args)
+        return best
+
+    after = {}
+    for unit in _store_units(fn):
+        after.setdefault(max(finish(entry[2]) for entry in unit), []).append(unit)
+    items = list(after.get(-1, []))
+    for i, n in enumerate(temps):
+        items.append(n)
+        items += after.get(i, [])
+    return items

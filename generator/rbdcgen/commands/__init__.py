@@ -1,0 +1,1 @@
+"""The command line and what each subcommand does; pipeline composes the stages."""

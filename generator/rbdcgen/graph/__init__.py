@@ -1,0 +1,1 @@
+"""The expression graph, its folding, spatial algebra over symbols, the manifold, operation counts."""

@@ -1,0 +1,1 @@
+"""From algorithms to traced functions: the function tables, tracing, differentiation, projection onto couplings."""

@@ -1,0 +1,373 @@
+"""Derivatives of the dynamics from the traced graph: forward-mode tangents of the DAG.
+
+`propagate` pushes tangents through a DAG in topological order, one sparse {direction: Expr} map
+per node, with the folding constructors of expr.py: a node that does not depend on a direction
+has no entry for it, so the zeros of the tree's sparsity never appear (a joint's angle only
+reaches its subtree outward and its ancestors inward), and CSE merges the tangent work that
+directions share with the primal (e.g. d sin q = cos q, which is already a node). The manifold
+seeding of ∂/∂q lives in manifold.py.
+
+Quantities (docs/conventions.md "Derivatives", docs/generator.md says why each takes its method):
+    inverse_dynamics_derivatives   ∂τ/∂q, ∂τ/∂v of τ = RNEA(q, v, a)          tangents
+    bias_derivatives               ∂(c + g)/∂q, ∂(c + g)/∂v                  tangents
+    gravity_derivatives            ∂g/∂q                                     tangents
+    feet_velocity_derivatives      ∂ṗ_feet/∂q                                tangents
+    feet_force_term_derivatives    ∂(Jᵀf)/∂q at fixed world forces           tangents
+    forward_dynamics_derivatives   ∂a/∂q, ∂a/∂v = −M⁻¹ ∂(RNEA − τ_e)/∂(q, v) at the forward-dynamics
+                                   result, ∂a/∂τ = M⁻¹Sᵀ, ∂a/∂f = M⁻¹Jᵀ, all by multi-right-hand-side
+                                   solves with the LᵀDL factor forward_dynamics already traces
+    contact_dynamics_derivatives   ∂(a, λ)/∂(q, v, τ) of contact_dynamics: the KKT rows differentiated
+                                   at held (a, λ) (the RNEA − Jᵀλ residual as above, tangents of the
+                                   contact points' J a + J̇v), solved through the Delassus factor
+"""
+
+from __future__ import annotations
+
+from ..graph import expr as ex
+from ..graph import spatial as sp
+from ..algorithms import forward_dynamics as fd
+from ..algorithms import contact_dynamics as cd
+from ..algorithms import feet_force_derivatives, jacobian, kinematics, rnea
+from ..algorithms.crba import mass_matrix
+from ..algorithms.rnea_derivatives import has_rotors, rnea_derivatives
+from ..graph.manifold import configuration_seeds, q_direction, v_direction, velocity_seeds
+
+# The primal function each derivative is compared with in `rbdc flops` (the issue's targets are
+# ratios to one primal call). bias_derivatives differentiates inverse dynamics at a = 0.
+PRIMAL = {
+    "inverse_dynamics_derivatives": "inverse_dynamics",
+    "bias_derivatives": "inverse_dynamics",
+    "gravity_derivatives": "gravity_terms",
+    "forward_dynamics_derivatives": "forward_dynamics",
+    "feet_velocity_derivatives": "feet_velocities",
+    "feet_force_term_derivatives": "feet_force_terms",
+    "contact_dynamics_derivatives": "contact_dynamics",
+}
+
+
+def _merge(x, y, combine, only_x, only_y):
+    """Tangent map of a binary node from its operands' maps."""
+    out = {}
+    for k, tx in x.items():
+        ty = y.get(k)
+        out[k] = only_x(tx) if ty is None else combine(tx, ty)
+    for k, ty in y.items():
+        if k not in x:
+            out[k] = only_y(ty)
+    return {k: t for k, t in out.items() if not t.is_const(0.0)}
+
+
+def propagate(outputs, seeds):
+    """Forward mode over the DAG reaching `outputs`: {direction: tangent Expr} of each output.
+
+    `seeds` maps a node id to its tangents; a seeded node takes them as given (symbols, and the
+    intermediate nodes whose tangent is known in closed form); every other leaf has none."""
+    tangents = {}
+    reciprocal = {}   # div: 1/b once per denominator, shared by all directions
+
+    def inverse(b):
+        if b.id not in reciprocal:
+            reciprocal[b.id] = ex.const(1.0) / b
+        return reciprocal[b.id]
+
+    for node in ex.reachable(outputs):
+        if node.id in seeds:
+            tangents[node.id] = seeds[node.id]
+            continue
+        if node.op in ("const", "sym"):
+            tangents[node.id] = {}
+            continue
+        a = node.args
+        t = [tangents[x.id] for x in a]
+        if not any(t):
+            tangents[node.id] = {}
+            continue
+        op = node.op
+        if op == "neg":
+            out = {k: -d for k, d in t[0].items()}
+        elif op == "add":
+            out = _merge(t[0], t[1], lambda x, y: x + y, lambda x: x, lambda y: y)
+        elif op == "sub":
+            out = _merge(t[0], t[1], lambda x, y: x - y, lambda x: x, lambda y: -y)
+        elif op == "mul":
+            out = _merge(t[0], t[1], lambda x, y: x * a[1] + a[0] * y,
+                         lambda x: x * a[1], lambda y: a[0] * y)
+        elif op == "div":
+            # d(a/b) = (da − (a/b) db)/b; with a = 1 (pivots) that is −(1/b)² db.
+            r = inverse(a[1])
+            if a[0].is_const(1.0):
+                square = node * node
+                out = {k: -(square * d) for k, d in t[1].items()}
+            else:
+                ratio = node * r
+                out = _merge(t[0], t[1], lambda x, y: x * r - ratio * y,
+                             lambda x: x * r, lambda y: -(ratio * y))
+        elif op == "sin":
+            out = {k: ex.cos(a[0]) * d for k, d in t[0].items()}
+        elif op == "cos":
+            out = {k: -(ex.sin(a[0]) * d) for k, d in t[0].items()}
+        elif op == "sqrt":
+            half = ex.const(0.5) / node
+            out = {k: half * d for k, d in t[0].items()}
+        else:
+            raise AssertionError("rbdcgen.derivatives: no tangent rule for '%s'" % op)
+        tangents[node.id] = {k: d for k, d in out.items() if not d.is_const(0.0)}
+    return [tangents[node.id] for node in outputs]
+
+
+def jacobian_columns(outputs, seeds, directions):
+    """Column-major entries of ∂outputs/∂directions (len(outputs) × len(directions))."""
+    zero = ex.const(0.0)
+    maps = propagate(list(outputs), seeds)
+    return tuple(t.get(d, zero) for d in directions for t in maps)
+
+
+def _q_dirs(m):
+    return [q_direction(k) for k in range(m.robot.nv)]
+
+
+def _v_dirs(m):
+    return [v_direction(k) for k in range(m.robot.nv)]
+
+
+def _state_seeds(m, with_velocity=True):
+    seeds = configuration_seeds(m)
+    if with_velocity:
+        for node_id, tangent in velocity_seeds(m).items():
+            seeds.setdefault(node_id, {}).update(tangent)
+    return seeds
+
+
+def _q_and_v(m, outputs, q_name, v_name):
+    seeds = _state_seeds(m)
+    return {q_name: jacobian_columns(outputs, seeds, _q_dirs(m)),
+            v_name: jacobian_columns(outputs, seeds, _v_dirs(m))}
+
+
+def _trunk_acceleration(m):
+    return m.a[0:6] if m.robot.floating_base else sp.zeros(6)
+
+
+def _column_major(rows):
+    n = len(rows)
+    return tuple(rows[r][c] for c in range(len(rows[0]) if rows else 0) for r in range(n))
+
+
+def _rnea_q_and_v(m, base_acceleration, joint_accelerations, with_velocity, names):
+    """∂/∂q and ∂/∂v of rnea.rnea(m, ...) (no external forces): the analytic recursion, or the
+    tangents of the traced RNEA for a robot with rotors (which the recursion does not model)."""
+    if has_rotors(m.robot):
+        tau = rnea.rnea(m, base_acceleration, joint_accelerations, with_velocity)
+        return _q_and_v(m, tau, *names)
+    dq, dv = rnea_derivatives(m, base_acceleration, joint_accelerations, with_velocity)
+    return {name: _column_major(m.scatter_matrix(rows)) for name, rows in zip(names, (dq, dv))}
+
+
+def inverse_dynamics_derivatives(m):
+    return _rnea_q_and_v(m, rnea.base_acceleration(m, _trunk_acceleration(m)),
+                         rnea.joint_accelerations(m), True, ("dtau_dq", "dtau_dv"))
+
+
+def bias_derivatives(m):
+    return _rnea_q_and_v(m, rnea.base_acceleration(m, sp.zeros(6)), None, True,   # c + g
+                         ("dbias_dq", "dbias_dv"))
+
+
+def gravity_derivatives(m):
+    out = _rnea_q_and_v(m, rnea.gravity_acceleration(m), None, False, ("dg_dq", "dg_dv"))
+    return {"dg_dq": out["dg_dq"]}
+
+
+def feet_velocity_derivatives(m):
+    pdot = [x for foot in kinematics.feet_velocities(m) for x in foot]
+    return {"dpdot_dq": jacobian_columns(pdot, configuration_seeds(m), _q_dirs(m))}
+
+
+def feet_force_term_derivatives(m):
+    return {"dtau_e_dq": _column_major(feet_force_derivatives.feet_force_term_derivatives(m))}
+
+
+def _solve_columns(m, columns):
+    """M⁻¹ applied to each column (a list of nv-vectors) with the factor of forward_dynamics:
+    the same LᵀDL nodes (hash-consing makes the second trace of M and its factor free)."""
+    parents = fd.dof_parents(m.robot)
+    L, inv_diag = fd.ltdl(mass_matrix(m), parents)
+    return [fd.ltdl_solve(L, inv_diag, parents, col) for col in columns]
+
+
+_BUILD = {"neg": ex.neg, "add": ex.add, "sub": ex.sub, "mul": ex.mul, "div": ex.div,
+          "sin": ex.sin, "cos": ex.cos, "sqrt": ex.sqrt, "lane_sum": ex.lane_sum}
+
+
+def substitute(outputs, replacement):
+    """`outputs` rebuilt (with folding) with the nodes of `replacement` ({node id: Expr}) replaced."""
+    new = {}
+    for node in ex.reachable(outputs):
+        if node.id in replacement:
+            new[node.id] = replacement[node.id]
+        elif not node.args:
+            new[node.id] = node
+        else:
+            args = [new[a.id] for a in node.args]
+            if all(x is y for x, y in zip(args, node.args)):
+                new[node.id] = node
+            elif node.op == "lane_get":
+                new[node.id] = ex.lane_get(args[0], node.value)
+            else:
+                new[node.id] = _BUILD[node.op](*args)
+    return [new[node.id] for node in outputs]
+
+
+def residual_derivatives(m):
+    """∂/∂q and ∂/∂v (nv × nv rows) of the forward-dynamics residual RNEA(q, v, a) − τ_e(q, f) at
+    the placeholder symbols a: the analytic recursion for the RNEA, tangents for τ_e (its world
+    forces do not turn with the bodies, so the recursion's rigid-motion argument does not cover
+    them); all tangents for a robot with rotors."""
+    nv = m.robot.nv
+    base = rnea.base_acceleration(m, _trunk_acceleration(m))
+    if has_rotors(m.robot):
+        external = rnea.foot_wrenches(m, kinematics.world_frames(m)) if m.feet else None
+        residual = rnea.rnea(m, base, rnea.joint_accelerations(m), True, external)
+        maps = propagate(list(residual), _state_seeds(m))
+        zero = ex.const(0.0)
+        return tuple([[maps[r].get(direction(c), zero) for c in range(nv)] for r in range(nv)]
+                     for direction in (q_direction, v_direction))
+    dq, dv = rnea_derivatives(m, base, rnea.joint_accelerations(m), True)
+    if m.feet:
+        external = feet_force_derivatives.feet_force_term_derivatives(m)
+        dq = [[x - y for x, y in zip(row, ext)] for row, ext in zip(dq, external)]
+    return dq, dv
+
+
+def _mirror_joint_block(robot, dtau):
+    """M⁻¹Sᵀ (column-major nv × n_joints) holds the joint block of the symmetric M⁻¹: the entries
+    above its diagonal are taken from below it, so DCE drops half of their solve's last pass."""
+    nv = robot.nv
+    dofs = [robot.joints[i].v_index for i in range(1, robot.nb)]
+    for a, row_a in enumerate(dofs):
+        for b in range(a):
+            dtau[a * nv + dofs[b]] = dtau[b * nv + row_a]
+
+
+def forward_dynamics_derivatives(m):
+    """∂a = −M⁻¹ ∂(RNEA(q, v, a) − τ_e(q, f)) at a = forward_dynamics(q, v, τ, f). The residual is
+    traced with placeholder symbols for a, differentiated with a held fixed, and only then are the
+    placeholders replaced by the forward-dynamics result: no differentiation through the
+    factorisation."""
+    robot = m.robot
+    nv = robot.nv
+    dq, dv = residual_derivatives(m)
+    columns = {"da_dq": [[-dq[r][c] for r in range(nv)] for c in range(nv)],
+               "da_dv": [[-dv[r][c] for r in range(nv)] for c in range(nv)]}
+    columns["da_dtau"] = [[ex.const(1.0 if r == robot.joints[i].v_index else 0.0)
+                           for r in range(nv)] for i in range(1, robot.nb)]       # Sᵀ
+    J = jacobian.feet_jacobian(m) if m.feet else []
+    columns["da_df"] = [[J[row][c] for c in range(nv)] for row in range(len(J))]  # Jᵀ
+    flat = {name: [x for col in _solve_columns(m, cols) for x in col]
+            for name, cols in columns.items()}
+    _mirror_joint_block(robot, flat["da_dtau"])
+    order = ("da_dq", "da_dv", "da_dtau", "da_df")
+    return replace_symbols({name: flat[name] for name in order}, m.a, fd.forward_dynamics(m))
+
+
+def contact_dynamics_derivatives(m):
+    """Differentiating both KKT rows of contact_dynamics at held (a, λ) gives
+        [M −Jᵀ; J 0] [∂a; ∂λ] = −[r₁; r₂],  r₁ = ∂(RNEA(q, v, a) − Jᵀλ − Sᵀτ),  r₂ = ∂(J a + J̇v),
+    solved as ∂λ = A⁻¹(J M⁻¹ r₁ − r₂), ∂a = M⁻¹(Jᵀ∂λ − r₁) with the Delassus factor (A = J M⁻¹Jᵀ).
+    r₁ is the forward-dynamics residual with placeholder symbols a and f (the per-foot λ), r₂ the
+    tangents of the contact points' classical acceleration at the placeholder a; the placeholders
+    take the contact_dynamics result last, as in forward_dynamics_derivatives."""
+    robot = m.robot
+    nv = robot.nv
+    dq, dv = residual_derivatives(m)
+    pddot = [sp.dot(row, m.a) + bias for row, bias in zip(
+        cd.contact_rows(m, jacobian.feet_jacobian(m)),
+        cd.contact_rows(m, [x for foot in kinematics.feet_bias_accelerations(m) for x in foot]))]
+    r2 = _q_and_v(m, pddot, "q", "v")
+    nc3 = len(pddot)
+    delassus = cd.Delassus(m)
+    parents = fd.dof_parents(robot)
+    L, inv_diag = fd.mass_matrix_factor(m)
+    zero = ex.const(0.0)
+
+    def columns(r1_columns, r2_columns):
+        """(∂a, ∂λ) column lists from r₁, r₂ columns."""
+        da, dlam = [], []
+        for r1, r2_col in zip(r1_columns, r2_columns):
+            dl = delassus.solve([sp.dot(delassus.Minv_Jt[r], r1) - r2_col[r] for r in range(nc3)])
+            rhs = sp.vsub(sp.zeros(nv) if not dl else
+                          [sp.dot([row[c] for row in delassus.J], dl) for c in range(nv)], r1)
+            da.append(fd.ltdl_solve(L, inv_diag, parents, rhs, m.into_dof))
+            dlam.append(dl)
+        return da, dlam
+
+    def split(flat):
+        return [[flat[c * nc3 + r] for r in range(nc3)] for c in range(nv)]
+
+    da_dq, dl_dq = columns([[dq[r][c] for r in range(nv)] for c in range(nv)], split(r2["q"]))
+    da_dv, dl_dv = columns([[dv[r][c] for r in range(nv)] for c in range(nv)], split(r2["v"]))
+    selection = [[ex.const(-1.0 if r == robot.joints[i].v_index else 0.0) for r in range(nv)]
+                 for i in range(1, robot.nb)]                                     # −Sᵀ
+    da_dtau, dl_dtau = columns(selection, [[zero] * nc3 for _ in selection])
+    flat = {"da_dq": da_dq, "da_dv": da_dv, "da_dtau": da_dtau,
+            "dlambda_dq": dl_dq, "dlambda_dv": dl_dv, "dlambda_dtau": dl_dtau}
+    named = {name: [x for col in cols for x in col] for name, cols in flat.items()}
+    a, lam = cd.contact_dynamics(m)
+    forces = list(sp.zeros(3 * len(m.feet)))
+    for k, foot in enumerate(m.contacts):
+        j = m.feet.index(foot)
+        forces[3 * j:3 * j + 3] = lam[3 * k:3 * k + 3]
+    return replace_symbols(named, list(m.a) + list(m.f), list(a) + forces)
+
+
+def replace_symbols(named, symbols, values):
+    """{name: expressions} with each symbol replaced by its value, all lists in one substitution
+    (shared subexpressions rebuilt once); returns {name: tuple}."""
+    placeholders = {node.id: value for node, value in zip(symbols, values)}
+    entries = iter(substitute([x for xs in named.values() for x in xs], placeholders))
+    return {name: tuple(next(entries) for _ in xs) for name, xs in named.items()}
+
+
+def spec(robot, nf, nc):
+    """trace.py's function table for the derivative quantities (nf feet, nc of them in contact):
+    name → (doc, input names, [(output name, rows, cols, doc)], trace(m) → {output name:
+    column-major entries})."""
+    nv, nj = robot.nv, robot.n_joints
+    on_q = "; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)"
+    return {
+        "inverse_dynamics_derivatives": (
+            "Derivatives of the inverse dynamics τ = M a + c + g (∂τ/∂a is M).", ("q", "v", "a"),
+            [("dtau_dq", nv, nv, "∂τ/∂q" + on_q), ("dtau_dv", nv, nv, "∂τ/∂v")],
+            inverse_dynamics_derivatives),
+        "bias_derivatives": (
+            "Derivatives of the bias c + g (inverse dynamics at a = 0).", ("q", "v"),
+            [("dbias_dq", nv, nv, "∂(c + g)/∂q" + on_q), ("dbias_dv", nv, nv, "∂c/∂v")],
+            bias_derivatives),
+        "gravity_derivatives": (
+            "Derivative of the gravity terms g.", ("q",),
+            [("dg_dq", nv, nv, "∂g/∂q" + on_q)], gravity_derivatives),
+        "forward_dynamics_derivatives": (
+            "Derivatives of the forward dynamics a = M⁻¹(Sᵀτ + Jᵀf − c − g): −M⁻¹ ∂(RNEA − τ_e) at "
+            "(q, v, a), M⁻¹Sᵀ and M⁻¹Jᵀ, solved with the sparse LᵀDL factor of M.",
+            ("q", "v", "tau", "f"),
+            [("da_dq", nv, nv, "∂a/∂q" + on_q), ("da_dv", nv, nv, "∂a/∂v"),
+             ("da_dtau", nv, nj, "∂a/∂τ = M⁻¹Sᵀ"),
+             ("da_df", nv, 3 * nf, "∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r")],
+            forward_dynamics_derivatives),
+        "feet_velocity_derivatives": (
+            "Derivative of the world foot velocities at fixed v.", ("q", "v"),
+            [("dpdot_dq", 3 * nf, nv, "∂ṗ/∂q, rows 3k + r: foot k, world axis r" + on_q)],
+            feet_velocity_derivatives),
+        "feet_force_term_derivatives": (
+            "Derivative of τ_e = Jᵀf at fixed world foot forces f.", ("q", "f"),
+            [("dtau_e_dq", nv, nv, "∂(Jᵀf)/∂q" + on_q)], feet_force_term_derivatives),
+        "contact_dynamics_derivatives": (
+            "Derivatives of contact_dynamics (a, λ): the KKT rows differentiated at the solution, "
+            "solved through the Delassus factor (docs/runtime.md, \"Contact dynamics\").",
+            ("q", "v", "tau"),
+            [("da_dq", nv, nv, "∂a/∂q" + on_q), ("da_dv", nv, nv, "∂a/∂v"),
+             ("da_dtau", nv, nj, "∂a/∂τ"),
+             ("dlambda_dq", 3 * nc, nv, "∂λ/∂q, rows 3k + r: contact k, world axis r" + on_q),
+             ("dlambda_dv", 3 * nc, nv, "∂λ/∂v"), ("dlambda_dtau", 3 * nc, nj, "∂λ/∂τ")],
+            contact_dynamics_derivatives),
+    }

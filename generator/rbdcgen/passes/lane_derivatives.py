@@ -1,0 +1,53 @@
+"""forward_dynamics_derivatives with the isomorphic limbs in SIMD lanes (docs/performance.md, "One
+SIMD lane per leg"): the method of differentiate.forward_dynamics_derivatives, ∂a = −M⁻¹ ∂(RNEA − τ_e)
+at the forward-dynamics result, M⁻¹Sᵀ and M⁻¹Jᵀ, on the lane model. The residual derivatives, the
+factor and the forward dynamics are traced unchanged; what differs is how a right-hand side is
+solved and where its solution goes: a trunk column (a trunk dof) is one column with the limbs'
+rows in lanes (ltdl_solve with the lane sums, as in forward_dynamics_lanes); a limb column (a limb
+dof, its torque, a foot force) stands for one column per limb, each solved apart where the limbs
+meet (LaneModel.solve_limb_column)."""
+
+from __future__ import annotations
+
+from . import differentiate
+from ..graph import expr as ex
+from ..algorithms import forward_dynamics as fd
+from ..algorithms import jacobian
+from ..algorithms.crba import mass_matrix
+
+
+def forward_dynamics_derivatives(m):
+    """The outputs of differentiate.forward_dynamics_derivatives for the lane model m (feet=True)."""
+    robot, full = m.robot, m.full
+    n, root = robot.nv, robot.root_dofs
+    dq, dv = differentiate.residual_derivatives(m)
+    parents = fd.dof_parents(robot)
+    L, inv_diag = fd.ltdl(mass_matrix(m), parents, m.into_dof)
+
+    def limb_columns(b):
+        """The full robot's columns of limb column b, one per lane."""
+        return [m.scatter(x) for x in m.solve_limb_column(L, inv_diag, parents, b)]
+
+    out = {}
+    for name, rows in (("da_dq", dq), ("da_dv", dv)):
+        out[name] = [None] * full.nv
+        for c in range(n):
+            b = [-rows[r][c] for r in range(n)]
+            if c < root:
+                out[name][c] = m.scatter(fd.ltdl_solve(L, inv_diag, parents, b, m.into_dof))
+                continue
+            for k, column in enumerate(limb_columns(b)):
+                out[name][m.full_index(c, k)] = column
+    out["da_dtau"] = [None] * full.n_joints
+    for c in range(root, n):                                                       # Sᵀ
+        for k, column in enumerate(limb_columns([ex.const(1.0 if r == c else 0.0) for r in range(n)])):
+            out["da_dtau"][m.full_index(c, k) - full.root_dofs] = column
+    J = jacobian.feet_jacobian(m) if m.feet else []
+    out["da_df"] = [None] * (3 * len(m.scene.feet_for(full)))
+    for row in range(len(J)):                                                      # Jᵀ
+        for k, column in enumerate(limb_columns(list(J[row]))):
+            out["da_df"][m.foot_force_index(row, k)] = column
+    symbols = list(m.a[:root]) + [m.ai(i) for i in range(1, robot.nb)]
+    order = ("da_dq", "da_dv", "da_dtau", "da_df")
+    return differentiate.replace_symbols({name: [x for column in out[name] for x in column] for name in order},
+                                       symbols, fd.forward_dynamics(m))

@@ -1,0 +1,93 @@
+"""Functions traced with the isomorphic limbs in SIMD lanes (views/limb_lanes.py): the same
+outputs as their scalar namesakes, emitted only when a scene lists them (scene.LANE_QUANTITIES)."""
+
+from __future__ import annotations
+
+from . import differentiate, lane_derivatives
+from ..algorithms import crba, forward_dynamics, osc, rnea
+from ..views.limb_lanes import LaneModel
+from ..views.limbs import isomorphic_limbs
+
+# derivative function → the trace of its lane function: its own on the lane model (the analytic RNEA
+# recursion: a limb's composites summed over the lanes where they join the trunk's), or for ∂a the
+# same method with the solves of limb columns apart (lane_derivatives.py)
+DERIVATIVES = {"inverse_dynamics_derivatives": differentiate.inverse_dynamics_derivatives,
+               "bias_derivatives": differentiate.bias_derivatives,
+               "gravity_derivatives": differentiate.gravity_derivatives,
+               "forward_dynamics_derivatives": lane_derivatives.forward_dynamics_derivatives}
+# lane function → the function it equals
+SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
+          "mass_matrix_lanes": "mass_matrix", "mass_matrix_lower_lanes": "mass_matrix_lower",
+          "forward_dynamics_lanes": "forward_dynamics", "osc_open_chain_lanes": "osc_open_chain",
+          **{name + "_lanes": name for name in DERIVATIVES}}
+# function → its lane function
+LANE_NAME = {scalar: lanes for lanes, scalar in SCALAR.items()}
+# lane functions with the foot forces as lane inputs
+WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_derivatives_lanes", "osc_open_chain_lanes")
+
+
+def model(robot, scene, zero_inputs, name):
+    """The traced model of lane function `name`: the trunk and one lane limb."""
+    return LaneModel(robot, scene, isomorphic_limbs(robot), zero_inputs, feet=name in WITH_FEET)
+
+
+def spec(robot, nf):
+    """trace.py's function table for the lane functions (same shape as trace._spec)."""
+    nv = robot.nv
+    scalar = differentiate.spec(robot, nf, 0)  # the contact functions have no lane version
+    in_lanes = {name + "_lanes": (scalar[name][0] + " The four isomorphic limbs in SIMD lanes, the "
+                                  "trunk scalar; equals %s." % name,) + scalar[name][1:3] + (trace,)
+                for name, trace in DERIVATIVES.items()}
+    return {
+        **in_lanes,
+        "bias_lanes": (
+            "Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes "
+            "evaluated together in SIMD lanes, the trunk scalar; equals bias.",
+            ("q", "v"),
+            [("cg", nv, 1, "quadratic velocity and gravity terms c + g")],
+            lambda m: {"cg": m.scatter(rnea.bias(m))}),
+        "inverse_dynamics_lanes": (
+            "Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3), the four isomorphic limbs' "
+            "passes evaluated together in SIMD lanes, the trunk scalar; equals inverse_dynamics.",
+            ("q", "v", "a"),
+            [("tau", nv, 1, "generalised forces M a + c + g")],
+            lambda m: {"tau": m.scatter(rnea.inverse_dynamics(m))}),
+        "mass_matrix_lanes": (
+            "Joint-space inertia matrix M (CRBA, paper 000 Alg. 5), the four isomorphic limbs' "
+            "passes evaluated together in SIMD lanes, the trunk scalar; equals mass_matrix.",
+            ("q",),
+            [("M", nv, nv, "mass matrix, full symmetric")],
+            lambda m: {"M": _columns(m.scatter_matrix(crba.mass_matrix(m)))}),
+        "mass_matrix_lower_lanes": (
+            "The lower triangle of M (CRBA, paper 000 Alg. 5), the four isomorphic limbs' passes "
+            "evaluated together in SIMD lanes, the trunk scalar; equals mass_matrix_lower.",
+            ("q",),
+            [("M", nv, nv, crba.LOWER_TRIANGLE_DOC)],
+            lambda m: {"M": crba.lower_triangle(_columns(m.scatter_matrix(crba.mass_matrix(m))), nv)}),
+        "forward_dynamics_lanes": (
+            "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ), the four "
+            "isomorphic limbs' passes and their rows of the factorisation evaluated together in SIMD "
+            "lanes, the trunk scalar; equals forward_dynamics.",
+            ("q", "v", "tau", "f"),
+            [("a", nv, 1, "acceleration")],
+            lambda m: {"a": m.scatter(forward_dynamics.forward_dynamics(m))}),
+        "osc_open_chain_lanes": (
+            "Trunk operational-space Λ, J̄ᵀ, b with measured foot forces (paper 001 Table 1), the four "
+            "isomorphic limbs' inward passes evaluated together in SIMD lanes, the trunk scalar; "
+            "equals osc_open_chain.",
+            ("q", "v", "f"),
+            osc.output_specs(robot.n_joints),
+            lambda m: _osc_outputs(m, osc.osc_open_chain(m))),
+    }
+
+
+def _osc_outputs(m, result):
+    """Λ_t and b_t (trunk quantities: the limbs' lanes already summed into them) and J̄_tᵀ with
+    its limb joint columns scattered to the full robot's joints."""
+    Lam, JbarT, b = result
+    return {"Lambda": _columns(Lam), "JbarT": _columns(m.scatter_joint_columns(JbarT)), "b": tuple(b)}
+
+
+def _columns(rows):
+    """Column-major entries of a matrix given as (non-empty) rows."""
+    return tuple(rows[r][c] for c in range(len(rows[0])) for r in range(len(rows)))

@@ -1,0 +1,264 @@
+"""The robot traced in lanes (docs/performance.md, "One SIMD lane per leg"): the trunk and ONE limb
+whose joint variables and constants hold one value per isomorphic limb (views/limbs.py), so that
+the algorithms of this package, traced unchanged on this reduced tree, evaluate the four limbs'
+passes together as lane operations while the trunk stays scalar.
+
+Reduced tree: body 0 is the trunk, bodies 1 … n_limb the lane limb (limb k's l-th body in lane k of
+body l + 1). Its joint l has the lane inputs lane_q[l], lane_v[l], lane_a[l], lane_tau[l] (lane k =
+the full robot's coordinate of limb k's joint l), its feet the foot forces lane_f; a constant that
+differs between limbs is a lane constant (expr.lane_const). Where a limb's wrench or composite
+inertia joins the trunk's (into_parent), and where a limb dof updates a trunk dof in the LᵀDL
+factorisation and solve (into_dof), the lanes are summed. `scatter` and `scatter_matrix` map the
+reduced outputs back to the full robot's coordinates."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+from ..graph import expr as ex
+from ..graph import spatial as sp
+from .limbs import LimbError
+from ..algorithms import forward_dynamics as fd
+from .scalar import TracedModel
+
+
+@dataclass(frozen=True)
+class LaneLayout:
+    """What the emitter needs of a lane function: the values of its lane symbols."""
+    constants: tuple   # lane constant c (symbol lane_c[c]): one float per lane
+    inputs: dict       # "lane_q" / "lane_v" / "lane_a" → per lane joint l, the (array, index) per lane
+    angle_names: dict  # ("lane_q", l) → the identifier its sin/cos are named by
+
+    def with_lanes(self, inputs):
+        """Inputs {array: floats} of the full robot with the lane arrays added (expr.evaluate)."""
+        lanes = {name: [tuple(inputs[array][index] for array, index in sources) for sources in joints]
+                 for name, joints in self.inputs.items() if all(s[0] in inputs for s in joints[0])}
+        return {**inputs, **lanes, ex.LANE_CONSTANTS: list(self.constants)}
+
+
+class LaneModel(TracedModel):
+    """TracedModel of the reduced tree: `robot` is the trunk and the lane limb, `full` the robot.
+    With `feet`, the scene's feet become lane feet (the same number on each limb, at the same
+    bodies of the limb) with the lane input lane_f; without, the traced function uses no feet."""
+
+    def __init__(self, robot, scene, limbs, zero_inputs=(), feet=False):
+        super().__init__(robot, scene, zero_inputs)
+        self.full = self.robot
+        self.limbs = limbs
+        self.graph = ex.current_graph()  # holds the lane constants' values
+        self.robot = _reduced_tree(self.full, limbs)
+        # lane_x[l] in lane k is the full robot's input x[k-th limb's joint l]: (array, index) per lane.
+        self.lane_inputs = {
+            "lane_" + name: [tuple((name, index(self.full.joints[limb[l]])) for limb in limbs)
+                             for l in range(len(limbs[0]))]
+            for name, index in (("q", lambda j: j.q_index), ("v", lambda j: j.v_index),
+                                ("a", lambda j: j.v_index),
+                                ("tau", lambda j: j.v_index - self.full.root_dofs))}
+        self.feet = self._lane_feet() if feet else ()
+
+    def layout(self):
+        names = {}
+        for l in range(1, self.robot.nb):
+            joint_names = [self.full.joints[b].name for b in self._lanes_of(l)]
+            suffix = joint_names[0]
+            while not all(n.endswith(suffix) for n in joint_names):
+                suffix = suffix[1:]
+            names[("lane_q", l - 1)] = "lanes_" + (suffix.strip("_") or "joint_%d" % l)
+        return LaneLayout(tuple(self.graph.lane_constants), self.lane_inputs, names)
+
+    # --- lane values --------------------------------------------------------------------------
+    def _lane_feet(self):
+        """The scene's feet as lane feet of the reduced tree, and their lane input lane_f."""
+        kept = list(self.feet)
+        per_limb = [[k for k, foot in enumerate(kept) if foot.body in limb] for limb in self.limbs]
+        shapes = {tuple(limb.index(kept[k].body) for k in feet) for limb, feet in zip(self.limbs, per_limb)}
+        if len(shapes) != 1 or sum(map(len, per_limb)) != len(kept):
+            raise LimbError("robot '%s': the kept feet are not the same on every limb"
+                            % self.full.name)
+        feet = []
+        self.lane_inputs["lane_f"] = []
+        for n, body in enumerate(next(iter(shapes))):
+            lanes = [kept[feet_k[n]] for feet_k in per_limb]
+            offset = tuple(ex.lane_const([foot.offset[c] for foot in lanes]) for c in range(3))
+            feet.append(replace(lanes[0], name="/".join(f.name for f in lanes), body=body + 1,
+                                offset=offset))
+            self.lane_inputs["lane_f"] += [tuple(("f", 3 * feet_k[n] + c) for feet_k in per_limb)
+                                           for c in range(3)]
+        return tuple(feet)
+
+    @property
+    def tau(self):
+        return tuple(self._lane_input("tau", i) for i in range(1, self.robot.nb))
+
+    def foot_force(self, k):
+        if "f" in self.zero_inputs:
+            return sp.zeros(3)
+        return tuple(ex.symbol("lane_f", 3 * k + c) for c in range(3))
+
+    def into_dof(self, k, i, value):
+        """A limb dof's term in a root dof's entry (LᵀDL factorisation and solve): summed over the
+        lanes."""
+        root = self.robot.root_dofs
+        return ex.lane_sum(value) if i < root <= k else value
+
+    def into_root(self, term):
+        return ex.lane_sum(term)
+
+    def _lane_input(self, name, i):
+        if name in self.zero_inputs:
+            return ex.const(0.0)
+        return ex.symbol("lane_" + name, i - 1)
+
+    def _lanes_of(self, i):
+        """The full robot's bodies in the lanes of reduced body i ≥ 1."""
+        return [limb[i - 1] for limb in self.limbs]
+
+    # --- the reduced tree's joints and bodies ------------------------------------------------
+    def qi(self, i):
+        return self._lane_input("q", i)
+
+    def vi(self, i):
+        return self._lane_input("v", i)
+
+    def ai(self, i):
+        return self._lane_input("a", i)
+
+    def X_tree(self, i):
+        """X_T of the lane limb's joint i: each entry a lane constant."""
+        joints = [self.full.joints[b] for b in self._lanes_of(i)]
+        rotations = [sp.snap_rotation(j.rotation) for j in joints]
+        identity = all(r[a][b] == (1.0 if a == b else 0.0)
+                       for r in rotations for a in range(3) for b in range(3))
+        E_T = tuple(tuple(ex.lane_const([r[a][b] for r in rotations]) for b in range(3))
+                    for a in range(3))
+        r_T = tuple(ex.lane_const([j.translation[a] for j in joints]) for a in range(3))
+        return sp.Transform(None if identity else E_T,
+                            r_T if any(any(j.translation) for j in joints) else None)
+
+    def inertia(self, i):
+        if i == 0:
+            return super().inertia(0)
+        key = ("inertia", i)
+        if key not in self._cache:
+            lanes = [sp.Inertia.from_body(self.full.bodies[b]) for b in self._lanes_of(i)]
+            m = ex.lane_const([x.m.value for x in lanes])
+            h = tuple(ex.lane_const([x.h[a].value for x in lanes]) for a in range(3))
+            ibar = tuple(tuple(ex.lane_const([x.Ibar[a][b].value for x in lanes]) for b in range(3))
+                         for a in range(3))
+            self._cache[key] = sp.Inertia(m, h, sp.symmetric(ibar))
+        return self._cache[key]
+
+    def rotor(self, i):
+        return None  # limbs.isomorphic_limbs refuses rotors
+
+    def armature(self, i):
+        values = [0.0 if j.actuator is None else j.actuator.armature
+                  for j in (self.full.joints[b] for b in self._lanes_of(i))]
+        return values[0] if all(v == values[0] for v in values) else ex.lane_const(values)
+
+    def into_parent(self, i, value):
+        """A limb's wrench or composite inertia joins the trunk's as the sum of its lanes."""
+        return _sum_lanes(value) if self.robot.parent[i] == 0 else value
+
+    # --- outputs --------------------------------------------------------------------------------
+    def full_index(self, x, lane):
+        """The full robot's dof of the reduced tree's dof x in lane `lane` (root dofs are shared)."""
+        root = 6 if self.full.floating_base else 0
+        return x if x < root else self.full.joints[self.limbs[lane][x - root]].v_index
+
+    def foot_force_index(self, row, lane):
+        """The full robot's entry of f (column-major 3 × n_feet) in lane `lane` of lane_f[row]."""
+        return self.lane_inputs["lane_f"][row][lane][1]
+
+    def solve_limb_column(self, L, inv_diag, parents, b):
+        """M⁻¹ b (forward_dynamics.ltdl_solve, L and D of the reduced tree) for a right-hand side b
+        whose lane k stands for a column of limb k: non-zero in the trunk rows and limb k's rows
+        only. Returns per lane k the solution of limb k's column, a reduced vector (scatter) with
+        scalar trunk entries and limb m's entries in lane m: the solution is dense, every limb moves
+        with the trunk. The leaves-to-root pass and the trunk's rows run with the columns in lanes
+        (no lane sum: only limb k's rows reach lane k's trunk entries); then, per lane k, the
+        trunk's solution of that column leaves its lane (lane_get) and the root-to-leaves pass runs
+        with the limbs in lanes, limb k's own part of the right-hand side masked to lane k."""
+        root = self.robot.root_dofs
+        y = fd.ltdl_eliminate(L, inv_diag, parents, b)
+        trunk = fd.ltdl_substitute(L, parents, y[:root], range(root))
+        solutions = []
+        for k in range(ex.LANES):
+            mask = ex.lane_const([1.0 if lane == k else 0.0 for lane in range(ex.LANES)])
+            x = [ex.lane_get(t, k) for t in trunk] + [value * mask for value in y[root:]]
+            solutions.append(fd.ltdl_substitute(L, parents, x, range(root, len(x))))
+        return solutions
+
+    def scatter(self, reduced):
+        """A joint-space vector of the reduced tree as the full robot's: lane k of the lane limb's
+        joint l goes to limb k's joint l."""
+        full = [None] * self.full.nv
+        for x, value in enumerate(reduced):
+            for k in range(ex.LANES):
+                full[self.full_index(x, k)] = ex.lane_get(value, k)
+        return tuple(full)
+
+    def scatter_joint_columns(self, rows):
+        """A matrix (rows) whose columns are the reduced tree's joints as the full robot's: lane k of
+        the lane limb's joint l goes to limb k's joint l's column."""
+        root = 6 if self.full.floating_base else 0
+        full = [[None] * self.full.n_joints for _ in rows]
+        for r, row in enumerate(rows):
+            for c, value in enumerate(row):
+                for k in range(ex.LANES):
+                    full[r][self.full_index(root + c, k) - root] = ex.lane_get(value, k)
+        return tuple(tuple(row) for row in full)
+
+    def scatter_matrix(self, reduced):
+        """A joint-space matrix (rows) of the reduced tree as the full robot's; entries between two
+        different limbs are zero (no body of one limb moves with the other's joints)."""
+        full = [[ex.const(0.0)] * self.full.nv for _ in range(self.full.nv)]
+        for r, row in enumerate(reduced):
+            for c, value in enumerate(row):
+                for k in range(ex.LANES):
+                    full[self.full_index(r, k)][self.full_index(c, k)] = ex.lane_get(value, k)
+        return full
+
+
+def _sum_lanes(value):
+    """The sum over the lanes of a value, a vector or matrix (nested tuples) or a spatial inertia."""
+    if isinstance(value, sp.Inertia):
+        return sp.Inertia(ex.lane_sum(value.m), _sum_lanes(value.h),
+                          sp.symmetric(tuple(_sum_lanes(row) for row in value.Ibar)))
+    if isinstance(value, tuple):
+        return tuple(_sum_lanes(x) for x in value)
+    return ex.lane_sum(value)
+
+
+def _reduced_tree(robot, limbs):
+    """The trunk and limb 0, renumbered 1 … n (rbdc order kept); joints keep limb 0's types and
+    axes, their q and v indices count in the reduced tree; names join the lanes' names."""
+    limb = limbs[0]
+    number = {0: 0, **{body: k + 1 for k, body in enumerate(limb)}}
+    root_q, root_v = (7, 6) if robot.floating_base else (0, 0)
+    parent = (-1,) + tuple(number[robot.parent[b]] for b in limb)
+    nb = len(parent)
+    children = tuple(tuple(c for c in range(1, nb) if parent[c] == i) for i in range(nb))
+    subtree = tuple(tuple(c for c in range(i, nb) if _is_ancestor(parent, i, c)) for i in range(nb))
+    support = tuple(tuple(a for a in range(1, nb) if _is_ancestor(parent, a, i)) for i in range(nb))
+
+    def lane_name(items, l):
+        return "/".join(items[lb[l]].name for lb in limbs)
+
+    bodies = (robot.bodies[0],) + tuple(replace(robot.bodies[b], name=lane_name(robot.bodies, l))
+                                        for l, b in enumerate(limb))
+    joints = (robot.joints[0],) + tuple(
+        replace(robot.joints[b], name=lane_name(robot.joints, l), parent=parent[l + 1],
+                q_index=root_q + l, v_index=root_v + l)
+        for l, b in enumerate(limb))
+    return replace(robot, nb=nb, nq=root_q + len(limb), nv=root_v + len(limb),
+                   pred=tuple(parent[1:]), succ=tuple(range(1, nb)), parent=parent,
+                   support=support, children=children, subtree=subtree, bodies=bodies,
+                   joints=joints, feet=(), couplings=())
+
+
+def _is_ancestor(parent, a, i):
+    """Whether a is i or on its path to the root."""
+    while i > 0 and i != a:
+        i = parent[i]
+    return i == a
