@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
+#include "rbdc/mass_matrix_rank.hpp"
 #include "rbdc/model_builder.hpp"
 
 namespace rbdc {
@@ -59,6 +60,21 @@ Rotor check_rotor(const Joint& j, const ActuatorSpec& a, const std::string& labe
   return r;
 }
 
+// X_rotor, rotor_inertia, rotor_subspace of the rotors (nb entries each).
+void add_rotor_constants(Model& m) {
+  const size_t nb = static_cast<size_t>(m.nb);
+  m.X_rotor.assign(nb, Matrix6::Identity());
+  m.rotor_inertia.assign(nb, Matrix6::Zero());
+  m.rotor_subspace.assign(nb, Vector6::Zero());
+  for (size_t i = 1; i < nb; ++i) {
+    const Rotor& r = m.joints[i].rotor;
+    if (r.gear_ratio == 0) continue;
+    m.X_rotor[i] = motion_transform(r.rotation, r.translation);
+    m.rotor_inertia[i] = spatial_inertia(r.mass, Vector3::Zero(), r.inertia);
+    m.rotor_subspace[i].head<3>() = r.gear_ratio * r.axis;
+  }
+}
+
 }  // namespace
 
 void add_actuators(Model& m, const std::vector<ActuatorSpec>& actuators) {
@@ -80,18 +96,9 @@ void add_actuators(Model& m, const std::vector<ActuatorSpec>& actuators) {
       m.has_rotors = true;
     }
   }
-  if (!m.has_rotors) return;
-  const size_t nb = static_cast<size_t>(m.nb);
-  m.X_rotor.assign(nb, Matrix6::Identity());
-  m.rotor_inertia.assign(nb, Matrix6::Zero());
-  m.rotor_subspace.assign(nb, Vector6::Zero());
-  for (size_t i = 1; i < nb; ++i) {
-    const Rotor& r = m.joints[i].rotor;
-    if (r.gear_ratio == 0) continue;
-    m.X_rotor[i] = motion_transform(r.rotation, r.translation);
-    m.rotor_inertia[i] = spatial_inertia(r.mass, Vector3::Zero(), r.inertia);
-    m.rotor_subspace[i].head<3>() = r.gear_ratio * r.axis;
-  }
+  // the armature may have regularised M (docs/model.md, "Singular mass matrix")
+  if (m.has_rotors) add_rotor_constants(m);
+  m.singular_mass_matrix = mass_matrix_singularity(m);
 }
 
 }  // namespace rbdc

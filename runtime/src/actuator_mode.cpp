@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "rbdc/mass_matrix_rank.hpp"
+
 namespace rbdc {
 
 ActuatorMode parse_actuator_mode(const std::string& text) {
@@ -31,6 +33,7 @@ Model with_actuator_mode(Model model, ActuatorMode mode) {
   model.X_rotor.clear();
   model.rotor_inertia.clear();
   model.rotor_subspace.clear();
+  model.singular_mass_matrix = mass_matrix_singularity(model);  // the actuators may have regularised M
   return model;
 }
 

@@ -20,7 +20,8 @@ inline void check_size(const char* function, const char* argument, Eigen::Index 
 
 inline void check_data(const char* function, const Model& model, const Data& data) {
   if (static_cast<int>(data.v.size()) != model.nb || data.c.size() != model.nv ||
-      data.feet_position.cols() != static_cast<Eigen::Index>(model.feet.size())) {
+      data.feet_position.cols() != static_cast<Eigen::Index>(model.feet.size()) ||
+      data.frame_position.cols() != static_cast<Eigen::Index>(model.frames.size())) {
     throw std::invalid_argument(std::string("rbdc::") + function +
                                 ": data was built for a different model than '" + model.name +
                                 "'");
@@ -41,6 +42,15 @@ inline void check_qv(const char* function, const Model& model, const Data& data,
 inline void check_feet_matrix(const char* function, const char* argument, const Model& model,
                               const Matrix3X& f) {
   check_size(function, argument, f.cols(), static_cast<Eigen::Index>(model.feet.size()));
+}
+
+// Functions that need M⁻¹ refuse a model whose M is singular (Model::singular_mass_matrix).
+inline void check_invertible_mass(const char* function, const Model& model) {
+  if (!model.singular_mass_matrix.empty()) {
+    throw std::invalid_argument(std::string("rbdc::") + function + ": model '" + model.name + "': " +
+                                model.singular_mass_matrix + "; this function needs M⁻¹ (docs/model.md, "
+                                "\"Singular mass matrix\")");
+  }
 }
 
 }  // namespace rbdc::detail

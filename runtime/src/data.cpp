@@ -36,7 +36,21 @@ Data::Data(const Model& model) : M_llt(model.nv) {
   J = MatrixX::Zero(3 * n_feet, nv);
   J_contact = MatrixX::Zero(3 * n_feet, nv);
 
+  const Eigen::Index n_frames = static_cast<Eigen::Index>(model.frames.size());
+  world_R_frame.assign(model.frames.size(), Matrix3::Identity());
+  frame_position = Matrix3X::Zero(3, n_frames);
+  frame_velocity_local = Matrix6X::Zero(6, n_frames);
+  frame_velocity_world = Matrix6X::Zero(6, n_frames);
+  frame_jacobian_local.assign(model.frames.size(), Matrix6X::Zero(6, nv));
+  frame_jacobian_world.assign(model.frames.size(), Matrix6X::Zero(6, nv));
+  frame_bias_spatial = Matrix6X::Zero(6, n_frames);
+  frame_bias_classical = Matrix6X::Zero(6, n_frames);
+
+  com_jacobian = Matrix3X::Zero(3, nv);
+  A_G = Matrix6X::Zero(6, nv);
+
   a = VectorX::Zero(nv);
+  M_inverse = MatrixX::Zero(nv, nv);
 
   IA.assign(nb, Matrix6::Zero());
   beta.assign(nb, Vector6::Zero());

@@ -12,6 +12,7 @@ namespace rbdc {
 const VectorX& forward_dynamics(const Model& model, Data& data, const VectorRef& q,
                                 const VectorRef& v, const VectorRef& tau, const Matrix3X& f_world) {
   detail::check_qv("forward_dynamics", model, data, q, v);
+  detail::check_invertible_mass("forward_dynamics", model);
   detail::check_size("forward_dynamics", "tau", tau.size(), model.num_joints());
   detail::check_feet_matrix("forward_dynamics", "f_world", model, f_world);
   mass_matrix(model, data, q);

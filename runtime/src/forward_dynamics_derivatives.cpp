@@ -8,26 +8,16 @@
 #include "derivative_passes.hpp"
 #include "rbdc/forward_dynamics.hpp"
 #include "rbdc/jacobian.hpp"
+#include "tree_helpers.hpp"
 
 namespace rbdc {
-
-namespace {
-
-/// X ← M⁻¹ X, column by column with the factor in data.M_llt (vector solves need no scratch).
-void solve_with_mass_matrix(const Data& data, MatrixX& X) {
-  for (Eigen::Index k = 0; k < X.cols(); ++k) {
-    auto column = X.col(k);
-    data.M_llt.solveInPlace(column);
-  }
-}
-
-}  // namespace
 
 void forward_dynamics_derivatives(const Model& model, Data& data, DerivativeData& derivatives,
                                   const VectorRef& q, const VectorRef& v, const VectorRef& tau,
                                   const Matrix3X& f_world) {
   detail::check_derivative_data("forward_dynamics_derivatives", model, derivatives);
   detail::check_qv("forward_dynamics_derivatives", model, data, q, v);
+  detail::check_invertible_mass("forward_dynamics_derivatives", model);
   detail::check_size("forward_dynamics_derivatives", "tau", tau.size(), model.num_joints());
   detail::check_feet_matrix("forward_dynamics_derivatives", "f_world", model, f_world);
   DerivativeData& d = derivatives;
@@ -43,17 +33,17 @@ void forward_dynamics_derivatives(const Model& model, Data& data, DerivativeData
   inverse_dynamics_derivatives(model, data, d, q, v, data.a);
   // ∂a/∂q = M⁻¹ (∂(Jᵀf)/∂q − ∂τ/∂q)
   d.da_dq = d.dtau_e_dq - d.dtau_dq;
-  solve_with_mass_matrix(data, d.da_dq);
+  detail::solve_with_mass_matrix(data, d.da_dq);
   // ∂a/∂v = −M⁻¹ ∂τ/∂v
   d.da_dv = -d.dtau_dv;
-  solve_with_mass_matrix(data, d.da_dv);
+  detail::solve_with_mass_matrix(data, d.da_dv);
   // ∂a/∂τ = M⁻¹Sᵀ: Sᵀ selects the joint rows (the trunk is unactuated)
   d.da_dtau.setZero();
   d.da_dtau.bottomRows(model.num_joints()).setIdentity();
-  solve_with_mass_matrix(data, d.da_dtau);
+  detail::solve_with_mass_matrix(data, d.da_dtau);
   // ∂a/∂f = M⁻¹Jᵀ, columns 3k … 3k+2 for foot k
   d.da_df = feet_jacobian(model, data, q).transpose();
-  solve_with_mass_matrix(data, d.da_df);
+  detail::solve_with_mass_matrix(data, d.da_df);
 }
 
 }  // namespace rbdc

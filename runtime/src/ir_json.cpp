@@ -161,7 +161,7 @@ std::string json_number(double x) {
 }
 
 std::string to_ir_json(const Model& m) {
-  JsonArray bodies, joints, feet, couplings;
+  JsonArray bodies, joints, feet, frames, couplings;
   for (const Body& b : m.bodies) {
     bodies.push_back(JsonObject{{"name", b.name}, {"mass", b.mass}, {"com", vector_json(b.com)},
                                 {"inertia_com", matrix_json(b.inertia_com)}});
@@ -184,6 +184,10 @@ std::string to_ir_json(const Model& m) {
   for (const Foot& f : m.feet) {
     feet.push_back(JsonObject{{"name", f.name}, {"body", f.body}, {"offset", vector_json(f.offset)}});
   }
+  for (const Frame& f : m.frames) {
+    frames.push_back(JsonObject{{"name", f.name}, {"body", f.body}, {"rotation", matrix_json(f.rotation)},
+                                {"translation", vector_json(f.translation)}});
+  }
   for (const Coupling& c : m.couplings) {
     couplings.push_back(JsonObject{{"follower", c.follower}, {"leader", c.leader},
                                    {"multiplier", c.multiplier}, {"offset", c.offset}});
@@ -204,6 +208,7 @@ std::string to_ir_json(const Model& m) {
                       {"bodies", std::move(bodies)},
                       {"joints", std::move(joints)},
                       {"feet", std::move(feet)},
+                      {"frames", std::move(frames)},
                       {"couplings", std::move(couplings)}};
   std::string out;
   write(ir, 0, out);

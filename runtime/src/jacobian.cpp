@@ -17,17 +17,8 @@ const MatrixX& feet_jacobian(const Model& model, Data& data, const VectorRef& q)
     //   i ← φ(k)
     const Foot& foot = model.feet[k];
     const int i = foot.body;
-    data.J_foot.setZero();
-    //   for j ∈ κ(i): J_feet,kj ← X_j^i S_j   (Eq. B3; κ(i) walked from i to the root so that
-    //   X_λ(j)^i = X_j^i X_λ(j)^j comes one product at a time)
-    Matrix6 X_j_to_i = Matrix6::Identity();  // X_j^i, starting at j = i
-    for (int j = i; j != 0; j = model.parent[static_cast<size_t>(j)]) {
-      const size_t uj = static_cast<size_t>(j);
-      data.J_foot.col(model.joints[uj].v_index) = X_j_to_i * model.motion_subspace[uj];
-      X_j_to_i = X_j_to_i * data.X_up[uj];
-    }
-    //   the floating base's joint 0: S_0 = 1₆, so its block is X_0^i itself
-    if (model.floating_base) data.J_foot.leftCols<6>() = X_j_to_i;
+    //   for j ∈ κ(i): J_feet,kj ← X_j^i S_j   (Eq. B3)
+    detail::body_jacobian(model, data, i, data.J_foot);
     //   J_feet,k ← X_i^fk J_feet,k
     data.J_foot_at_point.noalias() = detail::foot_transform(foot) * data.J_foot;
     // World linear rows: R_fk^W times the linear block (the foot frame has body i's orientation).

@@ -96,16 +96,8 @@ const Matrix3X& feet_bias_accelerations(const Model& model, Data& data, const Ve
                                         const VectorRef& v) {
   kinematics(model, data, q, v);
   world_transforms(model, data, q);
-  // a_0 ← (0, -ω̃_0 v_0): the trunk's spatial acceleration when a[0:6] = 0 (as in Alg. 2)
-  data.a_body[0].setZero();
-  if (model.floating_base) data.a_body[0].tail<3>() = -data.v[0].head<3>().cross(data.v[0].tail<3>());
-  for (int i = 1; i < model.nb; ++i) {
-    const size_t ui = static_cast<size_t>(i);
-    const size_t j = static_cast<size_t>(model.parent[ui]);
-    // a_i ← X_j^i a_j + v_i × S_i q̇_i                     (Eq. 19)
-    data.a_body[ui] = data.X_up[ui] * data.a_body[j] +
-                      crm(data.v[ui]) * model.motion_subspace[ui] * v[model.joints[ui].v_index];
-  }
+  // a_i at a = 0 (Eq. 19)
+  detail::bias_accelerations(model, data, v);
   for (size_t k = 0; k < model.feet.size(); ++k) {
     const Foot& foot = model.feet[k];
     const size_t i = static_cast<size_t>(foot.body);
@@ -113,9 +105,8 @@ const Matrix3X& feet_bias_accelerations(const Model& model, Data& data, const Ve
     const Matrix6 X_fk = foot_transform(foot);
     const Vector6 a_fk = X_fk * data.a_body[i];
     const Vector6 v_fk = X_fk * data.v[i];
-    const Vector3 classical = a_fk.tail<3>() + v_fk.head<3>().cross(v_fk.tail<3>());
     data.feet_bias_acceleration.col(static_cast<Eigen::Index>(k)) =
-        rotation_of(data.X_world[i]).transpose() * classical;
+        rotation_of(data.X_world[i]).transpose() * detail::classical_acceleration(a_fk, v_fk).tail<3>();
   }
   return data.feet_bias_acceleration;
 }

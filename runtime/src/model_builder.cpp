@@ -115,6 +115,10 @@ std::vector<int> derive_parents(const ModelSpec& spec) {
   return parent;
 }
 
+bool is_proper_rotation(const Matrix3& E) {
+  return (E.transpose() * E - Matrix3::Identity()).norm() <= kOrthonormalTol && E.determinant() > 0;
+}
+
 void check_joint(const ModelSpec& spec, int i, JointSpec& j) {
   const std::string label = joint_label(spec, i);
   if (j.type != JointType::Revolute && j.type != JointType::Prismatic) {
@@ -129,8 +133,26 @@ void check_joint(const ModelSpec& spec, int i, JointSpec& j) {
   if (norm < kAxisNormMin) fail(spec, label + ": axis is zero");
   j.axis /= norm;
   const Matrix3& E = j.rotation;
-  if ((E.transpose() * E - Matrix3::Identity()).norm() > kOrthonormalTol || E.determinant() < 0) {
+  if (!is_proper_rotation(E)) {
     fail(spec, label + ": rotation is not a proper orthonormal matrix");
+  }
+}
+
+// Frames (docs/model.md, "Frames"): an existing body, a finite pose with a proper rotation, and a
+// name no other frame has (a bad name in a scene could not tell which one it meant).
+void check_frames(const ModelSpec& spec) {
+  std::set<std::string> names;
+  const int nb = static_cast<int>(spec.bodies.size());
+  for (const Frame& f : spec.frames) {
+    const std::string label = "frame '" + f.name + "'";
+    if (f.name.empty()) fail(spec, "a frame has no name");
+    if (!names.insert(f.name).second) fail(spec, label + ": the name is used twice");
+    if (f.body < 0 || f.body >= nb) fail(spec, label + ": body " + std::to_string(f.body) + " does not exist");
+    if (!all_finite(f.rotation) || !all_finite(f.translation)) fail(spec, label + ": pose has NaN or Inf");
+    const Matrix3& E = f.rotation;
+    if (!is_proper_rotation(E)) {
+      fail(spec, label + ": rotation is not a proper orthonormal matrix");
+    }
   }
 }
 
@@ -232,30 +254,10 @@ void check_couplings(const ModelSpec& spec) {
   }
 }
 
-// A joint whose subtree carries no inertia about its axis gives M a zero diagonal entry
-// (d_i = S_iᵀ I^c_i S_i = 0), e.g. a massless leaf: refuse it.
-void check_moving_inertia(const ModelSpec& spec, const Model& m) {
-  std::vector<Matrix6> composite = m.inertia;
-  for (int i = m.nb - 1; i >= 1; --i) {
-    const size_t ui = static_cast<size_t>(i);
-    const Vector6& S = m.motion_subspace[ui];
-    if (S.dot(composite[ui] * S) <= 1e-15) {
-      std::string reason = m.bodies[ui].mass == 0 && m.children[ui].empty()
-                               ? body_label(spec, i) + " is a moving leaf with zero mass"
-                               : "the subtree of " + body_label(spec, i) +
-                                     " has no inertia about the joint axis";
-      fail(spec, joint_label(spec, i) + ": " + reason +
-                     ", so the mass matrix would be singular");
-    }
-    const Matrix6& X = m.X_tree[ui];  // I^c_λ += X_Tᵀ I^c_i X_T (joint at q = 0)
-    composite[static_cast<size_t>(m.parent[ui])] += X.transpose() * composite[ui] * X;
-  }
-}
-
 }  // namespace
 
 Body repair_mass_properties(const Body& body, const std::string& where,
-                            std::vector<std::string>* warnings) {
+                            std::vector<std::string>* warnings, Indefinite indefinite) {
   const auto refuse = [&](const std::string& problem) { throw ModelError(where + ": " + problem); };
   const auto warn = [&](const std::string& problem) {
     if (warnings != nullptr) warnings->push_back(where + ": " + problem);
@@ -291,9 +293,9 @@ Body repair_mass_properties(const Body& body, const std::string& where,
     std::ostringstream s;
     s << "rotational inertia is not positive semi-definite (principal moments " << moments.transpose()
       << ")";
-    refuse(s.str());
-  }
-  if (moments(0) < 0) {
+    if (indefinite == Indefinite::Refuse) refuse(s.str());
+    warn(s.str() + "; fixed joints merge the link with others, so their merged inertia is checked instead");
+  } else if (moments(0) < 0) {
     I = eigen.eigenvectors() * moments.cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
     if (-moments(0) > silent) {
       std::ostringstream s;
@@ -324,6 +326,7 @@ Model build_model(const ModelSpec& spec_in, std::vector<std::string>* warnings) 
     }
     if (!all_finite(f.offset)) fail(spec, label + ": offset has NaN or Inf");
   }
+  check_frames(spec);
 
   Model m;
   m.name = spec.name;
@@ -339,6 +342,8 @@ Model build_model(const ModelSpec& spec_in, std::vector<std::string>* warnings) 
   m.parent = parent;
   m.bodies = spec.bodies;
   m.feet = spec.feet;
+  m.frames = spec.frames;  // grouped by body, keeping the source's order within a body
+  std::stable_sort(m.frames.begin(), m.frames.end(), [](const Frame& a, const Frame& b) { return a.body < b.body; });
   m.couplings = spec.couplings;
   std::sort(m.couplings.begin(), m.couplings.end(),
             [](const Coupling& a, const Coupling& b) { return a.follower < b.follower; });
@@ -366,8 +371,14 @@ Model build_model(const ModelSpec& spec_in, std::vector<std::string>* warnings) 
   }
   for (const Body& b : m.bodies) m.inertia.push_back(spatial_inertia(b.mass, b.com, b.inertia_com));
   derive_sets(m);
-  check_moving_inertia(spec, m);
   add_actuators(m, spec.actuators);
+  // A singular M (e.g. a massless moving leaf) loads: kinematics and inverse dynamics work; the
+  // functions that need M⁻¹ refuse the model (docs/model.md, "Singular mass matrix").
+  if (!m.singular_mass_matrix.empty() && warnings != nullptr) {
+    warnings->push_back(spec.source + ": " + m.singular_mass_matrix + "; kinematics and inverse dynamics "
+                        "work, forward dynamics and OSC refuse it (lock the joint, or give the body mass "
+                        "or the joint armature)");
+  }
   return m;
 }
 

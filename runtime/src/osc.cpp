@@ -198,6 +198,7 @@ double default_ground_mass(const Model& model) {
 const OscQuantities& osc_open_chain(const Model& model, Data& data, const VectorRef& q,
                                     const VectorRef& v, const Matrix3X& f_feet_world) {
   detail::check_qv("osc_open_chain", model, data, q, v);
+  detail::check_invertible_mass("osc_open_chain", model);
   detail::check_feet_matrix("osc_open_chain", "f_feet_world", model, f_feet_world);
   check_trunk_task("osc_open_chain", model);
   // f_i^e: the measured foot forces as body wrenches (the same construction as Alg. 4's input)
@@ -212,6 +213,7 @@ const OscQuantities& osc_closed_chain(const Model& model, Data& data, const Vect
                                       const VectorRef& v, const std::vector<int>& contact_feet,
                                       double ground_mass) {
   detail::check_qv("osc_closed_chain", model, data, q, v);
+  detail::check_invertible_mass("osc_closed_chain", model);
   check_trunk_task("osc_closed_chain", model);
   check_contact_feet("osc_closed_chain", model, contact_feet);
   kinematics(model, data, q, v);
@@ -232,6 +234,7 @@ const OscQuantities& osc_closed_form(const Model& model, Data& data, OscReferenc
                                      const VectorRef& q, const VectorRef& v,
                                      const Matrix3X& f_feet_world) {
   detail::check_qv("osc_closed_form", model, data, q, v);
+  detail::check_invertible_mass("osc_closed_form", model);
   detail::check_feet_matrix("osc_closed_form", "f_feet_world", model, f_feet_world);
   check_trunk_task("osc_closed_form", model);
   mass_matrix(model, data, q);
@@ -258,6 +261,7 @@ const OscQuantities& osc_closed_form_constrained(const Model& model, Data& data,
                                                  const VectorRef& v,
                                                  const std::vector<int>& contact_feet) {
   detail::check_qv("osc_closed_form_constrained", model, data, q, v);
+  detail::check_invertible_mass("osc_closed_form_constrained", model);
   check_trunk_task("osc_closed_form_constrained", model);
   check_contact_feet("osc_closed_form_constrained", model, contact_feet);
   mass_matrix(model, data, q);

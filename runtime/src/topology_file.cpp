@@ -125,6 +125,23 @@ ActuatorSpec read_actuator(const YamlReader& yaml, const YAML::Node& n) {
   return a;
 }
 
+// A `frames:` entry: {name, body: LINK, xyz, rpy} (xyz and rpy default to zero).
+FrameSpec read_frame(const YamlReader& yaml, const YAML::Node& n) {
+  FrameSpec f;
+  f.name = yaml.scalar<std::string>(yaml.required(n, "name"), "frame name");
+  const std::string what = "frame '" + f.name + "'";
+  for (const auto& kv : n) {
+    const std::string key = kv.first.as<std::string>();
+    if (key != "name" && key != "body" && key != "xyz" && key != "rpy") {
+      yaml.fail(kv.first, what + ": unknown key '" + key + "' (name, body, xyz, rpy)");
+    }
+  }
+  f.link = yaml.scalar<std::string>(yaml.required(n, "body"), what + " body");
+  if (n["xyz"]) f.translation = yaml.vector3(n["xyz"], what + " xyz");
+  if (n["rpy"]) f.rotation = rotation_from_rpy(yaml.vector3(n["rpy"], what + " rpy"));
+  return f;
+}
+
 Topology read_arrays(const YamlReader& yaml, const YAML::Node& root) {
   Topology t;
   t.source = yaml.path();
@@ -144,6 +161,10 @@ Topology read_arrays(const YamlReader& yaml, const YAML::Node& root) {
       t.feet.push_back({name, yaml.scalar<std::string>(yaml.required(f, "body"), "foot '" + name + "' body"),
                         yaml.vector3(yaml.required(f, "offset"), "foot '" + name + "' offset")});
     }
+  }
+  if (const YAML::Node frames = root["frames"]) {
+    if (!frames.IsSequence()) yaml.fail(frames, "frames: expected a list");
+    for (const YAML::Node& f : frames) t.frames.push_back(read_frame(yaml, f));
   }
   if (const YAML::Node actuators = root["actuators"]) {
     if (!actuators.IsSequence()) yaml.fail(actuators, "actuators: expected a list");
@@ -232,6 +253,15 @@ Model load_topology(const std::string& path, std::vector<std::string>* warnings)
       throw ModelError(path + ": foot '" + f.name + "': body '" + f.link + "' is not in the body list");
     }
     spec.feet.push_back({f.name, it->second, f.offset});
+  }
+  // Frames: one per body at its origin, then the file's own (docs/model.md, "Frames").
+  for (size_t b = 0; b < t.bodies.size(); ++b) spec.frames.push_back({t.bodies[b], static_cast<int>(b)});
+  for (const FrameSpec& f : t.frames) {
+    const auto it = number_of.find(f.link);
+    if (it == number_of.end()) {
+      throw ModelError(path + ": frame '" + f.name + "': body '" + f.link + "' is not in the body list");
+    }
+    spec.frames.push_back({f.name, it->second, f.rotation.transpose(), f.translation});
   }
   return build_model(spec, warnings);
 }

@@ -91,7 +91,9 @@ struct BodyDraft {
 };
 
 /// Lumps rigid parts expressed in one frame: mass sum, mass-weighted COM, and the parallel-axis
-/// theorem for each part's inertia about the common COM.
+/// theorem for each part's inertia about the common COM. A massless part's rotational inertia is a
+/// pure rotational inertia, the same about every point: it is summed as it is, also when the whole
+/// body is massless (then the COM is the body origin).
 Body lump(const std::string& name, const std::vector<Body>& parts) {
   Body b;
   b.name = name;
@@ -100,8 +102,7 @@ Body lump(const std::string& name, const std::vector<Body>& parts) {
     b.mass += p.mass;
     first_moment += p.mass * p.com;
   }
-  if (b.mass == 0) return b;
-  b.com = first_moment / b.mass;
+  if (b.mass > 0) b.com = first_moment / b.mass;
   for (const Body& p : parts) {
     const Vector3 d = p.com - b.com;
     b.inertia_com += p.inertia_com + p.mass * (d.squaredNorm() * Matrix3::Identity() - d * d.transpose());
@@ -241,6 +242,16 @@ class UrdfTranslator {
     return root;
   }
 
+  // Whether fixed joints merge `link` with other links into one body (it was merged into `body`, or a
+  // fixed child will be merged into it): its inertia is then only a part of the body's.
+  bool merged_with_others(const std::string& link, int body) const {
+    if (drafts_[static_cast<size_t>(body)].links.size() > 1) return true;
+    const auto kids = child_joints_.find(link);
+    if (kids == child_joints_.end()) return false;
+    return std::any_of(kids->second.begin(), kids->second.end(),
+                       [](const UrdfJointEdge* j) { return j->type == "fixed"; });
+  }
+
   void add_mass_properties(const std::string& link, int body, const Pose& pose) {
     const urdf::InertialSharedPtr& in = urdf_.getLink(link)->inertial;
     if (in == nullptr) return;
@@ -260,7 +271,8 @@ class UrdfTranslator {
                              "the world (it cannot move), so the inertia is ignored");
       }
     }
-    part = repair_mass_properties(part, link_where(link), warnings_);
+    part = repair_mass_properties(part, link_where(link), warnings_,
+                                  merged_with_others(link, body) ? Indefinite::Defer : Indefinite::Refuse);
     part.com = pose.R * part.com + pose.p;  // link frame → body frame
     part.inertia_com = pose.R * part.inertia_com * pose.R.transpose();
     drafts_[static_cast<size_t>(body)].parts.push_back(part);
@@ -344,6 +356,30 @@ class UrdfTranslator {
     }
     const Pose& pose = it->second.pose;
     return {f.name, it->second.body, pose.R * f.offset + pose.p};
+  }
+
+  // A declared frame: its pose in its link's frame, composed with the link's placement in its body.
+  Frame resolve_frame(const FrameSpec& f, const std::string& source, const std::vector<int>& number_of) const {
+    const auto it = placement_.find(f.link);
+    if (it == placement_.end()) {
+      throw ModelError(source + ": frame '" + f.name + "': link '" + f.link + "' is not a link of the model");
+    }
+    const Pose& link = it->second.pose;
+    return {f.name, number_of[static_cast<size_t>(it->second.body)], (link.R * f.rotation).transpose(),
+            link.R * f.translation + link.p};
+  }
+
+  // One frame per link (docs/model.md, "Frames"), merged links included, in body order and, within
+  // a body, in the order the depth-first visit met them (the body's own link first).
+  std::vector<Frame> link_frames(const std::vector<int>& order, const std::vector<int>& number_of) const {
+    std::vector<Frame> frames;
+    for (const int draft : order) {
+      for (const std::string& link : drafts_[static_cast<size_t>(draft)].links) {
+        const Pose& pose = placement_.at(link).pose;
+        frames.push_back({link, number_of[static_cast<size_t>(draft)], pose.R.transpose(), pose.p});
+      }
+    }
+    return frames;
   }
 
   // Default feet: one per leaf body, at its last merged massless tip link (toe/foot links) if any,
@@ -459,6 +495,10 @@ class UrdfTranslator {
     }
     for (Foot& f : feet) f.body = number_of[static_cast<size_t>(f.body)];
     spec.feet = feet;
+    spec.frames = link_frames(order, number_of);
+    if (topo) {
+      for (const FrameSpec& f : topo->frames) spec.frames.push_back(resolve_frame(f, topo->source, number_of));
+    }
     if (topo) spec.actuators = topo->actuators;
     return spec;
   }

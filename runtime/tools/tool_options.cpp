@@ -94,8 +94,15 @@ Model load_model(const LoadOptions& opts) {
   }
   Model model = standalone ? load_topology(opts.input, &warnings)
                            : load_urdf(opts.input, opts.urdf, &warnings);
-  for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+  for (const std::string& w : warnings) {
+    // an --armature that regularises a singular M (docs/model.md) makes its warning moot
+    const bool moot = !opts.armature.empty() && w.find(": the mass matrix is singular: ") != std::string::npos;
+    if (!moot) std::cerr << "warning: " << w << "\n";
+  }
   add_actuators(model, opts.armature);
+  if (!opts.armature.empty() && !model.singular_mass_matrix.empty()) {
+    std::cerr << "warning: " << opts.input << ": " << model.singular_mass_matrix << "\n";
+  }
   return model;
 }
 

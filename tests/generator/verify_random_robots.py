@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
 """rbdc verify on the random robots of seeds FIRST..LAST (generator/rbdcgen/random_robot.py): even
 seeds with a floating base, odd seeds with a fixed base, each group in one harness (one compile).
-Usage: verify_random_robots.py FIRST LAST [SCENE] [--actuators]
+Usage: verify_random_robots.py FIRST LAST [SCENE] [--actuators | --massless] [--tolerance T]
   SCENE: a scene file, e.g. the derivatives one; --actuators: the random standalone topology files
-  with geared rotors and armature (random_actuated_topology) instead of the random URDFs."""
+  with geared rotors and armature (random_actuated_topology) instead of the random URDFs;
+  --massless: random URDFs with massless bodies anywhere (a singular M leaves the functions that
+  need M⁻¹ out, docs/model.md; the rest is verified); --tolerance: the relative tolerance
+  (default 1e-10)."""
 import argparse
 import subprocess
 import sys
@@ -21,7 +24,10 @@ def main() -> int:
     parser.add_argument("first", type=int)
     parser.add_argument("last", type=int)
     parser.add_argument("scene", nargs="?")
-    parser.add_argument("--actuators", action="store_true")
+    kind = parser.add_mutually_exclusive_group()
+    kind.add_argument("--actuators", action="store_true")
+    kind.add_argument("--massless", action="store_true")
+    parser.add_argument("--tolerance", default="1e-10")
     args = parser.parse_args()
     scene = ["--scene", args.scene] if args.scene else []
     failed = 0
@@ -35,11 +41,11 @@ def main() -> int:
                         path.write_text(random_actuated_topology(seed, base == "floating"))
                     else:
                         path = Path(directory) / f"random_{seed}.urdf"
-                        path.write_text(random_urdf(seed))
+                        path.write_text(random_urdf(seed, massless=args.massless))
                     files.append(str(path))
             start = time.monotonic()
             result = subprocess.run([str(ROOT / "rbdc"), "verify", *files, f"--{base}-base", "--states", "20",
-                                     "--tolerance", "1e-10", *scene])
+                                     "--tolerance", args.tolerance, *scene])
             print(f"{len(files)} random robots, {base} base: exit {result.returncode}, "
                   f"{time.monotonic() - start:.1f} s", flush=True)
             failed += result.returncode != 0

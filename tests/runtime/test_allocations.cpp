@@ -114,6 +114,21 @@ TEST_P(Allocations, NoAlgorithmCallAllocates) {
   EXPECT_EQ(allocations_during([&] { feet_jacobian(model, data, q); }), 0);
   EXPECT_EQ(allocations_during([&] { feet_jacobian_contact(model, data, q, world_R_contact); }), 0);
   EXPECT_EQ(allocations_during([&] { forward_dynamics(model, data, q, v, tau, f); }), 0);
+  EXPECT_EQ(allocations_during([&] { frame_placements(model, data, q); }), 0);
+  EXPECT_EQ(allocations_during([&] { frame_velocities(model, data, q, v); }), 0);
+  EXPECT_EQ(allocations_during([&] { frame_jacobians(model, data, q); }), 0);
+  EXPECT_EQ(allocations_during([&] { frame_bias_accelerations(model, data, q, v); }), 0);
+  EXPECT_EQ(allocations_during([&] { center_of_mass(model, data, q, v); }), 0);
+  EXPECT_EQ(allocations_during([&] { center_of_mass_jacobian(model, data, q); }), 0);
+  EXPECT_EQ(allocations_during([&] { centroidal_momentum_matrix(model, data, q); }), 0);
+  EXPECT_EQ(allocations_during([&] { centroidal_bias(model, data, q, v); }), 0);
+  EXPECT_EQ(allocations_during([&] { mass_matrix_inverse(model, data, q); }), 0);
+  ContactDynamicsData contact(model, contacts, BaumgarteGains{10.0, 2.0});  // sized outside
+  ContactDynamicsData no_contact(model, {});
+  const Matrix3X anchors = f;
+  EXPECT_EQ(allocations_during([&] { contact_dynamics(model, data, contact, q, v, tau, anchors); }), 0);
+  EXPECT_EQ(allocations_during([&] { contact_dynamics(model, data, no_contact, q, v, tau); }), 0);
+  EXPECT_EQ(allocations_during([&] { impulse_dynamics(model, data, contact, q, v, 0.5); }), 0);
   if (!model.floating_base) return;
   OscReferenceData ref(model);  // sized here, outside the counted calls
   EXPECT_EQ(allocations_during([&] { osc_open_chain(model, data, q, v, f); }), 0);
@@ -143,6 +158,10 @@ TEST_P(Allocations, NoDerivativeCallAllocates) {
   EXPECT_EQ(allocations_during([&] { feet_velocity_derivatives(model, data, d, q, v); }), 0);
   EXPECT_EQ(allocations_during([&] { feet_force_term_derivatives(model, data, d, q, f); }), 0);
   EXPECT_EQ(allocations_during([&] { integrate(model, q, v, q_next); }), 0);
+  std::vector<int> contacts;
+  for (int k = 0; k < static_cast<int>(model.feet.size()); ++k) contacts.push_back(k);
+  ContactDynamicsData contact(model, contacts, BaumgarteGains{10.0, 2.0});  // sized outside
+  EXPECT_EQ(allocations_during([&] { contact_dynamics_derivatives(model, data, d, contact, q, v, tau, f); }), 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Robots, Allocations, ::testing::Range(0, 4));

@@ -3,47 +3,21 @@
 // ∂a/∂f = M⁻¹Jᵀ, ∂τ/∂q = ∂(c + g)/∂q + ∂(M a)/∂q, ∂τ/∂v = ∂(c + g)/∂v, zero trunk-position columns.
 #include <gtest/gtest.h>
 
-#include <functional>
 #include <limits>
 #include <string>
 
+#include "finite_differences.hpp"
+#include "model_test_support.hpp"
 #include "rbdc/rbdc.hpp"
 #include "test_robots.hpp"
 
 namespace rbdc {
 namespace {
 
-constexpr double kStep = 1e-5;         // central differences: O(h²) truncation, O(ε/h) round-off
-constexpr double kFdTolerance = 1e-6;  // relative to max(1, largest entry)
-
-using Function = std::function<VectorX(const VectorX&)>;
-
-/// Central differences of f along the manifold tangent of q: column k = (f(q ⊕ h e_k) − f(q ⊕ −h e_k)) / 2h.
-MatrixX manifold_differences(const Model& model, const VectorX& q, const Function& f) {
-  MatrixX out(f(q).size(), model.nv);
-  VectorX q_plus(model.nq), q_minus(model.nq);
-  for (Eigen::Index k = 0; k < model.nv; ++k) {
-    const VectorX step = kStep * VectorX::Unit(model.nv, k);
-    integrate(model, q, step, q_plus);
-    integrate(model, q, -step, q_minus);
-    out.col(k) = (f(q_plus) - f(q_minus)) / (2 * kStep);
-  }
-  return out;
-}
-
-/// Central differences of f in plain coordinates of x.
-MatrixX plain_differences(const VectorX& x, const Function& f) {
-  MatrixX out(f(x).size(), x.size());
-  for (Eigen::Index k = 0; k < x.size(); ++k) {
-    const VectorX step = kStep * VectorX::Unit(x.size(), k);
-    out.col(k) = (f(x + step) - f(x - step)) / (2 * kStep);
-  }
-  return out;
-}
-
-double relative_error(const MatrixX& actual, const MatrixX& expected) {
-  return (actual - expected).cwiseAbs().maxCoeff() / std::max(1.0, expected.cwiseAbs().maxCoeff());
-}
+using test::kFdTolerance;
+using test::manifold_differences;
+using test::plain_differences;
+using test::relative_error;
 
 VectorX flat(const Matrix3X& m) { return Eigen::Map<const VectorX>(m.data(), m.size()); }
 Matrix3X unflat(const VectorX& x) { return Eigen::Map<const Matrix3X>(x.data(), 3, x.size() / 3); }
@@ -238,14 +212,7 @@ TEST(DerivativesWithRotors, TheRotorCaseReallyHasRotors) {
   EXPECT_TRUE(model.has_rotors);  // otherwise its finite-difference tests above prove nothing new
 }
 
-std::string error_of(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::argument_error;
 
 TEST(DerivativeArguments, WrongSizesAreRefusedNamingFunctionAndArgument) {
   const Model model = test::quadruped();
@@ -254,25 +221,25 @@ TEST(DerivativeArguments, WrongSizesAreRefusedNamingFunctionAndArgument) {
   test::RandomState random(3);
   const VectorX q = random.configuration(model), v = VectorX::Zero(model.nv);
   const Matrix3X f = random.forces(model);
-  EXPECT_EQ(error_of([&] { inverse_dynamics_derivatives(model, data, derivatives, q, v, VectorX(3)); }),
+  EXPECT_EQ(argument_error([&] { inverse_dynamics_derivatives(model, data, derivatives, q, v, VectorX(3)); }),
             "rbdc::inverse_dynamics_derivatives: a has 3 entries, expected 18");
-  EXPECT_EQ(error_of([&] { bias_derivatives(model, data, derivatives, q, VectorX(17)); }),
+  EXPECT_EQ(argument_error([&] { bias_derivatives(model, data, derivatives, q, VectorX(17)); }),
             "rbdc::bias_derivatives: v has 17 entries, expected 18");
-  EXPECT_EQ(error_of([&] { gravity_derivatives(model, data, derivatives, VectorX(18)); }),
+  EXPECT_EQ(argument_error([&] { gravity_derivatives(model, data, derivatives, VectorX(18)); }),
             "rbdc::gravity_derivatives: q has 18 entries, expected 19");
-  EXPECT_EQ(error_of([&] {
+  EXPECT_EQ(argument_error([&] {
               forward_dynamics_derivatives(model, data, derivatives, q, v, VectorX(18), f);
             }),
             "rbdc::forward_dynamics_derivatives: tau has 18 entries, expected 12");
-  EXPECT_EQ(error_of([&] { feet_force_term_derivatives(model, data, derivatives, q, Matrix3X(3, 2)); }),
+  EXPECT_EQ(argument_error([&] { feet_force_term_derivatives(model, data, derivatives, q, Matrix3X(3, 2)); }),
             "rbdc::feet_force_term_derivatives: f_world has 2 entries, expected 4");
   const Model arm = test::arm7();
   DerivativeData arm_derivatives(arm);
-  EXPECT_EQ(error_of([&] { feet_velocity_derivatives(model, data, arm_derivatives, q, v); }),
+  EXPECT_EQ(argument_error([&] { feet_velocity_derivatives(model, data, arm_derivatives, q, v); }),
             "rbdc::feet_velocity_derivatives: derivative data was built for a different model than "
             "'quadruped'");
   VectorX out(model.nq);
-  EXPECT_EQ(error_of([&] { integrate(model, q, VectorX(19), out); }),
+  EXPECT_EQ(argument_error([&] { integrate(model, q, VectorX(19), out); }),
             "rbdc::integrate: delta has 19 entries, expected 18");
 }
 
@@ -348,7 +315,7 @@ TEST(Manifold, SwapTrunkAngularLinearIsAnInvolutionOnTheTrunkBlock) {
   swap_trunk_angular_linear(model, m, false);
   EXPECT_EQ(m.col(4), original.col(1));
   MatrixX small(2, 2);
-  EXPECT_EQ(error_of([&] { swap_trunk_angular_linear(model, small, false); }),
+  EXPECT_EQ(argument_error([&] { swap_trunk_angular_linear(model, small, false); }),
             "rbdc::swap_trunk_angular_linear: the matrix has 2 columns, expected at least 6 (a "
             "floating base's velocity block)");
 }

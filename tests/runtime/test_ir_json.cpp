@@ -47,7 +47,7 @@ TEST(IrJson, KeysAreSortedAndValuesComeFromTheModel) {
     if (line.rfind("  \"", 0) == 0) keys.push_back(line.substr(3, line.find('"', 3) - 3));
   }
   const std::vector<std::string> expected = {"PRED", "SUCC", "bodies", "couplings", "feet", "floating_base",
-                                             "format", "gravity", "joints", "kappa", "lambda", "mu", "name",
+                                             "format", "frames", "gravity", "joints", "kappa", "lambda", "mu", "name",
                                              "nb", "nq", "nu", "nv"};
   EXPECT_EQ(keys, expected);
   EXPECT_THAT(ir, HasSubstr("\"format\": \"rbdc-ir-1\""));

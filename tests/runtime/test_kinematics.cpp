@@ -10,30 +10,8 @@
 namespace rbdc {
 namespace {
 
-using Pose = Eigen::Isometry3d;
-
-/// World pose of every body by the product of homogeneous transforms (child frame → world).
-std::vector<Pose> body_poses(const Model& model, const VectorX& q) {
-  std::vector<Pose> pose(static_cast<size_t>(model.nb), Pose::Identity());
-  if (model.floating_base) {
-    pose[0].translation() = q.head<3>();
-    pose[0].linear() = Eigen::Quaterniond(q[3], q[4], q[5], q[6]).normalized().toRotationMatrix();
-  }
-  for (int i = 1; i < model.nb; ++i) {
-    const Joint& j = model.joints[static_cast<size_t>(i)];
-    Pose placement = Pose::Identity();  // joint frame in the parent frame
-    placement.linear() = j.rotation.transpose();
-    placement.translation() = j.translation;
-    Pose motion = Pose::Identity();
-    if (j.type == JointType::Prismatic) {
-      motion.translation() = q[j.q_index] * j.axis;
-    } else {
-      motion.linear() = Eigen::AngleAxisd(q[j.q_index], j.axis).toRotationMatrix();
-    }
-    pose[static_cast<size_t>(i)] = pose[static_cast<size_t>(model.parent[static_cast<size_t>(i)])] * placement * motion;
-  }
-  return pose;
-}
+using test::body_poses;
+using test::Pose;
 
 class Kinematics : public ::testing::TestWithParam<int> {
  protected:

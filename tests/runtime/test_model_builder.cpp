@@ -10,6 +10,7 @@
 namespace rbdc {
 namespace {
 
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 
 Body unit_body(const std::string& name) {
@@ -202,17 +203,22 @@ TEST(ModelBuilder, ChecksCouplings) {
   EXPECT_THAT(error_of(spec), HasSubstr("multiplier or offset is NaN"));
 }
 
-TEST(ModelBuilder, RefusesAMasslessMovingLeaf) {
+// A massless moving leaf loads with a warning and marks M singular (docs/model.md, "Singular mass
+// matrix"); the functions that need M⁻¹ refuse such a model (test_singular_mass.cpp).
+TEST(ModelBuilder, MarksAMasslessMovingLeafSingular) {
   ModelSpec spec = quadruped_spec();
   spec.bodies[6].mass = 0;
   spec.bodies[6].inertia_com.setZero();
-  const std::string e = error_of(spec);
-  EXPECT_THAT(e, HasSubstr("'RF_knee' (6) is a moving leaf with zero mass"));
-  EXPECT_THAT(e, HasSubstr("singular"));
+  std::vector<std::string> warnings;
+  const Model m = build_model(spec, &warnings);
+  EXPECT_THAT(m.singular_mass_matrix, AllOf(HasSubstr("the mass matrix is singular"),
+                                            HasSubstr("body 'RF_knee' is a moving leaf with zero mass")));
+  ASSERT_FALSE(warnings.empty());
+  EXPECT_THAT(warnings.back(), HasSubstr("forward dynamics and OSC refuse it"));
   spec.bodies[5].mass = 0;  // a massless inner body carrying a massive leaf is fine
   spec.bodies[5].inertia_com.setZero();
   spec.bodies[6] = unit_body("RF_knee");
-  EXPECT_NO_THROW(build_model(spec));
+  EXPECT_EQ(build_model(spec).singular_mass_matrix, "");
 }
 
 TEST(ModelBuilder, RefusesAFootOnAMissingBody) {

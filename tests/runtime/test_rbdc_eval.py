@@ -37,6 +37,22 @@ check(len(out["feet"]["names"]) == 4 and len(out["feet"]["positions"]) == 4, "fo
 check(len(out["feet"]["jacobian"]) == 12 and len(out["feet"]["jacobian"][0]) == 18, "Jacobian shape")
 check(abs(out["g"][5] - 8.252 * 9.81) < 1e-9, "g: the trunk carries the weight upright")
 check("tau" not in out, "no tau without --a")
+check(len(out["feet"]["bias_accelerations"]) == 4, "feet J̇v, one row per foot")
+cen = out["centroidal"]
+check(len(cen["momentum_matrix"]) == 6 and len(cen["momentum_matrix"][0]) == 18, "A_G shape")
+check(abs(cen["momentum_matrix"][3][3] - 8.252) < 1e-9, "A_G: linear momentum of the trunk's v is m")
+check(len(out["M_inverse"]) == 18, "M_inverse rows")
+MMinv = [[sum(M[r][k] * out["M_inverse"][k][c] for k in range(18)) for c in range(18)] for r in range(18)]
+check(all(abs(MMinv[r][c] - (r == c)) < 1e-9 for r in range(18) for c in range(18)), "M · M⁻¹ = 1")
+check("frames" not in out, "no frames without --frames")
+framed = json.loads(run(CHEETAH, "--q", STANDING, "--frames", "LF_foot,trunk").stdout)["frames"]
+check(list(framed) == ["LF_foot", "trunk"], "frames in the order asked")
+check(len(framed["LF_foot"]["jacobian_world"]) == 6 and len(framed["LF_foot"]["jacobian_world"][0]) == 18,
+      "frame Jacobian 6 x nv")
+check(all(abs(a - b) < 1e-12 for a, b in zip(framed["LF_foot"]["position"], out["feet"]["positions"][0])),
+      "the LF_foot link frame is the LF foot point")
+unknown = run(CHEETAH, "--frames", "LF_shin")
+check(unknown.returncode == 2 and "no frame 'LF_shin'" in unknown.stderr, "unknown frame: exit 2 naming it")
 
 with_a = json.loads(run(CHEETAH, "--q", STANDING, "--a", ",".join(["0"] * 18)).stdout)
 check(with_a["tau"] == with_a["g"], "tau at v = a = 0 equals g")
@@ -159,6 +175,33 @@ check(max(abs(M_da_dtau[r][c] - (1.0 if r == c + 6 else 0.0)) for r in range(18)
       "with rotors and armature: M da_dtau = S^T")
 check(max(abs(a - b) for a, b in zip(rd["dbias_dq"][JOINT], d["dbias_dq"][JOINT])) > 1e-6,
       "the rotors change the derivatives")
+
+# --contacts: contact and impulse dynamics of the four stance feet, checked with the printed M, g, J
+# (v = 0: c = 0): M qdd + g − Sᵀτ − Jᵀλ = 0, J qdd = 0 (J̇v = 0 at v = 0), M (v⁺ − v) = JᵀΛ.
+FEET = "LF_foot,RF_foot,LH_foot,RH_foot"
+stance = run(CHEETAH, "--q", STANDING, "--tau", TAU, "--contacts", FEET, "--restitution", "0.3",
+             "--derivatives")
+check(stance.returncode == 0, f"--contacts: exit {stance.returncode}: {stance.stderr}")
+so = json.loads(stance.stdout)
+qdd, lam = so["contact_dynamics"]["qdd"], so["contact_dynamics"]["lambda"]
+J, M, g = so["feet"]["jacobian"], so["M"], so["g"]
+tau_full = [0.0] * 6 + [float(t) for t in TAU.split(",")]
+row1 = [sum(M[r][k] * qdd[k] for k in range(18)) + g[r] - tau_full[r] - sum(J[c][r] * lam[c] for c in range(12))
+        for r in range(18)]
+check(max(map(abs, row1)) < 1e-9 * max(map(abs, g)), "contact dynamics: M qdd + g − Sᵀτ − Jᵀλ = 0")
+check(max(abs(sum(J[c][k] * qdd[k] for k in range(18))) for c in range(12)) < 1e-9, "contact dynamics: J qdd = 0")
+check(len(lam) == 12 and max(map(abs, lam)) > 1, "contact forces: twelve entries, not all zero")
+check(so["impulse_dynamics"]["v_plus"] == [0.0] * 18 or max(map(abs, so["impulse_dynamics"]["impulse"])) < 1e-12,
+      "no impulse at rest")
+shapes = {"da_dq": (18, 18), "da_dv": (18, 18), "da_dtau": (18, 12), "dlambda_dq": (12, 18),
+          "dlambda_dv": (12, 18), "dlambda_dtau": (12, 12)}
+cd = so["contact_dynamics_derivatives"]
+check({k: (len(m), len(m[0])) for k, m in cd.items()} == shapes, "contact derivative names and shapes")
+for bad_args, what in (((("--contacts", "LF_foot,XX")), "is not a foot"),
+                       (("--contacts", FEET, "--restitution", "2"), "not in [0, 1]"),
+                       (("--kd", "3"), "need --contacts")):
+    bad = run(CHEETAH, *bad_args)
+    check(bad.returncode == 2 and what in bad.stderr and bad.stdout == "", f"refused: {bad_args}: {bad.stderr}")
 
 for f in failures:
     print("FAILED:", f)

@@ -278,6 +278,95 @@ TEST(Rotors, MiniCheetahReproducesCheetahSoftwareModelChecks) {
   EXPECT_LT((tau - expected).cwiseAbs().maxCoeff(), 1e-10);
 }
 
+// Cheetah-Software's two Mini Cheetah ABA cases (common/test/test_mini_cheetah_model.cpp,
+// simulatorDynamicsABANoExternalForceMiniCheetah and simulatorDynamicsWithExternalForceMiniCheetah):
+// body orientation rBody = Cx(.123) Cz(.232) Cy(.111) with their coordinateRotation C (the transpose
+// of the active rotation), passed as rotationMatrixToQuaternion(rBodyᵀ), so W_R_B = rBody; body
+// velocity (1…6) (ω; v, body coordinates), position (6, 7, 8); in MIT's joint order (FR, FL, HR,
+// HL; abad, hip, knee) q_k = k + 1, q̇_k = 2(k + 1), τ_k = −3(k + 1). The second case adds on
+// every link (MIT body b = 5 trunk, 6 + 3·leg + part) the spatial force f_b,j = 0.3 (b + j + 1),
+// (moment; force) in world coordinates about the world origin (runABA: pA[i] -= Xa[i]^{-T} f_i);
+// read as body coordinates at the body origin instead, the second case fails.
+// Their printed references: dBodyPosition, dBodyVelocity (the trunk's spatial acceleration) and q̈.
+struct CheetahSoftwareCase {
+  const char* name;
+  bool external_forces;
+  Vector3 pd;
+  Vector6 vbd;
+  std::vector<double> qdd;  // MIT's joint order
+};
+
+void PrintTo(const CheetahSoftwareCase& c, std::ostream* os) { *os << c.name; }
+
+class CheetahSoftwareAba : public ::testing::TestWithParam<CheetahSoftwareCase> {};
+
+TEST_P(CheetahSoftwareAba, RotorModelReproducesTheirPrintedDigits) {
+  const CheetahSoftwareCase& c = GetParam();
+  const Model m = mini_cheetah_with_rotors();
+  const auto C = [](double angle, const Vector3& axis) {  // their coordinateRotation
+    return Matrix3(Eigen::AngleAxisd(angle, axis).toRotationMatrix().transpose());
+  };
+  const Matrix3 W_R_B = C(.123, Vector3::UnitX()) * C(.232, Vector3::UnitZ()) * C(.111, Vector3::UnitY());
+  const Eigen::Quaterniond orientation(W_R_B);
+  const std::vector<std::string> mit_legs = {"RF", "LF", "RH", "LH"};  // MIT's FR, FL, HR, HL
+  const std::vector<std::string> parts = {"abad", "hip", "knee"};
+  const auto mit_index = [&](const std::string& name) {  // MIT's link number 0 … 11 of a body/joint
+    for (int k = 0; k < 12; ++k) {
+      if (name.rfind(mit_legs[static_cast<size_t>(k / 3)] + "_" + parts[static_cast<size_t>(k % 3)], 0) == 0) return k;
+    }
+    return -1;
+  };
+  VectorX q(m.nq), v(m.nv), tau(m.num_joints());
+  q << 6, 7, 8, orientation.w(), orientation.x(), orientation.y(), orientation.z(), VectorX::Zero(12);
+  v << 1, 2, 3, 4, 5, 6, VectorX::Zero(12);
+  for (int i = 1; i < m.nb; ++i) {
+    const Joint& joint = m.joints[static_cast<size_t>(i)];
+    const int k = mit_index(joint.name);
+    ASSERT_GE(k, 0) << joint.name;
+    q(joint.q_index) = k + 1;
+    v(joint.v_index) = 2 * (k + 1);
+    tau(i - 1) = -3.0 * (k + 1);
+  }
+  Data d(m);
+  VectorX qdd = forward_dynamics(m, d, q, v, tau, Matrix3X::Zero(3, static_cast<Eigen::Index>(m.feet.size())));
+  if (c.external_forces) {
+    const std::vector<Matrix6> X_world = world_transforms(m, d, q);  // X_W^i, world → body motion
+    std::vector<Vector6> wrenches(static_cast<size_t>(m.nb));
+    for (int i = 0; i < m.nb; ++i) {
+      const int b = i == 0 ? 5 : 6 + mit_index(m.bodies[static_cast<size_t>(i)].name);
+      Vector6 f_world;
+      for (int j = 0; j < 6; ++j) f_world(j) = 0.3 * (b + j + 1);
+      wrenches[static_cast<size_t>(i)] = X_world[static_cast<size_t>(i)].inverse().transpose() * f_world;
+    }
+    qdd += d.M_llt.solve(external_wrench_terms(m, d, q, wrenches));
+  }
+  const Vector3 pd = W_R_B * v.segment<3>(3);
+  Vector6 spatial = qdd.head<6>();
+  spatial.tail<3>() -= v.head<3>().cross(v.segment<3>(3));
+  // their digits: 6 significant figures (4 decimals for dBodyPosition)
+  const auto printed = [](double reference) { return 6e-6 * std::abs(reference) + 1e-12; };
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(pd(k), c.pd(k), 5e-5) << "dBodyPosition " << k;
+  for (int k = 0; k < 6; ++k) EXPECT_NEAR(spatial(k), c.vbd(k), printed(c.vbd(k))) << "dBodyVelocity " << k;
+  for (int i = 1; i < m.nb; ++i) {
+    const Joint& joint = m.joints[static_cast<size_t>(i)];
+    const double reference = c.qdd[static_cast<size_t>(mit_index(joint.name))];
+    EXPECT_NEAR(qdd(joint.v_index), reference, printed(reference)) << "qdd " << joint.name;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CheetahSoftwareAba,
+    ::testing::Values(
+        CheetahSoftwareCase{"NoExternalForce", false, Vector3(4.3717, 4.8598, 5.8541),
+                            (Vector6() << 1217.31, -182.793, -171.524, -4.09393, 33.6798, -59.975).finished(),
+                            {-1946.36, -1056.62, -1470.57, -3133.03, -1263.89, -2626.9, -6637.38, -4071.88,
+                             -4219.14, -7554.08, -3392.44, -5112.85}},
+        CheetahSoftwareCase{"WithExternalForce", true, Vector3(4.3717, 4.8598, 5.8541),
+                            (Vector6() << 3153.46, 42.6931, 264.584, -3.80573, -53.3519, 68.5713).finished(),
+                            {-1211.85, -1167.39, -2024.94, 394.414, -297.854, -2292.29, -1765.92, -4040.78,
+                             -4917.41, 149.368, -2508.2, -4969.02}}),
+    [](const ::testing::TestParamInfo<CheetahSoftwareCase>& info) { return std::string(info.param.name); });
+
 // The scene key `actuators` on the runtime side: `none` is the model without actuators, `armature`
 // the model without rotors whose diagonal gains armature + gr² aᵀ I a, joint by joint.
 TEST(Rotors, ActuatorModesReduceTheModel) {

@@ -46,6 +46,13 @@ void expect_same_model(const Model& a, const Model& b) {
     EXPECT_EQ(a.feet[k].body, b.feet[k].body);
     EXPECT_EQ(a.feet[k].offset, b.feet[k].offset);
   }
+  ASSERT_EQ(a.frames.size(), b.frames.size());
+  for (size_t k = 0; k < a.frames.size(); ++k) {
+    EXPECT_EQ(a.frames[k].name, b.frames[k].name);
+    EXPECT_EQ(a.frames[k].body, b.frames[k].body);
+    EXPECT_LT((a.frames[k].rotation - b.frames[k].rotation).cwiseAbs().maxCoeff(), 1e-15) << a.frames[k].name;
+    EXPECT_LT((a.frames[k].translation - b.frames[k].translation).cwiseAbs().maxCoeff(), 1e-15) << a.frames[k].name;
+  }
 }
 
 TEST(TopologyFile, MiniCheetahOverlayReadsEquation1AndTheFeet) {
@@ -84,6 +91,29 @@ TEST(TopologyFile, OverlayDisagreeingWithTheUrdfIsRefused) {
               HasSubstr("body 'LF_foot' is merged by a fixed joint into body 'LF_knee'"));
   EXPECT_THAT(model_error([] { mini_cheetah_with_overlay(data_path("topology_irregular.yaml")); }),
               HasSubstr("joint 3 (PRED 2, SUCC 4): must join body 3"));
+}
+
+TEST(TopologyFile, DeclaredFramesComposeWithTheirLinksPlacement) {
+  const Model m = mini_cheetah_with_overlay(data_path("topology_frames.yaml"));
+  const auto named = [&](const std::string& name) {
+    for (const Frame& f : m.frames) if (f.name == name) return f;
+    ADD_FAILURE() << "no frame " << name;
+    return Frame{};
+  };
+  const Frame foot = named("LF_foot"), sensor = named("LF_toe_sensor");
+  EXPECT_EQ(sensor.body, foot.body);  // LF_foot is merged into LF_knee
+  // the declared pose (xyz in LF_foot, rpy 0 0.5 0) composed with LF_foot's placement in LF_knee
+  const Matrix3 foot_R_sensor = Eigen::AngleAxisd(0.5, Vector3::UnitY()).toRotationMatrix();
+  EXPECT_LT((sensor.translation - (foot.translation + foot.rotation.transpose() * Vector3(0.01, 0, 0))).norm(), 1e-15);
+  EXPECT_LT((sensor.rotation - (foot.rotation.transpose() * foot_R_sensor).transpose()).norm(), 1e-15);
+}
+
+TEST(TopologyFile, BadFramesAreRefused) {
+  EXPECT_THAT(model_error([] { mini_cheetah_with_overlay(data_path("topology_frame_unknown_link.yaml")); }),
+              AllOf(HasSubstr("topology_frame_unknown_link.yaml"),
+                    HasSubstr("frame 'shin_camera': link 'LF_shin' is not a link of the model")));
+  EXPECT_THAT(model_error([] { mini_cheetah_with_overlay(data_path("topology_frame_duplicate.yaml")); }),
+              HasSubstr("frame 'trunk': the name is used twice"));
 }
 
 TEST(TopologyFile, BadStandaloneFilesAreRefused) {

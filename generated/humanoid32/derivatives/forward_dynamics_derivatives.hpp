@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_8a300a9bb1b1.hpp
+//   humanoid32/common/forward_dynamics_derivatives_3c1e669d3eed.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_8a300a9bb1b1.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_3c1e669d3eed.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -29,7 +29,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///
 /// operations    mul    add  div  sqrt  trig  neg   total
 ///             68885  61886   33     0    64  360  131228
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_8a300a9bb1b1::forward_dynamics_derivatives;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_3c1e669d3eed::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

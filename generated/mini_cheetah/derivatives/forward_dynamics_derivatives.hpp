@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_61acedaeb264.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_268e4027ff3d.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_61acedaeb264.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_268e4027ff3d.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -28,8 +28,10 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param da_df out 18x12: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
-///             13586  12236   14     0    24  121  25981
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_61acedaeb264::forward_dynamics_derivatives;
+///             14047  12483   14     0    24  227  26795
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 7721 arithmetic
+///   instructions, scalar tree 25981
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_268e4027ff3d::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

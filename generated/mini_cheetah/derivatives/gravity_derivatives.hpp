@@ -7,11 +7,11 @@
 // gravity_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   mini_cheetah/common/gravity_derivatives_77d00fdf69d9.hpp
+//   mini_cheetah/common/gravity_derivatives_0151df7d047d.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/gravity_derivatives_77d00fdf69d9.hpp"
+#include "mini_cheetah/common/gravity_derivatives_0151df7d047d.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -21,8 +21,10 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param dg_dq out 18x18: ∂g/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             590  379    0     0    24   58   1051
-using ::rbdc_gen::mini_cheetah::common::gravity_derivatives_77d00fdf69d9::gravity_derivatives;
+///             593  379    0     0    24   62   1058
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 296 arithmetic
+///   instructions, scalar tree 1051
+using ::rbdc_gen::mini_cheetah::common::gravity_derivatives_0151df7d047d::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

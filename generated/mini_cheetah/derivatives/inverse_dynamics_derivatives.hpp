@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   mini_cheetah/common/inverse_dynamics_derivatives_89b20fb59513.hpp
+//   mini_cheetah/common/inverse_dynamics_derivatives_10af216b38d3.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/inverse_dynamics_derivatives_89b20fb59513.hpp"
+#include "mini_cheetah/common/inverse_dynamics_derivatives_10af216b38d3.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -24,8 +24,10 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param dtau_dv out 18x18: ∂τ/∂v
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             3454  3265    0     0    24   63   6806
-using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_89b20fb59513::inverse_dynamics_derivatives;
+///             3488  3195    0     0    24   58   6765
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1842 arithmetic
+///   instructions, scalar tree 6806
+using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_10af216b38d3::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

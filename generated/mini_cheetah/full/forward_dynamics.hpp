@@ -7,11 +7,11 @@
 // forward_dynamics for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah/common/forward_dynamics_dadf25921df4.hpp
+//   mini_cheetah/common/forward_dynamics_54d2a46bb1c3.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/forward_dynamics_dadf25921df4.hpp"
+#include "mini_cheetah/common/forward_dynamics_54d2a46bb1c3.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -24,8 +24,10 @@ namespace rbdc_gen::mini_cheetah::full {
 /// @param a out 18x1: acceleration
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2237  1847   14     0    24    1   4123
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_dadf25921df4::forward_dynamics;
+///             2272  1854   14     0    24   81   4245
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1425 arithmetic
+///   instructions, scalar tree 4123
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_54d2a46bb1c3::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

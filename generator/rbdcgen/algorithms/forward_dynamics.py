@@ -121,3 +121,20 @@ def _solve_with_torques(m, h):
     L, inv_diag = mass_matrix_factor(m)
     m.mark("solve LᵀDL a = τ + τ_e − c − g")
     return tuple(ltdl_solve(L, inv_diag, parents, rhs, m.into_dof))
+
+
+def mass_matrix_inverse(m):
+    """M⁻¹ (rows) by solving Lᵀ D L x = e_k for each k over the dof tree (constant unit right-hand
+    sides fold the tree's zeros away); the lower triangle of column k is kept and mirrored, so each
+    entry of the symmetric inverse is computed once."""
+    n = m.robot.nv
+    parents = dof_parents(m.robot)
+    L, inv_diag = mass_matrix_factor(m)
+    zero, one = ex.const(0.0), ex.const(1.0)
+    rows = [[None] * n for _ in range(n)]
+    for k in range(n):
+        m.mark("M⁻¹ column %d" % k)
+        x = ltdl_solve(L, inv_diag, parents, [one if r == k else zero for r in range(n)], m.into_dof)
+        for r in range(k, n):
+            rows[r][k] = rows[k][r] = x[r]
+    return rows

@@ -8,51 +8,57 @@ from ..graph import spatial as sp
 from .kinematics import feet_positions, world_frames
 
 
-def feet_jacobian(m):
-    """J = [J_0; J_1; …] (3·n_feet × nv), world-frame foot velocities from v (conventions.md)."""
+def point_jacobian_columns(m, frames, body, point):
+    """World columns (angular, linear) of the motion of a point fixed to `body` at world position
+    `point` (Eq. B3 in world axes): the trunk's ω_B as (R ω_B, R ω_B × (p − p_0)), its v_B as (0, R
+    v_B), a revolute joint j of κ(body) as (a_j, a_j × (p − p_j)) with its world axis a_j, a
+    prismatic one as (0, a_j); other columns zero."""
     robot = m.robot
+    zero = sp.zeros(3)
+    angular = [zero] * robot.nv
+    linear = [zero] * robot.nv
+    if robot.floating_base:
+        R, p0 = frames[0]
+        lever = sp.vsub(point, p0)
+        Rt = sp.transpose(R)
+        for c in range(3):
+            angular[c] = Rt[c]
+            linear[c] = sp.cross(Rt[c], lever)
+            linear[3 + c] = Rt[c]
+    for j in robot.support[body]:
+        R_j, p_j = frames[j]
+        axis = sp.matvec(R_j, sp.vec(m.axis(j)))
+        col = m.joint(j).v_index
+        if m.joint(j).type == "revolute":
+            angular[col] = axis
+            linear[col] = sp.cross(axis, sp.vsub(point, p_j))
+        else:
+            linear[col] = axis
+    return angular, linear
+
+
+def feet_jacobian(m):
+    """J = [J_0; J_1; …] (3·n_feet × nv), world-frame foot velocities from v (conventions.md): the
+    linear world columns of each foot point."""
     frames = world_frames(m)
     positions = feet_positions(m, frames)
     rows = []
     for foot, p_foot in zip(m.feet, positions):
         m.mark("Jacobian of foot " + foot.name)
-        cols = [sp.zeros(3) for _ in range(robot.nv)]
-        if robot.floating_base:
-            R, p0 = frames[0]
-            lever = sp.vsub(p_foot, p0)
-            Rt = sp.transpose(R)
-            for c in range(3):
-                cols[c] = sp.cross(Rt[c], lever)   # ω_B enters as (R ω_B) × (p_f − p_0)
-                cols[3 + c] = Rt[c]                # v_B enters as R v_B
-        for j in robot.support[foot.body]:
-            R_j, p_j = frames[j]
-            axis = sp.matvec(R_j, sp.vec(m.axis(j)))
-            if m.joint(j).type == "revolute":
-                cols[m.joint(j).v_index] = sp.cross(axis, sp.vsub(p_foot, p_j))
-            else:
-                cols[m.joint(j).v_index] = axis
+        cols = point_jacobian_columns(m, frames, foot.body, p_foot)[1]
         for r in range(3):
             rows.append(tuple(col[r] for col in cols))
     return rows
 
 
 def feet_angular_jacobian(m):
-    """The angular rows of each foot's body (3·n_feet × nv, world): ω_φ(k) = J_ω,k v. The trunk's ω_B
-    enters as R ω_B, a revolute joint j of the support as its world axis R_j a_j; the trunk's linear
-    velocity and prismatic joints do not turn the body."""
-    robot = m.robot
+    """The angular rows of each foot's body (3·n_feet × nv, world): ω_φ(k) = J_ω,k v, the angular
+    world columns of point_jacobian_columns (the trunk's R ω_B, each revolute joint's world axis)."""
     frames = world_frames(m)
     rows = []
     for foot in m.feet:
         m.mark("angular rows of foot " + foot.name)
-        cols = [sp.zeros(3) for _ in range(robot.nv)]
-        if robot.floating_base:
-            Rt = sp.transpose(frames[0][0])
-            for c in range(3):
-                cols[c] = Rt[c]
-        for j in robot.support[foot.body]:
-            if m.joint(j).type == "revolute":
-                cols[m.joint(j).v_index] = sp.matvec(frames[j][0], sp.vec(m.axis(j)))
+        cols = point_jacobian_columns(m, frames, foot.body, frames[foot.body][1])[0]
         for r in range(3):
             rows.append(tuple(col[r] for col in cols))
     return rows

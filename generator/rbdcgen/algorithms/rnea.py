@@ -21,11 +21,12 @@ def foot_wrenches(m, frames):
     return wrenches
 
 
-def inward_pass(m, forces, rotor_forces=None):
+def inward_pass(m, forces, rotor_forces=None, root_wrench=False):
     """Alg. 2-4 inward loop: c_i = S_iᵀ f_i, f_λ(i) += (X_λ(i)^i)ᵀ f_i (Eqs. 22-23); the root
     block c₀ = S₀ᵀ f₀ = f₀ for a floating base. Returns the joint-space vector (length nv).
     Rotor i's wrench (rotor_wrenches) also drives joint i and loads its carrier:
-    c_i += S_rotᵀ f_rot, f_λ(i) += X_rotᵀ f_rot."""
+    c_i += S_rotᵀ f_rot, f_λ(i) += X_rotᵀ f_rot. With root_wrench, f₀ leads the result also for a
+    fixed base (the whole tree's wrench at the root, the centroidal bias)."""
     forces = list(forces)
     tau = [None] * m.robot.nb
     for i in range(m.robot.nb - 1, 0, -1):
@@ -37,7 +38,7 @@ def inward_pass(m, forces, rotor_forces=None):
             X_rot, S_rot, _ = m.rotor(i)
             tau[i] = tau[i] + sp.dot(S_rot, rotor_forces[i])
             forces[j] = sp.vadd(forces[j], m.into_parent(i, X_rot.force_T(rotor_forces[i])))
-    root = list(forces[0]) if m.robot.floating_base else []
+    root = list(forces[0]) if m.robot.floating_base or root_wrench else []
     return tuple(root + tau[1:])
 
 
@@ -70,7 +71,7 @@ def rotor_wrenches(m, velocities, accelerations, joint_accelerations):
     return wrenches
 
 
-def rnea(m, base_acceleration, joint_accelerations, with_velocity, external=None):
+def rnea(m, base_acceleration, joint_accelerations, with_velocity, external=None, root_wrench=False):
     """One outward pass (Eqs. 19-20, 24) and the inward pass:
         a_i = X_λ(i)^i a_λ(i) + v_i × S_i q̇_i + S_i q̈_i,   f_i = I_i a_i + v_i ×* I_i v_i − f_i^ext.
     `base_acceleration` is a₀ (bias and gravity included), `joint_accelerations[i]` q̈_i or None,
@@ -99,7 +100,8 @@ def rnea(m, base_acceleration, joint_accelerations, with_velocity, external=None
         if external is not None and external[i] is not None:
             f_i = sp.vsub(f_i, external[i])
         forces.append(f_i)
-    return inward_pass(m, forces, rotor_wrenches(m, velocities, accelerations, joint_accelerations))
+    return inward_pass(m, forces, rotor_wrenches(m, velocities, accelerations, joint_accelerations),
+                       root_wrench)
 
 
 def velocity_bias(m):

@@ -17,6 +17,7 @@ from pathlib import Path
 
 import jinja2
 
+from .blocks import MAX_STATEMENTS, split
 from .emit import emit_body
 from ..errors import RbdcError
 from ..graph.flops import KINDS, count_ops
@@ -129,6 +130,12 @@ def body_record(function, arguments: list[dict], robot, robot_id: str, robot_inp
         record["lanes"] = True  # the body includes LANES_HEADER
     if function.schedule:
         record["schedule"] = function.schedule  # the view passes/schedule.py chose, and why
+    blocks = None if function.lanes is not None else split(body, [a["name"] for a in arguments], function.name)
+    if blocks is not None:
+        record.update(body=blocks.main, parts=blocks.parts, emission=(
+            "%d blocks of at most %d statements (%d values passed in scratch), each a function of its own: "
+            "one straight-line function of %d statements would compile in time growing faster than its "
+            "length" % (len(blocks.parts), MAX_STATEMENTS, blocks.scratch_size, len(body))))
     digest = hashlib.sha256(json.dumps(record, sort_keys=True).encode()).hexdigest()
     key = f"{function.name}_{digest[:12]}"
     return {**record, "key": key, "include": f"{robot_id}/{COMMON_DIR}/{key}.hpp",

@@ -117,6 +117,12 @@ def build_parser() -> argparse.ArgumentParser:
     evaluate.add_argument("--tau", help="joint torques (n_joints values; default zero); adds forward dynamics "
                           "(qdd and the trunk's acceleration, docs/runtime.md) and feeds the derivatives")
     evaluate.add_argument("--f", help="world foot forces, foot-major (3·n_feet values; default zero)")
+    evaluate.add_argument("--contacts", metavar="FOOT,…",
+                          help="feet in contact (names; a repeat is a redundant contact): adds contact_dynamics "
+                               "(qdd, lambda) at --tau, impulse_dynamics (v_plus, impulse) at --v and, with "
+                               "--derivatives, contact_dynamics_derivatives (docs/runtime.md)")
+    evaluate.add_argument("--restitution", metavar="E", help="restitution of impulse_dynamics, in [0, 1] (default 0)")
+    evaluate.add_argument("--kd", metavar="KD", help="Baumgarte velocity gain of contact_dynamics (default 0)")
     evaluate.add_argument("--body-wrenches", type=Path, metavar="FILE.json",
                           help="external wrenches {\"BODY\": [nx, ny, nz, fx, fy, fz]} at each body's origin, "
                                "body coordinates; adds forward dynamics")

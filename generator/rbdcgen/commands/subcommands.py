@@ -83,7 +83,7 @@ def evaluate(args, layout: Layout) -> int:
     if not layout.eval_tool.exists():
         raise RbdcError(f"{layout.eval_tool}: rbdc-eval is not built (cmake --build build --target rbdc-eval)")
     command = [str(layout.eval_tool), str(args.robot)]
-    for option in ("q", "v", "a", "tau", "f"):
+    for option in ("q", "v", "a", "tau", "f", "contacts", "restitution", "kd"):
         if getattr(args, option):
             command += [f"--{option}", getattr(args, option)]
     if args.derivatives:

@@ -56,6 +56,7 @@ def _robot_record(compilation, robot_path: Path, args) -> dict:
                    "topology": str(args.topology.resolve()) if args.topology else ""},
         "gravity": list(scene.gravity_for(robot)),
         "feet": [foot.name for foot in scene.feet_for(robot)],
+        "frames": [frame.name for frame in scene.frames_for(robot)],
         "contacts": [scene.feet_for(robot).index(foot) for foot in scene.contacts_for(robot)],
         "zero_inputs": list(scene.zero_inputs),
         "actuators": scene.actuators,

@@ -72,6 +72,15 @@ class Foot:
 
 
 @dataclass(frozen=True)
+class Frame:
+    """An operational frame (docs/model.md, "Frames"): body plus a constant pose."""
+    name: str
+    body: int
+    rotation: Mat3        # E: body → frame coordinates
+    translation: Vec3     # frame origin in body coordinates
+
+
+@dataclass(frozen=True)
 class Coupling:
     """A mimic joint: q_follower = multiplier · q_leader + offset (joint indices)."""
     follower: int
@@ -98,6 +107,7 @@ class Robot:
     joints: Tuple[Joint, ...]
     feet: Tuple[Foot, ...]
     couplings: Tuple[Coupling, ...] = ()   # nq, nv and joint indices count only independent ones
+    frames: Tuple[Frame, ...] = ()         # operational frames (IR key `frames`; absent: none)
 
     @property
     def n_joints(self) -> int:
@@ -283,6 +293,21 @@ def load_ir(source) -> Robot:
         feet.append(Foot(name=r.string(r.get(f, "name", where), where + ".name"), body=body,
                          offset=r.vec3(r.get(f, "offset", where), where + ".offset")))
 
+    frames = []
+    raw_frames = data.get("frames", [])
+    if not isinstance(raw_frames, list):
+        r.fail("frames", "expected a list")
+    for k, f in enumerate(raw_frames):
+        where = "frames[%d]" % k
+        body = r.integer(r.get(f, "body", where), where + ".body")
+        if not 0 <= body < nb:
+            r.fail(where + ".body", "body %d out of range 0 … %d" % (body, nb - 1))
+        frames.append(Frame(name=r.string(r.get(f, "name", where), where + ".name"), body=body,
+                            rotation=r.mat3(r.get(f, "rotation", where), where + ".rotation"),
+                            translation=r.vec3(r.get(f, "translation", where), where + ".translation")))
+    if len({f.name for f in frames}) != len(frames):
+        r.fail("frames", "a frame name is used twice")
+
     def sets(key):
         raw = r.get(data, key, "top level")
         if not isinstance(raw, list) or len(raw) != nb:
@@ -318,7 +343,8 @@ def load_ir(source) -> Robot:
         succ=r.int_list(r.get(data, "SUCC", "top level"), nb - 1, "SUCC"),
         parent=parent,
         support=sets("kappa"), children=sets("mu"), subtree=sets("nu"),
-        bodies=tuple(bodies), joints=tuple(joints), feet=tuple(feet), couplings=tuple(couplings)))
+        bodies=tuple(bodies), joints=tuple(joints), feet=tuple(feet), couplings=tuple(couplings),
+        frames=tuple(frames)))
 
 
 def independent_view(tree):

@@ -1,9 +1,13 @@
 """Random robots for testing: URDF text for a seed, covering what the loader and generator must get
 right. Branching trees, oblique and negative axes, rotated joint origins and inertial frames, fixed
-joints (some to massless links, merged away), prismatic joints, 1 to 40 moving bodies; or, with
---actuators, a standalone topology file whose joints carry geared rotors and armature.
+joints (some to massless links, merged away), prismatic joints, 1 to 40 moving bodies; with
+--massless also massless bodies anywhere (the base, inner bodies, leaves; without any inertia or with
+a pure rotational one), so that some have a singular M (docs/model.md, "Singular mass matrix"); with
+--extremes masses over twelve decades and near-singular inertias; with --mimic mimic joints; or,
+with --actuators, a standalone topology file whose joints carry geared rotors and armature.
 
-    python3 -m rbdcgen.random_robot SEED [-o FILE] [--actuators floating|fixed]
+    python3 -m rbdcgen.random_robot SEED [-o FILE] [--massless | --extremes | --mimic |
+                                              --actuators floating|fixed]
 """
 import argparse
 import math
@@ -27,10 +31,16 @@ def _oblique_or_signed_axis(rng: random.Random):
             return [a / norm for a in axis]
 
 
-def _inertial(rng: random.Random) -> str:
-    """A body with mass, a shifted and rotated inertial frame and box-like (physical) inertia."""
+def _inertial(rng: random.Random, extremes: bool = False) -> str:
+    """A body with mass, a shifted and rotated inertial frame and box-like (physical) inertia;
+    `extremes`: the mass scaled by 1e-6..1e6 and, one time in three, a thin rod whose inertia about
+    its axis is ~1e-8 of the others (near-singular)."""
     mass = rng.uniform(0.1, 5.0)
     x, y, z = (rng.uniform(0.02, 0.4) for _ in range(3))
+    if extremes:
+        mass *= 10.0 ** rng.uniform(-6.0, 6.0)
+        if rng.random() < 1 / 3:
+            x, y = 1e-4 * z, 1e-4 * z
     ixx, iyy, izz = mass / 12 * (y * y + z * z), mass / 12 * (x * x + z * z), mass / 12 * (x * x + y * y)
     com = [rng.uniform(-0.1, 0.1) for _ in range(3)]
     rpy = [rng.uniform(-math.pi, math.pi) for _ in range(3)]
@@ -40,11 +50,29 @@ def _inertial(rng: random.Random) -> str:
             f'izz="{_numbers([izz])}"/>\n    </inertial>\n')
 
 
-def random_urdf(seed: int, max_links: int = 40) -> str:
-    """URDF text of the random robot for `seed`: sizes mostly small, sometimes up to max_links."""
+def _massless_inertial(rng: random.Random) -> str:
+    """A massless link: no inertial at all, or zero mass with a pure rotational inertia."""
+    if rng.random() < 0.5:
+        return ""
+    moments = [rng.uniform(1e-4, 1e-2) for _ in range(3)]
+    return (f'    <inertial>\n      <mass value="0"/>\n      <inertia ixx="{_numbers([moments[0]])}" ixy="0" '
+            f'ixz="0" iyy="{_numbers([moments[1]])}" iyz="0" izz="{_numbers([moments[2]])}"/>\n    </inertial>\n')
+
+
+def random_urdf(seed: int, max_links: int = 40, massless: bool = False, extremes: bool = False,
+                mimic: bool = False) -> str:
+    """URDF text of the random robot for `seed`: sizes mostly small, sometimes up to max_links;
+    `massless`: about a third of the bodies, the base included, are massless (_massless_inertial);
+    `extremes`: masses over twelve decades and near-singular inertias (_inertial); `mimic`: about a
+    third of the moving joints after the first mimic an earlier independent one of the same type."""
     rng = random.Random(seed)
     n_links = rng.choice((rng.randint(1, 8), rng.randint(1, 16), rng.randint(1, max_links)))
-    links = ['  <link name="base">\n' + _inertial(rng) + "  </link>\n"]
+    leaders = {"revolute": [], "continuous": [], "prismatic": []}
+
+    def inertial():
+        return _massless_inertial(rng) if massless and rng.random() < 0.35 else _inertial(rng, extremes)
+
+    links = ['  <link name="base">\n' + inertial() + "  </link>\n"]
     joints = []
     for k in range(1, n_links + 1):
         # Mostly extend a recent link (chains), sometimes branch from any earlier one.
@@ -52,11 +80,11 @@ def random_urdf(seed: int, max_links: int = 40) -> str:
         parent_name = "base" if parent == 0 else f"link{parent}"
         # The first joint moves, so that even a fixed-base robot has a degree of freedom.
         kind = rng.choices(("revolute", "continuous", "prismatic", "fixed"), (5, 2, 2, 0 if k == 1 else 2))[0]
-        # Only links on fixed joints may be massless: they merge into their parent, while a massless
-        # moving leaf would make M singular.
+        # Without `massless`, only links on fixed joints may be massless: they merge into their
+        # parent, while a massless moving leaf would make M singular.
         is_massless = kind == "fixed" and rng.random() < 0.5
         name = f"link{k}"
-        links.append(f'  <link name="{name}">\n' + ("" if is_massless else _inertial(rng)) + "  </link>\n")
+        links.append(f'  <link name="{name}">\n' + ("" if is_massless else inertial()) + "  </link>\n")
         xyz = [rng.uniform(-0.3, 0.3) for _ in range(3)]
         rpy = [rng.uniform(-math.pi, math.pi) if rng.random() < 0.7 else 0.0 for _ in range(3)]
         text = (f'  <joint name="joint{k}" type="{kind}">\n    <parent link="{parent_name}"/>\n'
@@ -68,6 +96,11 @@ def random_urdf(seed: int, max_links: int = 40) -> str:
             text += f'    <limit lower="{_numbers([lower])}" upper="{_numbers([lower + rng.uniform(0.2, 3.0)])}" effort="50" velocity="10"/>\n'
         if kind == "prismatic":
             text += '    <limit lower="-0.2" upper="0.3" effort="100" velocity="1"/>\n'
+        if mimic and kind != "fixed" and leaders[kind] and rng.random() < 1 / 3:
+            text += (f'    <mimic joint="{rng.choice(leaders[kind])}" multiplier="{_numbers([rng.uniform(-2, 2)])}" '
+                     f'offset="{_numbers([rng.uniform(-0.1, 0.1)])}"/>\n')
+        elif kind != "fixed":
+            leaders[kind].append(f"joint{k}")
         joints.append(text + "  </joint>\n")
     return (f'<?xml version="1.0"?>\n<!-- rbdc random robot, seed {seed} -->\n'
             f'<robot name="random_{seed}">\n' + "".join(links) + "".join(joints) + "</robot>\n")
@@ -161,11 +194,15 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python3 -m rbdcgen.random_robot", description=__doc__.split("\n\n")[0])
     parser.add_argument("seed", type=int)
     parser.add_argument("-o", "--output", help="write here instead of stdout")
-    parser.add_argument("--actuators", choices=("floating", "fixed"),
-                        help="a standalone topology YAML with rotors and armature, this base")
+    kind = parser.add_mutually_exclusive_group()
+    kind.add_argument("--massless", action="store_true", help="massless bodies anywhere in the tree")
+    kind.add_argument("--extremes", action="store_true", help="masses over 12 decades, near-singular inertias")
+    kind.add_argument("--mimic", action="store_true", help="mimic joints")
+    kind.add_argument("--actuators", choices=("floating", "fixed"),
+                      help="a standalone topology YAML with rotors and armature, this base")
     args = parser.parse_args(argv)
     text = (random_actuated_topology(args.seed, args.actuators == "floating") if args.actuators
-            else random_urdf(args.seed))
+            else random_urdf(args.seed, massless=args.massless, extremes=args.extremes, mimic=args.mimic))
     if args.output:
         with open(args.output, "w", encoding="utf-8") as handle:
             handle.write(text)

@@ -34,22 +34,33 @@ QUANTITIES = (
 # across outputs), and other layouts of a quantity's outputs (M's lower triangle alone), emitted
 # after QUANTITIES and only when a scene lists them.
 COMBINED = ("step_terms", "mass_matrix_lower")
+# The whole-body controller's quantities (issue 21; docs/generated_api.md), emitted after COMBINED
+# and only when a scene lists them; the frame ones for the scene's `frames`.
+WHOLE_BODY = ("frame_placements", "frame_velocities", "frame_jacobians", "frame_bias_accelerations",
+              "feet_bias_accelerations", "center_of_mass", "center_of_mass_jacobian",
+              "centroidal_momentum_matrix", "centroidal_bias", "mass_matrix_inverse")
+FRAME_QUANTITIES = ("frame_placements", "frame_velocities", "frame_jacobians", "frame_bias_accelerations")
 # Functions with the isomorphic limbs in SIMD lanes (passes/lane_functions.py), emitted after those and only
 # when a scene lists them.
 LANE_QUANTITIES = ("bias_lanes", "inverse_dynamics_lanes", "mass_matrix_lanes", "mass_matrix_lower_lanes",
                    "forward_dynamics_lanes", "osc_open_chain_lanes",
                    "inverse_dynamics_derivatives_lanes", "bias_derivatives_lanes",
                    "gravity_derivatives_lanes", "forward_dynamics_derivatives_lanes")
+# Rigid-contact functions for the scene's contact feet (algorithms/contact_dynamics.py), emitted
+# after those and only when a scene lists them.
+CONTACT_QUANTITIES = ("contact_dynamics", "impulse_dynamics")
 FEET_QUANTITIES = ("feet_positions", "feet_velocities", "feet_jacobian", "feet_force_terms",
+                   "feet_bias_accelerations",
                    "step_terms")
 OSC_QUANTITIES = ("osc_open_chain", "osc_closed_chain", "osc_open_chain_lanes")
 ZERO_INPUTS = ("v", "a", "tau", "f")
 # Derivative quantities (passes/differentiate.py), emitted after the quantities, in this order.
 DERIVATIVES = ("inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives",
                "forward_dynamics_derivatives", "feet_velocity_derivatives",
-               "feet_force_term_derivatives")
+               "feet_force_term_derivatives", "contact_dynamics_derivatives")
+CONTACT_DERIVATIVES = ("contact_dynamics_derivatives",)
 FEET_DERIVATIVES = ("feet_velocity_derivatives", "feet_force_term_derivatives")
-KEYS = ("name", "quantities", "gravity", "base", "locked_joints", "feet", "contacts", "zero_inputs",
+KEYS = ("name", "quantities", "gravity", "base", "locked_joints", "feet", "frames", "contacts", "zero_inputs",
         "derivatives", "actuators", "schedule")
 # How a quantity is evaluated (passes/schedule.py): `auto` picks the cheaper of the scalar tree and
 # the isomorphic limbs in SIMD lanes, the other two force one.
@@ -72,11 +83,12 @@ class Scene:
     base: str = "floating"                          # floating | fixed
     locked_joints: Tuple[Tuple[str, float], ...] = ()  # (joint name, value), sorted by name
     feet: Optional[Tuple[str, ...]] = None          # None: all feet of the robot
+    frames: Tuple[str, ...] = ()                    # operational frames the frame_* functions cover
     contacts: Optional[Tuple[str, ...]] = None      # None: all kept feet
     zero_inputs: Tuple[str, ...] = ()
     derivatives: Tuple[str, ...] = ()               # none unless the scene lists them
     actuators: str = "full"                         # full | armature | none (ACTUATOR_MODES)
-    schedule: str = "scalar"                        # auto | scalar | limb_lanes (SCHEDULES)
+    schedule: str = "auto"                          # auto | scalar | limb_lanes (SCHEDULES)
     source: str = "<default>"
 
     # --- resolution against a robot -------------------------------------------------------
@@ -97,8 +109,17 @@ class Scene:
                           % (name, ", ".join(names) or "no feet"))
         return tuple(f for f in robot.feet if f.name in self.feet)
 
+    def frames_for(self, robot):
+        """The scene's frames in the scene's order; a name the robot does not have is an error."""
+        by_name = {f.name: f for f in robot.frames}
+        for name in self.frames:
+            if name not in by_name:
+                self.fail("frames", "unknown frame '%s' (the robot has: %s)"
+                          % (name, ", ".join(by_name) or "no frames"))
+        return tuple(by_name[name] for name in self.frames)
+
     def contacts_for(self, robot):
-        """The kept feet in contact (osc_closed_chain)."""
+        """The kept feet in contact (osc_closed_chain and the contact functions), in the robot's order."""
         kept = self.feet_for(robot)
         if self.contacts is None:
             return kept
@@ -118,8 +139,12 @@ class Scene:
 
         def refusal(name):
             """Why `name` does not apply to the robot, or None."""
-            if name in OSC_QUANTITIES + COMBINED and robot.couplings:
+            if name in OSC_QUANTITIES + COMBINED + WHOLE_BODY + CONTACT_QUANTITIES and robot.couplings:
                 return coupled
+            if name in FRAME_QUANTITIES and not self.frames_for(robot):
+                return "the scene lists no frames"
+            if name in CONTACT_QUANTITIES:
+                return self.contact_refusal(robot)
             if name in OSC_QUANTITIES and not robot.floating_base:
                 return "fixed base"
             return None if has_feet or name not in FEET_QUANTITIES else "no feet"
@@ -130,7 +155,17 @@ class Scene:
             if refusal(name) is not None:
                 self.fail("quantities", "'%s' does not apply to robot '%s' (%s)"
                           % (name, robot.name, refusal(name)))
-        return tuple(q for q in QUANTITIES + COMBINED + LANE_QUANTITIES if q in self.quantities)
+        return tuple(q for q in QUANTITIES + COMBINED + WHOLE_BODY + LANE_QUANTITIES + CONTACT_QUANTITIES
+                     if q in self.quantities)
+
+    def contact_refusal(self, robot):
+        """Why the contact functions do not apply to the robot and scene, or None: they need a
+        non-empty contact set (without contacts they are forward_dynamics) and no mimic couplings."""
+        if robot.couplings:
+            return "mimic couplings: use --lock-mimic or --independent-mimic"
+        if not self.contacts_for(robot):
+            return "no contacts: the scene lists none or the robot has no feet (use forward_dynamics)"
+        return None
 
     def derivatives_for(self, robot):
         """The derivative functions to emit, in DERIVATIVES order; feet ones need feet."""
@@ -139,6 +174,10 @@ class Scene:
                 if name in FEET_DERIVATIVES:
                     self.fail("derivatives", "'%s' does not apply to robot '%s' (no feet)"
                               % (name, robot.name))
+        for name in self.derivatives:
+            if name in CONTACT_DERIVATIVES and self.contact_refusal(robot) is not None:
+                self.fail("derivatives", "'%s' does not apply to robot '%s' (%s)"
+                          % (name, robot.name, self.contact_refusal(robot)))
         return tuple(d for d in DERIVATIVES if d in self.derivatives)
 
 
@@ -183,7 +222,7 @@ def scene_from_dict(data, source="<scene>") -> Scene:
     quantities = None
     if data.get("quantities") is not None:
         quantities = _string_list(fail, "quantities", data["quantities"],
-                                  QUANTITIES + COMBINED + LANE_QUANTITIES)
+                                  QUANTITIES + COMBINED + WHOLE_BODY + LANE_QUANTITIES + CONTACT_QUANTITIES)
     gravity = None
     if "gravity" in data:
         g = data["gravity"]
@@ -201,6 +240,7 @@ def scene_from_dict(data, source="<scene>") -> Scene:
             isinstance(k, str) and _finite_number(v) for k, v in locked.items()):
         fail("locked_joints", "expected a mapping joint name → finite value")
     feet = None if data.get("feet") is None else _string_list(fail, "feet", data["feet"])
+    frames = _string_list(fail, "frames", data.get("frames") or [])
     contacts = (None if data.get("contacts") is None
                 else _string_list(fail, "contacts", data["contacts"]))
     zero = _string_list(fail, "zero_inputs", data.get("zero_inputs") or [], ZERO_INPUTS)
@@ -213,7 +253,7 @@ def scene_from_dict(data, source="<scene>") -> Scene:
         fail("schedule", "expected %s, got %r" % (" | ".join(SCHEDULES), schedule))
     return Scene(name=data["name"], quantities=quantities, gravity=gravity, base=base,
                  locked_joints=tuple((k, float(v)) for k, v in sorted(locked.items())), feet=feet,
-                 contacts=contacts, zero_inputs=tuple(x for x in ZERO_INPUTS if x in zero),
+                 frames=frames, contacts=contacts, zero_inputs=tuple(x for x in ZERO_INPUTS if x in zero),
                  derivatives=tuple(d for d in DERIVATIVES if d in derivatives), actuators=actuators,
                  schedule=schedule, source=source)
 

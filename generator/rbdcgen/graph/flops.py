@@ -135,6 +135,21 @@ class _Tally:
         self.cholesky_factor(n)
         self.add(n * n, n * n, div=2 * n)
 
+    def delassus(self, robot, nf, nc):
+        """The runtime's contact solve (runtime/src/contact_dynamics.cpp): the feet Jacobian, M⁻¹Jᵀ
+        by 3·nc solves with the factor of M, A = J M⁻¹Jᵀ, LLᵀ of A + μ1, five proximal steps
+        (A x and two triangular solves each) and M⁻¹Jᵀ λ."""
+        n, m = robot.nv, 3 * nc
+        self.world_transforms(robot)
+        for foot in robot.feet[:nf]:
+            self.mm6(1 + len(robot.support[foot.body]))
+            self.mv6(len(robot.support[foot.body]))
+        self.add(n * n, n * n, div=2 * n, times=m)
+        self.add(m * m * n, m * m * n)
+        self.cholesky_factor(m)
+        self.add(2 * m * m, 2 * m * m, div=2 * m, times=5)   # kContactProximalSteps
+        self.add(n * m, n * m)
+
     def foot_wrenches(self, robot, nf):
         """Alg. 4 outward loop: world force → body wrench via X̄ (rotation + 6×6 product)."""
         self.mv3(nf)
@@ -230,13 +245,75 @@ def generic_ops(robot, scene, name):
         t.world_transforms(robot)
         t.foot_wrenches(robot, nf)
         t.cholesky_solve(nv)
+    elif name == "contact_dynamics":
+        t = _Tally()                               # the forward dynamics' count has the joint transforms
+        fd = generic_ops(robot, scene, "forward_dynamics")
+        t.add(**{k: fd[k] for k in ("mul", "add", "div", "sqrt", "trig")})
+        t.velocities(robot)
+        t.mv6(2 * (robot.nb - 1))                  # J̇v: the velocity-product accelerations
+        t.delassus(robot, nf, len(scene.contacts_for(robot)))
+    elif name == "impulse_dynamics":
+        t.crba(robot)
+        t.cholesky_factor(nv)
+        t.delassus(robot, nf, len(scene.contacts_for(robot)))
     elif name in ("osc_open_chain", "osc_closed_chain"):
         t.base_rotation(robot)
         t.osc(robot, nf if name == "osc_open_chain" else len(scene.contacts_for(robot)),
               closed=name == "osc_closed_chain")
+    elif name in _WHOLE_BODY_GENERIC:
+        _WHOLE_BODY_GENERIC[name](t, robot, scene)
     else:
         raise KeyError("unknown function '%s'" % name)
     return _result(t.c)
+
+
+def _frame_jacobian_ops(t, robot, bodies):
+    """Per frame or point on body i: X_j^i S_j along κ(i) (Alg. 6), X_i^F J (6 × nv) and its rotation."""
+    for body in bodies:
+        depth = len(robot.support[body])
+        t.mm6(depth)
+        t.mv6(depth + robot.nv)
+        t.mv3(2 * robot.nv)
+        if robot.floating_base:
+            t.mm6()
+
+
+def _bias_pass_ops(t, robot, n_points):
+    """Velocities, the a = 0 outward pass (Eq. 19) and each point's X_i^F a, X_i^F v, ω × v, R."""
+    t.world_transforms(robot)
+    t.velocities(robot)
+    t.mv6(2 * robot.n_joints)
+    t.scale6(robot.n_joints)
+    t.v6(robot.n_joints)
+    t.mv6(2 * n_points)
+    t.mv3(3 * n_points)
+
+
+def _com_ops(t, robot):
+    t.world_transforms(robot)
+    t.mv3(2 * robot.nb)
+    t.add(3, 3, times=robot.nb)
+
+
+# The runtime's calls for the whole-body functions (runtime/src/frames.cpp, centroidal.cpp,
+# mass_matrix_inverse.cpp), counted with the same dense building blocks.
+_WHOLE_BODY_GENERIC = {
+    "frame_placements": lambda t, r, s: (t.world_transforms(r), t.mm6(len(s.frames_for(r))),
+                                         t.mm3(len(s.frames_for(r)))),
+    "frame_velocities": lambda t, r, s: (t.world_transforms(r), t.velocities(r), t.mv6(len(s.frames_for(r))),
+                                         t.mv3(2 * len(s.frames_for(r)))),
+    "frame_jacobians": lambda t, r, s: (t.world_transforms(r),
+                                        _frame_jacobian_ops(t, r, [f.body for f in s.frames_for(r)])),
+    "frame_bias_accelerations": lambda t, r, s: _bias_pass_ops(t, r, len(s.frames_for(r))),
+    "feet_bias_accelerations": lambda t, r, s: _bias_pass_ops(t, r, len(s.feet_for(r))),
+    "center_of_mass": lambda t, r, s: (_com_ops(t, r), t.velocities(r), t.mv3(2 * r.nb)),
+    "center_of_mass_jacobian": lambda t, r, s: (t.world_transforms(r),
+                                                _frame_jacobian_ops(t, r, range(r.nb))),
+    "centroidal_momentum_matrix": lambda t, r, s: (t.crba(r), _com_ops(t, r), t.mm6(r.nb), t.mv6(r.nb)),
+    "centroidal_bias": lambda t, r, s: (_com_ops(t, r), t.velocities(r), t.rnea(r, True, False), t.mm6()),
+    "mass_matrix_inverse": lambda t, r, s: (t.crba(r), t.cholesky_factor(r.nv),
+                                            t.add(r.nv * r.nv, r.nv * r.nv, times=r.nv)),
+}
 
 
 # A combined function (scene.COMBINED) against the runtime calls a user makes for its outputs (the
@@ -257,6 +334,7 @@ _DERIVATIVE_DIRECTIONS = {   # name → (primal, directions as a function of (nv
     "forward_dynamics_derivatives": ("forward_dynamics", lambda nv, nj, nf: 2 * nv),
     "feet_velocity_derivatives": ("feet_velocities", lambda nv, nj, nf: nv),
     "feet_force_term_derivatives": ("feet_force_terms", lambda nv, nj, nf: nv),
+    "contact_dynamics_derivatives": ("contact_dynamics", lambda nv, nj, nf: 2 * nv),
 }
 
 
@@ -272,4 +350,7 @@ def _generic_derivative_ops(robot, scene, name):
           times=directions(nv, nj, nf))
     if name == "forward_dynamics_derivatives":
         t.add(nv * nv, nv * nv, times=2 * nv + nj + 3 * nf)
+    if name == "contact_dynamics_derivatives":   # per column: a Delassus solve and a solve with M
+        m = 3 * len(scene.contacts_for(robot))
+        t.add(nv * nv + 8 * m * m, nv * nv + 8 * m * m, times=2 * nv + nj)
     return _result(t.c)

@@ -16,6 +16,9 @@ Quantities (docs/conventions.md "Derivatives", docs/generator.md says why each t
     forward_dynamics_derivatives   ∂a/∂q, ∂a/∂v = −M⁻¹ ∂(RNEA − τ_e)/∂(q, v) at the forward-dynamics
                                    result, ∂a/∂τ = M⁻¹Sᵀ, ∂a/∂f = M⁻¹Jᵀ, all by multi-right-hand-side
                                    solves with the LᵀDL factor forward_dynamics already traces
+    contact_dynamics_derivatives   ∂(a, λ)/∂(q, v, τ) of contact_dynamics: the KKT rows differentiated
+                                   at held (a, λ) (the RNEA − Jᵀλ residual as above, tangents of the
+                                   contact points' J a + J̇v), solved through the Delassus factor
 """
 
 from __future__ import annotations
@@ -23,6 +26,7 @@ from __future__ import annotations
 from ..graph import expr as ex
 from ..graph import spatial as sp
 from ..algorithms import forward_dynamics as fd
+from ..algorithms import contact_dynamics as cd
 from ..algorithms import feet_force_derivatives, jacobian, kinematics, rnea
 from ..algorithms.crba import mass_matrix
 from ..algorithms.rnea_derivatives import has_rotors, rnea_derivatives
@@ -37,6 +41,7 @@ PRIMAL = {
     "forward_dynamics_derivatives": "forward_dynamics",
     "feet_velocity_derivatives": "feet_velocities",
     "feet_force_term_derivatives": "feet_force_terms",
+    "contact_dynamics_derivatives": "contact_dynamics",
 }
 
 
@@ -265,6 +270,56 @@ def forward_dynamics_derivatives(m):
     return replace_symbols({name: flat[name] for name in order}, m.a, fd.forward_dynamics(m))
 
 
+def contact_dynamics_derivatives(m):
+    """Differentiating both KKT rows of contact_dynamics at held (a, λ) gives
+        [M −Jᵀ; J 0] [∂a; ∂λ] = −[r₁; r₂],  r₁ = ∂(RNEA(q, v, a) − Jᵀλ − Sᵀτ),  r₂ = ∂(J a + J̇v),
+    solved as ∂λ = A⁻¹(J M⁻¹ r₁ − r₂), ∂a = M⁻¹(Jᵀ∂λ − r₁) with the Delassus factor (A = J M⁻¹Jᵀ).
+    r₁ is the forward-dynamics residual with placeholder symbols a and f (the per-foot λ), r₂ the
+    tangents of the contact points' classical acceleration at the placeholder a; the placeholders
+    take the contact_dynamics result last, as in forward_dynamics_derivatives."""
+    robot = m.robot
+    nv = robot.nv
+    dq, dv = residual_derivatives(m)
+    pddot = [sp.dot(row, m.a) + bias for row, bias in zip(
+        cd.contact_rows(m, jacobian.feet_jacobian(m)),
+        cd.contact_rows(m, [x for foot in kinematics.feet_bias_accelerations(m) for x in foot]))]
+    r2 = _q_and_v(m, pddot, "q", "v")
+    nc3 = len(pddot)
+    delassus = cd.Delassus(m)
+    parents = fd.dof_parents(robot)
+    L, inv_diag = fd.mass_matrix_factor(m)
+    zero = ex.const(0.0)
+
+    def columns(r1_columns, r2_columns):
+        """(∂a, ∂λ) column lists from r₁, r₂ columns."""
+        da, dlam = [], []
+        for r1, r2_col in zip(r1_columns, r2_columns):
+            dl = delassus.solve([sp.dot(delassus.Minv_Jt[r], r1) - r2_col[r] for r in range(nc3)])
+            rhs = sp.vsub(sp.zeros(nv) if not dl else
+                          [sp.dot([row[c] for row in delassus.J], dl) for c in range(nv)], r1)
+            da.append(fd.ltdl_solve(L, inv_diag, parents, rhs, m.into_dof))
+            dlam.append(dl)
+        return da, dlam
+
+    def split(flat):
+        return [[flat[c * nc3 + r] for r in range(nc3)] for c in range(nv)]
+
+    da_dq, dl_dq = columns([[dq[r][c] for r in range(nv)] for c in range(nv)], split(r2["q"]))
+    da_dv, dl_dv = columns([[dv[r][c] for r in range(nv)] for c in range(nv)], split(r2["v"]))
+    selection = [[ex.const(-1.0 if r == robot.joints[i].v_index else 0.0) for r in range(nv)]
+                 for i in range(1, robot.nb)]                                     # −Sᵀ
+    da_dtau, dl_dtau = columns(selection, [[zero] * nc3 for _ in selection])
+    flat = {"da_dq": da_dq, "da_dv": da_dv, "da_dtau": da_dtau,
+            "dlambda_dq": dl_dq, "dlambda_dv": dl_dv, "dlambda_dtau": dl_dtau}
+    named = {name: [x for col in cols for x in col] for name, cols in flat.items()}
+    a, lam = cd.contact_dynamics(m)
+    forces = list(sp.zeros(3 * len(m.feet)))
+    for k, foot in enumerate(m.contacts):
+        j = m.feet.index(foot)
+        forces[3 * j:3 * j + 3] = lam[3 * k:3 * k + 3]
+    return replace_symbols(named, list(m.a) + list(m.f), list(a) + forces)
+
+
 def replace_symbols(named, symbols, values):
     """{name: expressions} with each symbol replaced by its value, all lists in one substitution
     (shared subexpressions rebuilt once); returns {name: tuple}."""
@@ -273,9 +328,10 @@ def replace_symbols(named, symbols, values):
     return {name: tuple(next(entries) for _ in xs) for name, xs in named.items()}
 
 
-def spec(robot, nf):
-    """trace.py's function table for the derivative quantities: name → (doc, input names,
-    [(output name, rows, cols, doc)], trace(m) → {output name: column-major entries})."""
+def spec(robot, nf, nc):
+    """trace.py's function table for the derivative quantities (nf feet, nc of them in contact):
+    name → (doc, input names, [(output name, rows, cols, doc)], trace(m) → {output name:
+    column-major entries})."""
     nv, nj = robot.nv, robot.n_joints
     on_q = "; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)"
     return {
@@ -305,4 +361,13 @@ def spec(robot, nf):
         "feet_force_term_derivatives": (
             "Derivative of τ_e = Jᵀf at fixed world foot forces f.", ("q", "f"),
             [("dtau_e_dq", nv, nv, "∂(Jᵀf)/∂q" + on_q)], feet_force_term_derivatives),
+        "contact_dynamics_derivatives": (
+            "Derivatives of contact_dynamics (a, λ): the KKT rows differentiated at the solution, "
+            "solved through the Delassus factor (docs/runtime.md, \"Contact dynamics\").",
+            ("q", "v", "tau"),
+            [("da_dq", nv, nv, "∂a/∂q" + on_q), ("da_dv", nv, nv, "∂a/∂v"),
+             ("da_dtau", nv, nj, "∂a/∂τ"),
+             ("dlambda_dq", 3 * nc, nv, "∂λ/∂q, rows 3k + r: contact k, world axis r" + on_q),
+             ("dlambda_dv", 3 * nc, nv, "∂λ/∂v"), ("dlambda_dtau", 3 * nc, nj, "∂λ/∂τ")],
+            contact_dynamics_derivatives),
     }

@@ -34,7 +34,7 @@ def model(robot, scene, zero_inputs, name):
 def spec(robot, nf):
     """trace.py's function table for the lane functions (same shape as trace._spec)."""
     nv = robot.nv
-    scalar = differentiate.spec(robot, nf)
+    scalar = differentiate.spec(robot, nf, 0)  # the contact functions have no lane version
     in_lanes = {name + "_lanes": (scalar[name][0] + " The four isomorphic limbs in SIMD lanes, the "
                                   "trunk scalar; equals %s." % name,) + scalar[name][1:3] + (trace,)
                 for name, trace in DERIVATIVES.items()}

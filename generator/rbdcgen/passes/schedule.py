@@ -13,7 +13,7 @@ from dataclasses import replace
 
 from ..graph import expr as ex
 from ..views.limbs import LimbError, isomorphic_limbs
-from . import lane_functions
+from . import lane_functions, singular_mass
 from .trace import trace_function
 
 _LANE_SUM_INSTRUCTIONS = 2  # log2(LANES) horizontal additions
@@ -61,5 +61,5 @@ def _as(lanes, name, doc, why):
 def trace_scene(robot, scene):
     """All functions of the scene, each on its scheduled view: its quantities in the order of
     scene.QUANTITIES, then its derivatives in the order of scene.DERIVATIVES."""
-    names = scene.quantities_for(robot) + scene.derivatives_for(robot)
+    names = singular_mass.applicable(robot, scene, scene.quantities_for(robot) + scene.derivatives_for(robot))
     return [scheduled_function(robot, scene, name) for name in names]

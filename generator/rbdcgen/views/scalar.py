@@ -13,7 +13,7 @@ from ..graph import spatial as sp
 class TracedModel:
     """Per-function view of (robot, scene) with symbolic inputs.
 
-    `inputs` maps an input array name (q, v, a, tau, f, ground_mass) to its length; an input the
+    `inputs` maps an input array name (q, v, a, tau, f, ground_mass, restitution) to its length; an input the
     scene declares zero is all constant zeros, so everything depending on it folds away."""
 
     def __init__(self, robot, scene, zero_inputs=()):
@@ -21,6 +21,7 @@ class TracedModel:
         self.coupled = robot                     # the inputs have its independent coordinates
         self.scene = scene
         self.feet = scene.feet_for(robot)
+        self.frames = scene.frames_for(robot)
         self.contacts = scene.contacts_for(robot)
         self.gravity = sp.vec(scene.gravity_for(robot))
         self.zero_inputs = tuple(zero_inputs)
@@ -66,6 +67,10 @@ class TracedModel:
     @property
     def ground_mass(self):
         return self.input("ground_mass", 1)[0]
+
+    @property
+    def restitution(self):
+        return self.input("restitution", 1)[0]
 
     def foot_force(self, k):
         return self.f[3 * k:3 * k + 3]

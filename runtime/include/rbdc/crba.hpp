@@ -10,4 +10,10 @@ namespace rbdc {
 /// q: nq. Also leaves the composite inertias in data.Ic. Returns data.M.
 const MatrixX& mass_matrix(const Model& model, Data& data, const VectorRef& q);
 
+/// M⁻¹(q), nv × nv, through the Cholesky factor of Alg. 5's M: M = L Lᵀ (data.M_llt), then
+/// M⁻¹ = L⁻ᵀ L⁻¹ by solving M X = 1 column by column in place (allocation-free). An M that is not
+/// positive definite (a massless chain) gives a NaN-filled result, as forward_dynamics does.
+/// q: nq. Returns data.M_inverse.
+const MatrixX& mass_matrix_inverse(const Model& model, Data& data, const VectorRef& q);
+
 }  // namespace rbdc

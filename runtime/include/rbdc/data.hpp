@@ -59,9 +59,27 @@ struct Data {
   MatrixX J;                     ///< feet Jacobian, world coordinates (3·n_feet × nv)
   MatrixX J_contact;             ///< feet Jacobian, contact-frame coordinates (3·n_feet × nv)
 
+  // --- Operational frames (rbdc/frames.hpp), column or entry k = model.frames[k] -----------------
+  std::vector<Matrix3> world_R_frame;  ///< frame k's orientation: frame → world coordinates
+  Matrix3X frame_position;             ///< column k: frame k's origin in the world
+  Matrix6X frame_velocity_local;       ///< column k: (ω; v) of frame k at its origin, frame axes
+  Matrix6X frame_velocity_world;       ///< the same in world axes (still at the frame origin)
+  std::vector<Matrix6X> frame_jacobian_local;  ///< 6 × nv each: J_k v = frame_velocity_local
+  std::vector<Matrix6X> frame_jacobian_world;  ///< 6 × nv each: J_k v = frame_velocity_world
+  Matrix6X frame_bias_spatial;    ///< column k: J̇_k v of the local Jacobian (spatial, frame axes)
+  Matrix6X frame_bias_classical;  ///< column k: J̇_k v of the world-aligned one (classical, world)
+
+  // --- Centroidal quantities (rbdc/centroidal.hpp), world axes --------------------------------------
+  Vector3 com = Vector3::Zero();            ///< centre of mass
+  Vector3 com_velocity = Vector3::Zero();   ///< its velocity
+  Matrix3X com_jacobian;                    ///< 3 × nv: com_velocity = com_jacobian v
+  Matrix6X A_G;                             ///< centroidal momentum matrix (6 × nv): h_G = A_G v
+  Vector6 centroidal_bias = Vector6::Zero();  ///< Ȧ_G v, the rate of h_G at a = 0
+
   // --- Forward dynamics (Eq. 43) -----------------------------------------------------------------
   VectorX a;                     ///< generalised acceleration, nv
   Eigen::LLT<MatrixX> M_llt;     ///< Cholesky factor of M, sized nv
+  MatrixX M_inverse;             ///< M⁻¹ (mass_matrix_inverse), nv × nv
 
   // --- Operational space (paper 001 Tables 1-2) --------------------------------------------------
   std::vector<Matrix6> IA;       ///< articulated inertias I_i^A (or Ĩ_i^A)

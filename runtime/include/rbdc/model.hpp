@@ -66,6 +66,17 @@ struct Foot {
   Vector3 offset = Vector3::Zero();
 };
 
+/// An operational frame (docs/model.md, "Frames"): body `body` plus a constant pose, as Pinocchio's
+/// frames. The URDF loader makes one per link (also the links that fixed-joint merging folds into a
+/// body: tool0, *_foot, camera and IMU frames keep their names and poses); topology files add more.
+/// X_body^F = motion_transform(rotation, translation) (Eq. 5), like a joint's placement.
+struct Frame {
+  std::string name;
+  int body = 0;
+  Matrix3 rotation = Matrix3::Identity();  ///< E: body → frame coordinates (R_body^F)
+  Vector3 translation = Vector3::Zero();   ///< frame origin in body coordinates
+};
+
 struct Model {
   std::string name;
   bool floating_base = true;
@@ -83,6 +94,7 @@ struct Model {
   std::vector<Body> bodies;
   std::vector<Joint> joints;
   std::vector<Foot> feet;
+  std::vector<Frame> frames;        ///< by body; within one, the source's order
   std::vector<Coupling> couplings;  ///< ascending followers; leaders are never followers
 
   // Derived constants, filled by ModelBuilder.
@@ -95,6 +107,11 @@ struct Model {
   std::vector<Matrix6> X_rotor;          ///< X_λ(i)^rot(i): parent → rotor coordinates
   std::vector<Matrix6> rotor_inertia;    ///< rotor spatial inertia at its origin, rotor coordinates
   std::vector<Vector6> rotor_subspace;   ///< S_rot(i) = gear_ratio · (axis; 0), zero without rotor
+
+  /// Why M is singular by the rule of docs/model.md (rbdc::mass_matrix_singularity), "" when it is
+  /// positive definite. Set by the builder and by with_actuator_mode; a non-empty reason makes the
+  /// functions that need M⁻¹ (forward dynamics, its derivatives, OSC) throw std::invalid_argument.
+  std::string singular_mass_matrix;
 
   int num_joints() const { return nb - 1; }  ///< 1-DoF joints (actuated)
   int root_dofs() const { return floating_base ? 6 : 0; }

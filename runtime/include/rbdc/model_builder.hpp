@@ -53,6 +53,7 @@ struct ModelSpec {
   std::vector<JointSpec> joints;   ///< joints 1 … nb-1, same order as pred/succ
   std::vector<Body> bodies;        ///< nb bodies in final numbering, body 0 = root
   std::vector<Foot> feet;
+  std::vector<Frame> frames;       ///< operational frames (names unique among frames)
   std::vector<Coupling> couplings;  ///< joint indices in the final numbering
   std::vector<ActuatorSpec> actuators;  ///< by joint name; empty: no rotors, no armature
   /// Optional: the line of each body's (first) definition in `source`, for messages (nb entries).
@@ -64,9 +65,12 @@ struct ModelSpec {
 /// nearest positive semi-definite matrix when the defect is within round-off of its size
 /// (kInertiaRepairTolerance), with a warning giving its size, and refused beyond. A massless body
 /// with rotational inertia is kept with a warning. Throws ModelError("<where>: <problem>");
-/// warnings start with `where`.
+/// warnings start with `where`. `Indefinite::Defer` (a link that fixed joints merge with others)
+/// turns the indefinite refusal into a warning and keeps the inertia as given: the merged body is
+/// checked instead (docs/model.md).
+enum class Indefinite { Refuse, Defer };
 Body repair_mass_properties(const Body& body, const std::string& where,
-                            std::vector<std::string>* warnings);
+                            std::vector<std::string>* warnings, Indefinite indefinite = Indefinite::Refuse);
 
 /// Relative tolerance of the inertia repairs: the defect may reach this times the trace (plus
 /// kInertiaRepairFloor kg·m², so that an inertia made only of round-off is repaired, not refused).
@@ -81,7 +85,8 @@ Model build_model(const ModelSpec& spec, std::vector<std::string>* warnings = nu
 /// Adds actuators to a built model (build_model calls it with spec.actuators; the tools with
 /// --armature): checks them (unknown or root joint, armature or rotor given twice, NaN, negative
 /// armature, mass or gear ratio ≤ 0, non-physical or not axisymmetric rotor inertia, bad rotation:
-/// ModelError naming spec.where and the joint) and derives X_rotor, rotor_inertia, rotor_subspace.
+/// ModelError naming spec.where and the joint), derives X_rotor, rotor_inertia, rotor_subspace and
+/// applies the singular-mass-matrix rule (Model::singular_mass_matrix; an armature can regularise M).
 void add_actuators(Model& model, const std::vector<ActuatorSpec>& actuators);
 
 }  // namespace rbdc

@@ -6,7 +6,7 @@ from rbdc_cli import ROOT
 
 sys.path.insert(0, str(ROOT / "generator"))
 from rbdcgen.backend import emit, names
-from rbdcgen import verify  # noqa: E402
+from rbdcgen.commands import verify  # noqa: E402
 
 
 def load_tests(loader, tests, pattern):

@@ -11,7 +11,7 @@ from pathlib import Path
 from rbdc_cli import ROOT
 
 sys.path.insert(0, str(ROOT / "generator"))
-from rbdcgen import verify  # noqa: E402
+from rbdcgen.commands import verify  # noqa: E402
 from rbdcgen.frontend.layout import find_layout  # noqa: E402
 from rbdcgen.commands.pipeline import compile_robot  # noqa: E402
 

@@ -19,6 +19,16 @@
 #define RBDC_HOST_DEVICE
 #endif
 
+// The blocks of a long generated function stay separate functions: inlined back into one, they
+// would cost the compile time that cutting them saved (docs/performance.md, "Blocks").
+#if defined(__CUDACC__)
+#define RBDC_NOINLINE __noinline__
+#elif defined(__GNUC__)
+#define RBDC_NOINLINE __attribute__((noinline))
+#else
+#define RBDC_NOINLINE
+#endif
+
 // libquadmath's sinq/cosq/sqrtq give __float128 its math functions (GCC on x86; link -lquadmath
 // only when __float128 is actually instantiated).
 #if defined(__SIZEOF_FLOAT128__) && !defined(__CUDACC__) && defined(__has_include)

@@ -1,0 +1,141 @@
+#!/usr/bin/env python3
+"""The figures of docs/python.md: rbdc.compile of the Mini Cheetah `full` scene (first compile into
+a fresh cache, then a cache hit in a new process), the single-call overhead of the Python module
+over the same C++ function, 10^6-state batches against a C++ loop over the same generated code
+(cxx_baseline.cpp, same flags), 1 against 2 threads, and rbdc.dask on a LocalCluster with 1 and 2
+worker processes (10^7 states, per-chunk checksums identical to a single-process run).
+Usage: /usr/bin/python3 bench/python/measure.py [--states 1000000] [--dask-states 10000000] [--no-dask]
+Prints JSON with the load average. Single-thread figures are CPU time (they hold on a shared
+machine); the thread and Dask scaling are wall time and need an otherwise idle machine."""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+import timeit
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "python"))
+CHEETAH = ROOT / "robots" / "mini_cheetah.urdf"
+
+
+def best(function, number, repeat=7, timer=time.process_time):
+    """Seconds per call: the best of `repeat` runs, in CPU time of this process by default (the
+    figures then hold on a shared machine); the thread scaling needs wall time (time.perf_counter)."""
+    return min(timeit.repeat(function, number=number, repeat=repeat, timer=timer)) / number
+
+
+def compile_times(results):
+    import rbdc
+    start = time.perf_counter()
+    module = rbdc.compile(CHEETAH)
+    results["compile_s (first compile, or a hit with --keep-cache)"] = round(time.perf_counter() - start, 2)
+    code = (f"import sys, time; t = time.perf_counter(); sys.path.insert(0, {str(ROOT / 'python')!r}); import rbdc; "
+            f"rbdc.compile({str(CHEETAH)!r}); print(time.perf_counter() - t)")
+    hits = [float(subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout)
+            for _ in range(3)]
+    results["cache_hit_new_process_s (import rbdc + compile)"] = round(min(hits), 3)
+    start = time.perf_counter()
+    rbdc.compiled.cache_key(module.target)
+    results["cache_key_s"] = round(time.perf_counter() - start, 4)
+    return module
+
+
+def states(n, seed=1):
+    rng = np.random.default_rng(seed)
+    q = rng.uniform(-1, 1, (n, 19))
+    q[:, 3:7] /= np.linalg.norm(q[:, 3:7], axis=1, keepdims=True)
+    return q, rng.uniform(-1, 1, (n, 18)), rng.uniform(-1, 1, (n, 18))
+
+
+def cxx_baseline(module, n):
+    entry = module.cache_entry
+    binary = entry.parent / f"cxx_baseline_{entry.name}"
+    if not binary.exists():
+        from rbdc.compiled import _compiler, _flags
+        flags = [f for f in _flags() if f not in ("-fPIC", "-fvisibility=hidden")]
+        subprocess.run([*_compiler(), *flags, f"-I{entry / 'src'}", "-I/usr/include/eigen3",
+                        str(Path(__file__).with_name("cxx_baseline.cpp")), "-o", str(binary)], check=True)
+    return json.loads(subprocess.run([str(binary), str(n)], capture_output=True, text=True, check=True).stdout)
+
+
+def python_figures(module, n, results):
+    q, v, a = states(n)
+    q1, v1, a1 = q[0].copy(), v[0].copy(), a[0].copy()
+    cxx = cxx_baseline(module, n)
+    for name, args, size in (("inverse_dynamics", (q, v, a), (n, 18)), ("mass_matrix", (q,), (n, 18, 18))):
+        f = getattr(module, name)
+        single = best(lambda: f(*(x[0] for x in args)), 20000)
+        out = np.empty(size)
+        one = best(lambda: f(*args, out=out, threads=1), 1, 3) / n
+        one_wall = best(lambda: f(*args, out=out, threads=1), 1, 3, time.perf_counter) / n
+        two_wall = best(lambda: f(*args, out=out, threads=2), 1, 3, time.perf_counter) / n
+        results[name] = {"python_single_ns": round(1e9 * single, 1), "cxx_single_ns": cxx[name]["single_ns"],
+                         "overhead_ns": round(1e9 * single - cxx[name]["single_ns"], 1),
+                         "python_batch_1_thread_ns_per_state": round(1e9 * one, 1),
+                         "cxx_batch_ns_per_state": cxx[name]["batch_ns_per_state"],
+                         "batch_ratio_python_over_cxx": round(1e9 * one / cxx[name]["batch_ns_per_state"], 3),
+                         "wall_1_thread_ns_per_state": round(1e9 * one_wall, 1),
+                         "wall_2_threads_ns_per_state": round(1e9 * two_wall, 1),
+                         "speedup_2_threads_wall": round(one_wall / two_wall, 2)}
+    del q1, v1, a1
+
+
+def dask_figures(module, n, results):
+    import dask
+    import dask.array as da
+    from dask.distributed import Client, LocalCluster
+    import rbdc.dask
+
+    def checksums():
+        random = da.random.RandomState(42)
+        chunk = 250_000
+        Q, V, A = (random.uniform(-1, 1, (n, size), chunks=(chunk, size)) for size in (19, 18, 18))
+        tau = rbdc.dask.map(module, "inverse_dynamics", Q, V, A)
+        return da.map_blocks(lambda b: b.sum(axis=0, keepdims=True), tau, chunks=((1,) * tau.numblocks[0], (18,)))
+
+    figures = {}
+    os.environ["PYTHONPATH"] = str(ROOT / "python")  # for the worker processes
+    with dask.config.set(scheduler="synchronous"):
+        start = time.perf_counter()
+        reference = checksums().compute()
+        figures["single_process_s"] = round(time.perf_counter() - start, 2)
+    for workers in (1, 2):
+        with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+                Client(cluster) as client:
+            checksums().compute()  # every worker loads the module once
+            start = time.perf_counter()
+            sums = checksums().compute()
+            figures[f"{workers}_workers_s"] = round(time.perf_counter() - start, 2)
+            figures[f"{workers}_workers_identical"] = bool(np.array_equal(sums, reference))
+    figures["speedup_2_workers"] = round(figures["1_workers_s"] / figures["2_workers_s"], 2)
+    results[f"dask_{n}_states"] = figures
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--states", type=int, default=1_000_000)
+    parser.add_argument("--dask-states", type=int, default=10_000_000)
+    parser.add_argument("--no-dask", action="store_true")
+    parser.add_argument("--keep-cache", action="store_true", help="use the user's cache (no first compile)")
+    args = parser.parse_args()
+    if not args.keep_cache:
+        os.environ["RBDC_CACHE_DIR"] = tempfile.mkdtemp(prefix="rbdc-measure-")
+    results = {"load_average_before": os.getloadavg()}
+    module = compile_times(results)
+    print(json.dumps(results, indent=1), flush=True)  # each stage as it ends: the whole run takes minutes
+    python_figures(module, args.states, results)
+    print(json.dumps(results, indent=1), flush=True)
+    if not args.no_dask:
+        dask_figures(module, args.dask_states, results)
+    results["load_average_after"] = os.getloadavg()
+    print(json.dumps(results, indent=1))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,128 @@
+"""Rigid-contact and impulse dynamics for the scene's contact feet (runtime/include/rbdc/
+contact_dynamics.hpp; docs/runtime.md, "Contact dynamics"). The KKT systems
+
+    M a − Jᵀλ = Sᵀτ − c − g,  J a = −J̇v          M (v⁺ − v⁻) = JᵀΛ,  J v⁺ = −e J v⁻
+
+are solved through their Schur complement, the Delassus matrix A = J M⁻¹Jᵀ (M⁻¹Jᵀ by the sparse
+LᵀDL factor of forward_dynamics), with the runtime's damping: A + μ1 factorised once (dense LDLᵀ of
+the small contact block), μ = DAMPING_RELATIVE · tr(A)/m + DAMPING_FLOOR, and PROXIMAL_STEPS proximal
+steps λ ← λ + (A + μ1)⁻¹(b − A λ) from λ = 0. Redundant contacts (a singular A) then give the
+least-norm λ instead of a division by zero."""
+
+from __future__ import annotations
+
+from ..graph import expr as ex
+from ..graph import spatial as sp
+from . import forward_dynamics as fd
+from .jacobian import feet_jacobian
+from .kinematics import feet_bias_accelerations
+
+# The runtime's kContactDampingRelative, kContactDampingFloor, kContactProximalSteps.
+DAMPING_RELATIVE = 1e-5
+DAMPING_FLOOR = 1e-30
+PROXIMAL_STEPS = 5
+
+
+def contact_rows(m, feet_rows):
+    """The rows (3 per contact, contact-major) of a 3·n_feet-row quantity, in the scene's contact
+    order."""
+    rows = []
+    for foot in m.contacts:
+        k = m.feet.index(foot)
+        rows += feet_rows[3 * k:3 * k + 3]
+    return rows
+
+
+def dense_ldlt(A):
+    """A = L D Lᵀ of a symmetric positive definite matrix (rows), L unit lower triangular: (L,
+    inverse pivots). Dense: the contact block has no tree sparsity to exploit."""
+    n = len(A)
+    L = [[None] * n for _ in range(n)]
+    d, inv_d = [None] * n, [None] * n
+    for j in range(n):
+        pivot = A[j][j]
+        for k in range(j):
+            pivot = pivot - L[j][k] * L[j][k] * d[k]
+        d[j], inv_d[j] = pivot, ex.const(1.0) / pivot
+        for i in range(j + 1, n):
+            x = A[i][j]
+            for k in range(j):
+                x = x - L[i][k] * L[j][k] * d[k]
+            L[i][j] = x * inv_d[j]
+    return L, inv_d
+
+
+def ldlt_solve(L, inv_d, b):
+    """x = L⁻ᵀ D⁻¹ L⁻¹ b."""
+    n = len(b)
+    y = list(b)
+    for i in range(n):
+        for k in range(i):
+            y[i] = y[i] - L[i][k] * y[k]
+    x = [y[i] * inv_d[i] for i in range(n)]
+    for i in range(n - 1, -1, -1):
+        for k in range(i + 1, n):
+            x[i] = x[i] - L[k][i] * x[k]
+    return x
+
+
+class Delassus:
+    """J (contact rows), M⁻¹Jᵀ (one column per row of J), A = J M⁻¹Jᵀ and the factor of A + μ1."""
+
+    def __init__(self, m):
+        robot = m.robot
+        parents = fd.dof_parents(robot)
+        L, inv_diag = fd.mass_matrix_factor(m)
+        self.J = contact_rows(m, feet_jacobian(m))
+        m.mark("contact: M⁻¹Jᵀ")
+        self.Minv_Jt = [fd.ltdl_solve(L, inv_diag, parents, row, m.into_dof) for row in self.J]
+        m.mark("contact: Delassus matrix J M⁻¹Jᵀ and its damped factor")
+        n = len(self.J)
+        self.A = [[None] * n for _ in range(n)]
+        for r in range(n):
+            for s in range(r + 1):
+                self.A[r][s] = self.A[s][r] = sp.dot(self.J[r], self.Minv_Jt[s])
+        trace = ex.const(0.0)
+        for r in range(n):
+            trace = trace + self.A[r][r]
+        mu = ex.const(DAMPING_RELATIVE / n) * trace + ex.const(DAMPING_FLOOR)
+        damped = [[self.A[r][s] + mu if r == s else self.A[r][s] for s in range(n)] for r in range(n)]
+        self.factor = dense_ldlt(damped)
+
+    def solve(self, b):
+        """A x = b by the proximal steps (the first one, from x = 0, is the damped solve)."""
+        n = len(b)
+        x = sp.zeros(n)
+        for _ in range(PROXIMAL_STEPS):
+            residual = [b[r] - sp.dot(self.A[r], x) for r in range(n)]
+            x = sp.vadd(x, ldlt_solve(*self.factor, residual))
+        return x
+
+    def apply_Minv_Jt(self, lam):
+        """M⁻¹Jᵀ λ."""
+        out = sp.zeros(len(self.Minv_Jt[0]) if self.Minv_Jt else 0)
+        for column, x in zip(self.Minv_Jt, lam):
+            out = sp.vadd(out, sp.vscale(x, column))
+        return out
+
+
+def contact_dynamics(m):
+    """(a, λ): a₀ = M⁻¹(Sᵀτ − c − g), A λ = −(J a₀ + J̇v), a = a₀ + M⁻¹Jᵀλ."""
+    a0 = fd.free_acceleration(m)
+    delassus = Delassus(m)
+    m.mark("contact: J̇v of the contact points")
+    bias = contact_rows(m, [x for foot in feet_bias_accelerations(m) for x in foot])
+    m.mark("contact: forces and acceleration")
+    b = [-(gamma + sp.dot(row, a0)) for gamma, row in zip(bias, delassus.J)]
+    lam = delassus.solve(b)
+    return sp.vadd(a0, delassus.apply_Minv_Jt(lam)), lam
+
+
+def impulse_dynamics(m):
+    """(v⁺, Λ): A Λ = −(1 + e) J v⁻, v⁺ = v⁻ + M⁻¹JᵀΛ, e = the restitution input."""
+    delassus = Delassus(m)
+    m.mark("impact: impulses and velocity")
+    scale = ex.const(1.0) + m.restitution
+    b = [-(scale * sp.dot(row, m.v)) for row in delassus.J]
+    impulse = delassus.solve(b)
+    return sp.vadd(m.v, delassus.apply_Minv_Jt(impulse)), impulse
