@@ -12,6 +12,7 @@
 #include <memory>
 #include <sstream>
 
+#include "text_checks.hpp"
 #include "urdf_outline.hpp"
 
 namespace rbdc {
@@ -121,6 +122,7 @@ class UrdfTranslator {
   }
 
   ModelSpec translate() {
+    check_names();
     for (const auto& [name, value] : opts_.locked_joints) {
       if (urdf_.getJoint(name) == nullptr) {
         throw ModelError(path_ + ": locked joint '" + name + "' does not exist");
@@ -150,6 +152,20 @@ class UrdfTranslator {
   /// "<file>:<line>: link '<name>'", the prefix of a link's warnings and refusals.
   std::string link_where(const std::string& link) const {
     return path_ + ":" + std::to_string(outline_.link_lines.at(link)) + ": link '" + link + "'";
+  }
+
+  // The outline (tinyxml) and urdfdom must agree on every name before their readings are matched:
+  // a name that is not plain text (text_checks.hpp) may be read differently (found by fuzz_urdf).
+  void check_names() const {
+    for (const UrdfJointEdge& j : outline_.joints) {
+      if (!is_plain_text(j.name)) fail(&j, "joint name '" + escaped(j.name) + "' is not plain text (UTF-8 without control characters)");
+      if (urdf_.getJoint(j.name) == nullptr) fail(&j, "joint '" + j.name + "' was not read by urdfdom");
+    }
+    for (const auto& [link, line] : outline_.link_lines) {
+      const std::string where = path_ + ":" + std::to_string(line) + ": link name '" + escaped(link) + "'";
+      if (!is_plain_text(link)) throw ModelError(where + " is not plain text (UTF-8 without control characters)");
+      if (urdf_.getLink(link) == nullptr) throw ModelError(where + " was not read by urdfdom");
+    }
   }
 
   // Each mimic joint's final leader and coefficients, following chains of mimics
