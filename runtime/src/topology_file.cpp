@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <map>
 
+#include "text_checks.hpp"
+
 namespace rbdc {
 namespace {
 
@@ -75,8 +77,16 @@ class YamlReader {
   std::vector<std::string> strings(const YAML::Node& n, const std::string& what) const {
     if (!n.IsSequence()) fail(n, what + ": expected a list of names");
     std::vector<std::string> v;
-    for (const YAML::Node& x : n) v.push_back(scalar<std::string>(x, what));
+    for (const YAML::Node& x : n) v.push_back(name(x, what));
     return v;
+  }
+
+  /// A name, refused here (this file and line) when it is not plain text (text_checks.hpp): the model
+  /// builder would refuse it too, but naming the robot's other file (found by fuzz_topology).
+  std::string name(const YAML::Node& n, const std::string& what) const {
+    std::string s = scalar<std::string>(n, what);
+    if (!is_plain_text(s)) fail(n, what + " '" + escaped(s) + "' is not plain text (UTF-8 without control characters)");
+    return s;
   }
 
   const std::string& path() const { return path_; }
@@ -97,7 +107,7 @@ Matrix3 rotation_from_rpy(const Vector3& rpy) {
 ActuatorSpec read_actuator(const YamlReader& yaml, const YAML::Node& n) {
   if (!n.IsMap()) yaml.fail(n, "actuators: expected a mapping per joint");
   ActuatorSpec a;
-  a.joint = yaml.scalar<std::string>(yaml.required(n, "joint"), "actuator joint");
+  a.joint = yaml.name(yaml.required(n, "joint"), "actuator joint");
   a.where = yaml.path() + ":" + std::to_string(n.Mark().line + 1);
   const std::string what = "actuator of joint '" + a.joint + "'";
   static const char* const kKeys[] = {"joint", "armature", "gear_ratio", "rotor_mass",
@@ -128,7 +138,7 @@ ActuatorSpec read_actuator(const YamlReader& yaml, const YAML::Node& n) {
 // A `frames:` entry: {name, body: LINK, xyz, rpy} (xyz and rpy default to zero).
 FrameSpec read_frame(const YamlReader& yaml, const YAML::Node& n) {
   FrameSpec f;
-  f.name = yaml.scalar<std::string>(yaml.required(n, "name"), "frame name");
+  f.name = yaml.name(yaml.required(n, "name"), "frame name");
   const std::string what = "frame '" + f.name + "'";
   for (const auto& kv : n) {
     const std::string key = kv.first.as<std::string>();
@@ -136,7 +146,7 @@ FrameSpec read_frame(const YamlReader& yaml, const YAML::Node& n) {
       yaml.fail(kv.first, what + ": unknown key '" + key + "' (name, body, xyz, rpy)");
     }
   }
-  f.link = yaml.scalar<std::string>(yaml.required(n, "body"), what + " body");
+  f.link = yaml.name(yaml.required(n, "body"), what + " body");
   if (n["xyz"]) f.translation = yaml.vector3(n["xyz"], what + " xyz");
   if (n["rpy"]) f.rotation = rotation_from_rpy(yaml.vector3(n["rpy"], what + " rpy"));
   return f;
@@ -157,8 +167,8 @@ Topology read_arrays(const YamlReader& yaml, const YAML::Node& root) {
   if (const YAML::Node feet = root["feet"]) {
     if (!feet.IsSequence()) yaml.fail(feet, "feet: expected a list");
     for (const YAML::Node& f : feet) {
-      const std::string name = yaml.scalar<std::string>(yaml.required(f, "name"), "foot name");
-      t.feet.push_back({name, yaml.scalar<std::string>(yaml.required(f, "body"), "foot '" + name + "' body"),
+      const std::string name = yaml.name(yaml.required(f, "name"), "foot name");
+      t.feet.push_back({name, yaml.name(yaml.required(f, "body"), "foot '" + name + "' body"),
                         yaml.vector3(yaml.required(f, "offset"), "foot '" + name + "' offset")});
     }
   }
@@ -175,7 +185,7 @@ Topology read_arrays(const YamlReader& yaml, const YAML::Node& root) {
 
 JointSpec read_joint(const YamlReader& yaml, const YAML::Node& n, int i) {
   JointSpec j;
-  j.name = yaml.scalar<std::string>(yaml.required(n, "name"), "joint " + std::to_string(i) + " name");
+  j.name = yaml.name(yaml.required(n, "name"), "joint " + std::to_string(i) + " name");
   const std::string what = "joint '" + j.name + "'";
   const std::string type = yaml.scalar<std::string>(yaml.required(n, "type"), what + " type");
   if (type == "revolute") {
@@ -225,7 +235,7 @@ Model load_topology(const std::string& path, std::vector<std::string>* warnings)
   const Topology t = read_arrays(yaml, root);
   ModelSpec spec;
   spec.source = path;
-  spec.name = yaml.scalar<std::string>(yaml.required(root, "name"), "name");
+  spec.name = yaml.name(yaml.required(root, "name"), "name");
   if (root["floating_base"]) spec.floating_base = yaml.scalar<bool>(root["floating_base"], "floating_base");
   if (root["gravity"]) spec.gravity = yaml.vector3(root["gravity"], "gravity");
   spec.pred = t.pred;
