@@ -26,6 +26,8 @@ std::vector<Vector6> read_body_wrenches(const std::string& path, const Model& mo
   std::vector<Vector6> wrenches(static_cast<size_t>(model.nb), Vector6::Zero());
   std::vector<bool> given(static_cast<size_t>(model.nb), false);
   for (const auto& entry : root) {
+    // a key that is not a name (a list or a mapping, as YAML allows: found by fuzz_body_wrenches)
+    if (!entry.first.IsScalar()) fail(entry.first, "expected a body name as the key");
     const std::string name = entry.first.as<std::string>();
     int body = -1;
     for (int i = 0; i < model.nb; ++i) {
