@@ -317,10 +317,10 @@ INSTANTIATE_TEST_SUITE_P(
       return name.substr(0, name.find('.'));
     });
 
-}  // namespace
-}  // namespace rbdc
-
 TEST(UrdfLoader, NamesMustBePlainText) {  // found by tests/fuzz (fuzz_ir_json): they reach the IR and C++
   EXPECT_THAT(model_error([] { load_urdf(data_path("control_char_name.urdf")); }),
               AllOf(HasSubstr("control_char_name.urdf: body name 'arm\\x0ax' is not plain text")));
 }
+
+}  // namespace
+}  // namespace rbdc
