@@ -34,6 +34,8 @@ class YamlReader {
   }
 
   YAML::Node required(const YAML::Node& map, const std::string& key) const {
+    // operator[] on a scalar or a list throws (found by fuzz_topology)
+    if (!map.IsMap()) fail(map, "expected a mapping with key '" + key + "'");
     const YAML::Node n = map[key];
     if (!n) fail(map, "missing key '" + key + "'");
     return n;
