@@ -13,6 +13,7 @@ reduced outputs back to the full robot's coordinates."""
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, replace
 
 from ..graph import expr as ex
@@ -59,11 +60,10 @@ class LaneModel(TracedModel):
     def layout(self):
         names = {}
         for l in range(1, self.robot.nb):
-            joint_names = [self.full.joints[b].name for b in self._lanes_of(l)]
-            suffix = joint_names[0]
-            while not all(n.endswith(suffix) for n in joint_names):
-                suffix = suffix[1:]
-            names[("lane_q", l - 1)] = "lanes_" + (suffix.strip("_") or "joint_%d" % l)
+            name = _shared_name([self.full.joints[b].name for b in self._lanes_of(l)])
+            if not name or "lanes_" + name in names.values():
+                name = "joint_%d" % l  # the limbs' joint names share nothing that tells them apart
+            names[("lane_q", l - 1)] = "lanes_" + name
         return LaneLayout(tuple(self.graph.lane_constants), self.lane_inputs, names)
 
     # --- lane values --------------------------------------------------------------------------
@@ -255,6 +255,14 @@ def _reduced_tree(robot, limbs):
                    pred=tuple(parent[1:]), succ=tuple(range(1, nb)), parent=parent,
                    support=support, children=children, subtree=subtree, bodies=bodies,
                    joints=joints, feet=(), couplings=())
+
+
+def _shared_name(names):
+    """What the lanes' joint names have in common: their common prefix and suffix joined
+    (abduct_fr_to_thigh_fr_j, abduct_hl_to_thigh_hl_j -> abduct_j), '' when they share nothing."""
+    prefix = os.path.commonprefix(names)
+    suffix = os.path.commonprefix([n[len(prefix):][::-1] for n in names])[::-1]
+    return "_".join(part.strip("_") for part in (prefix, suffix) if part.strip("_"))
 
 
 def _is_ancestor(parent, a, i):
