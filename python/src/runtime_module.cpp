@@ -201,7 +201,8 @@ struct PyModel {
       throw py::type_error("rbdc: " + name + " takes " + std::to_string(algorithm.spec.inputs.size()) + " inputs");
     std::vector<py::handle> values(inputs.begin(), inputs.end());
     const Kernel kernel{model.get(), &algorithm.run};
-    const rbdc_py::Runner runner{&rbdc_py::run_kernel<Kernel, double, rbdc_py::NoPack, 1>, nullptr, &kernel};
+    const rbdc_py::Runner runner{&rbdc_py::run_kernel<Kernel, double, rbdc_py::NoPack, 1>, nullptr, &kernel,
+                                 &rbdc_py::run_one<Kernel>};
     return rbdc_py::call(algorithm.spec, runner, values.data(), out, threads);
   }
 };

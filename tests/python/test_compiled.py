@@ -125,6 +125,25 @@ def test_quaternion_policy_and_nan(cheetah_feet, cheetah_model):
     assert np.isnan(p[5]).any() and np.isfinite(np.delete(p, 5, axis=0)).all()
 
 
+def test_single_states_equal_batch_rows(cheetah_feet, cheetah_model):
+    """One float64 state takes the fast path (single_call.hpp), which transposes matrices between
+    numpy's C order and the C++ column-major layout: (3, n_feet) outputs and inputs in either order."""
+    rng = np.random.default_rng(9)
+    q, v, _ = random_states(rng, 5, 19, 18, True)
+    tau, f = rng.uniform(-1, 1, (5, 12)), rng.uniform(-1, 1, (5, 3, 4))
+    feet, accelerations = cheetah_feet.feet_positions(q), cheetah_model.forward_dynamics(q, v, tau, f)
+    for k in range(5):
+        single = cheetah_feet.feet_positions(q[k])
+        assert single.shape == (3, 4) and single.flags.c_contiguous
+        np.testing.assert_allclose(single, feet[k], rtol=1e-12, atol=1e-12)  # packs may contract differently
+        for f_k in (f[k], np.asfortranarray(f[k]), np.repeat(f[k], 2, axis=1)[:, ::2]):  # C, F, strided
+            np.testing.assert_array_equal(cheetah_model.forward_dynamics(q[k], v[k], tau[k], f_k), accelerations[k])
+    scaled = q[0].copy()
+    scaled[3:7] *= 3
+    with pytest.raises(ValueError, match=r"rbdc: feet_positions: q: the quaternion q\[3:7\] has norm 3\.0+"):
+        cheetah_feet.feet_positions(scaled)
+
+
 def test_cache_hit_and_changed_urdf_miss(arm7, tmp_path):
     start = time.perf_counter()
     assert rbdc.compile(ARM7, scene=ARM7_SCENE, base="fixed") is arm7  # same process

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "rbdc_py/batch_loop.hpp"
+#include "rbdc_py/single_call.hpp"
 
 namespace rbdc_py {
 
@@ -149,10 +150,12 @@ py::object call_as(const FunctionSpec& f, const Runner& runner, Runner::Run run,
   return result;
 }
 
-/// A call from Python: checks the inputs (shape, dtype), picks float32 if every input is float32 and
-/// the runner has a float kernel, runs it over every state (a batch without the GIL).
+/// A call from Python: one float64 state by the fast path (single_call.hpp); else checks the inputs
+/// (shape, dtype), picks float32 if every input is float32 and the runner has a float kernel, runs it
+/// over every state (a batch without the GIL).
 inline py::object call(const FunctionSpec& f, const Runner& runner, const py::handle* values, py::handle out,
                        int threads) {
+  if (py::object result = call_single(f, runner, values, out)) return result;
   std::vector<py::array> inputs;
   std::vector<py::ssize_t> sizes;
   py::ssize_t n = -1;

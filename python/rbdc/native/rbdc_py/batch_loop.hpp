@@ -192,9 +192,12 @@ inline int thread_count(std::ptrdiff_t n, int requested) {
 struct Runner {
   using Run = std::ptrdiff_t (*)(const void* context, const FunctionSpec& f, const std::vector<Strided>& in,
                                  const std::vector<Strided>& out, std::ptrdiff_t n, int threads);
+  /// One state in double, contiguous column-major arguments as the C++ API takes them (single_call.hpp).
+  using One = void (*)(const void* context, const double* const* in, double* const* out);
   Run run_double;
   Run run_float;  ///< null: the kernel runs in double only (float32 inputs are converted)
   const void* context = nullptr;
+  One run_one = nullptr;  ///< null: single states take the batch path too
 };
 
 /// The pack type of kernels that take no packs (W = 1).
@@ -208,6 +211,14 @@ std::ptrdiff_t run_kernel(const void* context, const FunctionSpec& f, const std:
   const Kernel kernel = context ? *static_cast<const Kernel*>(context) : Kernel{};
   if (n < 0) return run_range<T, Pack, 1>(f, kernel, in, out, 0, 1);
   return run_batch<T, Pack, W>(f, kernel, in, out, n, threads);
+}
+
+/// Runner::One for a Kernel.
+template <class Kernel>
+void run_one(const void* context, const double* const* in, double* const* out) {
+  const Kernel kernel = context ? *static_cast<const Kernel*>(context) : Kernel{};
+  auto&& worker = make_worker(kernel, 0);
+  worker(in, out);
 }
 
 }  // namespace rbdc_py
