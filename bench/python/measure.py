@@ -5,8 +5,12 @@ over the same C++ function, 10^6-state batches against a C++ loop over the same 
 (cxx_baseline.cpp, same flags), 1 against 2 threads, and rbdc.dask on a LocalCluster with 1 and 2
 worker processes (10^7 states, per-chunk checksums identical to a single-process run).
 Usage: /usr/bin/python3 bench/python/measure.py [--states 1000000] [--dask-states 10000000] [--no-dask]
-Prints JSON with the load average. Single-thread figures are CPU time (they hold on a shared
-machine); the thread and Dask scaling are wall time and need an otherwise idle machine."""
+                                              [--quiet-load 0.6]
+Prints JSON with the 1-minute load average before each stage (with --quiet-load, each stage first
+waits until it is below that). Single-thread figures are CPU time (they hold on a shared machine);
+the thread and Dask scaling are wall time and need an otherwise idle machine. The first compile runs
+with CCACHE_DISABLE=1 (rbdc.compile calls the compiler directly; this keeps a ccache wrapper given
+as RBDC_CXX out of the figure)."""
 import argparse
 import json
 import os
@@ -24,14 +28,24 @@ sys.path.insert(0, str(ROOT / "python"))
 CHEETAH = ROOT / "robots" / "mini_cheetah.urdf"
 
 
-def best(function, number, repeat=7, timer=time.process_time):
+def best(function, number, repeat=7, timer=time.process_time, names=None):
     """Seconds per call: the best of `repeat` runs, in CPU time of this process by default (the
-    figures then hold on a shared machine); the thread scaling needs wall time (time.perf_counter)."""
-    return min(timeit.repeat(function, number=number, repeat=repeat, timer=timer)) / number
+    figures then hold on a shared machine); the thread scaling needs wall time (time.perf_counter).
+    `function` is a callable, or a statement run with `names` as its globals (no lambda around it)."""
+    return min(timeit.repeat(function, number=number, repeat=repeat, timer=timer, globals=names)) / number
 
 
-def compile_times(results):
+def quiet(results, stage, threshold, max_wait_s=1800):
+    """Waits (up to max_wait_s) until the 1-minute load is below `threshold` (0: no wait); records the load."""
+    deadline = time.monotonic() + max_wait_s
+    while threshold and os.getloadavg()[0] >= threshold and time.monotonic() < deadline:
+        time.sleep(15)
+    results.setdefault("load_1min_before", {})[stage] = round(os.getloadavg()[0], 2)
+
+
+def compile_times(results, threshold):
     import rbdc
+    quiet(results, "compile", threshold)
     start = time.perf_counter()
     module = rbdc.compile(CHEETAH)
     results["compile_s (first compile, or a hit with --keep-cache)"] = round(time.perf_counter() - start, 2)
@@ -39,6 +53,7 @@ def compile_times(results):
             f"rbdc.compile({str(CHEETAH)!r}); print(time.perf_counter() - t)")
     hits = [float(subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout)
             for _ in range(3)]
+    results["compile_ccache"] = "off (CCACHE_DISABLE=1), compiler " + " ".join(rbdc.compiled._compiler())
     results["cache_hit_new_process_s (import rbdc + compile)"] = round(min(hits), 3)
     start = time.perf_counter()
     rbdc.compiled.cache_key(module.target)
@@ -64,29 +79,34 @@ def cxx_baseline(module, n):
     return json.loads(subprocess.run([str(binary), str(n)], capture_output=True, text=True, check=True).stdout)
 
 
-def python_figures(module, n, results):
+def python_figures(module, n, results, threshold):
     q, v, a = states(n)
-    q1, v1, a1 = q[0].copy(), v[0].copy(), a[0].copy()
+    quiet(results, "single_and_batch", threshold)
     cxx = cxx_baseline(module, n)
     for name, args, size in (("inverse_dynamics", (q, v, a), (n, 18)), ("mass_matrix", (q,), (n, 18, 18))):
         f = getattr(module, name)
-        single = best(lambda: f(*(x[0] for x in args)), 20000)
+        # One state as a user holds it (its own C-contiguous float64 arrays), the call as written.
+        names = {"f": f, "out": np.empty(size[1:]), **{k: x[0].copy() for k, x in zip("qva", args)}}
+        call = f"f({', '.join('qva'[:len(args)])}"
+        single = best(call + ")", 20000, names=names)
+        single_out = best(call + ", out=out)", 20000, names=names)
         out = np.empty(size)
         one = best(lambda: f(*args, out=out, threads=1), 1, 3) / n
+        quiet(results, f"{name}_threads", threshold)
         one_wall = best(lambda: f(*args, out=out, threads=1), 1, 3, time.perf_counter) / n
         two_wall = best(lambda: f(*args, out=out, threads=2), 1, 3, time.perf_counter) / n
         results[name] = {"python_single_ns": round(1e9 * single, 1), "cxx_single_ns": cxx[name]["single_ns"],
                          "overhead_ns": round(1e9 * single - cxx[name]["single_ns"], 1),
+                         "python_single_out_ns": round(1e9 * single_out, 1),
                          "python_batch_1_thread_ns_per_state": round(1e9 * one, 1),
                          "cxx_batch_ns_per_state": cxx[name]["batch_ns_per_state"],
                          "batch_ratio_python_over_cxx": round(1e9 * one / cxx[name]["batch_ns_per_state"], 3),
                          "wall_1_thread_ns_per_state": round(1e9 * one_wall, 1),
                          "wall_2_threads_ns_per_state": round(1e9 * two_wall, 1),
                          "speedup_2_threads_wall": round(one_wall / two_wall, 2)}
-    del q1, v1, a1
 
 
-def dask_figures(module, n, results):
+def dask_figures(module, n, results, threshold):
     import dask
     import dask.array as da
     from dask.distributed import Client, LocalCluster
@@ -106,6 +126,7 @@ def dask_figures(module, n, results):
         reference = checksums().compute()
         figures["single_process_s"] = round(time.perf_counter() - start, 2)
     for workers in (1, 2):
+        quiet(results, f"dask_{workers}_workers", threshold)
         with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
                 Client(cluster) as client:
             checksums().compute()  # every worker loads the module once
@@ -117,22 +138,31 @@ def dask_figures(module, n, results):
     results[f"dask_{n}_states"] = figures
 
 
+def machine():
+    lscpu = subprocess.run(["lscpu"], capture_output=True, text=True).stdout
+    model = next((line.split(":", 1)[1].strip() for line in lscpu.splitlines() if line.startswith("Model name")), "?")
+    return f"{model}, {os.cpu_count()} cores"
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--states", type=int, default=1_000_000)
     parser.add_argument("--dask-states", type=int, default=10_000_000)
     parser.add_argument("--no-dask", action="store_true")
     parser.add_argument("--keep-cache", action="store_true", help="use the user's cache (no first compile)")
+    parser.add_argument("--quiet-load", type=float, default=0,
+                        help="before each stage, wait (up to 30 min) until the 1-minute load is below this")
     args = parser.parse_args()
     if not args.keep_cache:
         os.environ["RBDC_CACHE_DIR"] = tempfile.mkdtemp(prefix="rbdc-measure-")
-    results = {"load_average_before": os.getloadavg()}
-    module = compile_times(results)
+    os.environ["CCACHE_DISABLE"] = "1"
+    results = {"machine": machine()}
+    module = compile_times(results, args.quiet_load)
     print(json.dumps(results, indent=1), flush=True)  # each stage as it ends: the whole run takes minutes
-    python_figures(module, args.states, results)
+    python_figures(module, args.states, results, args.quiet_load)
     print(json.dumps(results, indent=1), flush=True)
     if not args.no_dask:
-        dask_figures(module, args.dask_states, results)
+        dask_figures(module, args.dask_states, results, args.quiet_load)
     results["load_average_after"] = os.getloadavg()
     print(json.dumps(results, indent=1))
 

@@ -138,6 +138,9 @@ def test_single_states_equal_batch_rows(cheetah_feet, cheetah_model):
         np.testing.assert_allclose(single, feet[k], rtol=1e-12, atol=1e-12)  # packs may contract differently
         for f_k in (f[k], np.asfortranarray(f[k]), np.repeat(f[k], 2, axis=1)[:, ::2]):  # C, F, strided
             np.testing.assert_array_equal(cheetah_model.forward_dynamics(q[k], v[k], tau[k], f_k), accelerations[k])
+    for out in (np.empty((3, 4)), np.empty((3, 4), order="F"), np.empty((3, 8))[:, ::2]):  # C, F, strided
+        assert cheetah_feet.feet_positions(q[0], out=out) is out
+        np.testing.assert_array_equal(out, cheetah_feet.feet_positions(q[0]))
     scaled = q[0].copy()
     scaled[3:7] *= 3
     with pytest.raises(ValueError, match=r"rbdc: feet_positions: q: the quaternion q\[3:7\] has norm 3\.0+"):
