@@ -5,7 +5,7 @@ over the same C++ function, 10^6-state batches against a C++ loop over the same 
 (cxx_baseline.cpp, same flags), 1 against 2 threads, and rbdc.dask on a LocalCluster with 1 and 2
 worker processes (10^7 states, per-chunk checksums identical to a single-process run).
 Usage: /usr/bin/python3 bench/python/measure.py [--states 1000000] [--dask-states 10000000] [--no-dask]
-                                              [--quiet-load 0.6]
+                                              [--quiet-load 0.6 [--quiet-wait 1800]]
 Prints JSON with the 1-minute load average before each stage (with --quiet-load, each stage first
 waits until it is below that). Single-thread figures are CPU time (they hold on a shared machine);
 the thread and Dask scaling are wall time and need an otherwise idle machine. The first compile runs
@@ -35,9 +35,12 @@ def best(function, number, repeat=7, timer=time.process_time, names=None):
     return min(timeit.repeat(function, number=number, repeat=repeat, timer=timer, globals=names)) / number
 
 
-def quiet(results, stage, threshold, max_wait_s=1800):
-    """Waits (up to max_wait_s) until the 1-minute load is below `threshold` (0: no wait); records the load."""
-    deadline = time.monotonic() + max_wait_s
+QUIET_WAIT_S = 1800  # --quiet-wait
+
+
+def quiet(results, stage, threshold):
+    """Waits (up to QUIET_WAIT_S) until the 1-minute load is below `threshold` (0: no wait); records the load."""
+    deadline = time.monotonic() + QUIET_WAIT_S
     while threshold and os.getloadavg()[0] >= threshold and time.monotonic() < deadline:
         time.sleep(15)
     results.setdefault("load_1min_before", {})[stage] = round(os.getloadavg()[0], 2)
@@ -151,8 +154,11 @@ def main():
     parser.add_argument("--no-dask", action="store_true")
     parser.add_argument("--keep-cache", action="store_true", help="use the user's cache (no first compile)")
     parser.add_argument("--quiet-load", type=float, default=0,
-                        help="before each stage, wait (up to 30 min) until the 1-minute load is below this")
+                        help="before each stage, wait (up to --quiet-wait s) until the 1-minute load is below this")
+    parser.add_argument("--quiet-wait", type=float, default=1800)
     args = parser.parse_args()
+    global QUIET_WAIT_S
+    QUIET_WAIT_S = args.quiet_wait
     if not args.keep_cache:
         os.environ["RBDC_CACHE_DIR"] = tempfile.mkdtemp(prefix="rbdc-measure-")
     os.environ["CCACHE_DISABLE"] = "1"
