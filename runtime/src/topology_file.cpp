@@ -91,6 +91,13 @@ class YamlReader {
     return s;
   }
 
+  /// A mapping key as text: YAML also allows a list or a mapping as a key (found by fuzz_topology:
+  /// YAML::TypedBadConversion escaped).
+  std::string key(const YAML::Node& k, const std::string& what) const {
+    if (!k.IsScalar()) fail(k, what + ": expected a name as the key");
+    return k.Scalar();
+  }
+
   const std::string& path() const { return path_; }
 
  private:
@@ -115,7 +122,7 @@ ActuatorSpec read_actuator(const YamlReader& yaml, const YAML::Node& n) {
   static const char* const kKeys[] = {"joint", "armature", "gear_ratio", "rotor_mass",
                                       "rotor_inertia", "xyz", "rpy", "axis"};
   for (const auto& kv : n) {
-    const std::string key = kv.first.as<std::string>();
+    const std::string key = yaml.key(kv.first, what);
     if (std::find(std::begin(kKeys), std::end(kKeys), key) == std::end(kKeys)) {
       yaml.fail(kv.first, what + ": unknown key '" + key + "'");
     }
@@ -143,7 +150,7 @@ FrameSpec read_frame(const YamlReader& yaml, const YAML::Node& n) {
   f.name = yaml.name(yaml.required(n, "name"), "frame name");
   const std::string what = "frame '" + f.name + "'";
   for (const auto& kv : n) {
-    const std::string key = kv.first.as<std::string>();
+    const std::string key = yaml.key(kv.first, what);
     if (key != "name" && key != "body" && key != "xyz" && key != "rpy") {
       yaml.fail(kv.first, what + ": unknown key '" + key + "' (name, body, xyz, rpy)");
     }

@@ -126,6 +126,16 @@ TEST(TopologyFile, BadStandaloneFilesAreRefused) {
   EXPECT_THAT(model_error([] { load_topology(data_path("no_such_file.yaml")); }), HasSubstr("cannot open file"));
 }
 
+// YAML allows a list or a mapping as a key; found by fuzz_topology (the seeds of tests/fuzz/corpus).
+TEST(TopologyFile, KeysThatAreNotNamesAreRefused) {
+  const std::string frame = source_path("tests/fuzz/corpus/topology/frame_key_not_a_name.yaml");
+  EXPECT_THAT(model_error([&] { load_topology(frame); }),
+              HasSubstr("frame_key_not_a_name.yaml:14: frame 'tool': expected a name as the key"));
+  const std::string actuator = source_path("tests/fuzz/corpus/topology/actuator_key_not_a_name.yaml");
+  EXPECT_THAT(model_error([&] { load_topology(actuator); }),
+              HasSubstr("actuator_key_not_a_name.yaml:13: actuator of joint 'shoulder': expected a name as the key"));
+}
+
 TEST(TopologyFile, DetectedByExtension) {
   EXPECT_TRUE(is_topology_path("robots/mini_cheetah.topology.yaml"));
   EXPECT_TRUE(is_topology_path("a.yml"));

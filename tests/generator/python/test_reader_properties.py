@@ -19,7 +19,7 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 
 from numeric_check import DATA
 from rbdcgen.frontend.ir import IRError, load_ir
-from rbdcgen.frontend.scene import SceneError, load_scene
+from rbdcgen.frontend.scene import KEYS, SceneError, load_scene, scene_from_dict
 
 # No example database: nothing is written into the source tree.
 settings.register_profile("ci", max_examples=40, deadline=None, derandomize=True, database=None,
@@ -30,9 +30,11 @@ settings.load_profile(os.environ.get("RBDC_HYPOTHESIS_PROFILE", "ci"))
 
 with open(os.path.join(DATA, "tiny_floating.json"), encoding="utf-8") as _handle:
     VALID_IR = json.load(_handle)
-VALID_SCENE = {"name": "stance", "quantities": ["mass_matrix", "feet_jacobian"], "gravity": [0, 0, -9.81],
-               "base": "fixed", "locked_joints": {"hinge": 0.5}, "feet": ["slider_foot"],
-               "zero_inputs": [], "derivatives": [], "actuators": "full"}
+# Every scene key (scene.KEYS), so that each can be replaced or deleted.
+VALID_SCENE = {"name": "stance", "quantities": ["mass_matrix", "feet_jacobian", "frame_jacobians"],
+               "gravity": [0, 0, -9.81], "base": "fixed", "locked_joints": {"hinge": 0.5},
+               "feet": ["slider_foot"], "frames": ["tool"], "contacts": ["slider_foot"], "zero_inputs": ["v"],
+               "derivatives": ["gravity_derivatives"], "actuators": "full", "schedule": "auto"}
 
 # Any JSON value: the numbers include huge, tiny, NaN and ±Infinity (Python's json writes and reads them).
 JSON = st.recursive(
@@ -110,6 +112,10 @@ class ReaderProperties(unittest.TestCase):
     @given(mutated(VALID_SCENE))
     def test_scene_with_any_part_replaced(self, data):
         self.assert_result_or_error(load_scene, SceneError, yaml.safe_dump(data, allow_unicode=True).encode())
+
+    def test_valid_scene_holds_every_key(self):  # a key added to the reader is mutated too
+        self.assertEqual(set(VALID_SCENE), set(KEYS))
+        self.assertEqual(scene_from_dict(VALID_SCENE).frames, ("tool",))
 
     def test_deep_nesting_and_bad_encodings(self):  # what random bytes rarely reach
         for content in (b"[" * 100_000, b"\xff\xfe{}", b'{"format": "\xc3("}', b"a: [" * 50_000,
