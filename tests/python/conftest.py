@@ -41,7 +41,7 @@ def cheetah_model():
 
 @pytest.fixture(scope="session")
 def arm7(cache_dir):
-    return rbdc.compile(ARM7, scene=ARM7_SCENE, base="fixed")
+    return rbdc.compile(ARM7, scene=ARM7_SCENE, base="fixed", float32=True)
 
 
 COMPILE_IN_CHILD = """

@@ -112,8 +112,9 @@ def test_quaternion_policy_and_nan(cheetah_feet, cheetah_model):
     """The generated code assumes a unit quaternion (the runtime normalises): both refuse another."""
     q, _, _ = random_states(np.random.default_rng(8), 20, 19, 18, True)
     np.testing.assert_allclose(cheetah_feet.feet_positions(q), cheetah_model.feet_positions(q), atol=1e-12)
-    np.testing.assert_allclose(cheetah_feet.feet_positions(q.astype(np.float32)), cheetah_model.feet_positions(q),
-                               atol=1e-5)  # float32 rounding of a unit quaternion is accepted
+    in_double = cheetah_feet.feet_positions(q.astype(np.float32))  # compiled without float32=True
+    assert in_double.dtype == np.float64
+    np.testing.assert_allclose(in_double, cheetah_model.feet_positions(q), atol=1e-5)  # float32 unit quaternions pass
     scaled = q.copy()
     scaled[13, 3:7] *= 3
     for module in (cheetah_feet, cheetah_model):
@@ -149,10 +150,10 @@ def test_single_states_equal_batch_rows(cheetah_feet, cheetah_model):
 
 def test_cache_hit_and_changed_urdf_miss(arm7, tmp_path):
     start = time.perf_counter()
-    assert rbdc.compile(ARM7, scene=ARM7_SCENE, base="fixed") is arm7  # same process
+    assert rbdc.compile(ARM7, scene=ARM7_SCENE, base="fixed", float32=True) is arm7  # same process
     assert time.perf_counter() - start < 0.5
     code = (f"import sys, time; sys.path.insert(0, {str(ROOT / 'python')!r}); import rbdc; t = time.perf_counter(); "
-            f"m = rbdc.compile({str(ARM7)!r}, scene={str(ARM7_SCENE)!r}, base='fixed'); "
+            f"m = rbdc.compile({str(ARM7)!r}, scene={str(ARM7_SCENE)!r}, base='fixed', float32=True); "
             "print(time.perf_counter() - t, m.cache_entry)")
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     seconds, entry = run.stdout.split()
@@ -161,11 +162,12 @@ def test_cache_hit_and_changed_urdf_miss(arm7, tmp_path):
     changed.write_text(ARM7.read_text().replace('<mass value="', '<mass value="1', 1))
     assert cache_key(Target.from_files(changed, ARM7_SCENE, base="fixed")) != cache_key(
         Target.from_files(ARM7, ARM7_SCENE, base="fixed"))
-    assert cache_key(Target.from_files(ARM7, ARM7_SCENE, base="fixed")) == arm7.cache_entry.name
+    assert cache_key(Target.from_files(ARM7, ARM7_SCENE, base="fixed")) != arm7.cache_entry.name  # float32 differs
+    assert cache_key(Target.from_files(ARM7, ARM7_SCENE, base="fixed", float32=True)) == arm7.cache_entry.name
 
 
 def test_compile_from_a_model_and_bad_targets(arm7, arm7_model, tmp_path):
-    assert rbdc.compile(arm7_model, scene=ARM7_SCENE) is arm7
+    assert rbdc.compile(arm7_model, scene=ARM7_SCENE, float32=True) is arm7
     with pytest.raises(FileNotFoundError, match="scene file .*nothing.yaml does not exist"):
         rbdc.compile(ARM7, scene=tmp_path / "nothing.yaml")
     with pytest.raises(FileNotFoundError, match="scene file .*no_such_scene.yaml does not exist"):

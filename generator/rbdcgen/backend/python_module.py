@@ -2,6 +2,7 @@
 generated function, rendered from the same traced Function table as the headers (templates/
 python_module.cpp.j2). The numpy boundary itself is python/rbdc/native/rbdc_py/batch_call.hpp."""
 from ..frontend.layout import Layout
+from ..graph.flops import count_ops
 from ..version import VERSION
 from .names import cpp_identifier
 from .render import ALIASES, BATCH_HEADER, GeneratedFile, eigen_type, input_records, template_environment
@@ -41,7 +42,7 @@ def docstring(function, is_matrix) -> str:
     return "\n".join(lines)
 
 
-def _function_record(function, robot, scene) -> dict:
+def _function_record(function, robot, scene, float32: bool) -> dict:
     def is_matrix(a):
         return a.cols != 1 or eigen_type(a, robot, scene) in MATRIX_ALIASES
 
@@ -54,20 +55,23 @@ def _function_record(function, robot, scene) -> dict:
     return {"name": function.name, "docstring": docstring(function, is_matrix),
             "inputs": [argument(a, True) for a in function.inputs],
             "outputs": [argument(a, False) for a in function.outputs],
-            "zero_outputs": any(e is None for a in function.outputs for e in function.values[a.name]),
-            "lanes_double": lanes or PACK_LANES["double"], "lanes_float": lanes or PACK_LANES["float"]}
+            "zero_outputs": any(e is None for a in function.outputs for e in function.values.get(a.name, ())),
+            "lanes_double": lanes or PACK_LANES["double"], "lanes_float": (lanes or PACK_LANES["float"]) if float32 else 0}
 
 
-def render_python_module(compilation, layout: Layout, module_name: str) -> list[GeneratedFile]:
+def render_python_module(compilation, layout: Layout, module_name: str, float32: bool = False) -> list[GeneratedFile]:
     """The module's sources, to compile against the files of pipeline.render(compilation) and
     python/rbdc/native: `<module_name>.cpp` (the module) first, then `<module_name>_<function>.cpp`
-    for each function (one translation unit each, so that they compile in parallel)."""
+    for each function (one translation unit each, so that they compile in parallel), most operations
+    first: started longest first, a parallel build ends with short compiles, not one long one.
+    `float32`: each function also instantiated in float (else float32 inputs run in double)."""
     c = compilation
     robot_id, scene_id = c.robot_name, cpp_identifier(c.scene.name)
     environment = template_environment(layout)
     common = {"generator_version": VERSION, "inputs": input_records(c.inputs, layout), "scene_name": c.scene.name,
               "namespace": f"rbdc_gen::{robot_id}::{scene_id}"}
-    records = [_function_record(f, c.robot, c.scene) for f in c.functions]
+    records = [_function_record(f, c.robot, c.scene, float32) for f in c.functions]
+    costs = {f.name: count_ops(f)["total"] for f in c.functions}
     module = environment.get_template("python_module.cpp.j2").render(
         **common, module_name=module_name, umbrella_include=f"{robot_id}/{scene_id}.hpp",
         robot={"name": robot_id, "floating_base": c.robot.floating_base}, functions=records)
@@ -75,4 +79,4 @@ def render_python_module(compilation, layout: Layout, module_name: str) -> list[
     return [GeneratedFile(f"{module_name}.cpp", module)] + [
         GeneratedFile(f"{module_name}_{r['name']}.cpp", function_template.render(
             **common, batch_include=BATCH_HEADER, function={**r, "include": f"{robot_id}/{scene_id}/{r['name']}.hpp"}))
-        for r in records]
+        for r in sorted(records, key=lambda r: -costs[r["name"]])]
