@@ -113,6 +113,34 @@ class MiniCheetahLanes(unittest.TestCase):
         scalar_lines = emit_body(trace_function(robot, default_scene(), "mass_matrix"))
         self.assertFalse(any(line.startswith("store_lanes(") for line in scalar_lines))
 
+    def test_lane_angle_names_unique(self):
+        """The lanes' sin/cos are named by what the limbs' joint names share (prefix and suffix);
+        names that share only a suffix (pybullet's torso_to_abduct_fr_j, abduct_fr_to_thigh_fr_j,
+        thigh_fr_to_knee_fr_j all end in _j) still give one name per lane joint."""
+        robot = mini_cheetah.load()
+        legs = ("fr", "fl", "hr", "hl")
+        cases = {
+            "mini_cheetah": (None, ["lanes_abad_joint", "lanes_hip_joint", "lanes_knee_joint"]),
+            "pybullet": (lambda leg: ("torso_to_abduct_%s_j" % leg, "abduct_%s_to_thigh_%s_j" % (leg, leg),
+                                      "thigh_%s_to_knee_%s_j" % (leg, leg)),
+                         ["lanes_torso_to_abduct_j", "lanes_abduct_j", "lanes_thigh_j"]),
+            "nothing shared": (lambda leg: (leg, leg.upper(), leg * 2),
+                               ["lanes_joint_1", "lanes_joint_2", "lanes_joint_3"]),
+            "same shared part": (lambda leg: ("a_%s_j" % leg, "a_%s%s_j" % (leg, leg[-1]), "k_%s" % leg),
+                                 ["lanes_a_j", "lanes_joint_2", "lanes_k"]),
+        }
+        for case, (names_of, expected) in cases.items():
+            renamed = robot
+            if names_of:
+                joints = list(robot.joints)
+                for k, leg in enumerate(legs):
+                    for j, name in enumerate(names_of(leg)):
+                        joints[1 + 3 * k + j] = replace(joints[1 + 3 * k + j], name=name)
+                renamed = replace(robot, joints=tuple(joints))
+            fn = trace_function(renamed, default_scene(), "inverse_dynamics_lanes")
+            got = [fn.lanes.angle_names[("lane_q", l)] for l in range(3)]
+            self.assertEqual(got, expected, case)
+
     def test_limbs_must_match(self):
         robot = mini_cheetah.load()
         joints = list(robot.joints)
