@@ -2,6 +2,7 @@
 
 #include <tinyxml.h>
 
+#include <initializer_list>
 #include <map>
 #include <set>
 
@@ -45,6 +46,44 @@ void strip_appearance(const std::string& path, TiXmlElement* robot, std::vector<
     dropped.push_back(e);
   }
   for (TiXmlElement* e : dropped) e->Parent()->RemoveChild(e);
+}
+
+// urdfdom reports a malformed number with the attribute's text inside the format string it hands to
+// console_bridge, so a '%' there is read as a printf directive ("1%s%s" as a mass crashes the
+// process). No number holds a '%': refuse one in the attributes urdfdom reads as numbers before it
+// sees them. (Names are logged through a "%s" and are safe.)
+void refuse_percent_in_numbers(const std::string& path, const TiXmlElement* robot) {
+  const auto check = [&](const std::string& owner, const TiXmlElement* e) {
+    for (const TiXmlAttribute* a = e->FirstAttribute(); a != nullptr; a = a->Next()) {
+      if (std::string(a->Name()) == "joint") continue;  // <mimic joint="…">: a name
+      if (std::string(a->Value()).find('%') != std::string::npos) {
+        throw ModelError(path + ":" + std::to_string(e->Row()) + ": " + owner + ": <" + e->Value() +
+                         "> attribute '" + a->Name() + "' holds a '%', which no number has");
+      }
+    }
+  };
+  const auto check_children = [&](const std::string& owner, const TiXmlElement* parent,
+                                  std::initializer_list<const char*> tags) {
+    for (const char* tag : tags) {
+      for (const TiXmlElement* e = parent->FirstChildElement(tag); e != nullptr;
+           e = e->NextSiblingElement(tag)) {
+        check(owner, e);
+      }
+    }
+  };
+  for (const TiXmlElement* link = robot->FirstChildElement("link"); link != nullptr;
+       link = link->NextSiblingElement("link")) {
+    const std::string owner = "link '" + attribute(link, "name") + "'";
+    for (const TiXmlElement* inertial = link->FirstChildElement("inertial"); inertial != nullptr;
+         inertial = inertial->NextSiblingElement("inertial")) {
+      check_children(owner, inertial, {"origin", "mass", "inertia"});
+    }
+  }
+  for (const TiXmlElement* joint = robot->FirstChildElement("joint"); joint != nullptr;
+       joint = joint->NextSiblingElement("joint")) {
+    check_children("joint '" + attribute(joint, "name") + "'", joint,
+                   {"origin", "axis", "limit", "dynamics", "safety_controller", "calibration", "mimic"});
+  }
 }
 
 }  // namespace
@@ -107,6 +146,7 @@ UrdfOutline read_urdf_outline(const std::string& path, const std::string& text) 
     }
     outline.joints.push_back(j);
   }
+  refuse_percent_in_numbers(path, robot);
   strip_appearance(path, robot, outline.warnings);
   TiXmlPrinter printer;
   doc.Accept(&printer);

@@ -324,5 +324,14 @@ TEST(UrdfLoader, NamesMustBePlainText) {
               HasSubstr("control_char_name.urdf:6: link name 'arm\\x0ax' is not plain text"));
 }
 
+// urdfdom formats its error about an unreadable number with the number's text as the format string:
+// "1%s%s" as a mass crashed the process. The outline refuses a '%' in any attribute urdfdom reads as
+// numbers (tests/data/percent_in_number.urdf, also a fuzz_urdf seed), before urdfdom sees it.
+TEST(UrdfLoader, PercentInANumberIsRefusedBeforeUrdfdom) {
+  EXPECT_THAT(model_error([] { load_urdf(data_path("percent_in_number.urdf")); }),
+              HasSubstr("percent_in_number.urdf:7: link 'arm': <mass> attribute 'value' holds a '%', "
+                        "which no number has"));
+}
+
 }  // namespace
 }  // namespace rbdc
