@@ -24,6 +24,16 @@ def dof_parents(robot):
     return parents
 
 
+def dof_ancestors(parents, i):
+    """The dofs above dof i in the tree, nearest first."""
+    out = []
+    j = parents[i]
+    while j != -1:
+        out.append(j)
+        j = parents[j]
+    return out
+
+
 def _as_is(k, i, value):
     return value
 

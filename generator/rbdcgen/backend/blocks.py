@@ -72,8 +72,8 @@ def split(body, parameters, function_name, max_statements=MAX_STATEMENTS):
             match = _DEFINITION.match(statement)
             if match and match.group(2) in readers:
                 stored.append("%s[%d] = %s;" % (SCRATCH, slots[match.group(2)], match.group(2)))
-        used = set().union(*(_references(s) for s in statements))
-        unused = ["static_cast<void>(%s);" % p for p in parameters if p not in used]
+        used = set().union(*(_references(s) for s in loads + stored))
+        unused = ["static_cast<void>(%s);" % p for p in [*parameters, SCRATCH] if p not in used]
         parts.append(unused + loads + stored)
     arguments = ", ".join(list(parameters) + [SCRATCH])
     main = ["Scalar %s[%d];" % (SCRATCH, max(size, 1))]

@@ -233,7 +233,7 @@ def _store_units(fn):
     were the bottleneck, 172 -> 110 ns with g++; docs/performance.md), the rest one by one."""
     width = ex.LANES if fn.lanes is not None else 1
     units = []
-    for arg in fn.outputs:
+    for arg in fn.traced_arguments():
         runs = []  # maximal runs of consecutive written entries
         for k, node in enumerate(fn.values[arg.name]):
             if node is None:

@@ -12,7 +12,7 @@ namespace with a using-declaration and adds the Eigen overload (docs/generated_a
 import hashlib
 import json
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import jinja2
@@ -29,6 +29,7 @@ SUPPORT_HEADER = "rbdc_gen/support.hpp"
 COMMON_DIR = "common"  # <robot>/common/: function bodies shared by the robot's scenes
 BATCH_HEADER = "rbdc_gen/batch.hpp"  # SIMD packs of states (docs/performance.md)
 LANES_HEADER = "rbdc_gen/lanes.hpp"  # one SIMD lane per limb, for the lane functions only
+SOLVE_HEADER = "rbdc_gen/solve.hpp"  # looped solves, for the functions in looped-solve form only
 
 # The Eigen type aliases of docs/generated_api.md: name, rows, cols (as C++ expressions), doc.
 ALIASES = (
@@ -116,26 +117,62 @@ def ops_table(ops: dict) -> list[str]:
     return [f"operations{header}", f"{'':10}{values}"]
 
 
-def body_record(function, arguments: list[dict], robot, robot_id: str, robot_inputs: list[dict]) -> dict:
-    """The scene-independent part of a function: signature, body, counts. `key` and the file name
-    come from a hash of all of it, so equal functions of different scenes are one file."""
+def _straight_line(function, arguments: list[dict], robot) -> dict:
+    """The emitted code of `function`: its body, cut into blocks when it is long."""
     body = emit_body(function, angle_names(robot))
     # An input the scene made irrelevant is still part of the signature; say so to the compiler.
     body = [f"static_cast<void>({name});" for name in _unused_inputs(arguments, body)] + body
-    record = {"name": function.name, "doc": function.doc, "body": body, "robot": robot_id,
+    code = {"body": body}
+    blocks = None if function.lanes is not None else split(body, [a["name"] for a in arguments], function.name)
+    if blocks is not None:
+        code.update(body=blocks.main, parts=blocks.parts, emission=(
+            "%d blocks of at most %d statements (%d values passed in scratch), each a function of its own: "
+            "one straight-line function of %d statements would compile in time growing faster than its "
+            "length" % (len(blocks.parts), MAX_STATEMENTS, blocks.scratch_size, len(body))))
+    return code
+
+
+def _looped_solve(function, arguments: list[dict], robot) -> dict:
+    """The code of a function in looped-solve form (passes/looped_solve.py): a helper `<name>_terms`,
+    straight-line code writing the right-hand sides and the factor into local arrays, then the loop
+    that solves them and the copies of the solved columns into the outputs."""
+    solve = function.solve
+    terms_arguments = [a for a in arguments if a["is_input"]] + [
+        {"name": t.name, "rows": t.rows, "cols": t.cols, "doc": t.doc, "is_input": False} for t in solve.terms]
+    terms = replace(function, name=function.name + "_terms", outputs=solve.terms, solve=None)
+    helper = {"name": terms.name, "arguments": terms_arguments,
+              "doc": f"The traced part of {function.name}: what the loop below solves.",
+              **_straight_line(terms, terms_arguments, robot)}
+    local = {t.name: f"solve_{t.name}" for t in solve.terms}
+    nv, columns = solve.nv, solve.columns
+    body = [f"Scalar {local[t.name]}[{t.size}];" for t in solve.terms]
+    body.append("%s(%s);" % (terms.name, ", ".join(local.get(a["name"], a["name"]) for a in terms_arguments)))
+    body.append("const int dof_parent[%d] = {%s};" % (nv, ", ".join(map(str, solve.parents))))
+    body.append(f"ltdl_solve_columns<Scalar, {nv}, {columns}>(dof_parent, solve_L, solve_D_inv, solve_rhs);")
+    first = 0
+    for name, width in solve.blocks:
+        body.append(f"copy_columns<Scalar, {nv}, {columns}>(solve_rhs, {first}, {width}, {name});")
+        first += width
+    emission = ("looped solve: %s writes the %d right-hand sides and the factor, ltdl_solve_columns "
+                "solves them all at once, one SIMD row update per factor entry (%d)"
+                % (terms.name, columns, solve.factor_entries))
+    return {"body": body, "helpers": [helper], "emission": emission}
+
+
+def body_record(function, arguments: list[dict], robot, robot_id: str, robot_inputs: list[dict]) -> dict:
+    """The scene-independent part of a function: signature, body, counts. `key` and the file name
+    come from a hash of all of it, so equal functions of different scenes are one file."""
+    code = (_looped_solve if function.solve is not None else _straight_line)(function, arguments, robot)
+    record = {"name": function.name, "doc": function.doc, **code, "robot": robot_id,
               "arguments": [{k: a[k] for k in ("name", "rows", "cols", "doc", "is_input")} for a in arguments],
               "ops_table": ops_table(count_ops(function)), "inputs": robot_inputs,
               "generator_version": VERSION}
     if function.lanes is not None:
         record["lanes"] = True  # the body includes LANES_HEADER
+    if function.solve is not None:
+        record["solve"] = True  # the body includes SOLVE_HEADER
     if function.schedule:
         record["schedule"] = function.schedule  # the view passes/schedule.py chose, and why
-    blocks = None if function.lanes is not None else split(body, [a["name"] for a in arguments], function.name)
-    if blocks is not None:
-        record.update(body=blocks.main, parts=blocks.parts, emission=(
-            "%d blocks of at most %d statements (%d values passed in scratch), each a function of its own: "
-            "one straight-line function of %d statements would compile in time growing faster than its "
-            "length" % (len(blocks.parts), MAX_STATEMENTS, blocks.scratch_size, len(body))))
     digest = hashlib.sha256(json.dumps(record, sort_keys=True).encode()).hexdigest()
     key = f"{function.name}_{digest[:12]}"
     return {**record, "key": key, "include": f"{robot_id}/{COMMON_DIR}/{key}.hpp",
@@ -188,7 +225,8 @@ def render_robot_scene(robot, scene, functions, robot_name: str, inputs, layout:
               "aliases": [{"name": n, "rows": r, "cols": c, "doc": d} for n, r, c, d in ALIASES]}
     records = [function_record(f, robot, scene, robot_id, scene_id, robot_inputs) for f in functions]
     lane_files = [lanes_file(layout)] if any(f.lanes is not None for f in functions) else []
-    files = [support_file(layout), batch_file(layout), *lane_files,
+    solve_files = [solve_file(layout)] if any(f.solve is not None for f in functions) else []
+    files = [support_file(layout), batch_file(layout), *lane_files, *solve_files,
              GeneratedFile(umbrella, environment.get_template("robot_scene.hpp.j2").render(
                  **common, functions=records))]
     function_template = environment.get_template("function.hpp.j2")
@@ -199,19 +237,22 @@ def render_robot_scene(robot, scene, functions, robot_name: str, inputs, layout:
     return files
 
 
+def _library_file(layout: Layout, template: str, path: str) -> GeneratedFile:
+    text = template_environment(layout).get_template(template).render(generator_version=VERSION, inputs=[])
+    return GeneratedFile(path, text)
+
+
 def support_file(layout: Layout) -> GeneratedFile:
-    text = template_environment(layout).get_template("support.hpp.j2").render(
-        generator_version=VERSION, inputs=[])
-    return GeneratedFile(SUPPORT_HEADER, text)
+    return _library_file(layout, "support.hpp.j2", SUPPORT_HEADER)
 
 
 def batch_file(layout: Layout) -> GeneratedFile:
-    text = template_environment(layout).get_template("batch.hpp.j2").render(
-        generator_version=VERSION, inputs=[])
-    return GeneratedFile(BATCH_HEADER, text)
+    return _library_file(layout, "batch.hpp.j2", BATCH_HEADER)
 
 
 def lanes_file(layout: Layout) -> GeneratedFile:
-    text = template_environment(layout).get_template("lanes.hpp.j2").render(
-        generator_version=VERSION, inputs=[])
-    return GeneratedFile(LANES_HEADER, text)
+    return _library_file(layout, "lanes.hpp.j2", LANES_HEADER)
+
+
+def solve_file(layout: Layout) -> GeneratedFile:
+    return _library_file(layout, "solve.hpp.j2", SOLVE_HEADER)

@@ -249,11 +249,13 @@ def _mirror_joint_block(robot, dtau):
             dtau[a * nv + dofs[b]] = dtau[b * nv + row_a]
 
 
-def forward_dynamics_derivatives(m):
-    """∂a = −M⁻¹ ∂(RNEA(q, v, a) − τ_e(q, f)) at a = forward_dynamics(q, v, τ, f). The residual is
-    traced with placeholder symbols for a, differentiated with a held fixed, and only then are the
-    placeholders replaced by the forward-dynamics result: no differentiation through the
-    factorisation."""
+# The right-hand sides of forward_dynamics_derivatives, in their output order.
+FORWARD_DYNAMICS_COLUMNS = ("da_dq", "da_dv", "da_dtau", "da_df")
+
+
+def _forward_dynamics_columns(m):
+    """The right-hand sides whose M⁻¹-images are ∂a: −∂(RNEA − τ_e)/∂(q, v) at the placeholder a,
+    Sᵀ and Jᵀ, as {output name: list of nv-columns}."""
     robot = m.robot
     nv = robot.nv
     dq, dv = residual_derivatives(m)
@@ -263,11 +265,36 @@ def forward_dynamics_derivatives(m):
                            for r in range(nv)] for i in range(1, robot.nb)]       # Sᵀ
     J = jacobian.feet_jacobian(m) if m.feet else []
     columns["da_df"] = [[J[row][c] for c in range(nv)] for row in range(len(J))]  # Jᵀ
+    return columns
+
+
+def forward_dynamics_derivatives(m):
+    """∂a = −M⁻¹ ∂(RNEA(q, v, a) − τ_e(q, f)) at a = forward_dynamics(q, v, τ, f). The residual is
+    traced with placeholder symbols for a, differentiated with a held fixed, and only then are the
+    placeholders replaced by the forward-dynamics result: no differentiation through the
+    factorisation."""
+    columns = _forward_dynamics_columns(m)
     flat = {name: [x for col in _solve_columns(m, cols) for x in col]
             for name, cols in columns.items()}
-    _mirror_joint_block(robot, flat["da_dtau"])
-    order = ("da_dq", "da_dv", "da_dtau", "da_df")
-    return replace_symbols({name: flat[name] for name in order}, m.a, fd.forward_dynamics(m))
+    _mirror_joint_block(m.robot, flat["da_dtau"])
+    return replace_symbols({name: flat[name] for name in FORWARD_DYNAMICS_COLUMNS}, m.a,
+                           fd.forward_dynamics(m))
+
+
+def forward_dynamics_derivative_terms(m):
+    """What forward_dynamics_derivatives solves, unsolved (passes/looped_solve.py solves it in a
+    loop): `rhs`, the right-hand sides side by side, row-major (nv × columns, in the order of
+    FORWARD_DYNAMICS_COLUMNS); `L`, the factor's entries at each dof's tree ancestors (dof by dof,
+    nearest ancestor first); `D_inv`, its inverse pivots."""
+    nv = m.robot.nv
+    columns = _forward_dynamics_columns(m)
+    cols = [col for name in FORWARD_DYNAMICS_COLUMNS for col in columns[name]]
+    parents = fd.dof_parents(m.robot)
+    L, inv_diag = fd.ltdl(mass_matrix(m), parents)
+    # (a robot whose dofs have no ancestors has no entries; one unused zero keeps the array legal C++)
+    packed = [L[i][j] for i in range(nv) for j in fd.dof_ancestors(parents, i)] or [ex.const(0.0)]
+    terms = {"rhs": [col[r] for r in range(nv) for col in cols], "L": packed, "D_inv": inv_diag}
+    return replace_symbols(terms, m.a, fd.forward_dynamics(m))
 
 
 def contact_dynamics_derivatives(m):
@@ -328,6 +355,11 @@ def replace_symbols(named, symbols, values):
     return {name: tuple(next(entries) for _ in xs) for name, xs in named.items()}
 
 
+def _factor_entries(robot):
+    parents = fd.dof_parents(robot)
+    return sum(len(fd.dof_ancestors(parents, i)) for i in range(robot.nv))
+
+
 def spec(robot, nf, nc):
     """trace.py's function table for the derivative quantities (nf feet, nc of them in contact):
     name → (doc, input names, [(output name, rows, cols, doc)], trace(m) → {output name:
@@ -354,6 +386,13 @@ def spec(robot, nf, nc):
              ("da_dtau", nv, nj, "∂a/∂τ = M⁻¹Sᵀ"),
              ("da_df", nv, 3 * nf, "∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r")],
             forward_dynamics_derivatives),
+        "forward_dynamics_derivative_terms": (
+            "The traced part of forward_dynamics_derivatives in its looped form (passes/looped_solve.py).",
+            ("q", "v", "tau", "f"),
+            [("rhs", nv, 2 * nv + nj + 3 * nf, "right-hand sides, row-major"),
+             ("L", max(_factor_entries(robot), 1), 1, "factor entries at each dof's ancestors"),
+             ("D_inv", nv, 1, "inverse pivots")],
+            forward_dynamics_derivative_terms),
         "feet_velocity_derivatives": (
             "Derivative of the world foot velocities at fixed v.", ("q", "v"),
             [("dpdot_dq", 3 * nf, nv, "∂ṗ/∂q, rows 3k + r: foot k, world axis r" + on_q)],

@@ -1,11 +1,13 @@
-"""Which view a quantity is traced on, decided by cost (docs/performance.md, "The fastest form by
-default"): the scalar tree, or the robot's isomorphic limbs in SIMD lanes. The algorithm is the
-same; only how it is evaluated changes, so the function keeps its plain name and its doc gains one
-line that says the choice and its numbers.
+"""Which form a quantity is evaluated in, decided by cost (docs/performance.md, "The fastest form by
+default"): the scalar tree, the robot's isomorphic limbs in SIMD lanes, or (forward-dynamics
+derivatives) a looped solve with SIMD across the right-hand sides (looped_solve.py). The algorithm
+is the same; only how it is evaluated changes, so the function keeps its plain name and its doc
+gains one line that says the choice and its numbers.
 
 The cost is the arithmetic instructions the body issues: every operation node once, a lane
 operation being one vector instruction for all limbs, the sum over the lanes two (a horizontal
-add of four). A scene may force a view (`schedule: scalar` or `schedule: limb_lanes`)."""
+add of four), a looped solve's row update one per looped_solve.SIMD_DOUBLES columns. A scene may
+force a form (`schedule: scalar`, `limb_lanes` or `looped_solve`) where the function has it."""
 
 from __future__ import annotations
 
@@ -13,15 +15,16 @@ from dataclasses import replace
 
 from ..graph import expr as ex
 from ..views.limbs import LimbError, isomorphic_limbs
-from . import lane_functions, singular_mass
+from . import lane_functions, looped_solve, singular_mass
 from .trace import trace_function
 
 _LANE_SUM_INSTRUCTIONS = 2  # log2(LANES) horizontal additions
 
 
 def instructions(fn):
-    """Arithmetic instructions of fn's live DAG (a lane operation issues once)."""
-    count = 0
+    """Arithmetic instructions of fn's live DAG (a lane operation issues once), and of its looped
+    solve."""
+    count = fn.solve.instructions() if fn.solve is not None else 0
     for node in ex.reachable(fn.output_exprs()):
         if node.op == "lane_sum":
             count += _LANE_SUM_INSTRUCTIONS
@@ -30,32 +33,48 @@ def instructions(fn):
     return count
 
 
-def scheduled_function(robot, scene, name):
-    """`name` traced on the view the scene's schedule asks for, or by cost under `auto`."""
+def _forms(robot, scene, name):
+    """{form: how to trace it} for every form of `name` this robot allows, the scalar tree first."""
+    forms = {"scalar": lambda: trace_function(robot, scene, name)}
     lane_name = lane_functions.LANE_NAME.get(name)
-    if lane_name is None or scene.schedule == "scalar":
-        return trace_function(robot, scene, name)
-    try:
-        isomorphic_limbs(robot)
-    except LimbError:
-        if scene.schedule == "limb_lanes":
-            raise
-        return trace_function(robot, scene, name)
-    lanes = trace_function(robot, scene, lane_name)
-    if scene.schedule == "limb_lanes":
-        return _as(lanes, name, lanes.doc, "limb lanes, as the scene asks")
-    scalar = trace_function(robot, scene, name)
-    cost_scalar, cost_lanes = instructions(scalar), instructions(lanes)
-    if cost_lanes >= cost_scalar:
-        return replace(scalar, schedule="scalar tree: %d arithmetic instructions, limb lanes %d"
-                       % (cost_scalar, cost_lanes))
-    return _as(lanes, name, scalar.doc, "limb lanes (the %d isomorphic limbs in SIMD lanes, the trunk "
-               "scalar): %d arithmetic instructions, scalar tree %d" % (ex.LANES, cost_lanes, cost_scalar))
+    if lane_name is not None:
+        try:
+            isomorphic_limbs(robot)
+            forms["limb_lanes"] = lambda: _as(trace_function(robot, scene, lane_name), name)
+        except LimbError:
+            if scene.schedule == "limb_lanes":
+                raise
+    if name in looped_solve.TERMS and not robot.couplings:  # a coupled robot solves in G's coordinates
+        forms["looped_solve"] = lambda: looped_solve.looped_function(robot, scene, name)
+    return forms
 
 
-def _as(lanes, name, doc, why):
+_SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "looped_solve": "looped solve"}
+_DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes, the trunk scalar)" % ex.LANES,
+           "looped_solve": " (the solve's right-hand sides in SIMD across columns)"}
+
+
+def scheduled_function(robot, scene, name):
+    """`name` traced in the form the scene's schedule asks for, or by cost under `auto` (each form
+    traced; the fewest arithmetic instructions wins, the scalar tree on a tie)."""
+    forms = _forms(robot, scene, name)
+    if len(forms) == 1 or scene.schedule == "scalar":
+        return forms["scalar"]()
+    if scene.schedule in forms:
+        return replace(forms[scene.schedule](), schedule="%s, as the scene asks" % _SHORT[scene.schedule])
+    if scene.schedule != "auto":  # a form this function does not have: the scalar tree
+        return forms["scalar"]()
+    traced = {form: trace() for form, trace in forms.items()}
+    cost = {form: instructions(fn) for form, fn in traced.items()}
+    best = min(cost, key=lambda form: cost[form])  # dicts keep order: the scalar tree wins a tie
+    others = ", ".join("%s %d" % (_SHORT[form], n) for form, n in cost.items() if form != best)
+    return replace(traced[best], doc=traced["scalar"].doc, schedule="%s%s: %d arithmetic instructions, %s"
+                   % (_SHORT[best], _DETAIL[best], cost[best], others))
+
+
+def _as(lanes, name):
     """The lane function under the plain name."""
-    return replace(lanes, name=name, doc=doc, schedule=why)
+    return replace(lanes, name=name)
 
 
 def trace_scene(robot, scene):

@@ -44,10 +44,15 @@ class Function:
     computes: str = ""    # the quantity it equals: its own name, or a lane function's scalar namesake
     schedule: str = ""    # the view it was traced on and why, when passes/schedule.py chose one
     lanes: object = None  # views/limb_lanes.LaneLayout of a lane function (lane_functions.py), else None
+    solve: object = None  # passes/looped_solve.LoopedSolve: `values` are its terms, a loop solves them
+
+    def traced_arguments(self):
+        """The arguments whose entries `values` holds: the outputs, or a looped solve's terms."""
+        return self.outputs if self.solve is None else self.solve.terms
 
     def output_exprs(self):
-        """All written output entries in signature order (column-major within each output)."""
-        return [e for arg in self.outputs for e in self.values[arg.name] if e is not None]
+        """All written traced entries in signature order (column-major within each argument)."""
+        return [e for arg in self.traced_arguments() for e in self.values[arg.name] if e is not None]
 
     def __hash__(self):
         return hash((self.name, self.inputs, self.outputs))
@@ -261,14 +266,28 @@ def _whole_body_spec(robot, nf, n_frames):
     }
 
 
-def trace_function(robot, scene, name):
-    """Traces one function of the scene into a fresh graph."""
+def _lookup(robot, scene, name):
+    """(doc, input names, output specs, build) of function `name` for this robot and scene."""
     nf, nc = len(scene.feet_for(robot)), len(scene.contacts_for(robot))
     spec = {**_spec(robot, nf, nc), **_whole_body_spec(robot, nf, len(scene.frames_for(robot))),
             **differentiate.spec(robot, nf, nc), **lane_functions.spec(robot, nf)}
     if name not in spec:
         raise KeyError("unknown function '%s'" % name)
-    doc, input_names, output_specs, build = spec[name]
+    return spec[name]
+
+
+def signature(robot, scene, name):
+    """(doc, input Arguments, output Arguments) of function `name`, without tracing it."""
+    doc, input_names, output_specs, _ = _lookup(robot, scene, name)
+    args = _input_args(robot, len(scene.feet_for(robot)))
+    inputs = tuple(args[n] for n in input_names if n not in scene.zero_inputs)
+    return doc, inputs, tuple(Argument(*spec) for spec in output_specs)
+
+
+def trace_function(robot, scene, name):
+    """Traces one function of the scene into a fresh graph."""
+    nf, nc = len(scene.feet_for(robot)), len(scene.contacts_for(robot))
+    doc, input_names, output_specs, build = _lookup(robot, scene, name)
     tree = coupled.tree_view(robot)
     if tree is not robot:  # mimic couplings: trace on the tree, then project (passes/project.py)
         build = {**_spec(tree, nf, nc), **differentiate.spec(tree, nf, nc)}[name][3]
