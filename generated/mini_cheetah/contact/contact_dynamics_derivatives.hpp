@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_d171c4d1b739.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_f0dc4eb79679.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_d171c4d1b739.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_f0dc4eb79679.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -29,8 +29,8 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param dlambda_dtau out 12x12: ∂λ/∂τ
 ///
 /// operations    mul    add  div  sqrt  trig  neg   total
-///             91269  87781   26     0    24    2  179102
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_d171c4d1b739::contact_dynamics_derivatives;
+///             52744  48783   26     0    24    0  101577
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_f0dc4eb79679::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -102,21 +102,25 @@ class Delassus:
             x = sp.vadd(x, ldlt_solve(*self.factor, residual))
         return x
 
-    def solution_operator(self):
-        """The matrix P of solve (rows), x = P b: the proximal steps are linear in b, x_{k+1} = G x_k +
-        F⁻¹b with F = A + μ1 and G = 1 − F⁻¹A, so P = Σ_{j<PROXIMAL_STEPS} Gʲ F⁻¹, built by Horner's rule.
-        For many right-hand sides (contact_dynamics_derivatives: 2·nv + n_joints of them) one P is
-        ~10 m³ operations against ~2 PROXIMAL_STEPS m² for each solve."""
+    def step_sum(self):
+        """Q = Σ_{j<PROXIMAL_STEPS} Gʲ, G = 1 − F⁻¹A (F = A + μ1), built by Horner's rule: the proximal
+        steps are linear in b, x_{k+1} = G x_k + F⁻¹b, so solve(b) = Q F⁻¹b. G's eigenvalues are
+        μ/(aᵢ + μ) ∈ (0, 1], so Q is bounded (≤ PROXIMAL_STEPS) even for redundant contacts, where F⁻¹
+        is not; F⁻¹b stays a solve with the factor. For many right-hand sides
+        (contact_dynamics_derivatives: 2·nv + n_joints of them) one Q costs ~m³ per step once against
+        m² per step for each solve."""
         n = len(self.A)
-        identity = [[ex.const(1.0 if r == s else 0.0) for s in range(n)] for r in range(n)]
-        F_inv = _transpose([ldlt_solve(*self.factor, column) for column in identity])   # symmetric
-        G = [[identity[r][s] - sp.dot(F_inv[r], [row[s] for row in self.A]) for s in range(n)]
-             for r in range(n)]
-        P = F_inv
-        for _ in range(PROXIMAL_STEPS - 1):
-            P = [[F_inv[r][s] + sp.dot(G[r], [row[s] for row in P]) for s in range(n)]
-                 for r in range(n)]
-        return P
+        H = _transpose([ldlt_solve(*self.factor, [row[s] for row in self.A]) for s in range(n)])
+        G = [[ex.const(1.0 if r == s else 0.0) - H[r][s] for s in range(n)] for r in range(n)]
+        Q = G
+        for _ in range(PROXIMAL_STEPS - 2):
+            Q = [[G[r][s] + sp.dot(G[r], [row[s] for row in Q]) for s in range(n)] for r in range(n)]
+        return [[Q[r][s] + 1.0 if r == s else Q[r][s] for s in range(n)] for r in range(n)]
+
+    def solve_many(self, Q, b):
+        """solve(b) with Q = step_sum()."""
+        y = ldlt_solve(*self.factor, b)
+        return [sp.dot(row, y) for row in Q]
 
     def apply_Minv_Jt(self, lam):
         """M⁻¹Jᵀ λ."""

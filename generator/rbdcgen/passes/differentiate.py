@@ -301,8 +301,8 @@ def contact_dynamics_derivatives(m):
     """Differentiating both KKT rows of contact_dynamics at held (a, λ) gives
         [M −Jᵀ; J 0] [∂a; ∂λ] = −[r₁; r₂],  r₁ = ∂(RNEA(q, v, a) − Jᵀλ − Sᵀτ),  r₂ = ∂(J a + J̇v),
     solved as ∂λ = A⁻¹(J M⁻¹ r₁ − r₂), ∂a = M⁻¹(Jᵀ∂λ − r₁) with the Delassus factor (A = J M⁻¹Jᵀ),
-    A⁻¹ as the matrix of contact_dynamics' proximal solve (Delassus.solution_operator: one 3nc × 3nc
-    product per column instead of the proximal steps).
+    A⁻¹ as contact_dynamics' proximal solve in closed form (Delassus.step_sum: one solve with the
+    factor and one 3nc × 3nc product per column instead of the proximal steps).
     r₁ is the forward-dynamics residual with placeholder symbols a and f (the per-foot λ), r₂ the
     tangents of the contact points' classical acceleration at the placeholder a; the placeholders
     take the contact_dynamics result last, as in forward_dynamics_derivatives."""
@@ -318,14 +318,14 @@ def contact_dynamics_derivatives(m):
     parents = fd.dof_parents(robot)
     L, inv_diag = fd.mass_matrix_factor(m)
     zero = ex.const(0.0)
-    solution = delassus.solution_operator()
+    step_sum = delassus.step_sum()
 
     def columns(r1_columns, r2_columns):
         """(∂a, ∂λ) column lists from r₁, r₂ columns."""
         da, dlam = [], []
         for r1, r2_col in zip(r1_columns, r2_columns):
             b = [sp.dot(delassus.Minv_Jt[r], r1) - r2_col[r] for r in range(nc3)]
-            dl = [sp.dot(row, b) for row in solution]
+            dl = delassus.solve_many(step_sum, b)
             rhs = sp.vsub(sp.zeros(nv) if not dl else
                           [sp.dot([row[c] for row in delassus.J], dl) for c in range(nv)], r1)
             da.append(fd.ltdl_solve(L, inv_diag, parents, rhs, m.into_dof))
