@@ -2,7 +2,8 @@
 // Regenerate instead of editing; docs/generator.md says how.
 //
 // Looped solves for the generated functions whose outputs are M⁻¹ applied to many right-hand sides
-// (forward_dynamics_derivatives in its looped form, docs/performance.md, "Looped solves"): the
+// (forward_dynamics_derivatives and contact_dynamics_derivatives in their looped forms,
+// docs/performance.md, "Looped solves"): the
 // traced part writes the right-hand sides side by side, row-major, and the factor M = Lᵀ D L's
 // entries at each dof's tree ancestors; these loops solve all columns at once, one row update
 // (a multiply-add over every column, SIMD across the columns) per factor entry.
@@ -10,17 +11,8 @@
 
 #include "rbdc_gen/support.hpp"
 
-// The row updates read one row of B and write another: they never overlap, which the compiler
-// cannot see through the row pointers.
-#if defined(__CUDA_ARCH__)
-#define RBDC_INDEPENDENT_ITERATIONS
-#elif defined(__clang__)
-#define RBDC_INDEPENDENT_ITERATIONS _Pragma("clang loop vectorize(assume_safety)")
-#elif defined(__GNUC__)
-#define RBDC_INDEPENDENT_ITERATIONS _Pragma("GCC ivdep")
-#else
-#define RBDC_INDEPENDENT_ITERATIONS
-#endif
+// Each loop sums the row it writes in a local array: the compiler then sees that the row never
+// overlaps the rows it reads, and keeps it in vector registers.
 
 namespace rbdc_gen {
 
@@ -36,28 +28,96 @@ RBDC_HOST_DEVICE inline void ltdl_solve_columns(const int (&parent)[NV], const S
     first[i] = entries;
     for (int j = parent[i]; j != -1; j = parent[j]) ++entries;
   }
+  Scalar row[NC];  // row i of B held locally: no aliasing with the rows it updates or reads
   for (int i = NV - 1; i >= 0; --i) {  // B ← L⁻ᵀ B, leaves to root
-    const Scalar* row_i = B + i * NC;
+    for (int c = 0; c < NC; ++c) row[c] = B[i * NC + c];
     int k = first[i];
     for (int j = parent[i]; j != -1; j = parent[j], ++k) {
       Scalar* row_j = B + j * NC;
       const Scalar l = L[k];
-      RBDC_INDEPENDENT_ITERATIONS
-      for (int c = 0; c < NC; ++c) row_j[c] -= l * row_i[c];
+      for (int c = 0; c < NC; ++c) row_j[c] -= l * row[c];
     }
   }
   for (int i = 0; i < NV; ++i) {  // B ← L⁻¹ D⁻¹ B, root to leaves (ancestors' rows final)
-    Scalar* row_i = B + i * NC;
     const Scalar d = D_inv[i];
-    for (int c = 0; c < NC; ++c) row_i[c] *= d;
+    for (int c = 0; c < NC; ++c) row[c] = B[i * NC + c] * d;
     int k = first[i];
     for (int j = parent[i]; j != -1; j = parent[j], ++k) {
       const Scalar* row_j = B + j * NC;
       const Scalar l = L[k];
-      RBDC_INDEPENDENT_ITERATIONS
-      for (int c = 0; c < NC; ++c) row_i[c] -= l * row_j[c];
+      for (int c = 0; c < NC; ++c) row[c] -= l * row_j[c];
     }
+    for (int c = 0; c < NC; ++c) B[i * NC + c] = row[c];
   }
+}
+
+/// C ← A B (Minus: A B − C) for row-major A (M × K), B (K × NC) and C (M × NC): each row of C summed
+/// in a local array (no aliasing with B, so it stays in vector registers), one SIMD multiply-add
+/// over the columns per entry of A.
+template <class Scalar, int M, int K, int NC, bool Minus>
+RBDC_HOST_DEVICE inline void multiply_rows(const Scalar* A, const Scalar* B, Scalar* C) noexcept {
+  for (int i = 0; i < M; ++i) {
+    Scalar row[NC];
+    for (int c = 0; c < NC; ++c) row[c] = Minus ? -C[i * NC + c] : Scalar(0);
+    for (int k = 0; k < K; ++k) {
+      const Scalar a = A[i * K + k];
+      for (int c = 0; c < NC; ++c) row[c] += a * B[k * NC + c];
+    }
+    for (int c = 0; c < NC; ++c) C[i * NC + c] = row[c];
+  }
+}
+
+template <class Scalar, int M, int K, int NC>
+RBDC_HOST_DEVICE inline void multiply(const Scalar* A, const Scalar* B, Scalar* C) noexcept {
+  multiply_rows<Scalar, M, K, NC, false>(A, B, C);
+}
+
+template <class Scalar, int M, int K, int NC>
+RBDC_HOST_DEVICE inline void multiply_minus(const Scalar* A, const Scalar* B, Scalar* C) noexcept {
+  multiply_rows<Scalar, M, K, NC, true>(A, B, C);
+}
+
+/// Solves F X = B in place for the NC columns of B (row-major N × NC), F = L D Lᵀ dense: L row-major,
+/// unit lower triangular (its strict lower triangle read), D_inv the inverse pivots.
+template <class Scalar, int N, int NC>
+RBDC_HOST_DEVICE inline void ldlt_solve_columns(const Scalar* L, const Scalar* D_inv, Scalar* B) noexcept {
+  Scalar row[NC];  // row i of B summed locally, as in multiply_rows
+  for (int i = 0; i < N; ++i) {  // B ← L⁻¹ B
+    for (int c = 0; c < NC; ++c) row[c] = B[i * NC + c];
+    for (int k = 0; k < i; ++k) {
+      const Scalar l = L[i * N + k];
+      for (int c = 0; c < NC; ++c) row[c] -= l * B[k * NC + c];
+    }
+    for (int c = 0; c < NC; ++c) B[i * NC + c] = row[c];
+  }
+  for (int i = N - 1; i >= 0; --i) {  // B ← L⁻ᵀ D⁻¹ B (the rows below i final)
+    for (int c = 0; c < NC; ++c) row[c] = B[i * NC + c] * D_inv[i];
+    for (int k = i + 1; k < N; ++k) {
+      const Scalar l = L[k * N + i];
+      for (int c = 0; c < NC; ++c) row[c] -= l * B[k * NC + c];
+    }
+    for (int c = 0; c < NC; ++c) B[i * NC + c] = row[c];
+  }
+}
+
+/// Q = Σ_{j<Steps} Gʲ, G = 1 − F⁻¹A (F = L D Lᵀ, all N × N row-major): the proximal steps
+/// x ← G x + F⁻¹b from x = 0 give x = Q F⁻¹b after Steps steps (Horner: Q = G + G Q, then + 1).
+template <class Scalar, int N, int Steps>
+RBDC_HOST_DEVICE inline void proximal_step_sum(const Scalar* L, const Scalar* D_inv, const Scalar* A,
+                                               Scalar* Q) noexcept {
+  static_assert(Steps >= 2, "at least two proximal steps");
+  Scalar G[N * N];
+  Scalar GQ[N * N];
+  for (int k = 0; k < N * N; ++k) G[k] = A[k];
+  ldlt_solve_columns<Scalar, N, N>(L, D_inv, G);
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) G[i * N + j] = Scalar(i == j ? 1 : 0) - G[i * N + j];
+  for (int k = 0; k < N * N; ++k) Q[k] = G[k];
+  for (int step = 2; step < Steps; ++step) {
+    multiply<Scalar, N, N, N>(G, Q, GQ);
+    for (int k = 0; k < N * N; ++k) Q[k] = G[k] + GQ[k];
+  }
+  for (int i = 0; i < N; ++i) Q[i * N + i] += Scalar(1);
 }
 
 /// Columns first … first + count − 1 of the row-major NV × NC matrix B, column-major into out.

@@ -144,18 +144,10 @@ def _looped_solve(function, arguments: list[dict], robot) -> dict:
               "doc": f"The traced part of {function.name}: what the loop below solves.",
               **_straight_line(terms, terms_arguments, robot)}
     local = {t.name: f"solve_{t.name}" for t in solve.terms}
-    nv, columns = solve.nv, solve.columns
     body = [f"Scalar {local[t.name]}[{t.size}];" for t in solve.terms]
     body.append("%s(%s);" % (terms.name, ", ".join(local.get(a["name"], a["name"]) for a in terms_arguments)))
-    body.append("const int dof_parent[%d] = {%s};" % (nv, ", ".join(map(str, solve.parents))))
-    body.append(f"ltdl_solve_columns<Scalar, {nv}, {columns}>(dof_parent, solve_L, solve_D_inv, solve_rhs);")
-    first = 0
-    for name, width in solve.blocks:
-        body.append(f"copy_columns<Scalar, {nv}, {columns}>(solve_rhs, {first}, {width}, {name});")
-        first += width
-    emission = ("looped solve: %s writes the %d right-hand sides and the factor, ltdl_solve_columns "
-                "solves them all at once, one SIMD row update per factor entry (%d)"
-                % (terms.name, columns, solve.factor_entries))
+    body += solve.loops()
+    emission = solve.emission(terms.name)
     return {"body": body, "helpers": [helper], "emission": emission}
 
 

@@ -297,6 +297,43 @@ def forward_dynamics_derivative_terms(m):
     return replace_symbols(terms, m.a, fd.forward_dynamics(m))
 
 
+# The column blocks of contact_dynamics_derivatives: (∂a output, ∂λ output), in column order.
+CONTACT_COLUMNS = (("da_dq", "dlambda_dq"), ("da_dv", "dlambda_dv"), ("da_dtau", "dlambda_dtau"))
+
+
+def _contact_right_hand_sides(m):
+    """The columns (r₁, r₂) of contact_dynamics_derivatives, q then v then τ (CONTACT_COLUMNS' order):
+    r₁ the forward-dynamics residual's derivatives at placeholder a and f, r₂ the tangents of the
+    contact points' J a + J̇v at the placeholder a (zero for τ), r₁ = −Sᵀ for τ."""
+    robot = m.robot
+    nv = robot.nv
+    dq, dv = residual_derivatives(m)
+    pddot = [sp.dot(row, m.a) + bias for row, bias in zip(
+        cd.contact_rows(m, jacobian.feet_jacobian(m)),
+        cd.contact_rows(m, [x for foot in kinematics.feet_bias_accelerations(m) for x in foot]))]
+    r2 = _q_and_v(m, pddot, "q", "v")
+    nc3 = len(pddot)
+
+    def split(flat):
+        return [[flat[c * nc3 + r] for r in range(nc3)] for c in range(nv)]
+
+    selection = [[ex.const(-1.0 if r == robot.joints[i].v_index else 0.0) for r in range(nv)]
+                 for i in range(1, robot.nb)]                                     # −Sᵀ
+    r1 = ([[dq[r][c] for r in range(nv)] for c in range(nv)]
+          + [[dv[r][c] for r in range(nv)] for c in range(nv)] + selection)
+    return r1, split(r2["q"]) + split(r2["v"]) + [sp.zeros(nc3) for _ in selection]
+
+
+def _at_contact_solution(m, named):
+    """{name: expressions} with the placeholders a and f replaced by contact_dynamics' a and λ."""
+    a, lam = cd.contact_dynamics(m)
+    forces = list(sp.zeros(3 * len(m.feet)))
+    for k, foot in enumerate(m.contacts):
+        j = m.feet.index(foot)
+        forces[3 * j:3 * j + 3] = lam[3 * k:3 * k + 3]
+    return replace_symbols(named, list(m.a) + list(m.f), list(a) + forces)
+
+
 def contact_dynamics_derivatives(m):
     """Differentiating both KKT rows of contact_dynamics at held (a, λ) gives
         [M −Jᵀ; J 0] [∂a; ∂λ] = −[r₁; r₂],  r₁ = ∂(RNEA(q, v, a) − Jᵀλ − Sᵀτ),  r₂ = ∂(J a + J̇v),
@@ -308,47 +345,51 @@ def contact_dynamics_derivatives(m):
     take the contact_dynamics result last, as in forward_dynamics_derivatives."""
     robot = m.robot
     nv = robot.nv
-    dq, dv = residual_derivatives(m)
-    pddot = [sp.dot(row, m.a) + bias for row, bias in zip(
-        cd.contact_rows(m, jacobian.feet_jacobian(m)),
-        cd.contact_rows(m, [x for foot in kinematics.feet_bias_accelerations(m) for x in foot]))]
-    r2 = _q_and_v(m, pddot, "q", "v")
-    nc3 = len(pddot)
+    r1_columns, r2_columns = _contact_right_hand_sides(m)
     delassus = cd.Delassus(m)
     parents = fd.dof_parents(robot)
     L, inv_diag = fd.mass_matrix_factor(m)
-    zero = ex.const(0.0)
     step_sum = delassus.step_sum()
+    da, dlam = [], []
+    for r1, r2 in zip(r1_columns, r2_columns):
+        b = [sp.dot(delassus.Minv_Jt[r], r1) - r2[r] for r in range(len(r2))]
+        dl = delassus.solve_many(step_sum, b)
+        rhs = sp.vsub(sp.zeros(nv) if not dl else
+                      [sp.dot([row[c] for row in delassus.J], dl) for c in range(nv)], r1)
+        da.append(fd.ltdl_solve(L, inv_diag, parents, rhs, m.into_dof))
+        dlam.append(dl)
+    named, first = {}, 0
+    for (a_name, l_name), width in zip(CONTACT_COLUMNS, (nv, nv, robot.n_joints)):
+        named[a_name] = [x for col in da[first:first + width] for x in col]
+        named[l_name] = [x for col in dlam[first:first + width] for x in col]
+        first += width
+    return _at_contact_solution(m, named)
 
-    def columns(r1_columns, r2_columns):
-        """(∂a, ∂λ) column lists from r₁, r₂ columns."""
-        da, dlam = [], []
-        for r1, r2_col in zip(r1_columns, r2_columns):
-            b = [sp.dot(delassus.Minv_Jt[r], r1) - r2_col[r] for r in range(nc3)]
-            dl = delassus.solve_many(step_sum, b)
-            rhs = sp.vsub(sp.zeros(nv) if not dl else
-                          [sp.dot([row[c] for row in delassus.J], dl) for c in range(nv)], r1)
-            da.append(fd.ltdl_solve(L, inv_diag, parents, rhs, m.into_dof))
-            dlam.append(dl)
-        return da, dlam
 
-    def split(flat):
-        return [[flat[c * nc3 + r] for r in range(nc3)] for c in range(nv)]
-
-    da_dq, dl_dq = columns([[dq[r][c] for r in range(nv)] for c in range(nv)], split(r2["q"]))
-    da_dv, dl_dv = columns([[dv[r][c] for r in range(nv)] for c in range(nv)], split(r2["v"]))
-    selection = [[ex.const(-1.0 if r == robot.joints[i].v_index else 0.0) for r in range(nv)]
-                 for i in range(1, robot.nb)]                                     # −Sᵀ
-    da_dtau, dl_dtau = columns(selection, [[zero] * nc3 for _ in selection])
-    flat = {"da_dq": da_dq, "da_dv": da_dv, "da_dtau": da_dtau,
-            "dlambda_dq": dl_dq, "dlambda_dv": dl_dv, "dlambda_dtau": dl_dtau}
-    named = {name: [x for col in cols for x in col] for name, cols in flat.items()}
-    a, lam = cd.contact_dynamics(m)
-    forces = list(sp.zeros(3 * len(m.feet)))
-    for k, foot in enumerate(m.contacts):
-        j = m.feet.index(foot)
-        forces[3 * j:3 * j + 3] = lam[3 * k:3 * k + 3]
-    return replace_symbols(named, list(m.a) + list(m.f), list(a) + forces)
+def contact_dynamics_derivative_terms(m):
+    """What contact_dynamics_derivatives solves, unsolved (passes/looped_solve.py solves it in a loop),
+    all row-major: `R1`, `R2`, the right-hand sides r₁ (nv rows) and r₂ (3nc rows) side by side;
+    `J`, the contact rows; `Minv_Jt`, M⁻¹Jᵀ; `F_L`, `F_D_inv`, the damped Delassus factor (unit lower
+    triangle, zeros above); `A`, the Delassus matrix (the loop forms Delassus.step_sum from it and
+    the factor); `L`, `D_inv`, M's tree factor as in
+    forward_dynamics_derivative_terms."""
+    nv = m.robot.nv
+    r1_columns, r2_columns = _contact_right_hand_sides(m)
+    delassus = cd.Delassus(m)
+    parents = fd.dof_parents(m.robot)
+    L, inv_diag = fd.mass_matrix_factor(m)
+    F_L, F_D_inv = delassus.factor
+    n = len(F_D_inv)
+    zero = ex.const(0.0)
+    terms = {"R1": [col[r] for r in range(nv) for col in r1_columns],
+             "R2": [col[r] for r in range(n) for col in r2_columns],
+             "J": [x for row in delassus.J for x in row],
+             "Minv_Jt": [column[r] for r in range(nv) for column in delassus.Minv_Jt],
+             "F_L": [F_L[r][c] if c < r else zero for r in range(n) for c in range(n)],
+             "F_D_inv": list(F_D_inv), "A": [x for row in delassus.A for x in row],
+             "L": [L[i][j] for i in range(nv) for j in fd.dof_ancestors(parents, i)] or [zero],
+             "D_inv": list(inv_diag)}
+    return _at_contact_solution(m, terms)
 
 
 def replace_symbols(named, symbols, values):
@@ -368,7 +409,7 @@ def spec(robot, nf, nc):
     """trace.py's function table for the derivative quantities (nf feet, nc of them in contact):
     name → (doc, input names, [(output name, rows, cols, doc)], trace(m) → {output name:
     column-major entries})."""
-    nv, nj = robot.nv, robot.n_joints
+    nv, nj, m3 = robot.nv, robot.n_joints, 3 * nc
     on_q = "; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)"
     return {
         "inverse_dynamics_derivatives": (
@@ -404,6 +445,17 @@ def spec(robot, nf, nc):
         "feet_force_term_derivatives": (
             "Derivative of τ_e = Jᵀf at fixed world foot forces f.", ("q", "f"),
             [("dtau_e_dq", nv, nv, "∂(Jᵀf)/∂q" + on_q)], feet_force_term_derivatives),
+        "contact_dynamics_derivative_terms": (
+            "The traced part of contact_dynamics_derivatives in its looped form (passes/looped_solve.py).",
+            ("q", "v", "tau"),
+            [("R1", nv, 2 * nv + nj, "r₁ columns, row-major"), ("R2", m3, 2 * nv + nj, "r₂ columns, row-major"),
+             ("J", m3, nv, "contact rows, row-major"), ("Minv_Jt", nv, m3, "M⁻¹Jᵀ, row-major"),
+             ("F_L", m3, m3, "damped Delassus factor, unit lower, row-major"),
+             ("F_D_inv", m3, 1, "its inverse pivots"),
+             ("A", m3, m3, "Delassus matrix J M⁻¹Jᵀ, row-major"),
+             ("L", max(_factor_entries(robot), 1), 1, "M's factor entries at each dof's ancestors"),
+             ("D_inv", nv, 1, "M's inverse pivots")],
+            contact_dynamics_derivative_terms),
         "contact_dynamics_derivatives": (
             "Derivatives of contact_dynamics (a, λ): the KKT rows differentiated at the solution, "
             "solved through the Delassus factor (docs/runtime.md, \"Contact dynamics\").",

@@ -1,24 +1,28 @@
-"""The looped form of forward_dynamics_derivatives (docs/performance.md, "Looped solves").
+"""The looped forms of forward_dynamics_derivatives and contact_dynamics_derivatives
+(docs/performance.md, "Looped solves").
 
-∂a is M⁻¹ applied to 2·nv + n_joints + 3·n_feet right-hand sides. Unrolled, every column's sparse
+∂a is M⁻¹ applied to 2·nv + n_joints + 3·n_feet right-hand sides (for contact dynamics, with the
+Delassus system's solve between two such solves, docs/generator.md). Unrolled, every column's sparse
 solve is straight-line code of its own: O(nv · columns) statements that stream through the
 instruction cache on every call and take g++ minutes on a humanoid. In the looped form the traced
-part writes the right-hand sides side by side (row-major) and the factor's tree entries into local
-arrays, and one loop over the dofs (ltdl_solve_columns, rbdc_gen/solve.hpp) updates a whole row of
-right-hand sides at a time: the columns are independent, so each update is one SIMD multiply-add
-over all of them, and its code does not grow with the robot."""
+part writes the right-hand sides side by side (row-major) and the factors into local arrays, and
+loops (rbdc_gen/solve.hpp) update a whole row of right-hand sides at a time: the columns are
+independent, so each update is one SIMD multiply-add over all of them, and its code does not grow
+with the robot."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
 from typing import Tuple
 
+from ..algorithms.contact_dynamics import PROXIMAL_STEPS
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents
 from . import differentiate
 from .trace import Argument, signature, trace_function
 
 # The functions with a looped form, and the traced function that writes what they solve.
-TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_terms"}
+TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_terms",
+         "contact_dynamics_derivatives": "contact_dynamics_derivative_terms"}
 # Doubles per vector instruction the cost model assumes: AVX2, the widest every x86-64 machine we
 # build for has (AVX-512 halves the loop's instructions again).
 SIMD_DOUBLES = 4
@@ -45,24 +49,110 @@ class LoopedSolve:
     def factor_entries(self):
         return sum(len(dof_ancestors(self.parents, i)) for i in range(self.nv))
 
+    def multiply_adds(self):
+        """Per column: one multiply-add per factor entry on the way up and on the way down."""
+        return 2 * self.factor_entries
+
     def operations(self):
-        """Multiplications and additions of the loop: per column, one multiply-add per factor entry
-        on the way up and on the way down, one multiplication per pivot."""
-        entries, columns = self.factor_entries, self.columns
-        return {"mul": columns * (2 * entries + self.nv), "add": columns * 2 * entries}
+        """Multiplications and additions of the loops (and one multiplication per pivot)."""
+        return {"mul": self.columns * (self.multiply_adds() + self.nv), "add": self.columns * self.multiply_adds()}
 
     def instructions(self):
-        """Vector instructions of the loop (a row update over the columns, SIMD_DOUBLES at a time)."""
-        vectors = -(-self.columns // SIMD_DOUBLES)
-        return vectors * (4 * self.factor_entries + self.nv)
+        """Vector instructions of the loops (a row update over the columns, SIMD_DOUBLES at a time):
+        a load and a multiply-add per multiply-add, one per pivot."""
+        return -(-self.columns // SIMD_DOUBLES) * (2 * self.multiply_adds() + self.nv)
+
+    def _tree_solve(self, target):
+        return ["const int dof_parent[%d] = {%s};" % (self.nv, ", ".join(map(str, self.parents))),
+                f"ltdl_solve_columns<Scalar, {self.nv}, {self.columns}>(dof_parent, solve_L, solve_D_inv, {target});"]
+
+    def loops(self):
+        """The C++ statements after the terms: solve, then copy each block into its output."""
+        body = self._tree_solve("solve_rhs")
+        return body + _copies(self.blocks, "solve_rhs", self.nv, self.columns)
+
+    def emission(self, terms_name):
+        return ("looped solve: %s writes the %d right-hand sides and the factor, ltdl_solve_columns "
+                "solves them all at once, one SIMD row update per factor entry (%d)"
+                % (terms_name, self.columns, self.factor_entries))
+
+
+@dataclass(frozen=True)
+class LoopedContactSolve(LoopedSolve):
+    """contact_dynamics_derivatives' columns (differentiate.contact_dynamics_derivative_terms): Y = M⁻¹R1,
+    B = J Y − R2, ∂λ = Q F⁻¹B with Q = Σ_{j<PROXIMAL_STEPS} (1 − F⁻¹A)ʲ (Delassus.step_sum, formed by
+    loops too), ∂a = M⁻¹Jᵀ∂λ − Y, each step a loop over all columns. `blocks` are the
+    ∂a outputs, `lambda_blocks` the ∂λ ones (same widths), `contact_rows` = 3·nc."""
+    lambda_blocks: Tuple[Tuple[str, int], ...] = ()
+    contact_rows: int = 0
+
+    def multiply_adds(self):
+        n, m = self.nv, self.contact_rows
+        return super().multiply_adds() + 2 * n * m + m * (m - 1) + m * m
+
+    def _step_sum_multiply_adds(self):
+        """Q = Σ Gʲ (Delassus.step_sum), formed once per call: F⁻¹A by the factor (m columns), then
+        PROXIMAL_STEPS − 2 products G Q."""
+        m = self.contact_rows
+        return m * m * (m - 1) + (PROXIMAL_STEPS - 2) * m ** 3
+
+    def operations(self):
+        m, once = self.contact_rows, self._step_sum_multiply_adds()
+        ops = super().operations()
+        return {"mul": ops["mul"] + (self.columns + m) * m + once,   # the Delassus pivots
+                "add": ops["add"] + once + (PROXIMAL_STEPS - 1) * m * m}
+
+    def instructions(self):
+        m = self.contact_rows
+        return super().instructions() + -(-m // SIMD_DOUBLES) * (
+            2 * self._step_sum_multiply_adds() // m + m + (PROXIMAL_STEPS - 1) * m)
+
+    def loops(self):
+        n, m, c = self.nv, self.contact_rows, self.columns
+        return (self._tree_solve("solve_R1")                                               # Y = M⁻¹R1
+                + [f"multiply_minus<Scalar, {m}, {n}, {c}>(solve_J, solve_R1, solve_R2);",    # B = J Y − R2
+                   f"ldlt_solve_columns<Scalar, {m}, {c}>(solve_F_L, solve_F_D_inv, solve_R2);",  # F⁻¹B
+                   f"Scalar solve_Q[{m * m}];",
+                   f"proximal_step_sum<Scalar, {m}, {PROXIMAL_STEPS}>(solve_F_L, solve_F_D_inv, solve_A, solve_Q);",
+                   f"Scalar solve_dlambda[{m * c}];",
+                   f"multiply<Scalar, {m}, {m}, {c}>(solve_Q, solve_R2, solve_dlambda);",       # ∂λ
+                   f"multiply_minus<Scalar, {n}, {m}, {c}>(solve_Minv_Jt, solve_dlambda, solve_R1);"]  # ∂a
+                + _copies(self.blocks, "solve_R1", n, c) + _copies(self.lambda_blocks, "solve_dlambda", m, c))
+
+    def emission(self, terms_name):
+        return ("looped solve: %s writes the %d right-hand sides, the contact rows and the factors; loops "
+                "solve them all at once (M⁻¹, the Delassus system, M⁻¹Jᵀ), one SIMD row update per entry"
+                % (terms_name, self.columns))
+
+
+def _copies(blocks, source, rows, columns):
+    body, first = [], 0
+    for name, width in blocks:
+        body.append(f"copy_columns<Scalar, {rows}, {columns}>({source}, {first}, {width}, {name});")
+        first += width
+    return body
+
+
+def has_looped_form(robot, name):
+    """Whether `name` has a looped form here: not for a coupled robot (it solves in G's coordinates).
+    (Contact dynamics always has contacts: a scene without any is refused.)"""
+    return name in TERMS and not robot.couplings
 
 
 def looped_function(robot, scene, name):
-    """`name` in its looped form: the traced terms, with the solve as a LoopedSolve."""
+    """`name` in its looped form: the traced terms, with the loops as a LoopedSolve."""
     doc, inputs, outputs = signature(robot, scene, name)
     terms = trace_function(robot, scene, TERMS[name])
-    blocks = tuple((arg.name, arg.cols) for arg in outputs if arg.cols)
-    solve = LoopedSolve(parents=tuple(dof_parents(robot)), blocks=blocks, terms=terms.outputs)
-    assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)
+    parents = tuple(dof_parents(robot))
+    if name == "contact_dynamics_derivatives":
+        widths = {arg.name: arg.cols for arg in outputs}
+        blocks = tuple((a, widths[a]) for a, _ in differentiate.CONTACT_COLUMNS)
+        lambda_blocks = tuple((l, widths[l]) for _, l in differentiate.CONTACT_COLUMNS)
+        solve = LoopedContactSolve(parents=parents, blocks=blocks, terms=terms.outputs,
+                                   lambda_blocks=lambda_blocks, contact_rows=3 * len(scene.contacts_for(robot)))
+    else:
+        blocks = tuple((arg.name, arg.cols) for arg in outputs if arg.cols)
+        solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs)
+        assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)
     assert terms.inputs == inputs and terms.outputs[0].cols == solve.columns
     return replace(terms, name=name, doc=doc, outputs=outputs, computes=name, solve=solve)

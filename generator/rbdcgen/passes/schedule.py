@@ -1,7 +1,7 @@
 """Which form a quantity is evaluated in, decided by cost (docs/performance.md, "The fastest form by
-default"): the scalar tree, the robot's isomorphic limbs in SIMD lanes, or (forward-dynamics
-derivatives) a looped solve with SIMD across the right-hand sides (looped_solve.py). The algorithm
-is the same; only how it is evaluated changes, so the function keeps its plain name and its doc
+default"): the scalar tree, the robot's isomorphic limbs in SIMD lanes, or (forward- and
+contact-dynamics derivatives) a looped solve with SIMD across the right-hand sides
+(looped_solve.py). The algorithm is the same; only how it is evaluated changes, so the function keeps its plain name and its doc
 gains one line that says the choice and its numbers.
 
 The cost is the arithmetic instructions the body issues: every operation node once, a lane
@@ -44,7 +44,7 @@ def _forms(robot, scene, name):
         except LimbError:
             if scene.schedule == "limb_lanes":
                 raise
-    if name in looped_solve.TERMS and not robot.couplings:  # a coupled robot solves in G's coordinates
+    if looped_solve.has_looped_form(robot, name):
         forms["looped_solve"] = lambda: looped_solve.looped_function(robot, scene, name)
     return forms
 

@@ -1,7 +1,8 @@
-"""The looped form of forward_dynamics_derivatives (passes/looped_solve.py): its traced terms, solved
-by an independent route (M rebuilt from the packed factor, a dense numpy solve), equal the scalar
-tree's outputs; the scene's schedule forces it, `auto` picks it by cost and says so, a coupled robot
-never gets it. The emitted loop itself is checked against the runtime by `rbdc verify` (arm7 and
+"""The looped forms of forward_dynamics_derivatives and contact_dynamics_derivatives
+(passes/looped_solve.py): their traced terms, solved by an independent route (M and the damped
+Delassus matrix rebuilt from their factors, dense numpy solves, the proximal steps iterated), equal
+the scalar tree's outputs; the scene's schedule forces them, `auto` picks by cost and says so, a
+coupled robot never gets them. The emitted loop itself is checked against the runtime by `rbdc verify` (arm7 and
 humanoid32 `derivatives`, whose `auto` picks it) and compiled under nvcc."""
 
 import os
@@ -27,25 +28,64 @@ def scene(schedule):
     return scene_from_dict({"name": "x", "derivatives": [NAME], "schedule": schedule})
 
 
-def solved_outputs(fn, state):
-    """{output: column-major floats}: the looped form's terms, solved densely."""
-    solve = fn.solve
+def terms_of(fn, state):
+    """{term: floats} of a looped function's traced part."""
     values = iter(ex.evaluate(fn.output_exprs(), state))
-    terms = {arg.name: [next(values) if e is not None else 0.0 for e in fn.values[arg.name]]
-             for arg in solve.terms}
-    nv, columns = solve.nv, solve.columns
-    factor = np.eye(nv)  # unit lower triangular, entries at each dof's ancestors
+    return {arg.name: [next(values) if e is not None else 0.0 for e in fn.values[arg.name]]
+            for arg in fn.solve.terms}
+
+
+def mass_matrix(solve, terms):
+    """M = Lᵀ D L rebuilt from the packed tree factor."""
+    factor = np.eye(solve.nv)  # unit lower triangular, entries at each dof's ancestors
     packed = iter(terms["L"])
-    for i in range(nv):
+    for i in range(solve.nv):
         for j in dof_ancestors(solve.parents, i):
             factor[i, j] = next(packed)
-    mass = factor.T @ np.diag(1.0 / np.array(terms["D_inv"])) @ factor
-    solution = np.linalg.solve(mass, np.array(terms["rhs"]).reshape(nv, columns))
+    return factor.T @ np.diag(1.0 / np.array(terms["D_inv"])) @ factor
+
+
+def split_blocks(blocks, solution):
     outputs, first = {}, 0
-    for name, width in solve.blocks:
+    for name, width in blocks:
         outputs[name] = list(solution[:, first:first + width].T.ravel())
         first += width
     return outputs
+
+
+def solved_outputs(fn, state):
+    """{output: column-major floats}: the looped form's terms, solved densely."""
+    solve = fn.solve
+    terms = terms_of(fn, state)
+    rhs = np.array(terms["rhs"]).reshape(solve.nv, solve.columns)
+    return split_blocks(solve.blocks, np.linalg.solve(mass_matrix(solve, terms), rhs))
+
+
+def solved_contact_outputs(fn, state):
+    """The same for contact_dynamics_derivatives: ∂λ from five proximal steps on the damped
+    Delassus matrix F (rebuilt from its factor), ∂a = M⁻¹(Jᵀ∂λ − r₁)."""
+    solve = fn.solve
+    terms = terms_of(fn, state)
+    n, m, c = solve.nv, solve.contact_rows, solve.columns
+    mass = mass_matrix(solve, terms)
+    R1, R2 = (np.array(terms[k]).reshape(rows, c) for k, rows in (("R1", n), ("R2", m)))
+    J, A = np.array(terms["J"]).reshape(m, n), np.array(terms["A"]).reshape(m, m)
+    lower = np.array(terms["F_L"]).reshape(m, m) + np.eye(m)
+    F = lower @ np.diag(1.0 / np.array(terms["F_D_inv"])) @ lower.T
+    b = J @ np.linalg.solve(mass, R1) - R2
+    dlambda = np.zeros_like(b)
+    for _ in range(5):
+        dlambda += np.linalg.solve(F, b - A @ dlambda)
+    da = np.linalg.solve(mass, J.T @ dlambda - R1)
+    return {**split_blocks(solve.blocks, da), **split_blocks(solve.lambda_blocks, dlambda)}
+
+
+def max_error(want, got):
+    worst = 0.0
+    for output, values in want.items():
+        scale = max(1.0, max(abs(x) for x in values))
+        worst = max(worst, max(abs(g - w) for g, w in zip(got[output], values)) / scale)
+    return worst
 
 
 class LoopedForwardDynamicsDerivatives(unittest.TestCase):
@@ -59,12 +99,8 @@ class LoopedForwardDynamicsDerivatives(unittest.TestCase):
             self.assertEqual(looped.outputs, scalar.outputs)
             for seed in (1, 2):
                 state = random_state(robot, len(robot.feet), seed)
-                want = evaluate(scalar, state)
-                got = solved_outputs(looped, state)
-                for output, values in want.items():
-                    scale = max(1.0, max(abs(x) for x in values))
-                    error = max(abs(g - w) for g, w in zip(got[output], values)) / scale
-                    self.assertLess(error, 1e-12, (robot.name, output, seed))
+                self.assertLess(max_error(evaluate(scalar, state), solved_outputs(looped, state)), 1e-12,
+                                (robot.name, seed))
 
     def test_auto_picks_by_cost_and_says_so(self):
         fn = scheduled_function(FLOATING, scene("auto"), NAME)
@@ -78,6 +114,27 @@ class LoopedForwardDynamicsDerivatives(unittest.TestCase):
         self.assertTrue(gripper.couplings)
         self.assertIsNone(scheduled_function(gripper, scene("looped_solve"), NAME).solve)
 
+
+def contact_scene(schedule):
+    return scene_from_dict({"name": "x", "derivatives": [CONTACT], "schedule": schedule})
+
+
+CONTACT = "contact_dynamics_derivatives"
+
+
+class LoopedContactDynamicsDerivatives(unittest.TestCase):
+    def test_terms_solved_equal_the_scalar_tree(self):
+        # tiny_fixed's two point feet give 6 contact rows on 3 dofs: a redundant contact set, whose
+        # least-norm solution amplifies round-off (docs/generated_api.md), hence its looser bound
+        for robot, tolerance in ((FLOATING, 1e-12), (FIXED, 1e-8)):
+            looped = scheduled_function(robot, contact_scene("looped_solve"), CONTACT)
+            scalar = scheduled_function(robot, contact_scene("scalar"), CONTACT)
+            self.assertIsNotNone(looped.solve)
+            self.assertEqual(looped.outputs, scalar.outputs)
+            for seed in (1, 2):
+                state = random_state(robot, len(robot.feet), seed)
+                self.assertLess(max_error(evaluate(scalar, state), solved_contact_outputs(looped, state)),
+                                tolerance, (robot.name, seed))
 
 if __name__ == "__main__":
     unittest.main()
