@@ -91,6 +91,20 @@ def ltdl_substitute(L, parents, x, dofs):
     return x
 
 
+def packed_factor(L, parents):
+    """L's entries at each dof's tree ancestors, dof by dof, nearest ancestor first (the layout
+    rbdc_gen/solve.hpp's ltdl_solve_columns reads); one unused zero when no dof has an ancestor, so
+    the array stays legal C++."""
+    n = len(parents)
+    return [L[i][j] for i in range(n) for j in dof_ancestors(parents, i)] or [ex.const(0.0)]
+
+
+def factor_entries(robot):
+    """How many entries packed_factor holds (at least one)."""
+    parents = dof_parents(robot)
+    return max(sum(len(dof_ancestors(parents, i)) for i in range(robot.nv)), 1)
+
+
 def factor_outputs(L, inv_diag, parents):
     """The factor as outputs: L (unit lower triangular, zero off the dof tree's ancestor entries),
     its pivots D and their inverses D⁻¹ (computed once by ltdl; a solve multiplies by them)."""

@@ -291,9 +291,8 @@ def forward_dynamics_derivative_terms(m):
     cols = [col for name in FORWARD_DYNAMICS_COLUMNS for col in columns[name]]
     parents = fd.dof_parents(m.robot)
     L, inv_diag = fd.ltdl(mass_matrix(m), parents)
-    # (a robot whose dofs have no ancestors has no entries; one unused zero keeps the array legal C++)
-    packed = [L[i][j] for i in range(nv) for j in fd.dof_ancestors(parents, i)] or [ex.const(0.0)]
-    terms = {"rhs": [col[r] for r in range(nv) for col in cols], "L": packed, "D_inv": inv_diag}
+    terms = {"rhs": [col[r] for r in range(nv) for col in cols], "L": fd.packed_factor(L, parents),
+             "D_inv": inv_diag}
     return replace_symbols(terms, m.a, fd.forward_dynamics(m))
 
 
@@ -387,7 +386,7 @@ def contact_dynamics_derivative_terms(m):
              "Minv_Jt": [column[r] for r in range(nv) for column in delassus.Minv_Jt],
              "F_L": [F_L[r][c] if c < r else zero for r in range(n) for c in range(n)],
              "F_D_inv": list(F_D_inv), "A": [x for row in delassus.A for x in row],
-             "L": [L[i][j] for i in range(nv) for j in fd.dof_ancestors(parents, i)] or [zero],
+             "L": fd.packed_factor(L, parents),
              "D_inv": list(inv_diag)}
     return _at_contact_solution(m, terms)
 
@@ -398,11 +397,6 @@ def replace_symbols(named, symbols, values):
     placeholders = {node.id: value for node, value in zip(symbols, values)}
     entries = iter(substitute([x for xs in named.values() for x in xs], placeholders))
     return {name: tuple(next(entries) for _ in xs) for name, xs in named.items()}
-
-
-def _factor_entries(robot):
-    parents = fd.dof_parents(robot)
-    return sum(len(fd.dof_ancestors(parents, i)) for i in range(robot.nv))
 
 
 def spec(robot, nf, nc):
@@ -435,7 +429,7 @@ def spec(robot, nf, nc):
             "The traced part of forward_dynamics_derivatives in its looped form (passes/looped_solve.py).",
             ("q", "v", "tau", "f"),
             [("rhs", nv, 2 * nv + nj + 3 * nf, "right-hand sides, row-major"),
-             ("L", max(_factor_entries(robot), 1), 1, "factor entries at each dof's ancestors"),
+             ("L", fd.factor_entries(robot), 1, "factor entries at each dof's ancestors"),
              ("D_inv", nv, 1, "inverse pivots")],
             forward_dynamics_derivative_terms),
         "feet_velocity_derivatives": (
@@ -453,7 +447,7 @@ def spec(robot, nf, nc):
              ("F_L", m3, m3, "damped Delassus factor, unit lower, row-major"),
              ("F_D_inv", m3, 1, "its inverse pivots"),
              ("A", m3, m3, "Delassus matrix J M⁻¹Jᵀ, row-major"),
-             ("L", max(_factor_entries(robot), 1), 1, "M's factor entries at each dof's ancestors"),
+             ("L", fd.factor_entries(robot), 1, "M's factor entries at each dof's ancestors"),
              ("D_inv", nv, 1, "M's inverse pivots")],
             contact_dynamics_derivative_terms),
         "contact_dynamics_derivatives": (
