@@ -61,7 +61,7 @@ DERIVATIVES = ("inverse_dynamics_derivatives", "bias_derivatives", "gravity_deri
 CONTACT_DERIVATIVES = ("contact_dynamics_derivatives",)
 FEET_DERIVATIVES = ("feet_velocity_derivatives", "feet_force_term_derivatives")
 KEYS = ("name", "quantities", "gravity", "base", "locked_joints", "feet", "frames", "contacts", "zero_inputs",
-        "derivatives", "actuators", "schedule")
+        "derivatives", "actuators", "schedule", "frame_axes")
 # How a quantity is evaluated (passes/schedule.py): `auto` picks the cheapest of the scalar tree, the
 # isomorphic limbs in SIMD lanes and a looped solve; the others force one where a function has it.
 SCHEDULES = ("auto", "scalar", "limb_lanes", "looped_solve")
@@ -69,6 +69,10 @@ SCHEDULES = ("auto", "scalar", "limb_lanes", "looped_solve")
 # runtime models them (rotor bodies and armature), `armature` with each rotor reduced to its
 # reflected inertia on M's diagonal, `none` without any (the code of a robot without actuators).
 ACTUATOR_MODES = ("full", "armature", "none")
+# Which axes the frame functions' outputs are in (docs/generated_api.md, "Frames and centroidal
+# quantities"): both (frame_velocities v_local and v_world, frame_jacobians J_local and J_world,
+# frame_bias_accelerations spatial and classical), or only the world-aligned or only the local one.
+FRAME_AXES = ("both", "world", "local")
 
 
 class SceneError(ValueError):
@@ -89,6 +93,7 @@ class Scene:
     derivatives: Tuple[str, ...] = ()               # none unless the scene lists them
     actuators: str = "full"                         # full | armature | none (ACTUATOR_MODES)
     schedule: str = "auto"                          # auto | scalar | limb_lanes | looped_solve
+    frame_axes: str = "both"                        # both | world | local (FRAME_AXES)
     source: str = "<default>"
 
     # --- resolution against a robot -------------------------------------------------------
@@ -245,17 +250,22 @@ def scene_from_dict(data, source="<scene>") -> Scene:
                 else _string_list(fail, "contacts", data["contacts"]))
     zero = _string_list(fail, "zero_inputs", data.get("zero_inputs") or [], ZERO_INPUTS)
     derivatives = _string_list(fail, "derivatives", data.get("derivatives") or [], DERIVATIVES)
-    actuators = data.get("actuators", "full")
-    if actuators not in ACTUATOR_MODES:
-        fail("actuators", "expected %s, got %r" % (" | ".join(ACTUATOR_MODES), actuators))
-    schedule = data.get("schedule", Scene.schedule)
-    if schedule not in SCHEDULES:
-        fail("schedule", "expected %s, got %r" % (" | ".join(SCHEDULES), schedule))
+    actuators = _choice(fail, data, "actuators", ACTUATOR_MODES)
+    schedule = _choice(fail, data, "schedule", SCHEDULES)
+    frame_axes = _choice(fail, data, "frame_axes", FRAME_AXES)
     return Scene(name=data["name"], quantities=quantities, gravity=gravity, base=base,
                  locked_joints=tuple((k, float(v)) for k, v in sorted(locked.items())), feet=feet,
                  frames=frames, contacts=contacts, zero_inputs=tuple(x for x in ZERO_INPUTS if x in zero),
                  derivatives=tuple(d for d in DERIVATIVES if d in derivatives), actuators=actuators,
-                 schedule=schedule, source=source)
+                 schedule=schedule, frame_axes=frame_axes, source=source)
+
+
+def _choice(fail, data, key, choices):
+    """data[key], one of `choices` (default the first)."""
+    value = data.get(key, choices[0])
+    if value not in choices:
+        fail(key, "expected %s, got %r" % (" | ".join(choices), value))
+    return value
 
 
 def load_scene(path) -> Scene:

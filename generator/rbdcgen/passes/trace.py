@@ -273,7 +273,23 @@ def _lookup(robot, scene, name):
             **differentiate.spec(robot, nf, nc), **lane_functions.spec(robot, nf)}
     if name not in spec:
         raise KeyError("unknown function '%s'" % name)
-    return spec[name]
+    return _in_frame_axes(scene, name, spec[name])
+
+
+# The frame functions' output in each single-axes choice of the scene key frame_axes.
+FRAME_AXES_OUTPUT = {"frame_velocities": {"local": "v_local", "world": "v_world"},
+                     "frame_jacobians": {"local": "J_local", "world": "J_world"},
+                     "frame_bias_accelerations": {"local": "spatial", "world": "classical"}}
+
+
+def _in_frame_axes(scene, name, entry):
+    """A frame function's entry with only the output of the scene's frame_axes (the other one's
+    work then falls to DCE); any other entry as it is."""
+    keep = FRAME_AXES_OUTPUT.get(name, {}).get(scene.frame_axes)
+    if keep is None:
+        return entry
+    doc, inputs, outputs, build = entry
+    return doc, inputs, [o for o in outputs if o[0] == keep], lambda m: {keep: build(m)[keep]}
 
 
 def signature(robot, scene, name):

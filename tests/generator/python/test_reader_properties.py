@@ -34,7 +34,8 @@ with open(os.path.join(DATA, "tiny_floating.json"), encoding="utf-8") as _handle
 VALID_SCENE = {"name": "stance", "quantities": ["mass_matrix", "feet_jacobian", "frame_jacobians"],
                "gravity": [0, 0, -9.81], "base": "fixed", "locked_joints": {"hinge": 0.5},
                "feet": ["slider_foot"], "frames": ["tool"], "contacts": ["slider_foot"], "zero_inputs": ["v"],
-               "derivatives": ["gravity_derivatives"], "actuators": "full", "schedule": "auto"}
+               "derivatives": ["gravity_derivatives"], "actuators": "full", "schedule": "auto",
+               "frame_axes": "world"}
 
 # Any JSON value: the numbers include huge, tiny, NaN and ±Infinity (Python's json writes and reads them).
 JSON = st.recursive(

@@ -1,7 +1,7 @@
 """Frames and centroidal functions (issue 21) in the generator alone: the scene's frames resolve with
-clear errors, the IR's frames are read and checked, and the traced functions agree with each other
+clear errors, the IR's frames are read and checked, the traced functions agree with each other
 (J v = the frame velocities, A_G's linear rows = m J_c, M · M⁻¹ = 1) on a fixture with a rotated,
-offset frame. The comparison with the runtime is rbdc verify's (tests/generator/CMakeLists.txt)."""
+offset frame, and the scene's frame_axes keeps one output of each frame function, unchanged. The comparison with the runtime is rbdc verify's (tests/generator/CMakeLists.txt)."""
 
 import copy
 import dataclasses
@@ -12,7 +12,7 @@ import unittest
 from numeric_check import DATA, evaluate, random_state
 from rbdcgen.frontend.ir import Frame, IRError, load_ir
 from rbdcgen.frontend.scene import SceneError, WHOLE_BODY, scene_from_dict
-from rbdcgen.passes.trace import trace_function
+from rbdcgen.passes.trace import FRAME_AXES_OUTPUT, trace_function
 
 RAW = json.load(open(os.path.join(DATA, "tiny_floating.json")))
 ROTATED = ((0.0, -1.0, 0.0), (0.6, 0.0, 0.8), (-0.8, 0.0, 0.6))  # body → frame coordinates
@@ -48,6 +48,22 @@ class Resolution(unittest.TestCase):
         with self.assertRaises(IRError) as caught:
             load_ir(data)
         self.assertIn("frames[0].body", str(caught.exception))
+
+
+class FrameAxes(unittest.TestCase):
+    def test_one_axes_choice_keeps_that_output_alone_and_unchanged(self):
+        state = random_state(ROBOT, len(ROBOT.feet), 4)
+        for name, outputs in FRAME_AXES_OUTPUT.items():
+            both = evaluate(trace_function(ROBOT, SCENE, name), state)
+            self.assertEqual(set(both), set(outputs.values()))
+            for axes, kept in outputs.items():
+                scene = dataclasses.replace(SCENE, frame_axes=axes)
+                self.assertEqual(evaluate(trace_function(ROBOT, scene, name), state), {kept: both[kept]})
+
+    def test_a_bad_choice_is_refused_naming_the_key(self):
+        with self.assertRaises(SceneError) as caught:
+            scene_from_dict({"name": "x", "frame_axes": "body"}, source="s.yaml")
+        self.assertIn("s.yaml: frame_axes: expected both | world | local, got 'body'", str(caught.exception))
 
 
 class Identities(unittest.TestCase):
