@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_be649771c077.hpp
+//   humanoid32/common/forward_dynamics_derivatives_e9532122f037.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_be649771c077.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_e9532122f037.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -27,11 +27,11 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param da_dtau out 38x32: ∂a/∂τ = M⁻¹Sᵀ
 /// @param da_df out 38x15: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
-/// operations     mul    add  div  sqrt  trig  neg   total
-///             106880  99204   33     0    64  197  206378
-/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 79234 arithmetic
+/// operations     mul     add  div  sqrt  trig  neg   total
+///             110430  102564   33     0    64  197  213288
+/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 80616 arithmetic
 ///   instructions, scalar tree 131228
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_be649771c077::forward_dynamics_derivatives;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_e9532122f037::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

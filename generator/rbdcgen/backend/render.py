@@ -144,7 +144,7 @@ def _looped_solve(function, arguments: list[dict], robot) -> dict:
               "doc": f"The traced part of {function.name}: what the loop below solves.",
               **_straight_line(terms, terms_arguments, robot)}
     local = {t.name: f"solve_{t.name}" for t in solve.terms}
-    body = [f"Scalar {local[t.name]}[{t.size}];" for t in solve.terms]
+    body = [f"alignas(64) Scalar {local[t.name]}[{t.size}];" for t in solve.terms]  # rows start on a cache line
     body.append("%s(%s);" % (terms.name, ", ".join(local.get(a["name"], a["name"]) for a in terms_arguments)))
     body += solve.loops()
     emission = solve.emission(terms.name)

@@ -249,6 +249,23 @@ def _mirror_joint_block(robot, dtau):
             dtau[a * nv + dofs[b]] = dtau[b * nv + row_a]
 
 
+# Columns per row of the looped forms' right-hand sides, a multiple of this: a row is then whole
+# 64-byte lines and whole AVX-512 vectors, so the loops (rbdc_gen/solve.hpp) have no remainder and no
+# access splits a cache line (g++ solved humanoid32's 123 columns in half the time at 128).
+ROW_ALIGNMENT = 8
+
+
+def padded(columns):
+    """The row length of `columns` right-hand sides: zero columns up to a multiple of ROW_ALIGNMENT."""
+    return -(-columns // ROW_ALIGNMENT) * ROW_ALIGNMENT
+
+
+def _rows(columns, rows):
+    """The first `rows` entries of each column, row-major, each row padded with zeros."""
+    zero = ex.const(0.0)
+    return [x for r in range(rows) for x in [col[r] for col in columns] + [zero] * (padded(len(columns)) - len(columns))]
+
+
 # The right-hand sides of forward_dynamics_derivatives, in their output order.
 FORWARD_DYNAMICS_COLUMNS = ("da_dq", "da_dv", "da_dtau", "da_df")
 
@@ -284,14 +301,14 @@ def forward_dynamics_derivatives(m):
 def forward_dynamics_derivative_terms(m):
     """What forward_dynamics_derivatives solves, unsolved (passes/looped_solve.py solves it in a
     loop): `rhs`, the right-hand sides side by side, row-major (nv × columns, in the order of
-    FORWARD_DYNAMICS_COLUMNS); `L`, the factor's entries at each dof's tree ancestors (dof by dof,
-    nearest ancestor first); `D_inv`, its inverse pivots."""
+    FORWARD_DYNAMICS_COLUMNS, each row zero-padded to `padded` columns); `L`, the factor's entries
+    at each dof's tree ancestors (dof by dof, nearest ancestor first); `D_inv`, its inverse pivots."""
     nv = m.robot.nv
     columns = _forward_dynamics_columns(m)
     cols = [col for name in FORWARD_DYNAMICS_COLUMNS for col in columns[name]]
     parents = fd.dof_parents(m.robot)
     L, inv_diag = fd.ltdl(mass_matrix(m), parents)
-    terms = {"rhs": [col[r] for r in range(nv) for col in cols], "L": fd.packed_factor(L, parents),
+    terms = {"rhs": _rows(cols, nv), "L": fd.packed_factor(L, parents),
              "D_inv": inv_diag}
     return replace_symbols(terms, m.a, fd.forward_dynamics(m))
 
@@ -367,7 +384,8 @@ def contact_dynamics_derivatives(m):
 
 def contact_dynamics_derivative_terms(m):
     """What contact_dynamics_derivatives solves, unsolved (passes/looped_solve.py solves it in a loop),
-    all row-major: `R1`, `R2`, the right-hand sides r₁ (nv rows) and r₂ (3nc rows) side by side;
+    all row-major: `R1`, `R2`, the right-hand sides r₁ (nv rows) and r₂ (3nc rows) side by side,
+    each row zero-padded to `padded` columns;
     `J`, the contact rows; `Minv_Jt`, M⁻¹Jᵀ; `F_L`, `F_D_inv`, the damped Delassus factor (unit lower
     triangle, zeros above); `A`, the Delassus matrix (the loop forms Delassus.step_sum from it and
     the factor); `L`, `D_inv`, M's tree factor as in
@@ -380,8 +398,7 @@ def contact_dynamics_derivative_terms(m):
     F_L, F_D_inv = delassus.factor
     n = len(F_D_inv)
     zero = ex.const(0.0)
-    terms = {"R1": [col[r] for r in range(nv) for col in r1_columns],
-             "R2": [col[r] for r in range(n) for col in r2_columns],
+    terms = {"R1": _rows(r1_columns, nv), "R2": _rows(r2_columns, n),
              "J": [x for row in delassus.J for x in row],
              "Minv_Jt": [column[r] for r in range(nv) for column in delassus.Minv_Jt],
              "F_L": [F_L[r][c] if c < r else zero for r in range(n) for c in range(n)],
@@ -428,7 +445,7 @@ def spec(robot, nf, nc):
         "forward_dynamics_derivative_terms": (
             "The traced part of forward_dynamics_derivatives in its looped form (passes/looped_solve.py).",
             ("q", "v", "tau", "f"),
-            [("rhs", nv, 2 * nv + nj + 3 * nf, "right-hand sides, row-major"),
+            [("rhs", nv, padded(2 * nv + nj + 3 * nf), "right-hand sides, row-major, zero-padded"),
              ("L", fd.factor_entries(robot), 1, "factor entries at each dof's ancestors"),
              ("D_inv", nv, 1, "inverse pivots")],
             forward_dynamics_derivative_terms),
@@ -442,7 +459,8 @@ def spec(robot, nf, nc):
         "contact_dynamics_derivative_terms": (
             "The traced part of contact_dynamics_derivatives in its looped form (passes/looped_solve.py).",
             ("q", "v", "tau"),
-            [("R1", nv, 2 * nv + nj, "r₁ columns, row-major"), ("R2", m3, 2 * nv + nj, "r₂ columns, row-major"),
+            [("R1", nv, padded(2 * nv + nj), "r₁ columns, row-major, zero-padded"),
+             ("R2", m3, padded(2 * nv + nj), "r₂ columns, row-major, zero-padded"),
              ("J", m3, nv, "contact rows, row-major"), ("Minv_Jt", nv, m3, "M⁻¹Jᵀ, row-major"),
              ("F_L", m3, m3, "damped Delassus factor, unit lower, row-major"),
              ("F_D_inv", m3, 1, "its inverse pivots"),

@@ -31,8 +31,9 @@ SIMD_DOUBLES = 4
 @dataclass(frozen=True)
 class LoopedSolve:
     """M⁻¹ B for the columns of B = [blocks], solved in place by ltdl_solve_columns; block k is
-    output blocks[k][0], blocks[k][1] columns wide. `terms`: the local arrays the traced part
-    writes (rhs, L, D_inv of differentiate.forward_dynamics_derivative_terms)."""
+    output blocks[k][0], blocks[k][1] columns wide, B's rows zero-padded to `columns`
+    (differentiate.padded). `terms`: the local arrays the traced part writes (rhs, L, D_inv of
+    differentiate.forward_dynamics_derivative_terms)."""
     parents: Tuple[int, ...]
     blocks: Tuple[Tuple[str, int], ...]
     terms: Tuple[Argument, ...]
@@ -42,8 +43,14 @@ class LoopedSolve:
         return len(self.parents)
 
     @property
-    def columns(self):
+    def width(self):
+        """The right-hand sides the outputs take."""
         return sum(width for _, width in self.blocks)
+
+    @property
+    def columns(self):
+        """The columns the loops sweep: the width, zero-padded."""
+        return differentiate.padded(self.width)
 
     @property
     def factor_entries(self):
@@ -74,7 +81,7 @@ class LoopedSolve:
     def emission(self, terms_name):
         return ("looped solve: %s writes the %d right-hand sides and the factor, ltdl_solve_columns "
                 "solves them all at once, one SIMD row update per factor entry (%d)"
-                % (terms_name, self.columns, self.factor_entries))
+                % (terms_name, self.width, self.factor_entries))
 
 
 @dataclass(frozen=True)
@@ -112,9 +119,9 @@ class LoopedContactSolve(LoopedSolve):
         return (self._tree_solve("solve_R1")                                               # Y = M⁻¹R1
                 + [f"multiply_minus<Scalar, {m}, {n}, {c}>(solve_J, solve_R1, solve_R2);",    # B = J Y − R2
                    f"ldlt_solve_columns<Scalar, {m}, {c}>(solve_F_L, solve_F_D_inv, solve_R2);",  # F⁻¹B
-                   f"Scalar solve_Q[{m * m}];",
+                   f"alignas(64) Scalar solve_Q[{m * m}];",
                    f"proximal_step_sum<Scalar, {m}, {PROXIMAL_STEPS}>(solve_F_L, solve_F_D_inv, solve_A, solve_Q);",
-                   f"Scalar solve_dlambda[{m * c}];",
+                   f"alignas(64) Scalar solve_dlambda[{m * c}];",
                    f"multiply<Scalar, {m}, {m}, {c}>(solve_Q, solve_R2, solve_dlambda);",       # ∂λ
                    f"multiply_minus<Scalar, {n}, {m}, {c}>(solve_Minv_Jt, solve_dlambda, solve_R1);"]  # ∂a
                 + _copies(self.blocks, "solve_R1", n, c) + _copies(self.lambda_blocks, "solve_dlambda", m, c))
@@ -122,7 +129,7 @@ class LoopedContactSolve(LoopedSolve):
     def emission(self, terms_name):
         return ("looped solve: %s writes the %d right-hand sides, the contact rows and the factors; loops "
                 "solve them all at once (M⁻¹, the Delassus system, M⁻¹Jᵀ), one SIMD row update per entry"
-                % (terms_name, self.columns))
+                % (terms_name, self.width))
 
 
 def _copies(blocks, source, rows, columns):

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_acf2e3f7f201 {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_97d09182aca2 {
 
 /// Block 0 of contact_dynamics_derivatives_terms (below).
 template <class Scalar>
@@ -13394,23 +13394,23 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
 ///   M⁻¹Jᵀ), one SIMD row update per entry
 template <class Scalar>
 RBDC_HOST_DEVICE inline void contact_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* tau, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* dlambda_dq, Scalar* dlambda_dv, Scalar* dlambda_dtau) noexcept {
-  Scalar solve_R1[864];
-  Scalar solve_R2[576];
-  Scalar solve_J[216];
-  Scalar solve_Minv_Jt[216];
-  Scalar solve_F_L[144];
-  Scalar solve_F_D_inv[12];
-  Scalar solve_A[144];
-  Scalar solve_L[99];
-  Scalar solve_D_inv[18];
+  alignas(64) Scalar solve_R1[864];
+  alignas(64) Scalar solve_R2[576];
+  alignas(64) Scalar solve_J[216];
+  alignas(64) Scalar solve_Minv_Jt[216];
+  alignas(64) Scalar solve_F_L[144];
+  alignas(64) Scalar solve_F_D_inv[12];
+  alignas(64) Scalar solve_A[144];
+  alignas(64) Scalar solve_L[99];
+  alignas(64) Scalar solve_D_inv[18];
   contact_dynamics_derivatives_terms(q, v, tau, solve_R1, solve_R2, solve_J, solve_Minv_Jt, solve_F_L, solve_F_D_inv, solve_A, solve_L, solve_D_inv);
   const int dof_parent[18] = {-1, 0, 1, 2, 3, 4, 5, 6, 7, 5, 9, 10, 5, 12, 13, 5, 15, 16};
   ltdl_solve_columns<Scalar, 18, 48>(dof_parent, solve_L, solve_D_inv, solve_R1);
   multiply_minus<Scalar, 12, 18, 48>(solve_J, solve_R1, solve_R2);
   ldlt_solve_columns<Scalar, 12, 48>(solve_F_L, solve_F_D_inv, solve_R2);
-  Scalar solve_Q[144];
+  alignas(64) Scalar solve_Q[144];
   proximal_step_sum<Scalar, 12, 5>(solve_F_L, solve_F_D_inv, solve_A, solve_Q);
-  Scalar solve_dlambda[576];
+  alignas(64) Scalar solve_dlambda[576];
   multiply<Scalar, 12, 12, 48>(solve_Q, solve_R2, solve_dlambda);
   multiply_minus<Scalar, 18, 12, 48>(solve_Minv_Jt, solve_dlambda, solve_R1);
   copy_columns<Scalar, 18, 48>(solve_R1, 0, 18, da_dq);
@@ -13421,4 +13421,4 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives(const Scalar* q, const
   copy_columns<Scalar, 12, 48>(solve_dlambda, 36, 12, dlambda_dtau);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_acf2e3f7f201
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_97d09182aca2

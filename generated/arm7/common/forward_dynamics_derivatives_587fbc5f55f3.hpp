@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_8f9524063204 {
+namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_587fbc5f55f3 {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -1463,9 +1463,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 ///   entry (21)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* da_df) noexcept {
-  Scalar solve_rhs[168];
-  Scalar solve_L[21];
-  Scalar solve_D_inv[7];
+  alignas(64) Scalar solve_rhs[168];
+  alignas(64) Scalar solve_L[21];
+  alignas(64) Scalar solve_D_inv[7];
   forward_dynamics_derivatives_terms(q, v, tau, f, solve_rhs, solve_L, solve_D_inv);
   const int dof_parent[7] = {-1, 0, 1, 2, 3, 4, 5};
   ltdl_solve_columns<Scalar, 7, 24>(dof_parent, solve_L, solve_D_inv, solve_rhs);
@@ -1475,4 +1475,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_columns<Scalar, 7, 24>(solve_rhs, 21, 3, da_df);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_8f9524063204
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_587fbc5f55f3
