@@ -7,11 +7,11 @@
 // contact_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics is the same code:
-//   mini_cheetah/common/contact_dynamics_a29053b17477.hpp
+//   mini_cheetah/common/contact_dynamics_3a5544292036.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_a29053b17477.hpp"
+#include "mini_cheetah/common/contact_dynamics_3a5544292036.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -25,8 +25,8 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param lambda out 12x1: contact forces on the feet, world; rows 3k + r: contact k (the scene's contacts in the robot's foot order), world axis r
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             7050  6179   26     0    24    1  13280
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_a29053b17477::contact_dynamics;
+///             5298  4352   26     0    24    1   9701
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_3a5544292036::contact_dynamics;
 
 /// contact_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_97d09182aca2.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_5494badda6ee.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_97d09182aca2.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_5494badda6ee.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -29,10 +29,10 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param dlambda_dtau out 12x12: ∂λ/∂τ
 ///
 /// operations    mul    add  div  sqrt  trig  neg   total
-///             66153  63599   26     0    24  108  129910
-/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 52762 arithmetic
-///   instructions, scalar tree 101577
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_97d09182aca2::contact_dynamics_derivatives;
+///             65589  62852   26     0    24  108  128599
+/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 51451 arithmetic
+///   instructions, scalar tree 100266
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_5494badda6ee::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

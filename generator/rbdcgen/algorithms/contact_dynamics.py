@@ -11,6 +11,8 @@ least-norm λ instead of a division by zero."""
 
 from __future__ import annotations
 
+from functools import cached_property
+
 from ..graph import expr as ex
 from ..graph import spatial as sp
 from . import forward_dynamics as fd
@@ -71,35 +73,43 @@ def _transpose(rows):
 
 
 class Delassus:
-    """J (contact rows), M⁻¹Jᵀ (one column per row of J), A = J M⁻¹Jᵀ and the factor of A + μ1."""
+    """J (contact rows), A = J M⁻¹Jᵀ and the factor of A + μ1, through half of M's solve: with
+    M = Lᵀ D L and Z = L⁻ᵀJᵀ (a column non-zero only on its contact's tree ancestors), A = Zᵀ D⁻¹ Z
+    and M⁻¹Jᵀλ = L⁻¹ D⁻¹ Z λ, one substitution for all contacts instead of one per row of J."""
 
     def __init__(self, m):
         robot = m.robot
-        parents = fd.dof_parents(robot)
-        L, inv_diag = fd.mass_matrix_factor(m)
+        self._parents = parents = fd.dof_parents(robot)
+        self._L, inv_diag = fd.mass_matrix_factor(m)
         self.J = contact_rows(m, feet_jacobian(m))
-        m.mark("contact: M⁻¹Jᵀ")
-        self.Minv_Jt = [fd.ltdl_solve(L, inv_diag, parents, row, m.into_dof) for row in self.J]
+        m.mark("contact: L⁻ᵀJᵀ")
+        Z = [fd.ltdl_forward(self._L, parents, row, m.into_dof) for row in self.J]
+        self._D_inv_Z = [[z * d for z, d in zip(column, inv_diag)] for column in Z]
         m.mark("contact: Delassus matrix J M⁻¹Jᵀ and its damped factor")
         n = len(self.J)
         self.A = [[None] * n for _ in range(n)]
         for r in range(n):
             for s in range(r + 1):
-                self.A[r][s] = self.A[s][r] = sp.dot(self.J[r], self.Minv_Jt[s])
+                self.A[r][s] = self.A[s][r] = sp.dot(Z[r], self._D_inv_Z[s])
         trace = ex.const(0.0)
         for r in range(n):
             trace = trace + self.A[r][r]
-        mu = ex.const(DAMPING_RELATIVE / n) * trace + ex.const(DAMPING_FLOOR)
-        damped = [[self.A[r][s] + mu if r == s else self.A[r][s] for s in range(n)] for r in range(n)]
+        self.mu = ex.const(DAMPING_RELATIVE / n) * trace + ex.const(DAMPING_FLOOR)
+        damped = [[self.A[r][s] + self.mu if r == s else self.A[r][s] for s in range(n)] for r in range(n)]
         self.factor = dense_ldlt(damped)
 
+    @cached_property
+    def Minv_Jt(self):
+        """M⁻¹Jᵀ, one column per row of J (the derivatives need it whole)."""
+        return [fd.ltdl_substitute(self._L, self._parents, column, range(len(column)))
+                for column in self._D_inv_Z]
+
     def solve(self, b):
-        """A x = b by the proximal steps (the first one, from x = 0, is the damped solve)."""
-        n = len(b)
-        x = sp.zeros(n)
+        """A x = b by the proximal steps x ← x + F⁻¹(b − A x) from x = 0 (F = A + μ1), each taken as
+        x ← F⁻¹(b + μ x), the same step without the product A x."""
+        x = sp.zeros(len(b))
         for _ in range(PROXIMAL_STEPS):
-            residual = [b[r] - sp.dot(self.A[r], x) for r in range(n)]
-            x = sp.vadd(x, ldlt_solve(*self.factor, residual))
+            x = ldlt_solve(*self.factor, [b_r + self.mu * x_r for b_r, x_r in zip(b, x)])
         return x
 
     def step_sum(self):
@@ -123,11 +133,12 @@ class Delassus:
         return [sp.dot(row, y) for row in Q]
 
     def apply_Minv_Jt(self, lam):
-        """M⁻¹Jᵀ λ."""
-        out = sp.zeros(len(self.Minv_Jt[0]) if self.Minv_Jt else 0)
-        for column, x in zip(self.Minv_Jt, lam):
-            out = sp.vadd(out, sp.vscale(x, column))
-        return out
+        """M⁻¹Jᵀ λ = L⁻¹ (D⁻¹Z λ)."""
+        n = len(self._parents)
+        y = sp.zeros(n)
+        for column, x in zip(self._D_inv_Z, lam):
+            y = sp.vadd(y, sp.vscale(x, column))
+        return fd.ltdl_substitute(self._L, self._parents, y, range(n))
 
 
 def contact_dynamics(m):

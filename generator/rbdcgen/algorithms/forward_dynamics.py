@@ -69,14 +69,19 @@ def ltdl_solve(L, inv_diag, parents, b, into=_as_is):
 
 def ltdl_eliminate(L, inv_diag, parents, b, into=_as_is):
     """The first two steps of ltdl_solve: D⁻¹ L⁻ᵀ b (leaves to root)."""
+    return [x * d for x, d in zip(ltdl_forward(L, parents, b, into), inv_diag)]
+
+
+def ltdl_forward(L, parents, b, into=_as_is):
+    """The first step of ltdl_solve, L⁻ᵀ b (leaves to root): non-zero only on the ancestors of b's
+    non-zeros."""
     x = list(b)
-    n = len(x)
-    for i in range(n - 1, -1, -1):
+    for i in range(len(x) - 1, -1, -1):
         j = parents[i]
         while j != -1:
             x[j] = x[j] - into(i, j, L[i][j] * x[i])
             j = parents[j]
-    return [x[i] * inv_diag[i] for i in range(n)]
+    return x
 
 
 def ltdl_substitute(L, parents, x, dofs):
