@@ -7,11 +7,11 @@
 // mass_matrix_inverse for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_inverse is the same code:
-//   mini_cheetah/common/mass_matrix_inverse_b5c5a5d3ae8a.hpp
+//   mini_cheetah/common/mass_matrix_inverse_521039623486.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/mass_matrix_inverse_b5c5a5d3ae8a.hpp"
+#include "mini_cheetah/common/mass_matrix_inverse_521039623486.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -21,8 +21,8 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// @param M_inv out 18x18: inverse mass matrix, full symmetric
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2624  2256   14     0    24   17   4935
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_inverse_b5c5a5d3ae8a::mass_matrix_inverse;
+///             1920  1650   14     0    24    2   3610
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_inverse_521039623486::mass_matrix_inverse;
 
 /// mass_matrix_inverse on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -5,6 +5,7 @@ the tree induces (no fill-in: row k of L is non-zero only at the ancestors of do
 from __future__ import annotations
 
 from ..graph import expr as ex
+from ..graph import spatial as sp
 from .crba import mass_matrix
 from .rnea import bias, bias_minus_external
 
@@ -153,17 +154,19 @@ def _solve_with_torques(m, h):
 
 
 def mass_matrix_inverse(m):
-    """M⁻¹ (rows) by solving Lᵀ D L x = e_k for each k over the dof tree (constant unit right-hand
-    sides fold the tree's zeros away); the lower triangle of column k is kept and mirrored, so each
+    """M⁻¹ (rows) as Zᵀ D⁻¹ Z with M = Lᵀ D L and Z = L⁻ᵀ (column k, L⁻ᵀ e_k, non-zero only on the
+    tree ancestors of dof k): entry (a, b) sums over the common ancestors of a and b only, and each
     entry of the symmetric inverse is computed once."""
     n = m.robot.nv
     parents = dof_parents(m.robot)
     L, inv_diag = mass_matrix_factor(m)
     zero, one = ex.const(0.0), ex.const(1.0)
+    m.mark("M⁻¹: the columns of L⁻ᵀ")
+    Z = [ltdl_forward(L, parents, [one if r == k else zero for r in range(n)], m.into_dof) for k in range(n)]
+    D_inv_Z = [[z * d for z, d in zip(column, inv_diag)] for column in Z]
     rows = [[None] * n for _ in range(n)]
     for k in range(n):
         m.mark("M⁻¹ column %d" % k)
-        x = ltdl_solve(L, inv_diag, parents, [one if r == k else zero for r in range(n)], m.into_dof)
         for r in range(k, n):
-            rows[r][k] = rows[k][r] = x[r]
+            rows[r][k] = rows[k][r] = sp.dot(Z[r], D_inv_Z[k])
     return rows

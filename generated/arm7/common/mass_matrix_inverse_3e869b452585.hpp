@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::mass_matrix_inverse_c01d9625c14e {
+namespace rbdc_gen::arm7::common::mass_matrix_inverse_3e869b452585 {
 
 /// M⁻¹ from the sparse factor M = Lᵀ D L (CRBA, paper 000 Alg. 5).
 ///
@@ -18,7 +18,7 @@ namespace rbdc_gen::arm7::common::mass_matrix_inverse_c01d9625c14e {
 /// @param M_inv out 7x7: inverse mass matrix, full symmetric
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             446  358    6     0    12    3    825
+///             367  298    6     0    12    2    685
 template <class Scalar>
 RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv) noexcept {
   // sines and cosines of the joint angles
@@ -203,116 +203,111 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Scalar t157 = t154 * t156;
   const Scalar t158 = Scalar(1) / ((((t135 - (t129 * t145)) - (t140 * t151)) - (t149 * t155)) - (t154 * t157));
   M_inv[0] = t158;
-  // M⁻¹ column 0
-  const Scalar t159 = t157 * t158;
-  const Scalar t160 = -t159;
-  M_inv[1] = t160;
-  M_inv[7] = t160;
-  const Scalar t161 = (t153 * t159) - (t155 * t158);
-  M_inv[2] = t161;
-  M_inv[14] = t161;
-  const Scalar t162 = ((t150 * t159) - (t147 * t161)) - (t151 * t158);
-  M_inv[3] = t162;
-  M_inv[21] = t162;
-  const Scalar t163 = ((t143 * t159) - ((t137 * t162) + (t141 * t161))) - (t145 * t158);
-  M_inv[4] = t163;
-  M_inv[28] = t163;
-  const Scalar t164 = ((((t130 * t162) - (t125 * t163)) - (t131 * t161)) + (t132 * t159)) - (t134 * t158);
-  M_inv[5] = t164;
-  M_inv[35] = t164;
-  const Scalar t165 = ((((t119 * t162) - (t118 * t163)) - (t121 * t161)) + (t122 * t159)) - (t123 * t158);
-  M_inv[6] = t165;
-  M_inv[42] = t165;
+  // M⁻¹: the columns of L⁻ᵀ
+  const Scalar t159 = (t153 * t157) - t155;
+  const Scalar t160 = (t147 * t153) - t150;
+  const Scalar t161 = ((t147 * t155) - t151) - (t157 * t160);
+  const Scalar t162 = (t137 * t147) - t141;
+  const Scalar t163 = ((t137 * t150) - t143) - (t153 * t162);
+  const Scalar t164 = (((t137 * t151) - t145) - (t155 * t162)) - (t157 * t163);
+  const Scalar t165 = t130 + (t125 * t137);
+  const Scalar t166 = ((t125 * t141) - t131) - (t147 * t165);
+  const Scalar t167 = (((t125 * t143) - t132) - (t150 * t165)) - (t153 * t166);
+  const Scalar t168 = ((((t125 * t145) - t134) - (t151 * t165)) - (t155 * t166)) - (t157 * t167);
+  const Scalar t169 = t119 + (t118 * t137);
+  const Scalar t170 = ((t118 * t141) - t121) - (t147 * t169);
+  const Scalar t171 = (((t118 * t143) - t122) - (t150 * t169)) - (t153 * t170);
+  const Scalar t172 = ((((t118 * t145) - t123) - (t151 * t169)) - (t155 * t170)) - (t157 * t171);
+  const Scalar t173 = t157 * t158;
+  M_inv[8] = t156 + (t157 * t173);
+  const Scalar t174 = -t173;
+  M_inv[1] = t174;
+  M_inv[7] = t174;
+  const Scalar t175 = t158 * t159;
+  M_inv[2] = t175;
+  M_inv[14] = t175;
+  const Scalar t176 = t153 * t156;
+  M_inv[16] = t152 + ((t159 * t175) + (t153 * t176));
+  const Scalar t177 = t158 * t161;
+  M_inv[3] = t177;
+  M_inv[21] = t177;
+  const Scalar t178 = t156 * t160;
+  const Scalar t179 = t147 * t152;
+  M_inv[24] = t146 + (((t161 * t177) + (t160 * t178)) + (t147 * t179));
+  const Scalar t180 = t158 * t164;
+  M_inv[4] = t180;
+  M_inv[28] = t180;
+  const Scalar t181 = t156 * t163;
+  const Scalar t182 = t152 * t162;
+  const Scalar t183 = t137 * t146;
+  M_inv[32] = t136 + ((((t164 * t180) + (t163 * t181)) + (t162 * t182)) + (t137 * t183));
+  const Scalar t184 = t158 * t168;
+  M_inv[5] = t184;
+  M_inv[35] = t184;
+  const Scalar t185 = t156 * t167;
+  const Scalar t186 = t152 * t166;
+  const Scalar t187 = t146 * t165;
+  const Scalar t188 = t125 * t136;
+  M_inv[40] = t124 + (((((t168 * t184) + (t167 * t185)) + (t166 * t186)) + (t165 * t187)) + (t125 * t188));
+  const Scalar t189 = t158 * t172;
+  M_inv[6] = t189;
+  M_inv[42] = t189;
+  const Scalar t190 = t156 * t171;
+  const Scalar t191 = t152 * t170;
+  const Scalar t192 = t146 * t169;
+  const Scalar t193 = t118 * t136;
+  M_inv[48] = Scalar(2000) + (((((t172 * t189) + (t171 * t190)) + (t170 * t191)) + (t169 * t192)) + (t118 * t193));
   // M⁻¹ column 1
-  const Scalar t166 = t156 + (t157 * t159);
-  M_inv[8] = t166;
-  const Scalar t167 = (t155 * t159) - (t153 * t166);
-  M_inv[9] = t167;
-  M_inv[15] = t167;
-  const Scalar t168 = (t151 * t159) - ((t147 * t167) + (t150 * t166));
-  M_inv[10] = t168;
-  M_inv[22] = t168;
-  const Scalar t169 = (t145 * t159) - (((t137 * t168) + (t141 * t167)) + (t143 * t166));
-  M_inv[11] = t169;
-  M_inv[29] = t169;
-  const Scalar t170 = ((((t130 * t168) - (t125 * t169)) - (t131 * t167)) - (t132 * t166)) + (t134 * t159);
-  M_inv[12] = t170;
-  M_inv[36] = t170;
-  const Scalar t171 = ((((t119 * t168) - (t118 * t169)) - (t121 * t167)) - (t122 * t166)) + (t123 * t159);
-  M_inv[13] = t171;
-  M_inv[43] = t171;
+  const Scalar t194 = -(t176 + (t159 * t173));
+  M_inv[9] = t194;
+  M_inv[15] = t194;
+  const Scalar t195 = t178 - (t161 * t173);
+  M_inv[10] = t195;
+  M_inv[22] = t195;
+  const Scalar t196 = t181 - (t164 * t173);
+  M_inv[11] = t196;
+  M_inv[29] = t196;
+  const Scalar t197 = t185 - (t168 * t173);
+  M_inv[12] = t197;
+  M_inv[36] = t197;
+  const Scalar t198 = t190 - (t172 * t173);
+  M_inv[13] = t198;
+  M_inv[43] = t198;
   // M⁻¹ column 2
-  const Scalar t172 = t158 * ((t153 * t157) - t155);
-  const Scalar t173 = (t153 * t156) + (t157 * t172);
-  const Scalar t174 = (t152 + (t153 * t173)) - (t155 * t172);
-  M_inv[16] = t174;
-  const Scalar t175 = ((t150 * t173) - (t147 * t174)) - (t151 * t172);
-  M_inv[17] = t175;
-  M_inv[23] = t175;
-  const Scalar t176 = ((t143 * t173) - ((t137 * t175) + (t141 * t174))) - (t145 * t172);
-  M_inv[18] = t176;
-  M_inv[30] = t176;
-  const Scalar t177 = ((((t130 * t175) - (t125 * t176)) - (t131 * t174)) + (t132 * t173)) - (t134 * t172);
-  M_inv[19] = t177;
-  M_inv[37] = t177;
-  const Scalar t178 = ((((t119 * t175) - (t118 * t176)) - (t121 * t174)) + (t122 * t173)) - (t123 * t172);
-  M_inv[20] = t178;
-  M_inv[44] = t178;
+  const Scalar t199 = ((t161 * t175) - (t160 * t176)) - t179;
+  M_inv[17] = t199;
+  M_inv[23] = t199;
+  const Scalar t200 = t182 + ((t164 * t175) - (t163 * t176));
+  M_inv[18] = t200;
+  M_inv[30] = t200;
+  const Scalar t201 = t186 + ((t168 * t175) - (t167 * t176));
+  M_inv[19] = t201;
+  M_inv[37] = t201;
+  const Scalar t202 = t191 + ((t172 * t175) - (t171 * t176));
+  M_inv[20] = t202;
+  M_inv[44] = t202;
   // M⁻¹ column 3
-  const Scalar t179 = (t147 * t153) - t150;
-  const Scalar t180 = t158 * (((t147 * t155) - t151) - (t157 * t179));
-  const Scalar t181 = (t156 * t179) - (t157 * t180);
-  const Scalar t182 = ((t147 * t152) + (t153 * t181)) + (t155 * t180);
-  const Scalar t183 = ((t146 + (t147 * t182)) - (t150 * t181)) - (t151 * t180);
-  M_inv[24] = t183;
-  const Scalar t184 = (((t141 * t182) - (t137 * t183)) - (t143 * t181)) - (t145 * t180);
-  M_inv[25] = t184;
-  M_inv[31] = t184;
-  const Scalar t185 = ((((t130 * t183) - (t125 * t184)) + (t131 * t182)) - (t132 * t181)) - (t134 * t180);
-  M_inv[26] = t185;
-  M_inv[38] = t185;
-  const Scalar t186 = ((((t119 * t183) - (t118 * t184)) + (t121 * t182)) - (t122 * t181)) - (t123 * t180);
-  M_inv[27] = t186;
-  M_inv[45] = t186;
+  const Scalar t203 = (((t164 * t177) + (t163 * t178)) - (t162 * t179)) - t183;
+  M_inv[25] = t203;
+  M_inv[31] = t203;
+  const Scalar t204 = t187 + (((t168 * t177) + (t167 * t178)) - (t166 * t179));
+  M_inv[26] = t204;
+  M_inv[38] = t204;
+  const Scalar t205 = t192 + (((t172 * t177) + (t171 * t178)) - (t170 * t179));
+  M_inv[27] = t205;
+  M_inv[45] = t205;
   // M⁻¹ column 4
-  const Scalar t187 = (t137 * t147) - t141;
-  const Scalar t188 = ((t137 * t150) - t143) - (t153 * t187);
-  const Scalar t189 = t158 * ((((t137 * t151) - t145) - (t155 * t187)) - (t157 * t188));
-  const Scalar t190 = (t156 * t188) - (t157 * t189);
-  const Scalar t191 = ((t152 * t187) - (t153 * t190)) - (t155 * t189);
-  const Scalar t192 = (((t137 * t146) + (t147 * t191)) + (t150 * t190)) + (t151 * t189);
-  const Scalar t193 = (((t136 + (t137 * t192)) - (t141 * t191)) - (t143 * t190)) - (t145 * t189);
-  M_inv[32] = t193;
-  const Scalar t194 = -(((((t125 * t193) + (t130 * t192)) + (t131 * t191)) + (t132 * t190)) + (t134 * t189));
-  M_inv[33] = t194;
-  M_inv[39] = t194;
-  const Scalar t195 = -(((((t118 * t193) + (t119 * t192)) + (t121 * t191)) + (t122 * t190)) + (t123 * t189));
-  M_inv[34] = t195;
-  M_inv[46] = t195;
+  const Scalar t206 = ((((t168 * t180) + (t167 * t181)) + (t166 * t182)) - (t165 * t183)) - t188;
+  M_inv[33] = t206;
+  M_inv[39] = t206;
+  const Scalar t207 = ((((t172 * t180) + (t171 * t181)) + (t170 * t182)) - (t169 * t183)) - t193;
+  M_inv[34] = t207;
+  M_inv[46] = t207;
   // M⁻¹ column 5
-  const Scalar t196 = t130 + (t125 * t137);
-  const Scalar t197 = ((t125 * t141) - t131) - (t147 * t196);
-  const Scalar t198 = (((t125 * t143) - t132) - (t150 * t196)) - (t153 * t197);
-  const Scalar t199 = t158 * (((((t125 * t145) - t134) - (t151 * t196)) - (t155 * t197)) - (t157 * t198));
-  const Scalar t200 = (t156 * t198) - (t157 * t199);
-  const Scalar t201 = ((t152 * t197) - (t153 * t200)) - (t155 * t199);
-  const Scalar t202 = (((t146 * t196) - (t147 * t201)) - (t150 * t200)) - (t151 * t199);
-  const Scalar t203 = ((((t125 * t136) + (t137 * t202)) + (t141 * t201)) + (t143 * t200)) + (t145 * t199);
-  M_inv[40] = ((((t124 + (t125 * t203)) + (t130 * t202)) - (t131 * t201)) - (t132 * t200)) - (t134 * t199);
-  const Scalar t204 = ((((t118 * t203) + (t119 * t202)) - (t121 * t201)) - (t122 * t200)) - (t123 * t199);
-  M_inv[41] = t204;
-  M_inv[47] = t204;
-  // M⁻¹ column 6
-  const Scalar t205 = t119 + (t118 * t137);
-  const Scalar t206 = ((t118 * t141) - t121) - (t147 * t205);
-  const Scalar t207 = (((t118 * t143) - t122) - (t150 * t205)) - (t153 * t206);
-  const Scalar t208 = t158 * (((((t118 * t145) - t123) - (t151 * t205)) - (t155 * t206)) - (t157 * t207));
-  const Scalar t209 = (t156 * t207) - (t157 * t208);
-  const Scalar t210 = ((t152 * t206) - (t153 * t209)) - (t155 * t208);
-  const Scalar t211 = (((t146 * t205) - (t147 * t210)) - (t150 * t209)) - (t151 * t208);
-  const Scalar t212 = Scalar(2000) + (t118 * (((((t118 * t136) + (t137 * t211)) + (t141 * t210)) + (t143 * t209)) + (t145 * t208)));
+  const Scalar t208 = ((((t172 * t184) + (t171 * t185)) + (t170 * t186)) + (t169 * t187)) + (t118 * t188);
   // outputs
-  M_inv[48] = (((t212 + (t119 * t211)) - (t121 * t210)) - (t122 * t209)) - (t123 * t208);
+  M_inv[41] = t208;
+  M_inv[47] = t208;
 }
 
-}  // namespace rbdc_gen::arm7::common::mass_matrix_inverse_c01d9625c14e
+}  // namespace rbdc_gen::arm7::common::mass_matrix_inverse_3e869b452585
