@@ -7,15 +7,16 @@
 // forward_dynamics for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   humanoid32/common/forward_dynamics_6b9fcb0ff642.hpp
+//   humanoid32/common/forward_dynamics_0a37f60f15e2.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/forward_dynamics_6b9fcb0ff642.hpp"
+#include "humanoid32/common/forward_dynamics_0a37f60f15e2.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
-/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).
+/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
+/// algorithm where that is cheaper: the schedule line says which).
 ///
 /// @param q in  39x1: configuration (position, quaternion w x y z, joints)
 /// @param v in  38x1: velocity (trunk ω, v in trunk coordinates, joint rates)
@@ -25,7 +26,7 @@ namespace rbdc_gen::humanoid32::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             7593  6010   33     0    64    1  13701
-using ::rbdc_gen::humanoid32::common::forward_dynamics_6b9fcb0ff642::forward_dynamics;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_0a37f60f15e2::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,15 +7,16 @@
 // forward_dynamics for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah/common/forward_dynamics_54d2a46bb1c3.hpp
+//   mini_cheetah/common/forward_dynamics_73a500073c1f.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/forward_dynamics_54d2a46bb1c3.hpp"
+#include "mini_cheetah/common/forward_dynamics_73a500073c1f.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
-/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).
+/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
+/// algorithm where that is cheaper: the schedule line says which).
 ///
 /// @param q in  19x1: configuration (position, quaternion w x y z, joints)
 /// @param v in  18x1: velocity (trunk ω, v in trunk coordinates, joint rates)
@@ -27,7 +28,7 @@ namespace rbdc_gen::mini_cheetah::full {
 ///             2272  1854   14     0    24   81   4245
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1425 arithmetic
 ///   instructions, scalar tree 4123
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_54d2a46bb1c3::forward_dynamics;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_73a500073c1f::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,15 +8,16 @@
 // forward_dynamics for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah_rotors/common/forward_dynamics_7d42bfbf80db.hpp
+//   mini_cheetah_rotors/common/forward_dynamics_7d303b9e5e5c.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/forward_dynamics_7d42bfbf80db.hpp"
+#include "mini_cheetah_rotors/common/forward_dynamics_7d303b9e5e5c.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
-/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).
+/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
+/// algorithm where that is cheaper: the schedule line says which).
 ///
 /// @param q in  19x1: configuration (position, quaternion w x y z, joints)
 /// @param v in  18x1: velocity (trunk ω, v in trunk coordinates, joint rates)
@@ -26,7 +27,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2666  2257   14     0    24    1   4962
-using ::rbdc_gen::mini_cheetah_rotors::common::forward_dynamics_7d42bfbf80db::forward_dynamics;
+using ::rbdc_gen::mini_cheetah_rotors::common::forward_dynamics_7d303b9e5e5c::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -1,18 +1,20 @@
 """Which form a quantity is evaluated in, decided by cost (docs/performance.md, "The fastest form by
-default"): the scalar tree, the robot's isomorphic limbs in SIMD lanes, or (forward- and
+default"): the scalar tree, the robot's isomorphic limbs in SIMD lanes, (forward- and
 contact-dynamics derivatives) a looped solve with SIMD across the right-hand sides
-(looped_solve.py). The algorithm is the same; only how it is evaluated changes, so the function keeps its plain name and its doc
-gains one line that says the choice and its numbers.
+(looped_solve.py), or (forward dynamics of a fixed-base tree) the articulated-body algorithm
+(algorithms/aba.py). The quantity is the same; only how it is evaluated changes, so the function
+keeps its plain name and its doc gains one line that says the choice and its numbers.
 
 The cost is the arithmetic instructions the body issues: every operation node once, a lane
 operation being one vector instruction for all limbs, the sum over the lanes two (a horizontal
 add of four), a looped solve's row update one per looped_solve.SIMD_DOUBLES columns. A scene may
-force a form (`schedule: scalar`, `limb_lanes` or `looped_solve`) where the function has it."""
+force a form (`schedule: scalar`, `limb_lanes`, `looped_solve` or `aba`) where the function has it."""
 
 from __future__ import annotations
 
 from dataclasses import replace
 
+from ..algorithms import aba
 from ..graph import expr as ex
 from ..views.limbs import LimbError, isomorphic_limbs
 from . import lane_functions, looped_solve, singular_mass
@@ -46,12 +48,16 @@ def _forms(robot, scene, name):
                 raise
     if looped_solve.has_looped_form(robot, name):
         forms["looped_solve"] = lambda: looped_solve.looped_function(robot, scene, name)
+    if name == "forward_dynamics" and aba.applies(robot):
+        forms["aba"] = lambda: _as(trace_function(robot, scene, "forward_dynamics_aba"), name)
     return forms
 
 
-_SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "looped_solve": "looped solve"}
+_SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "looped_solve": "looped solve",
+          "aba": "articulated-body algorithm"}
 _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes, the trunk scalar)" % ex.LANES,
-           "looped_solve": " (the solve's right-hand sides in SIMD across columns)"}
+           "looped_solve": " (the solve's right-hand sides in SIMD across columns)",
+           "aba": " (O(n); the scalar tree is CRBA + the sparse LᵀDL factor)"}
 
 
 def scheduled_function(robot, scene, name):

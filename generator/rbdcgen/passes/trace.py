@@ -8,7 +8,7 @@ from typing import Dict, Tuple
 
 from . import differentiate, lane_functions, project
 from ..graph import expr as ex
-from ..algorithms import (centroidal, contact_dynamics, crba, forward_dynamics, frames, jacobian,
+from ..algorithms import (aba, centroidal, contact_dynamics, crba, forward_dynamics, frames, jacobian,
                           kinematics, osc, rnea)
 from ..views import coupled
 from ..views.scalar import TracedModel
@@ -149,10 +149,16 @@ def _spec(robot, nf, nc):
             lambda m: forward_dynamics.factor_outputs(*forward_dynamics.mass_matrix_factor(m),
                                                       forward_dynamics.dof_parents(m.robot))),
         "forward_dynamics": (
-            "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).",
+            "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the "
+            "articulated-body algorithm where that is cheaper: the schedule line says which).",
             ("q", "v", "tau", "f"),
             [("a", nv, 1, "acceleration")],
             lambda m: {"a": forward_dynamics.forward_dynamics(m)}),
+        "forward_dynamics_aba": (
+            "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (the articulated-body algorithm).",
+            ("q", "v", "tau", "f"),
+            [("a", nv, 1, "acceleration")],
+            lambda m: {"a": aba.forward_dynamics_aba(m)}),
         "step_terms": (
             "Everything one contact evaluation of the simulator needs at (q, v, τ), in one pass "
             "with shared kinematics: feet, their Jacobian rows, the factor M = Lᵀ D L and the "

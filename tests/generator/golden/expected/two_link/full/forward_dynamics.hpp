@@ -6,15 +6,16 @@
 // forward_dynamics for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   two_link/common/forward_dynamics_db7115cc00cf.hpp
+//   two_link/common/forward_dynamics_bc1e1948ea69.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/forward_dynamics_db7115cc00cf.hpp"
+#include "two_link/common/forward_dynamics_bc1e1948ea69.hpp"
 
 namespace rbdc_gen::two_link::full {
 
-/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).
+/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
+/// algorithm where that is cheaper: the schedule line says which).
 ///
 /// @param q in  2x1: joint positions
 /// @param v in  2x1: joint velocities
@@ -24,7 +25,8 @@ namespace rbdc_gen::two_link::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              62   41    1     0     2    0    106
-using ::rbdc_gen::two_link::common::forward_dynamics_db7115cc00cf::forward_dynamics;
+/// schedule: scalar tree: 106 arithmetic instructions, articulated-body algorithm 108
+using ::rbdc_gen::two_link::common::forward_dynamics_bc1e1948ea69::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -10,9 +10,10 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_6b9fcb0ff642 {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_0a37f60f15e2 {
 
-/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).
+/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
+/// algorithm where that is cheaper: the schedule line says which).
 ///
 /// @param q in  39x1: configuration (position, quaternion w x y z, joints)
 /// @param v in  38x1: velocity (trunk ω, v in trunk coordinates, joint rates)
@@ -3637,4 +3638,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[37] = ((t3306 + (t2338 * t3238)) - (t2346 * t3237)) - (t2347 * t3236);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_6b9fcb0ff642
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_0a37f60f15e2

@@ -11,9 +11,10 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_54d2a46bb1c3 {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_73a500073c1f {
 
-/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).
+/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
+/// algorithm where that is cheaper: the schedule line says which).
 ///
 /// @param q in  19x1: configuration (position, quaternion w x y z, joints)
 /// @param v in  18x1: velocity (trunk ω, v in trunk coordinates, joint rates)
@@ -399,4 +400,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[17] = t305[3];
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_54d2a46bb1c3
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_73a500073c1f

@@ -11,9 +11,10 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::mini_cheetah_rotors::common::forward_dynamics_7d42bfbf80db {
+namespace rbdc_gen::mini_cheetah_rotors::common::forward_dynamics_7d303b9e5e5c {
 
-/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).
+/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
+/// algorithm where that is cheaper: the schedule line says which).
 ///
 /// @param q in  19x1: configuration (position, quaternion w x y z, joints)
 /// @param v in  18x1: velocity (trunk ω, v in trunk coordinates, joint rates)
@@ -1340,4 +1341,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[17] = ((t1178 - (t918 * t1155)) - (t920 * t1154)) + (t922 * t1153);
 }
 
-}  // namespace rbdc_gen::mini_cheetah_rotors::common::forward_dynamics_7d42bfbf80db
+}  // namespace rbdc_gen::mini_cheetah_rotors::common::forward_dynamics_7d303b9e5e5c

@@ -10,9 +10,10 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::two_link::common::forward_dynamics_db7115cc00cf {
+namespace rbdc_gen::two_link::common::forward_dynamics_bc1e1948ea69 {
 
-/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ).
+/// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
+/// algorithm where that is cheaper: the schedule line says which).
 ///
 /// @param q in  2x1: joint positions
 /// @param v in  2x1: joint velocities
@@ -22,6 +23,7 @@ namespace rbdc_gen::two_link::common::forward_dynamics_db7115cc00cf {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              62   41    1     0     2    0    106
+/// schedule: scalar tree: 106 arithmetic instructions, articulated-body algorithm 108
 template <class Scalar>
 RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
   // sines and cosines of the joint angles
@@ -61,4 +63,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[0] = (tau[0] - (t12 + (Scalar(0.8) * (((Scalar(0.6) * v[0]) * t6) + (Scalar(0.4794255386042031) * t11))))) * t16;
 }
 
-}  // namespace rbdc_gen::two_link::common::forward_dynamics_db7115cc00cf
+}  // namespace rbdc_gen::two_link::common::forward_dynamics_bc1e1948ea69

@@ -1,0 +1,94 @@
+"""Forward dynamics by the articulated-body algorithm (Featherstone, Rigid Body Dynamics Algorithms,
+2008, Table 7.1), a second form of forward_dynamics: passes/schedule.py traces it beside CRBA + the
+sparse LᵀDL factor and keeps the one with fewer instructions. ABA is O(n) whatever the tree; the
+factor is O(n·d²) for depth d, so deep chains (a 100-body arm: d = n) take ABA and branched robots
+the factor. For fixed-base trees without rotors or mimic couplings (`applies`).
+
+In body coordinates, with a₀ = the base's fictitious gravity acceleration (rnea.base_acceleration):
+    outward:  c_i = v_i × S_i q̇_i,  I^A_i = I_i,  p^A_i = v_i ×* I_i v_i − f_i^ext
+    inward:   U_i = I^A_i S_i,  D_i = S_iᵀU_i + armature_i,  u_i = τ_i − S_iᵀ p^A_i,
+              I^a = I^A_i − U_i U_iᵀ/D_i,  p^a = p^A_i + I^a c_i + U_i u_i/D_i,
+              I^A_λ += X_iᵀ I^a X_i,  p^A_λ += X_iᵀ p^a          (X_i = X_λ(i)^i)
+    outward:  a'_i = X_i a_λ + c_i,  q̈_i = (u_i − U_iᵀ a'_i)/D_i,  a_i = a'_i + S_i q̈_i."""
+
+from __future__ import annotations
+
+from ..graph import expr as ex
+from ..graph import spatial as sp
+from .kinematics import body_velocities, world_frames
+from .rnea import base_acceleration, foot_wrenches
+from .rnea_derivatives import has_rotors
+
+
+def applies(robot):
+    return not robot.floating_base and not robot.couplings and not has_rotors(robot)
+
+
+def _unit(k):
+    return sp.vec([1.0 if r == k else 0.0 for r in range(6)])
+
+
+def _symmetric(entry):
+    """The 6 × 6 symmetric matrix (rows) with entry(r, c) for r ≥ c, mirrored above."""
+    rows = [[None] * 6 for _ in range(6)]
+    for r in range(6):
+        for c in range(r + 1):
+            rows[r][c] = rows[c][r] = entry(r, c)
+    return rows
+
+
+def _apply(rows, x):
+    return sp.vec([sp.dot(row, x) for row in rows])
+
+
+def _congruence(X, rows):
+    """X_iᵀ I X_i in the parent's coordinates: column c is X_iᵀ (I (X_i e_c))."""
+    columns = [X.force_T(_apply(rows, X.motion(_unit(c)))) for c in range(6)]
+    return _symmetric(lambda r, c: columns[c][r])
+
+
+def forward_dynamics_aba(m):
+    """a (by v index) with M a = Sᵀτ + τ_e − c − g, as forward_dynamics.forward_dynamics."""
+    robot = m.robot
+    nb = robot.nb
+    velocities = body_velocities(m)
+    external = foot_wrenches(m, world_frames(m)) if m.feet else [None] * nb
+    S = [None] + [m.motion_subspace(i) for i in range(1, nb)]
+    bias_acc, IA, pA = [None] * nb, [None] * nb, [None] * nb
+    for i in range(1, nb):
+        m.mark("ABA: outward pass, velocity products and bias forces", i)
+        inertia = m.inertia(i)
+        bias_acc[i] = sp.crm(velocities[i], sp.vscale(m.vi(i), S[i]))
+        columns = [inertia.apply(_unit(c)) for c in range(6)]
+        IA[i] = _symmetric(lambda r, c: columns[c][r])
+        pA[i] = sp.crf(velocities[i], inertia.apply(velocities[i]))
+        if external[i] is not None:
+            pA[i] = sp.vsub(pA[i], external[i])
+    U, inv_D, u = [None] * nb, [None] * nb, [None] * nb
+    for i in range(nb - 1, 0, -1):
+        m.mark("ABA: inward pass, articulated inertias", i)
+        U[i] = _apply(IA[i], S[i])
+        D = sp.dot(S[i], U[i])
+        if m.armature(i):
+            D = D + ex.const(m.armature(i))
+        inv_D[i] = ex.const(1.0) / D
+        u[i] = m.tau[i - 1] - sp.dot(S[i], pA[i])
+        j = robot.parent[i]
+        if j == 0:
+            continue  # the fixed base takes no load
+        scaled = sp.vscale(inv_D[i], U[i])
+        Ia = _symmetric(lambda r, c: IA[i][r][c] - U[i][r] * scaled[c])
+        pa = sp.vadd(sp.vadd(pA[i], _apply(Ia, bias_acc[i])), sp.vscale(u[i], scaled))
+        X = m.X_up(i)
+        carried = _congruence(X, Ia)
+        IA[j] = _symmetric(lambda r, c: IA[j][r][c] + carried[r][c])
+        pA[j] = sp.vadd(pA[j], X.force_T(pa))
+    accelerations = [base_acceleration(m, sp.zeros(6))] + [None] * (nb - 1)
+    qdd = [None] * robot.nv
+    for i in range(1, nb):
+        m.mark("ABA: outward pass, accelerations", i)
+        a_i = sp.vadd(m.X_up(i).motion(accelerations[robot.parent[i]]), bias_acc[i])
+        qdd_i = (u[i] - sp.dot(U[i], a_i)) * inv_D[i]
+        accelerations[i] = sp.vadd(a_i, sp.vscale(qdd_i, S[i]))
+        qdd[m.joint(i).v_index] = qdd_i
+    return tuple(qdd)
