@@ -2,26 +2,30 @@
 2008, Table 7.1), a second form of forward_dynamics: passes/schedule.py traces it beside CRBA + the
 sparse LᵀDL factor and keeps the one with fewer instructions. ABA is O(n) whatever the tree; the
 factor is O(n·d²) for depth d, so deep chains (a 100-body arm: d = n) take ABA and branched robots
-the factor. For fixed-base trees without rotors or mimic couplings (`applies`).
+the factor. For trees without rotors or mimic couplings (`applies`).
 
 In body coordinates, with a₀ = the base's fictitious gravity acceleration (rnea.base_acceleration):
     outward:  c_i = v_i × S_i q̇_i,  I^A_i = I_i,  p^A_i = v_i ×* I_i v_i − f_i^ext
     inward:   U_i = I^A_i S_i,  D_i = S_iᵀU_i + armature_i,  u_i = τ_i − S_iᵀ p^A_i,
               I^a = I^A_i − U_i U_iᵀ/D_i,  p^a = p^A_i + I^a c_i + U_i u_i/D_i,
               I^A_λ += X_iᵀ I^a X_i,  p^A_λ += X_iᵀ p^a          (X_i = X_λ(i)^i)
-    outward:  a'_i = X_i a_λ + c_i,  q̈_i = (u_i − U_iᵀ a'_i)/D_i,  a_i = a'_i + S_i q̈_i."""
+    outward:  a'_i = X_i a_λ + c_i,  q̈_i = (u_i − U_iᵀ a'_i)/D_i,  a_i = a'_i + S_i q̈_i.
+A floating base is body 0 with S₀ = 1: its unactuated wrench I^A_0 a₀ + p^A_0 = 0 gives a₀ by a
+dense 6 × 6 LDLᵀ solve, a₀ being the RNEA's trunk acceleration (classical, plus the velocity and
+fictitious-gravity terms of rnea.base_acceleration, which are taken off for the output)."""
 
 from __future__ import annotations
 
 from ..graph import expr as ex
 from ..graph import spatial as sp
+from .contact_dynamics import dense_ldlt, ldlt_solve
 from .kinematics import body_velocities, world_frames
 from .rnea import base_acceleration, foot_wrenches
 from .rnea_derivatives import has_rotors
 
 
 def applies(robot):
-    return not robot.floating_base and not robot.couplings and not has_rotors(robot)
+    return not robot.couplings and not has_rotors(robot)
 
 
 def _unit(k):
@@ -54,11 +58,13 @@ def forward_dynamics_aba(m):
     velocities = body_velocities(m)
     external = foot_wrenches(m, world_frames(m)) if m.feet else [None] * nb
     S = [None] + [m.motion_subspace(i) for i in range(1, nb)]
-    bias_acc, IA, pA = [None] * nb, [None] * nb, [None] * nb
-    for i in range(1, nb):
+    floating = robot.floating_base
+    bias_acc, IA, pA = [sp.zeros(6)] * nb, [None] * nb, [None] * nb
+    for i in range(0 if floating else 1, nb):
         m.mark("ABA: outward pass, velocity products and bias forces", i)
         inertia = m.inertia(i)
-        bias_acc[i] = sp.crm(velocities[i], sp.vscale(m.vi(i), S[i]))
+        if i > 0:
+            bias_acc[i] = sp.crm(velocities[i], sp.vscale(m.vi(i), S[i]))
         columns = [inertia.apply(_unit(c)) for c in range(6)]
         IA[i] = _symmetric(lambda r, c: columns[c][r])
         pA[i] = sp.crf(velocities[i], inertia.apply(velocities[i]))
@@ -74,7 +80,7 @@ def forward_dynamics_aba(m):
         inv_D[i] = ex.const(1.0) / D
         u[i] = m.tau[i - 1] - sp.dot(S[i], pA[i])
         j = robot.parent[i]
-        if j == 0:
+        if j == 0 and not floating:
             continue  # the fixed base takes no load
         scaled = sp.vscale(inv_D[i], U[i])
         Ia = _symmetric(lambda r, c: IA[i][r][c] - U[i][r] * scaled[c])
@@ -83,8 +89,14 @@ def forward_dynamics_aba(m):
         carried = _congruence(X, Ia)
         IA[j] = _symmetric(lambda r, c: IA[j][r][c] + carried[r][c])
         pA[j] = sp.vadd(pA[j], X.force_T(pa))
-    accelerations = [base_acceleration(m, sp.zeros(6))] + [None] * (nb - 1)
     qdd = [None] * robot.nv
+    if floating:
+        m.mark("ABA: trunk acceleration")
+        a0 = sp.vec(ldlt_solve(*dense_ldlt(IA[0]), sp.vneg(pA[0])))
+        qdd[0:6] = sp.vsub(a0, base_acceleration(m, sp.zeros(6)))
+    else:
+        a0 = base_acceleration(m, sp.zeros(6))
+    accelerations = [a0] + [None] * (nb - 1)
     for i in range(1, nb):
         m.mark("ABA: outward pass, accelerations", i)
         a_i = sp.vadd(m.X_up(i).motion(accelerations[robot.parent[i]]), bias_acc[i])

@@ -1,7 +1,7 @@
 """Which form a quantity is evaluated in, decided by cost (docs/performance.md, "The fastest form by
 default"): the scalar tree, the robot's isomorphic limbs in SIMD lanes, (forward- and
 contact-dynamics derivatives) a looped solve with SIMD across the right-hand sides
-(looped_solve.py), or (forward dynamics of a fixed-base tree) the articulated-body algorithm
+(looped_solve.py), or (forward dynamics) the articulated-body algorithm
 (algorithms/aba.py). The quantity is the same; only how it is evaluated changes, so the function
 keeps its plain name and its doc gains one line that says the choice and its numbers.
 
