@@ -17,7 +17,9 @@ namespace rbdc_gen {
 // overlaps the rows it reads, and keeps it in vector registers.
 //
 // A row of NC columns is moved as NC / size runs of ColumnRun<Scalar, NC>::size columns: for double
-// (float) a run is 8 (16) columns in a GCC/clang vector type, one AVX-512 register or two AVX2 ones.
+// and float a run is one vector register of the target in a GCC/clang vector type (64 bytes with
+// AVX-512, 32 with AVX, else 16: a wider type than the target has would change the ABI of the
+// functions that return it, and g++ warns).
 // Plain loops over the columns were vectorised 256 bits wide by g++ 12 and clang 14 on AVX-512
 // machines (their tuning default), with a remainder per row: humanoid32's ∂FD solve (123 columns)
 // took 31 µs (g++) and 15 µs (clang), 9-10 µs with runs over rows padded to 128. Other scalar
@@ -52,17 +54,24 @@ struct Run {
   static void store(Scalar* p, const type& x) noexcept { std::memcpy(p, &x, sizeof x); }
 };
 
+#if defined(__AVX512F__)
+#define RBDC_RUN_BYTES 64
+#elif defined(__AVX__)
+#define RBDC_RUN_BYTES 32
+#else
+#define RBDC_RUN_BYTES 16
+#endif
 template <>
-constexpr int run_size<double>() { return 8; }
+constexpr int run_size<double>() { return RBDC_RUN_BYTES / 8; }
 template <>
-constexpr int run_size<float>() { return 16; }
+constexpr int run_size<float>() { return RBDC_RUN_BYTES / 4; }
 #endif
 
 template <class Scalar, int NC>
 using ColumnRun = Run<Scalar, NC % run_size<Scalar>() == 0 ? run_size<Scalar>() : 1>;
 
 // clang keeps a 512-bit vector type in one register only in a function that asks for that width.
-#if defined(__clang__) && !defined(__CUDACC__)
+#if defined(__clang__) && !defined(__CUDACC__) && defined(__AVX512F__)
 #define RBDC_WIDE_RUNS __attribute__((min_vector_width(512)))
 #else
 #define RBDC_WIDE_RUNS

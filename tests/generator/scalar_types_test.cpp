@@ -3,11 +3,15 @@
 // written as double literals, so the wide types compute the same function as double, more exactly.
 // The lane functions (scene limb_lanes, the legs in SIMD lanes) agree with their scalar namesakes
 // (scenes full and derivatives) in every scalar type, and mass_matrix_lower writes M's lower
-// triangle alone.
+// triangle alone. The looped solve's kernels (rbdc_gen/solve.hpp) run in vector runs of 8 doubles
+// and 16 floats and one column at a time for the other types: contact_dynamics_derivatives (48
+// columns) agrees across them.
 #include <gtest/gtest.h>
 
 #include <random>
+#include <vector>
 
+#include "mini_cheetah/contact/contact_dynamics_derivatives.hpp"
 #include "mini_cheetah/derivatives/inverse_dynamics_derivatives.hpp"
 #include "mini_cheetah/full.hpp"
 #include "mini_cheetah/limb_lanes.hpp"
@@ -104,6 +108,34 @@ TEST(GeneratedScalarTypes, Float128AgreesWithLongDoubleBeyondDoublePrecision) {
   }
 }
 #endif
+
+/// contact_dynamics_derivatives' six outputs in T (raw-pointer overload), one after the other.
+template <class T>
+LongMatrix contact_derivatives(const State& s) {
+  const int nv = mc::nv, nj = mc::n_joints, m = 3 * 4;  // four feet in contact
+  std::vector<T> q(s.q.data(), s.q.data() + mc::nq), v(s.v.data(), s.v.data() + nv);
+  std::vector<T> tau(s.tau.data(), s.tau.data() + nj);
+  const int sizes[6] = {nv * nv, nv * nv, nv * nj, m * nv, m * nv, m * nj};
+  std::vector<T> out[6];
+  for (int k = 0; k < 6; ++k) out[k].resize(sizes[k]);
+  rbdc_gen::mini_cheetah::contact::contact_dynamics_derivatives(
+      q.data(), v.data(), tau.data(), out[0].data(), out[1].data(), out[2].data(), out[3].data(),
+      out[4].data(), out[5].data());
+  LongMatrix all(sizes[0] + sizes[1] + sizes[2] + sizes[3] + sizes[4] + sizes[5], 1);
+  int row = 0;
+  for (const auto& block : out)
+    for (const T x : block) all(row++, 0) = static_cast<long double>(x);
+  return all;
+}
+
+TEST(GeneratedScalarTypes, LoopedSolveAgreesAcrossScalarTypes) {
+  for (unsigned seed = 0; seed < 3; ++seed) {
+    const State s = random_state(seed);
+    const LongMatrix wide = contact_derivatives<double>(s);
+    EXPECT_LT(relative_difference(contact_derivatives<float>(s), wide), 1e-3L);
+    EXPECT_LT(relative_difference(contact_derivatives<long double>(s), wide), 1e-10L);
+  }
+}
 
 /// The lane functions against their scalar namesakes, both in T.
 template <class T>
