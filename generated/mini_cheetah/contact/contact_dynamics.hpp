@@ -7,11 +7,11 @@
 // contact_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics is the same code:
-//   mini_cheetah/common/contact_dynamics_3a5544292036.hpp
+//   mini_cheetah/common/contact_dynamics_37b565dc78cf.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_3a5544292036.hpp"
+#include "mini_cheetah/common/contact_dynamics_37b565dc78cf.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::contact {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             5298  4352   26     0    24    1   9701
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_3a5544292036::contact_dynamics;
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_37b565dc78cf::contact_dynamics;
 
 /// contact_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

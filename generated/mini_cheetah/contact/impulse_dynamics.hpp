@@ -7,11 +7,11 @@
 // impulse_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose impulse_dynamics is the same code:
-//   mini_cheetah/common/impulse_dynamics_2b1882e24624.hpp
+//   mini_cheetah/common/impulse_dynamics_dc94105a0d3c.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/impulse_dynamics_2b1882e24624.hpp"
+#include "mini_cheetah/common/impulse_dynamics_dc94105a0d3c.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::contact {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             3960  3211   26     0    24    1   7222
-using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_2b1882e24624::impulse_dynamics;
+using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_dc94105a0d3c::impulse_dynamics;
 
 /// impulse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix_inverse for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_inverse is the same code:
-//   mini_cheetah/common/mass_matrix_inverse_521039623486.hpp
+//   mini_cheetah/common/mass_matrix_inverse_902bc175e443.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/mass_matrix_inverse_521039623486.hpp"
+#include "mini_cheetah/common/mass_matrix_inverse_902bc175e443.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1920  1650   14     0    24    2   3610
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_inverse_521039623486::mass_matrix_inverse;
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_inverse_902bc175e443::mass_matrix_inverse;
 
 /// mass_matrix_inverse on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

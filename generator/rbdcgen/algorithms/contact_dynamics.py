@@ -82,15 +82,9 @@ class Delassus:
         self._parents = parents = fd.dof_parents(robot)
         self._L, inv_diag = fd.mass_matrix_factor(m)
         self.J = contact_rows(m, feet_jacobian(m))
-        m.mark("contact: L⁻ᵀJᵀ")
-        Z = [fd.ltdl_forward(self._L, parents, row, m.into_dof) for row in self.J]
-        self._D_inv_Z = [[z * d for z, d in zip(column, inv_diag)] for column in Z]
         m.mark("contact: Delassus matrix J M⁻¹Jᵀ and its damped factor")
+        self.A, self._D_inv_Z = fd.half_solve_gram(self._L, inv_diag, parents, self.J, m.into_dof)
         n = len(self.J)
-        self.A = [[None] * n for _ in range(n)]
-        for r in range(n):
-            for s in range(r + 1):
-                self.A[r][s] = self.A[s][r] = sp.dot(Z[r], self._D_inv_Z[s])
         trace = ex.const(0.0)
         for r in range(n):
             trace = trace + self.A[r][r]

@@ -154,19 +154,25 @@ def _solve_with_torques(m, h):
 
 
 def mass_matrix_inverse(m):
-    """M⁻¹ (rows) as Zᵀ D⁻¹ Z with M = Lᵀ D L and Z = L⁻ᵀ (column k, L⁻ᵀ e_k, non-zero only on the
-    tree ancestors of dof k): entry (a, b) sums over the common ancestors of a and b only, and each
-    entry of the symmetric inverse is computed once."""
+    """M⁻¹ (rows) as the Gram matrix of the unit columns through half of M's solve (half_solve_gram),
+    each entry of the symmetric inverse computed once."""
     n = m.robot.nv
-    parents = dof_parents(m.robot)
     L, inv_diag = mass_matrix_factor(m)
     zero, one = ex.const(0.0), ex.const(1.0)
-    m.mark("M⁻¹: the columns of L⁻ᵀ")
-    Z = [ltdl_forward(L, parents, [one if r == k else zero for r in range(n)], m.into_dof) for k in range(n)]
+    m.mark("M⁻¹ through half of M's solve")
+    identity = [[one if r == k else zero for r in range(n)] for k in range(n)]
+    return half_solve_gram(L, inv_diag, dof_parents(m.robot), identity, m.into_dof)[0]
+
+
+def half_solve_gram(L, inv_diag, parents, columns, into=_as_is):
+    """(Bᵀ M⁻¹ B as symmetric rows, D⁻¹Z) for the columns of B, M = Lᵀ D L: with Z = L⁻ᵀB (a column
+    non-zero only on the tree ancestors of its non-zeros) entry (r, s) is Z_rᵀ D⁻¹ Z_s, a sum over
+    their common ancestors independent of the other entries; M⁻¹B = L⁻¹ D⁻¹Z when it is needed."""
+    Z = [ltdl_forward(L, parents, b, into) for b in columns]
     D_inv_Z = [[z * d for z, d in zip(column, inv_diag)] for column in Z]
-    rows = [[None] * n for _ in range(n)]
-    for k in range(n):
-        m.mark("M⁻¹ column %d" % k)
-        for r in range(k, n):
-            rows[r][k] = rows[k][r] = sp.dot(Z[r], D_inv_Z[k])
-    return rows
+    n = len(columns)
+    gram = [[None] * n for _ in range(n)]
+    for r in range(n):
+        for s in range(r + 1):
+            gram[r][s] = gram[s][r] = sp.dot(Z[r], D_inv_Z[s])
+    return gram, D_inv_Z

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_2b1882e24624 {
+namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_dc94105a0d3c {
 
 /// Impulse dynamics of a touchdown of the scene's contact feet: v⁺ and Λ of M (v⁺ − v) = JᵀΛ, J v⁺
 /// = −e J v (docs/runtime.md).
@@ -797,7 +797,7 @@ RBDC_HOST_DEVICE inline void impulse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t708 = (t568 * t706) - (t566 * t707);
   const Scalar t709 = (t564 * t707) - (t568 * t705);
   const Scalar t710 = (t566 * t705) - (t564 * t706);
-  // contact: L⁻ᵀJᵀ
+  // contact: Delassus matrix J M⁻¹Jᵀ and its damped factor
   const Scalar t711 = t612 - (t386 * t618);
   const Scalar t712 = (t606 - (t394 * t618)) - (t403 * t711);
   const Scalar t713 = ((t489 - (t395 * t618)) - (t410 * t711)) - (t417 * t712);
@@ -1026,7 +1026,6 @@ RBDC_HOST_DEVICE inline void impulse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t936 = t286 * t822;
   const Scalar t937 = t272 * t821;
   const Scalar t938 = Scalar(2057.0036861506055) * t710;
-  // contact: Delassus matrix J M⁻¹Jᵀ and its damped factor
   const Scalar t939 = (((((t720 * t831) + (t719 * t832)) + (t716 * t833)) + (t715 * t834)) + (t714 * t835)) + (t713 * t836);
   const Scalar t940 = ((t939 + (t712 * t837)) + (t711 * t838)) + (t618 * t839);
   const Scalar t941 = (((((t730 * t831) + (t729 * t832)) + (t726 * t833)) + (t725 * t834)) + (t724 * t835)) + (t723 * t836);
@@ -1534,4 +1533,4 @@ RBDC_HOST_DEVICE inline void impulse_dynamics(const Scalar* q, const Scalar* v, 
   v_plus[17] = v[17] + (((((t1411 + (t264 * t1390)) - (t265 * t1389)) - (t266 * t1388)) - (t268 * t1387)) + (t270 * t1381));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_2b1882e24624
+}  // namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_dc94105a0d3c

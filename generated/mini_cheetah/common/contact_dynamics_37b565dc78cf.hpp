@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_3a5544292036 {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_37b565dc78cf {
 
 /// Rigid-contact dynamics of the scene's contact feet: a and λ of M a − Jᵀλ = Sᵀτ − c − g, J a =
 /// −J̇v (Schur complement, damped proximal Delassus solve; docs/runtime.md).
@@ -1328,7 +1328,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1189 = (t1043 * t1187) - (t1041 * t1188);
   const Scalar t1190 = (t1039 * t1188) - (t1043 * t1186);
   const Scalar t1191 = (t1041 * t1186) - (t1039 * t1187);
-  // contact: L⁻ᵀJᵀ
+  // contact: Delassus matrix J M⁻¹Jᵀ and its damped factor
   const Scalar t1192 = t1093 - (t807 * t1099);
   const Scalar t1193 = (t1087 - (t815 * t1099)) - (t824 * t1192);
   const Scalar t1194 = ((t18 - (t816 * t1099)) - (t831 * t1192)) - (t838 * t1193);
@@ -1557,7 +1557,6 @@ RBDC_HOST_DEVICE inline void contact_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1417 = t707 * t1303;
   const Scalar t1418 = t693 * t1302;
   const Scalar t1419 = Scalar(2057.0036861506055) * t1191;
-  // contact: Delassus matrix J M⁻¹Jᵀ and its damped factor
   const Scalar t1420 = (((((t1201 * t1312) + (t1200 * t1313)) + (t1197 * t1314)) + (t1196 * t1315)) + (t1195 * t1316)) + (t1194 * t1317);
   const Scalar t1421 = ((t1420 + (t1193 * t1318)) + (t1192 * t1319)) + (t1099 * t1320);
   const Scalar t1422 = (((((t1211 * t1312) + (t1210 * t1313)) + (t1207 * t1314)) + (t1206 * t1315)) + (t1205 * t1316)) + (t1204 * t1317);
@@ -2120,4 +2119,4 @@ RBDC_HOST_DEVICE inline void contact_dynamics(const Scalar* q, const Scalar* v, 
   a[17] = t952 + (((((t1931 + (t685 * t1910)) - (t686 * t1909)) - (t687 * t1908)) - (t689 * t1907)) + (t691 * t1901));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_3a5544292036
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_37b565dc78cf

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_5494badda6ee {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_e8914c0cad12 {
 
 /// Block 0 of contact_dynamics_derivatives_terms (below).
 template <class Scalar>
@@ -8045,7 +8045,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE void contact_dynamics_derivatives_terms_part3(con
   const Scalar t3628 = Scalar(1) / (((((t3597 - (t3577 * t3607)) - (t3603 * t3615)) - (t3612 * t3621)) - (t3619 * t3625)) - (t3624 * t3627));
   rbdc_scratch[1591] = t3628;
   D_inv[0] = t3628;
-  // contact: L⁻ᵀJᵀ
+  // contact: Delassus matrix J M⁻¹Jᵀ and its damped factor
   const Scalar t3629 = t1666 - (t1672 * t3541);
   const Scalar t3630 = (t1660 - (t1672 * t3549)) - (t3557 * t3629);
   const Scalar t3631 = ((t18 - (t1672 * t3550)) - (t3564 * t3629)) - (t3571 * t3630);
@@ -8394,7 +8394,6 @@ RBDC_HOST_DEVICE RBDC_NOINLINE void contact_dynamics_derivatives_terms_part3(con
   rbdc_scratch[1698] = t3855;
   const Scalar t3856 = Scalar(2057.0036861506055) * t1818;
   rbdc_scratch[1699] = t3856;
-  // contact: Delassus matrix J M⁻¹Jᵀ and its damped factor
   const Scalar t3857 = (((((t3638 * t3749) + (t3637 * t3750)) + (t3634 * t3751)) + (t3633 * t3752)) + (t3632 * t3753)) + (t3631 * t3754);
   const Scalar t3858 = ((t3857 + (t3630 * t3755)) + (t3629 * t3756)) + (t1672 * t3757);
   A[0] = t3858;
@@ -8828,7 +8827,8 @@ RBDC_HOST_DEVICE RBDC_NOINLINE void contact_dynamics_derivatives_terms_part3(con
   rbdc_scratch[1782] = t4015;
   F_L[88] = t4015;
   const Scalar t4016 = (((t3912 - (t3961 * (t3966 * t3970))) - (t3974 * (t3978 * t3982))) - (t3986 * (t3989 * t3993))) - (t3997 * (t3999 * t4003));
-  rbdc_scratch[1783] = t4016;
+  const Scalar t4017 = t4009 * t4016;
+  rbdc_scratch[1783] = t4017;
 }
 
 /// Block 4 of contact_dynamics_derivatives_terms (below).
@@ -9680,8 +9680,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE void contact_dynamics_derivatives_terms_part4(con
   const Scalar t4011 = rbdc_scratch[1780];
   const Scalar t4013 = rbdc_scratch[1781];
   const Scalar t4015 = rbdc_scratch[1782];
-  const Scalar t4016 = rbdc_scratch[1783];
-  const Scalar t4017 = t4009 * t4016;
+  const Scalar t4017 = rbdc_scratch[1783];
   F_L[100] = t4017;
   const Scalar t4018 = (((t3924 - (t3961 * (t3966 * t3971))) - (t3974 * (t3978 * t3983))) - (t3986 * (t3989 * t3994))) - (t3997 * (t3999 * t4004));
   const Scalar t4019 = t4009 * t4018;
@@ -11409,6 +11408,8 @@ RBDC_HOST_DEVICE RBDC_NOINLINE void contact_dynamics_derivatives_terms_part4(con
   rbdc_scratch[1816] = t5200;
   const Scalar t5201 = (cos_RH_hip_joint * t5199) - (sin_RH_hip_joint * t5200);
   rbdc_scratch[1817] = t5201;
+  const Scalar t5202 = ((cos_RH_hip_joint * t5193) + (sin_RH_hip_joint * t5198)) + (Scalar(0.062) * t5201);
+  rbdc_scratch[1818] = t5202;
 }
 
 /// Block 5 of contact_dynamics_derivatives_terms (below).
@@ -12619,7 +12620,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE void contact_dynamics_derivatives_terms_part5(con
   const Scalar t5199 = rbdc_scratch[1815];
   const Scalar t5200 = rbdc_scratch[1816];
   const Scalar t5201 = rbdc_scratch[1817];
-  const Scalar t5202 = ((cos_RH_hip_joint * t5193) + (sin_RH_hip_joint * t5198)) + (Scalar(0.062) * t5201);
+  const Scalar t5202 = rbdc_scratch[1818];
   const Scalar t5203 = ((t1416 + (t139 * t542)) + (t1416 + (t139 * t534))) - ((Scalar(0.698) * t1040) - ((t521 * t5189) + (t515 * t5190)));
   const Scalar t5204 = (sin_RH_abad_joint * t5203) + (cos_RH_abad_joint * t5201);
   R1[256] = t5204;
@@ -13310,12 +13311,12 @@ RBDC_HOST_DEVICE RBDC_NOINLINE void contact_dynamics_derivatives_terms_part5(con
 }
 
 /// The traced part of contact_dynamics_derivatives: what the loop below solves.
-/// emission: 6 blocks of at most 1500 statements (1818 values passed in scratch), each a function
-///   of its own: one straight-line function of 8188 statements would compile in time
+/// emission: 6 blocks of at most 1500 statements (1819 values passed in scratch), each a function
+///   of its own: one straight-line function of 8187 statements would compile in time
 ///   growing faster than its length
 template <class Scalar>
 RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q, const Scalar* v, const Scalar* tau, Scalar* R1, Scalar* R2, Scalar* J, Scalar* Minv_Jt, Scalar* F_L, Scalar* F_D_inv, Scalar* A, Scalar* L, Scalar* D_inv) noexcept {
-  Scalar rbdc_scratch[1818];
+  Scalar rbdc_scratch[1819];
   contact_dynamics_derivatives_terms_part0(q, v, tau, R1, R2, J, Minv_Jt, F_L, F_D_inv, A, L, D_inv, rbdc_scratch);
   contact_dynamics_derivatives_terms_part1(q, v, tau, R1, R2, J, Minv_Jt, F_L, F_D_inv, A, L, D_inv, rbdc_scratch);
   contact_dynamics_derivatives_terms_part2(q, v, tau, R1, R2, J, Minv_Jt, F_L, F_D_inv, A, L, D_inv, rbdc_scratch);
@@ -13373,4 +13374,4 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives(const Scalar* q, const
   copy_columns<Scalar, 12, 48>(solve_dlambda, 36, 12, dlambda_dtau);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_5494badda6ee
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_e8914c0cad12

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::mass_matrix_inverse_3e869b452585 {
+namespace rbdc_gen::arm7::common::mass_matrix_inverse_0dac83da2fe7 {
 
 /// M⁻¹ from the sparse factor M = Lᵀ D L (CRBA, paper 000 Alg. 5).
 ///
@@ -203,7 +203,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Scalar t157 = t154 * t156;
   const Scalar t158 = Scalar(1) / ((((t135 - (t129 * t145)) - (t140 * t151)) - (t149 * t155)) - (t154 * t157));
   M_inv[0] = t158;
-  // M⁻¹: the columns of L⁻ᵀ
+  // M⁻¹ through half of M's solve
   const Scalar t159 = (t153 * t157) - t155;
   const Scalar t160 = (t147 * t153) - t150;
   const Scalar t161 = ((t147 * t155) - t151) - (t157 * t160);
@@ -257,57 +257,52 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Scalar t192 = t146 * t169;
   const Scalar t193 = t118 * t136;
   M_inv[48] = Scalar(2000) + (((((t172 * t189) + (t171 * t190)) + (t170 * t191)) + (t169 * t192)) + (t118 * t193));
-  // M⁻¹ column 1
   const Scalar t194 = -(t176 + (t159 * t173));
   M_inv[9] = t194;
   M_inv[15] = t194;
   const Scalar t195 = t178 - (t161 * t173);
   M_inv[10] = t195;
   M_inv[22] = t195;
-  const Scalar t196 = t181 - (t164 * t173);
-  M_inv[11] = t196;
-  M_inv[29] = t196;
-  const Scalar t197 = t185 - (t168 * t173);
-  M_inv[12] = t197;
-  M_inv[36] = t197;
-  const Scalar t198 = t190 - (t172 * t173);
-  M_inv[13] = t198;
-  M_inv[43] = t198;
-  // M⁻¹ column 2
-  const Scalar t199 = ((t161 * t175) - (t160 * t176)) - t179;
-  M_inv[17] = t199;
-  M_inv[23] = t199;
-  const Scalar t200 = t182 + ((t164 * t175) - (t163 * t176));
-  M_inv[18] = t200;
-  M_inv[30] = t200;
+  const Scalar t196 = ((t161 * t175) - (t160 * t176)) - t179;
+  M_inv[17] = t196;
+  M_inv[23] = t196;
+  const Scalar t197 = t181 - (t164 * t173);
+  M_inv[11] = t197;
+  M_inv[29] = t197;
+  const Scalar t198 = t182 + ((t164 * t175) - (t163 * t176));
+  M_inv[18] = t198;
+  M_inv[30] = t198;
+  const Scalar t199 = (((t164 * t177) + (t163 * t178)) - (t162 * t179)) - t183;
+  M_inv[25] = t199;
+  M_inv[31] = t199;
+  const Scalar t200 = t185 - (t168 * t173);
+  M_inv[12] = t200;
+  M_inv[36] = t200;
   const Scalar t201 = t186 + ((t168 * t175) - (t167 * t176));
   M_inv[19] = t201;
   M_inv[37] = t201;
-  const Scalar t202 = t191 + ((t172 * t175) - (t171 * t176));
-  M_inv[20] = t202;
-  M_inv[44] = t202;
-  // M⁻¹ column 3
-  const Scalar t203 = (((t164 * t177) + (t163 * t178)) - (t162 * t179)) - t183;
-  M_inv[25] = t203;
-  M_inv[31] = t203;
-  const Scalar t204 = t187 + (((t168 * t177) + (t167 * t178)) - (t166 * t179));
-  M_inv[26] = t204;
-  M_inv[38] = t204;
-  const Scalar t205 = t192 + (((t172 * t177) + (t171 * t178)) - (t170 * t179));
-  M_inv[27] = t205;
-  M_inv[45] = t205;
-  // M⁻¹ column 4
-  const Scalar t206 = ((((t168 * t180) + (t167 * t181)) + (t166 * t182)) - (t165 * t183)) - t188;
-  M_inv[33] = t206;
-  M_inv[39] = t206;
+  const Scalar t202 = t187 + (((t168 * t177) + (t167 * t178)) - (t166 * t179));
+  M_inv[26] = t202;
+  M_inv[38] = t202;
+  const Scalar t203 = ((((t168 * t180) + (t167 * t181)) + (t166 * t182)) - (t165 * t183)) - t188;
+  M_inv[33] = t203;
+  M_inv[39] = t203;
+  const Scalar t204 = t190 - (t172 * t173);
+  M_inv[13] = t204;
+  M_inv[43] = t204;
+  const Scalar t205 = t191 + ((t172 * t175) - (t171 * t176));
+  M_inv[20] = t205;
+  M_inv[44] = t205;
+  const Scalar t206 = t192 + (((t172 * t177) + (t171 * t178)) - (t170 * t179));
+  M_inv[27] = t206;
+  M_inv[45] = t206;
   const Scalar t207 = ((((t172 * t180) + (t171 * t181)) + (t170 * t182)) - (t169 * t183)) - t193;
   M_inv[34] = t207;
   M_inv[46] = t207;
-  // M⁻¹ column 5
   const Scalar t208 = ((((t172 * t184) + (t171 * t185)) + (t170 * t186)) + (t169 * t187)) + (t118 * t188);
   // outputs
   M_inv[41] = t208;
   M_inv[47] = t208;
 }
 
-}  // namespace rbdc_gen::arm7::common::mass_matrix_inverse_3e869b452585
+}  // namespace rbdc_gen::arm7::common::mass_matrix_inverse_0dac83da2fe7
