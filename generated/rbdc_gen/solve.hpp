@@ -6,7 +6,9 @@
 // docs/performance.md, "Looped solves"): the
 // traced part writes the right-hand sides side by side, row-major, and the factor M = Lᵀ D L's
 // entries at each dof's tree ancestors; these loops solve all columns at once, one row update
-// (a multiply-add over every column, SIMD across the columns) per factor entry.
+// (a multiply-add over every column, SIMD across the columns) per factor entry. The factor itself
+// is a loop too where unrolling it would not pay (mass_matrix_factor's looped form, "The factor as
+// a loop").
 #pragma once
 
 #include "rbdc_gen/support.hpp"
@@ -185,6 +187,51 @@ RBDC_HOST_DEVICE inline void proximal_step_sum(const Scalar* L, const Scalar* D_
     for (int k = 0; k < N * N; ++k) Q[k] = G[k] + GQ[k];
   }
   for (int i = 0; i < N; ++i) Q[i * N + i] += Scalar(1);
+}
+
+/// M = Lᵀ D L over the dof tree (Featherstone's LTDL), in place, for mass_matrix_factor's looped form:
+/// on entry L holds M's entries at each dof's ancestors (dof by dof, nearest ancestor first, the
+/// layout of ltdl_solve_columns) and D M's diagonal; on exit L the factor's entries, D the pivots and
+/// D_inv their inverses. Row i's entries are the tail of row k's after ancestor i, so each update of
+/// an ancestor's row is one contiguous multiply-add.
+template <class Scalar, int NV>
+RBDC_HOST_DEVICE inline void ltdl_factor(const int (&parent)[NV], Scalar* L, Scalar* D, Scalar* D_inv) noexcept {
+  int first[NV];  // where dof i's entries start in L
+  int depth[NV];  // how many ancestors dof i has: the length of its row
+  int entries = 0;
+  for (int i = 0; i < NV; ++i) {
+    first[i] = entries;
+    depth[i] = parent[i] == -1 ? 0 : depth[parent[i]] + 1;
+    entries += depth[i];
+  }
+  for (int k = NV - 1; k >= 0; --k) {  // leaves first: dof k's pivot is final once its descendants are done
+    const Scalar inverse = Scalar(1) / D[k];
+    D_inv[k] = inverse;
+    Scalar* row_k = L + first[k];
+    int p = 0;
+    for (int i = parent[k]; i != -1; i = parent[i], ++p) {
+      const Scalar ratio = row_k[p] * inverse;
+      D[i] -= ratio * row_k[p];
+      Scalar* row_i = L + first[i];
+      const Scalar* tail = row_k + p + 1;
+      for (int t = 0; t < depth[i]; ++t) row_i[t] -= ratio * tail[t];
+      row_k[p] = ratio;
+    }
+  }
+}
+
+/// The packed factor of ltdl_factor as mass_matrix_factor's outputs: L_out unit lower triangular
+/// (column-major NV × NV, zero off the ancestors), D_out the pivots.
+template <class Scalar, int NV>
+RBDC_HOST_DEVICE inline void unpack_factor(const int (&parent)[NV], const Scalar* L, const Scalar* D,
+                                           Scalar* L_out, Scalar* D_out) noexcept {
+  for (int k = 0; k < NV * NV; ++k) L_out[k] = Scalar(0);
+  int k = 0;
+  for (int i = 0; i < NV; ++i) {
+    L_out[i * NV + i] = Scalar(1);
+    D_out[i] = D[i];
+    for (int j = parent[i]; j != -1; j = parent[j], ++k) L_out[j * NV + i] = L[k];
+  }
 }
 
 /// Columns first … first + count − 1 of the row-major NV × NC matrix B, column-major into out.

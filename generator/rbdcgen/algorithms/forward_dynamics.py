@@ -126,6 +126,14 @@ def factor_outputs(L, inv_diag, parents):
             "D": tuple(L[k][k] for k in range(n)), "D_inv": tuple(inv_diag)}
 
 
+def factor_terms(m):
+    """What ltdl reads of M, for a factorisation done by a loop (passes/looped_factor.py): M's
+    entries at each dof's ancestors in packed_factor's layout, and its diagonal."""
+    H = mass_matrix(m)
+    parents = dof_parents(m.robot)
+    return {"L": tuple(packed_factor(H, parents)), "D": tuple(H[k][k] for k in range(len(H)))}
+
+
 def mass_matrix_factor(m):
     """M = Lᵀ D L over the dof tree, M from the CRBA: (L with the pivots on its diagonal, D⁻¹)."""
     H = mass_matrix(m)

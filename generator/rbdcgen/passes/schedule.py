@@ -1,24 +1,28 @@
 """Which form a quantity is evaluated in, decided by cost (docs/performance.md, "The fastest form by
 default"): the scalar tree, the robot's isomorphic limbs in SIMD lanes, (forward- and
 contact-dynamics derivatives) a looped solve with SIMD across the right-hand sides
-(looped_solve.py), or (forward dynamics) the articulated-body algorithm
-(algorithms/aba.py). The quantity is the same; only how it is evaluated changes, so the function
+(looped_solve.py), (forward dynamics) the articulated-body algorithm (algorithms/aba.py), or
+(mass_matrix_factor) the factorisation as a loop (looped_factor.py). The quantity is the same; only how it is evaluated changes, so the function
 keeps its plain name and its doc gains one line that says the choice and its numbers.
 
 The cost is the arithmetic instructions the body issues: every operation node once, a lane
 operation being one vector instruction for all limbs, the sum over the lanes two (a horizontal
-add of four), a looped solve's row update one per looped_solve.SIMD_DOUBLES columns. A scene may
-force a form (`schedule: scalar`, `limb_lanes`, `looped_solve` or `aba`) where the function has it."""
+add of four), a looped solve's row update one per looped_solve.SIMD_DOUBLES columns. Where the
+unrolled factor is past looped_factor.UNROLL_LIMIT, `auto` does not trace the forms that unroll it
+(tracing them alone would take minutes) when another form exists. A scene may force a form
+(`schedule: scalar`, `limb_lanes`, `looped_solve`, `aba` or `looped_factor`) where the function has
+it."""
 
 from __future__ import annotations
 
 from dataclasses import replace
 
 from ..algorithms import aba
+from ..algorithms.forward_dynamics import dof_parents
 from ..graph import expr as ex
 from ..views.limbs import LimbError, isomorphic_limbs
-from . import lane_functions, looped_solve, singular_mass
-from .trace import trace_function
+from . import lane_functions, looped_factor, looped_solve, singular_mass
+from .trace import signature, trace_function
 
 _LANE_SUM_INSTRUCTIONS = 2  # log2(LANES) horizontal additions
 
@@ -50,14 +54,21 @@ def _forms(robot, scene, name):
         forms["looped_solve"] = lambda: looped_solve.looped_function(robot, scene, name)
     if name == "forward_dynamics" and aba.applies(robot):
         forms["aba"] = lambda: _as(trace_function(robot, scene, "forward_dynamics_aba"), name)
+    if looped_factor.has_looped_form(robot, name):
+        forms["looped_factor"] = lambda: looped_factor.looped_function(robot, scene, name)
     return forms
 
 
+# Quantities whose scalar form unrolls the factorisation of M.
+_UNROLL_FACTOR = ("mass_matrix_factor", "forward_dynamics")
+
+
 _SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "looped_solve": "looped solve",
-          "aba": "articulated-body algorithm"}
+          "aba": "articulated-body algorithm", "looped_factor": "looped factor"}
 _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes, the trunk scalar)" % ex.LANES,
            "looped_solve": " (the solve's right-hand sides in SIMD across columns)",
-           "aba": " (O(n); the scalar tree is CRBA + the sparse LᵀDL factor)"}
+           "aba": " (O(n); the scalar tree is CRBA + the sparse LᵀDL factor)",
+           "looped_factor": " (CRBA unrolled, the sparse LᵀDL factorisation a loop)"}
 
 
 def scheduled_function(robot, scene, name):
@@ -70,11 +81,16 @@ def scheduled_function(robot, scene, name):
         return replace(forms[scene.schedule](), schedule="%s, as the scene asks" % _SHORT[scene.schedule])
     if scene.schedule != "auto":  # a form this function does not have: the scalar tree
         return forms["scalar"]()
+    untraced = []
+    if name in _UNROLL_FACTOR and looped_factor.unrolled_too_large(robot):
+        del forms["scalar"]
+        untraced.append("scalar tree not traced (its factorisation alone: %d multiply-adds)"
+                        % looped_factor.factor_multiply_adds(dof_parents(robot)))
     traced = {form: trace() for form, trace in forms.items()}
     cost = {form: instructions(fn) for form, fn in traced.items()}
     best = min(cost, key=lambda form: cost[form])  # dicts keep order: the scalar tree wins a tie
-    others = ", ".join("%s %d" % (_SHORT[form], n) for form, n in cost.items() if form != best)
-    return replace(traced[best], doc=traced["scalar"].doc, schedule="%s%s: %d arithmetic instructions, %s"
+    others = ", ".join(["%s %d" % (_SHORT[form], n) for form, n in cost.items() if form != best] + untraced)
+    return replace(traced[best], doc=signature(robot, scene, name)[0], schedule="%s%s: %d arithmetic instructions, %s"
                    % (_SHORT[best], _DETAIL[best], cost[best], others))
 
 

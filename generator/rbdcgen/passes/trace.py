@@ -148,6 +148,14 @@ def _spec(robot, nf, nc):
              ("D_inv", nv, 1, "their inverses, so that a solve multiplies")],
             lambda m: forward_dynamics.factor_outputs(*forward_dynamics.mass_matrix_factor(m),
                                                       forward_dynamics.dof_parents(m.robot))),
+        "mass_matrix_factor_terms": (
+            "M's entries the sparse factorisation reads (the looped factor's input, "
+            "passes/looped_factor.py).",
+            ("q",),
+            [("L", forward_dynamics.factor_entries(robot), 1,
+              "M's entries at each dof's tree ancestors, packed (forward_dynamics.packed_factor)"),
+             ("D", nv, 1, "M's diagonal")],
+            lambda m: forward_dynamics.factor_terms(m)),
         "forward_dynamics": (
             "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the "
             "articulated-body algorithm where that is cheaper: the schedule line says which).",

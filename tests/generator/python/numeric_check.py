@@ -1,4 +1,5 @@
-"""Random states and evaluation of traced functions against the Python reference."""
+"""Random states, evaluation of traced functions against the Python reference, and a serial chain
+of any length."""
 
 import math
 import os
@@ -10,6 +11,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "generator"))
 DATA = os.path.join(HERE, "..", "data")
 
+from rbdcgen.frontend.ir import load_ir  # noqa: E402
 from rbdcgen.graph import expr as ex  # noqa: E402
 
 
@@ -35,7 +37,7 @@ def evaluate(fn, state):
     nothing (the upper triangle of mass_matrix_lower), as the verify harness's zeroed buffers."""
     values = iter(ex.evaluate(fn.output_exprs(), state))
     return {arg.name: [0.0 if e is None else next(values) for e in fn.values[arg.name]]
-            for arg in fn.outputs}
+            for arg in fn.traced_arguments()}
 
 
 def flatten_columns(vectors):
@@ -61,3 +63,24 @@ def operator_count(statement):
     if statement.startswith("//"):
         return 0
     return len(_OPERATOR.findall(_CONSTANT.sub("C", statement.split("=", 1)[1])))
+
+
+def chain(links):
+    """A fixed-base serial chain of `links` revolute joints about x, y, z in turn (the IR)."""
+    body = {"com": [0.0, 0.0, 0.05], "inertia_com": [[2e-3, 0, 0], [0, 2e-3, 0], [0, 0, 1e-3]], "mass": 0.5}
+    joint = {"lower": None, "upper": None, "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}
+    bodies = [dict(body, name="base")] + [dict(body, name="link%d" % i) for i in range(1, links + 1)]
+    joints = [dict(joint, name="root", type="fixed", parent=-1, axis=[0, 0, 0], translation=[0, 0, 0],
+                   q_index=0, v_index=0)]
+    for i in range(1, links + 1):
+        joints.append(dict(joint, name="j%d" % i, type="revolute", parent=i - 1,
+                           axis=[1.0 if k == i % 3 else 0.0 for k in range(3)], translation=[0, 0, 0.1],
+                           q_index=i - 1, v_index=i - 1))
+    nb = links + 1
+    return load_ir({"format": "rbdc-ir-1", "name": "chain", "nb": nb, "floating_base": False,
+                    "gravity": [0, 0, -9.81], "bodies": bodies, "joints": joints, "nq": links,
+                    "nv": links, "lambda": [i - 1 for i in range(1, nb)],
+                    "feet": [{"name": "tip", "body": links, "offset": [0, 0, 0.1]}],
+                    "PRED": [i - 1 for i in range(1, nb)], "SUCC": list(range(1, nb)),
+                    "kappa": [[] for _ in range(nb)], "mu": [[] for _ in range(nb)],
+                    "nu": [[] for _ in range(nb)]})

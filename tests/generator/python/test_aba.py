@@ -8,7 +8,7 @@ import copy
 import os
 import unittest
 
-from numeric_check import DATA, evaluate, random_state
+from numeric_check import DATA, chain, evaluate, random_state
 
 from rbdcgen.frontend.ir import load_ir
 from rbdcgen.frontend.scene import scene_from_dict
@@ -20,27 +20,6 @@ FLOATING = load_ir(os.path.join(DATA, "tiny_floating.json"))
 
 def scene(schedule, **keys):
     return scene_from_dict({"name": "x", "quantities": ["forward_dynamics"], "schedule": schedule, **keys})
-
-
-def chain(links):
-    """A fixed-base serial chain of `links` revolute joints about x, y, z in turn, as an IR dict."""
-    body = {"com": [0.0, 0.0, 0.05], "inertia_com": [[2e-3, 0, 0], [0, 2e-3, 0], [0, 0, 1e-3]], "mass": 0.5}
-    joint = {"lower": None, "upper": None, "rotation": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}
-    bodies = [dict(body, name="base")] + [dict(body, name="link%d" % i) for i in range(1, links + 1)]
-    joints = [dict(joint, name="root", type="fixed", parent=-1, axis=[0, 0, 0], translation=[0, 0, 0],
-                   q_index=0, v_index=0)]
-    for i in range(1, links + 1):
-        joints.append(dict(joint, name="j%d" % i, type="revolute", parent=i - 1,
-                           axis=[1.0 if k == i % 3 else 0.0 for k in range(3)], translation=[0, 0, 0.1],
-                           q_index=i - 1, v_index=i - 1))
-    nb = links + 1
-    return load_ir({"format": "rbdc-ir-1", "name": "chain", "nb": nb, "floating_base": False,
-                    "gravity": [0, 0, -9.81], "bodies": bodies, "joints": joints, "nq": links,
-                    "nv": links, "lambda": [i - 1 for i in range(1, nb)],
-                    "feet": [{"name": "tip", "body": links, "offset": [0, 0, 0.1]}],
-                    "PRED": [i - 1 for i in range(1, nb)], "SUCC": list(range(1, nb)),
-                    "kappa": [[] for _ in range(nb)], "mu": [[] for _ in range(nb)],
-                    "nu": [[] for _ in range(nb)]})
 
 
 class ArticulatedBodyAlgorithm(unittest.TestCase):

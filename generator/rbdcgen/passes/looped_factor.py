@@ -1,0 +1,93 @@
+"""The looped form of mass_matrix_factor (docs/performance.md, "The factor as a loop").
+
+The sparse LᵀDL factorisation of M costs Σ_k Σ_{i ⊂ ancestors(k)} (depth(i) + 2) multiply-adds:
+a few hundred on a legged robot, where its unrolled code folds and schedules well, but O(n³) on a
+chain (a 100-body chain: 9.6 MB of straight-line code, and most of the generator's time and memory).
+In the looped form the traced part writes only M's entries at each dof's ancestors and its diagonal
+(the CRBA, O(n²) on a chain) into local arrays and ltdl_factor (rbdc_gen/solve.hpp) factorises them
+in place: one multiply-add per entry of the ancestor row it updates, contiguous in the packed
+layout, so the inner loop is a SIMD axpy. Its code does not grow with the robot."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from typing import Tuple
+
+from ..algorithms.forward_dynamics import dof_ancestors, dof_parents
+from .looped_solve import SIMD_DOUBLES
+from .trace import Argument, signature, trace_function
+
+TERMS = "mass_matrix_factor_terms"
+# Above this many multiply-adds the factor is not traced unrolled at all, whatever `auto` would have
+# found: the trace alone takes minutes and gigabytes (a 200-body chain: 1.3 million), and a loop's
+# instruction count is then far below it. 20 000 is a 40-dof chain; humanoid32's factor has 766.
+UNROLL_LIMIT = 20000
+# Instructions per (k, ancestor) pair besides the row update: the ratio, the pivot's update, the
+# walk to the next ancestor and the loop's own bookkeeping.
+PAIR_OVERHEAD = 8
+
+
+def factor_multiply_adds(parents):
+    """The multiply-adds of the factorisation over the dof tree `parents`: for dof k and each ancestor
+    i, the ratio, the update of i's pivot and of i's row (depth(i) entries)."""
+    return sum(2 + len(dof_ancestors(parents, i)) for k in range(len(parents))
+               for i in dof_ancestors(parents, k))
+
+
+@dataclass(frozen=True)
+class LoopedFactor:
+    """M = Lᵀ D L by ltdl_factor over the packed entries the terms (L, D) hold, then unpacked into
+    the outputs L (nv × nv), D and D_inv."""
+    parents: Tuple[int, ...]
+    terms: Tuple[Argument, ...]
+
+    @property
+    def nv(self):
+        return len(self.parents)
+
+    def _pairs(self):
+        return [(k, i) for k in range(self.nv) for i in dof_ancestors(self.parents, k)]
+
+    def operations(self):
+        """The loop's arithmetic, by trip count: per dof one division (its inverse pivot); per
+        (k, ancestor i) the ratio (a multiplication), the pivot update (a multiply-add) and the
+        update of i's row (a multiply-add per entry)."""
+        row = sum(len(dof_ancestors(self.parents, i)) for _, i in self._pairs())
+        pairs = len(self._pairs())
+        return {"div": self.nv, "mul": 2 * pairs + row, "add": pairs + row}
+
+    def instructions(self):
+        """Vector instructions: a row update a load, a multiply-add and a store per SIMD_DOUBLES
+        entries, plus PAIR_OVERHEAD per pair and one division per dof."""
+        rows = sum(-(-len(dof_ancestors(self.parents, i)) // SIMD_DOUBLES) for _, i in self._pairs())
+        return 3 * rows + PAIR_OVERHEAD * len(self._pairs()) + self.nv
+
+    def loops(self):
+        return ["const int dof_parent[%d] = {%s};" % (self.nv, ", ".join(map(str, self.parents))),
+                f"ltdl_factor<Scalar, {self.nv}>(dof_parent, solve_L, solve_D, D_inv);",
+                f"unpack_factor<Scalar, {self.nv}>(dof_parent, solve_L, solve_D, L, D);"]
+
+    def emission(self, terms_name):
+        return ("looped factor: %s writes M's %d entries at the dofs' ancestors and its diagonal, "
+                "ltdl_factor factorises them in place (%d multiply-adds, a SIMD row update per ancestor "
+                "pair)" % (terms_name, self.terms[0].size, factor_multiply_adds(self.parents)))
+
+
+def has_looped_form(robot, name):
+    """Only mass_matrix_factor, and not on a coupled robot (its factor is of the projected M)."""
+    return name == "mass_matrix_factor" and not robot.couplings
+
+
+def unrolled_too_large(robot):
+    """Whether the unrolled factor is past UNROLL_LIMIT (passes/schedule.py then does not trace
+    forms that unroll it)."""
+    return factor_multiply_adds(dof_parents(robot)) > UNROLL_LIMIT
+
+
+def looped_function(robot, scene, name):
+    """mass_matrix_factor in its looped form: the traced terms, with the loop as a LoopedFactor."""
+    doc, inputs, outputs = signature(robot, scene, name)
+    terms = trace_function(robot, scene, TERMS)
+    assert terms.inputs == inputs
+    solve = LoopedFactor(parents=tuple(dof_parents(robot)), terms=terms.outputs)
+    return replace(terms, name=name, doc=doc, outputs=outputs, computes=name, solve=solve)
