@@ -7,11 +7,11 @@
 // bias_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   humanoid32/common/bias_derivatives_286ecad6710e.hpp
+//   humanoid32/common/bias_derivatives_914a8a0d89d5.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/bias_derivatives_286ecad6710e.hpp"
+#include "humanoid32/common/bias_derivatives_914a8a0d89d5.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
 ///             13826  11026    0     0    64   16  24932
-using ::rbdc_gen::humanoid32::common::bias_derivatives_286ecad6710e::bias_derivatives;
+using ::rbdc_gen::humanoid32::common::bias_derivatives_914a8a0d89d5::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   humanoid32/common/inverse_dynamics_derivatives_55051b38feb1.hpp
+//   humanoid32/common/inverse_dynamics_derivatives_db164504d58b.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/inverse_dynamics_derivatives_55051b38feb1.hpp"
+#include "humanoid32/common/inverse_dynamics_derivatives_db164504d58b.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
 ///             13850  11093    0     0    64   16  25023
-using ::rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_55051b38feb1::inverse_dynamics_derivatives;
+using ::rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_db164504d58b::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

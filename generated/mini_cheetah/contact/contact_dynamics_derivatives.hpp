@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_e8914c0cad12.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_b1b126f6e37b.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_e8914c0cad12.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_b1b126f6e37b.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -32,7 +32,7 @@ namespace rbdc_gen::mini_cheetah::contact {
 ///             65589  62852   26     0    24  108  128599
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 51451 arithmetic
 ///   instructions, scalar tree 100266
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_e8914c0cad12::contact_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_b1b126f6e37b::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

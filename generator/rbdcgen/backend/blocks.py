@@ -1,5 +1,5 @@
 """Long bodies as a run of blocks: how a function too long for straight-line code is emitted
-(docs/performance.md, "Blocks for long functions").
+(docs/performance.md, "Blocks for long functions" and "Smaller blocks").
 
 g++'s register allocation and scheduling take time that grows faster than linearly with the length
 of one function (the 32-DoF humanoid's ∂q̈: 24 800 lines, over 15 minutes at -O3). A body longer
@@ -12,16 +12,19 @@ their order are the same."""
 
 from __future__ import annotations
 
+import heapq
 import re
 from dataclasses import dataclass
 
 # Bodies up to SPLIT_ABOVE statements stay one function (the Mini Cheetah's ∂q̈ scalar, 6 000
-# statements, compiles in seconds; blocks would only add scratch traffic); longer ones are cut
-# into blocks of MAX_STATEMENTS. The humanoid's ∂τ (9 416 statements), g++ -O3 -march=native, CPU s on a
-# loaded machine: one function 36 s, 2 blocks of 6000 31 s, 7 of 1500 16 s; its ∂q̈ (24 743):
-# 17 blocks of 1500 45 s, 36 of 700 39 s (one function: over 15 minutes).
+# statements, compiles in seconds; blocks would only add scratch traffic, and clang 14 ran
+# humanoid32's OSC recursions 22-28 % slower in blocks); longer ones are cut into blocks of
+# MAX_STATEMENTS. g++ 12's time per statement still grows with the block: humanoid32's ∂q̈ (14 672
+# statements), g++ -O3 -march=native, user s with another compile on the second core: blocks of
+# 1500 40.6 s, 500 28.5 s, 250 16.9 s, 120 19.5 s (docs/performance.md, "Smaller blocks"); run
+# time unchanged (g++ 24.0 → 23.1 µs, clang 20.4 → 19.8 µs).
 SPLIT_ABOVE = 6500
-MAX_STATEMENTS = 1500
+MAX_STATEMENTS = 250
 SCRATCH = "rbdc_scratch"
 _DEFINITION = re.compile(r"^const (Scalar|auto) (\w+)(\[\d+\])? = ")
 _IDENTIFIER = re.compile(r"\b[A-Za-z_]\w*\b")
@@ -91,19 +94,17 @@ def _after_joint_trig(body):
 
 
 def _allocate(readers, defined):
-    """Scratch slot per passed value, a slot reused after the last block that reads its value."""
+    """Scratch slot per passed value, a slot reused after the last block that reads its value (the
+    lowest free slot first; heaps, since a long body passes thousands of values)."""
     free, busy, slots, size = [], [], {}, 0
     for name in sorted(readers, key=lambda n: (defined[n], n)):
         start = defined[name]
-        for end, slot in list(busy):
-            if end < start:
-                busy.remove((end, slot))
-                free.append(slot)
+        while busy and busy[0][0] < start:
+            heapq.heappush(free, heapq.heappop(busy)[1])
         if free:
-            slot = min(free)
-            free.remove(slot)
+            slot = heapq.heappop(free)
         else:
             slot, size = size, size + 1
         slots[name] = slot
-        busy.append((max(readers[name]), slot))
+        heapq.heappush(busy, (max(readers[name]), slot))
     return slots, size
