@@ -94,9 +94,10 @@ def scheduled_function(robot, scene, name):
                    % (_SHORT[best], _DETAIL[best], cost[best], others))
 
 
-def _as(lanes, name):
-    """The lane function under the plain name."""
-    return replace(lanes, name=name)
+def _as(form, name):
+    """Another form's function (a lane function, forward_dynamics_aba) under the plain name, counted
+    as the quantity it computes."""
+    return replace(form, name=name, computes=name)
 
 
 def trace_scene(robot, scene):

@@ -12,6 +12,7 @@ from numeric_check import DATA, chain, evaluate, random_state
 
 from rbdcgen.frontend.ir import load_ir
 from rbdcgen.frontend.scene import scene_from_dict
+from rbdcgen.graph.flops import generic_ops
 from rbdcgen.passes.schedule import scheduled_function
 
 FIXED = load_ir(os.path.join(DATA, "tiny_fixed.json"))
@@ -46,6 +47,9 @@ class ArticulatedBodyAlgorithm(unittest.TestCase):
         self.assertTrue(short.schedule.startswith("scalar tree"), short.schedule)
         long = scheduled_function(chain(30), scene("auto"), "forward_dynamics")
         self.assertTrue(long.schedule.startswith("articulated-body algorithm"), long.schedule)
+        # counted as forward dynamics: `rbdc flops` compares it with the runtime's (it raised on ABA)
+        self.assertEqual(long.computes, "forward_dynamics")
+        self.assertGreater(generic_ops(chain(30), scene("auto"), long.computes)["total"], 0)
 
     def test_equals_the_factor_on_a_floating_base(self):
         self.assert_same_acceleration(FLOATING)
