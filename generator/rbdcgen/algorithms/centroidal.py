@@ -11,74 +11,96 @@ from .kinematics import body_velocities, world_frames
 from .rnea import rnea, velocity_bias
 
 
-def point_masses(m):
-    """(mass, carrier body, point in carrier coordinates) of every body's COM and every rotor."""
+def specs(nv):
+    """name → (doc, input names, [(output name, rows, cols, doc)]) of the centroidal functions, for
+    their scalar and lane traces (passes/trace.py, passes/lane_functions.py)."""
+    return {
+        "center_of_mass_jacobian": (
+            "Centre-of-mass Jacobian J_c, ċ = J_c v, world frame.", ("q",),
+            [("J_c", 3, nv, "centre-of-mass Jacobian")]),
+        "centroidal_momentum_matrix": (
+            "Centroidal momentum matrix A_G (Orin, Goswami & Lee 2013): h_G = A_G v.", ("q",),
+            [("A_G", 6, nv, "rows: angular momentum about the CoM, then linear momentum, world axes")]),
+        "centroidal_bias": (
+            "Centroidal momentum drift Ȧ_G v: the rate of h_G at a = 0.", ("q", "v"),
+            [("Adot_v", 6, 1, "(k̇_G; l̇) at a = 0, world axes")]),
+    }
+
+
+def _rotor_masses(m, i):
+    """(mass, point in body i's coordinates) of the rotors body i carries (rotor j spins on λ(j))."""
     robot = m.robot
-    masses = []
-    for i in range(robot.nb):
-        body = robot.bodies[i]
-        masses.append((body.mass, i, body.com))
-        rotor = m.rotor(i) if i > 0 else None
-        if rotor is not None:
-            masses.append((robot.joints[i].actuator.rotor.mass, robot.parent[i],
-                           robot.joints[i].actuator.rotor.translation))
-    return [p for p in masses if p[0] != 0]
+    return [(robot.joints[j].actuator.rotor.mass, robot.joints[j].actuator.rotor.translation)
+            for j in robot.children[i] if m.rotor(j) is not None and robot.joints[j].actuator.rotor.mass]
 
 
-def _weighted_sum(vectors_and_masses):
-    total = sp.zeros(3)
-    for mass, x in vectors_and_masses:
-        total = sp.vadd(total, sp.vscale(ex.const(mass), x))
-    return total
+def _subtree_sums(m, own):
+    """Per body i, the sum of own(i) (a tuple of expressions) over its subtree ν(i): summed inward,
+    each body's sum joining its parent's through into_parent (the sum over the lanes where a lane
+    limb meets the trunk, views/limb_lanes.py)."""
+    robot = m.robot
+    sums = [own(i) for i in range(robot.nb)]
+    for i in range(robot.nb - 1, 0, -1):
+        j = robot.parent[i]
+        sums[j] = tuple(a + b for a, b in zip(sums[j], m.into_parent(i, sums[i])))
+    return sums
+
+
+def subtree_masses_and_moments(m, frames):
+    """Per body i, (m_ν(i), s_ν(i) = Σ m_k p_k): the mass and the first moment (world axes) of the
+    point masses its subtree carries, each body's m_i p_i + R_i h_i (h_i its first moment in body
+    axes) and its rotors' points."""
+    def own(i):
+        inertia = m.inertia(i)
+        R_i, p_i = frames[i]
+        mass = inertia.m
+        moment = sp.vadd(sp.vscale(mass, p_i), sp.matvec(R_i, inertia.h))
+        for rotor_mass, r in _rotor_masses(m, i):
+            mass = mass + ex.const(rotor_mass)
+            moment = sp.vadd(moment, sp.vscale(ex.const(rotor_mass), sp.vadd(p_i, sp.matvec(R_i, sp.vec(r)))))
+        return (mass,) + tuple(moment)
+    return [(s[0], s[1:]) for s in _subtree_sums(m, own)]
 
 
 def center_of_mass(m, frames=None):
-    """c = Σ m_k (p_i + R_i r_k) / m."""
+    """c = s_ν(0) / m: the first moment of the whole tree over its (constant) mass."""
     frames = frames or world_frames(m)
-    masses = point_masses(m)
     m.mark("centre of mass")
-    total = sum(p[0] for p in masses)
-    s = _weighted_sum([(mass, sp.vadd(frames[b][1], sp.matvec(frames[b][0], sp.vec(r)))) for mass, b, r in masses])
-    return sp.vscale(ex.const(1.0 / total), s)
+    total, moment = subtree_masses_and_moments(m, frames)[0]
+    return sp.vscale(ex.const(1.0) / total, moment)
 
 
 def center_of_mass_velocity(m):
-    """ċ = Σ m_k R_i (v_i + ω_i × r_k) / m."""
+    """ċ = Σ R_i (m_i v_i + ω_i × h_i) / m, rotors as points r: R_i m_r (v_i + ω_i × r)."""
     frames = world_frames(m)
     velocities = body_velocities(m)
-    masses = point_masses(m)
     m.mark("centre of mass velocity")
-    total = sum(p[0] for p in masses)
-    s = _weighted_sum([(mass, sp.matvec(frames[b][0], sp.vadd(sp.lin(velocities[b]),
-                                                              sp.cross(sp.ang(velocities[b]), sp.vec(r)))))
-                       for mass, b, r in masses])
-    return sp.vscale(ex.const(1.0 / total), s)
+
+    def own(i):
+        inertia = m.inertia(i)
+        w, u = sp.ang(velocities[i]), sp.lin(velocities[i])
+        mass, momentum = inertia.m, sp.vadd(sp.vscale(inertia.m, u), sp.cross(w, inertia.h))
+        for rotor_mass, r in _rotor_masses(m, i):
+            mass = mass + ex.const(rotor_mass)
+            momentum = sp.vadd(momentum, sp.vscale(ex.const(rotor_mass), sp.vadd(u, sp.cross(w, sp.vec(r)))))
+        return (mass,) + tuple(sp.matvec(frames[i][0], momentum))
+    total = _subtree_sums(m, own)[0]
+    return sp.vscale(ex.const(1.0) / total[0], total[1:])
 
 
 def center_of_mass_jacobian(m):
-    """J_c (3 × nv) by subtrees: with s_j = Σ m_k p_k and m_j = Σ m_k over the point masses carried by
-    ν(j), column j is a_j × (s_j − m_j p_j)/m (revolute) or a_j m_j/m (prismatic), a_j the world
-    axis; a floating base's ω_B columns are R e_c × (c − p_0), its v_B columns R e_c."""
+    """J_c (3 × nv) by subtrees: with s_j and m_j the first moment and mass of ν(j)'s point masses,
+    column j is a_j × (s_j − m_j p_j)/m (revolute) or a_j m_j/m (prismatic), a_j the world axis; a
+    floating base's ω_B columns are R e_c × (c − p_0), its v_B columns R e_c."""
     robot = m.robot
     frames = world_frames(m)
-    masses = point_masses(m)
-    total = sum(p[0] for p in masses)
-    inv = ex.const(1.0 / total)
-    sub_mass = [0.0] * robot.nb
-    sub_moment = [sp.zeros(3) for _ in range(robot.nb)]
     m.mark("centre of mass Jacobian, subtree moments")
-    for mass, b, r in masses:
-        sub_mass[b] += mass
-        point = sp.vadd(frames[b][1], sp.matvec(frames[b][0], sp.vec(r)))
-        sub_moment[b] = sp.vadd(sub_moment[b], sp.vscale(ex.const(mass), point))
-    for i in range(robot.nb - 1, 0, -1):
-        j = robot.parent[i]
-        sub_mass[j] += sub_mass[i]
-        sub_moment[j] = sp.vadd(sub_moment[j], sub_moment[i])
+    subtree = subtree_masses_and_moments(m, frames)
+    inv = ex.const(1.0) / subtree[0][0]
     cols = [sp.zeros(3) for _ in range(robot.nv)]
     if robot.floating_base:
         R, p0 = frames[0]
-        lever = sp.vsub(sp.vscale(inv, sub_moment[0]), p0)
+        lever = sp.vsub(sp.vscale(inv, subtree[0][1]), p0)
         Rt = sp.transpose(R)
         for c in range(3):
             cols[c] = sp.cross(Rt[c], lever)
@@ -88,11 +110,11 @@ def center_of_mass_jacobian(m):
         R_j, p_j = frames[j]
         axis = sp.matvec(R_j, sp.vec(m.axis(j)))
         col = m.joint(j).v_index
+        mass, moment = subtree[j]
         if m.joint(j).type == "revolute":
-            moment = sp.vsub(sub_moment[j], sp.vscale(ex.const(sub_mass[j]), p_j))
-            cols[col] = sp.vscale(inv, sp.cross(axis, moment))
+            cols[col] = sp.vscale(inv, sp.cross(axis, sp.vsub(moment, sp.vscale(mass, p_j))))
         else:
-            cols[col] = sp.vscale(ex.const(sub_mass[j] / total), axis)
+            cols[col] = sp.vscale(mass * inv, axis)
     return [tuple(col[r] for col in cols) for r in range(3)]
 
 

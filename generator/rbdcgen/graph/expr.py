@@ -331,8 +331,11 @@ def sqrt(x):
 
 
 def lane_sum(x):
-    """The scalar sum of the lanes of x (4·x for a value the lanes share)."""
-    return _node("lane_sum", x) if x.lane else mul(const(float(LANES)), x)
+    """The scalar sum of the lanes of x (4·x for a value the lanes share; folded for a constant)."""
+    if not x.lane:
+        return mul(const(float(LANES)), x)
+    values = constant_lanes(x)
+    return _node("lane_sum", x) if values is None else const(sum(values))
 
 
 def lane_get(x, lane):

@@ -4,7 +4,7 @@ outputs as their scalar namesakes, emitted only when a scene lists them (scene.L
 from __future__ import annotations
 
 from . import differentiate, lane_derivatives
-from ..algorithms import crba, forward_dynamics, osc, rnea
+from ..algorithms import centroidal, crba, forward_dynamics, osc, rnea
 from ..views.limb_lanes import LaneModel
 from ..views.limbs import isomorphic_limbs
 
@@ -15,11 +15,16 @@ DERIVATIVES = {"inverse_dynamics_derivatives": differentiate.inverse_dynamics_de
                "bias_derivatives": differentiate.bias_derivatives,
                "gravity_derivatives": differentiate.gravity_derivatives,
                "forward_dynamics_derivatives": lane_derivatives.forward_dynamics_derivatives}
+# centroidal function → its trace on the lane model, outputs in the full robot's columns
+CENTROIDAL = {
+    "center_of_mass_jacobian": lambda m: {"J_c": _full_columns(m, centroidal.center_of_mass_jacobian(m))},
+    "centroidal_momentum_matrix": lambda m: {"A_G": _full_columns(m, centroidal.centroidal_momentum_matrix(m))},
+    "centroidal_bias": lambda m: {"Adot_v": tuple(centroidal.centroidal_bias(m))}}
 # lane function → the function it equals
 SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
           "mass_matrix_lanes": "mass_matrix", "mass_matrix_lower_lanes": "mass_matrix_lower",
           "forward_dynamics_lanes": "forward_dynamics", "osc_open_chain_lanes": "osc_open_chain",
-          **{name + "_lanes": name for name in DERIVATIVES}}
+          **{name + "_lanes": name for name in DERIVATIVES}, **{name + "_lanes": name for name in CENTROIDAL}}
 # function → its lane function
 LANE_NAME = {scalar: lanes for lanes, scalar in SCALAR.items()}
 # lane functions with the foot forces as lane inputs
@@ -38,8 +43,14 @@ def spec(robot, nf):
     in_lanes = {name + "_lanes": (scalar[name][0] + " The four isomorphic limbs in SIMD lanes, the "
                                   "trunk scalar; equals %s." % name,) + scalar[name][1:3] + (trace,)
                 for name, trace in DERIVATIVES.items()}
+    centroidal_specs = centroidal.specs(nv)
+    centroidal_in_lanes = {
+        name + "_lanes": (centroidal_specs[name][0] + " The four isomorphic limbs in SIMD lanes, the trunk "
+                          "scalar; equals %s." % name,) + centroidal_specs[name][1:] + (trace,)
+        for name, trace in CENTROIDAL.items()}
     return {
         **in_lanes,
+        **centroidal_in_lanes,
         "bias_lanes": (
             "Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes "
             "evaluated together in SIMD lanes, the trunk scalar; equals bias.",
@@ -86,6 +97,14 @@ def _osc_outputs(m, result):
     its limb joint columns scattered to the full robot's joints."""
     Lam, JbarT, b = result
     return {"Lambda": _columns(Lam), "JbarT": _columns(m.scatter_joint_columns(JbarT)), "b": tuple(b)}
+
+
+def _full_columns(m, rows):
+    """Column-major entries of a matrix (rows) over the reduced tree's dofs as the full robot's: the
+    root columns as they are, the lane limb's joint columns scattered to every limb."""
+    root = m.robot.root_dofs
+    joints = m.scatter_joint_columns(tuple(tuple(row[root:]) for row in rows))
+    return _columns([tuple(row[:root]) + joints[r] for r, row in enumerate(rows)])
 
 
 def _columns(rows):

@@ -218,6 +218,7 @@ def _whole_body_spec(robot, nf, n_frames):
     """The whole-body controller's functions (scene.WHOLE_BODY; issue 21), as _spec; n_frames is the
     number of frames the scene lists (docs/generated_api.md, "Frames and centroidal quantities")."""
     nv = robot.nv
+    centroidal_specs = centroidal.specs(nv)
 
     def placements(m):
         rotations, positions = frames.frame_placements(m)
@@ -261,18 +262,12 @@ def _whole_body_spec(robot, nf, n_frames):
             [("com", 3, 1, "centre of mass"), ("com_velocity", 3, 1, "its velocity")],
             lambda m: {"com": tuple(centroidal.center_of_mass(m)),
                        "com_velocity": tuple(centroidal.center_of_mass_velocity(m))}),
-        "center_of_mass_jacobian": (
-            "Centre-of-mass Jacobian J_c, ċ = J_c v, world frame.", ("q",),
-            [("J_c", 3, nv, "centre-of-mass Jacobian")],
-            lambda m: {"J_c": _matrix(centroidal.center_of_mass_jacobian(m), nv)}),
-        "centroidal_momentum_matrix": (
-            "Centroidal momentum matrix A_G (Orin, Goswami & Lee 2013): h_G = A_G v.", ("q",),
-            [("A_G", 6, nv, "rows: angular momentum about the CoM, then linear momentum, world axes")],
-            lambda m: {"A_G": _matrix(centroidal.centroidal_momentum_matrix(m), nv)}),
-        "centroidal_bias": (
-            "Centroidal momentum drift Ȧ_G v: the rate of h_G at a = 0.", ("q", "v"),
-            [("Adot_v", 6, 1, "(k̇_G; l̇) at a = 0, world axes")],
-            lambda m: {"Adot_v": tuple(centroidal.centroidal_bias(m))}),
+        "center_of_mass_jacobian": centroidal_specs["center_of_mass_jacobian"] + (
+            lambda m: {"J_c": _matrix(centroidal.center_of_mass_jacobian(m), nv)},),
+        "centroidal_momentum_matrix": centroidal_specs["centroidal_momentum_matrix"] + (
+            lambda m: {"A_G": _matrix(centroidal.centroidal_momentum_matrix(m), nv)},),
+        "centroidal_bias": centroidal_specs["centroidal_bias"] + (
+            lambda m: {"Adot_v": tuple(centroidal.centroidal_bias(m))},),
         "mass_matrix_inverse": (
             "M⁻¹ from the sparse factor M = Lᵀ D L (CRBA, paper 000 Alg. 5).", ("q",),
             [("M_inv", nv, nv, "inverse mass matrix, full symmetric")],

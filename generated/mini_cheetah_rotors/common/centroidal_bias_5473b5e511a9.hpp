@@ -11,7 +11,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::mini_cheetah_rotors::common::centroidal_bias_6d6b9ac9f894 {
+namespace rbdc_gen::mini_cheetah_rotors::common::centroidal_bias_5473b5e511a9 {
 
 /// Centroidal momentum drift Ȧ_G v: the rate of h_G at a = 0.
 ///
@@ -159,42 +159,42 @@ RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, S
   const Scalar t96 = t26 + t95;
   const Scalar t97 = Scalar(0.125) * t19;
   const Scalar t98 = t29 + t97;
-  const Scalar t99 = ((Scalar(3.3) * q[0]) + (Scalar(0.54) * (t31 + (Scalar(0.036) * t34)))) + (Scalar(0.055) * (q[0] + t94));
-  const Scalar t100 = ((Scalar(3.3) * q[1]) + (Scalar(0.54) * (t32 + (Scalar(0.036) * t36)))) + (Scalar(0.055) * (q[1] + t96));
-  const Scalar t101 = ((Scalar(3.3) * q[2]) + (Scalar(0.54) * (t33 + (Scalar(0.036) * t38)))) + (Scalar(0.055) * (q[2] + t98));
-  const Scalar t102 = Scalar(0.064) * ((t40 - (Scalar(0.209) * t45)) - (Scalar(0.061) * ((((cos_LF_hip_joint * t43) - (t35 * sin_LF_hip_joint)) * sin_LF_knee_joint) + (t45 * cos_LF_knee_joint))));
-  const Scalar t103 = Scalar(0.064) * ((t41 - (Scalar(0.209) * t46)) - (Scalar(0.061) * ((t46 * cos_LF_knee_joint) - (((t16 * cos_LF_hip_joint) + (t37 * sin_LF_hip_joint)) * sin_LF_knee_joint))));
-  const Scalar t104 = Scalar(0.064) * ((t42 - (Scalar(0.209) * t47)) - (Scalar(0.061) * ((((cos_LF_hip_joint * t44) - (t39 * sin_LF_hip_joint)) * sin_LF_knee_joint) + (t47 * cos_LF_knee_joint))));
-  const Scalar t105 = ((t99 + (Scalar(0.634) * (t40 - ((Scalar(0.016) * t34) + (Scalar(0.02) * t45))))) + (Scalar(0.055) * (t31 + (Scalar(0.04) * t34)))) + t102;
-  const Scalar t106 = ((t100 + (Scalar(0.634) * (t41 - ((Scalar(0.016) * t36) + (Scalar(0.02) * t46))))) + (Scalar(0.055) * (t32 + (Scalar(0.04) * t36)))) + t103;
-  const Scalar t107 = ((t101 + (Scalar(0.634) * (t42 - ((Scalar(0.016) * t38) + (Scalar(0.02) * t47))))) + (Scalar(0.055) * (t33 + (Scalar(0.04) * t38)))) + t104;
-  const Scalar t108 = ((t105 + (Scalar(0.055) * t40)) + (Scalar(0.54) * (t48 - (Scalar(0.036) * t51)))) + (Scalar(0.055) * (q[0] + (t93 - t23)));
-  const Scalar t109 = ((t106 + (Scalar(0.055) * t41)) + (Scalar(0.54) * (t49 - (Scalar(0.036) * t53)))) + (Scalar(0.055) * (q[1] + (t95 - t26)));
-  const Scalar t110 = ((t107 + (Scalar(0.055) * t42)) + (Scalar(0.54) * (t50 - (Scalar(0.036) * t55)))) + (Scalar(0.055) * (q[2] + (t97 - t29)));
-  const Scalar t111 = Scalar(0.064) * ((t57 - (Scalar(0.209) * t60)) - (Scalar(0.061) * ((((t43 * cos_RF_hip_joint) - (t52 * sin_RF_hip_joint)) * sin_RF_knee_joint) + (t60 * cos_RF_knee_joint))));
-  const Scalar t112 = Scalar(0.064) * ((t58 - (Scalar(0.209) * t61)) - (Scalar(0.061) * ((t61 * cos_RF_knee_joint) - (((t16 * cos_RF_hip_joint) + (t54 * sin_RF_hip_joint)) * sin_RF_knee_joint))));
-  const Scalar t113 = Scalar(0.064) * ((t59 - (Scalar(0.209) * t62)) - (Scalar(0.061) * ((((t44 * cos_RF_hip_joint) - (t56 * sin_RF_hip_joint)) * sin_RF_knee_joint) + (t62 * cos_RF_knee_joint))));
-  const Scalar t114 = ((t108 + (Scalar(0.634) * (t57 + ((Scalar(0.016) * t51) - (Scalar(0.02) * t60))))) + (Scalar(0.055) * (t48 - (Scalar(0.04) * t51)))) + t111;
-  const Scalar t115 = ((t109 + (Scalar(0.634) * (t58 + ((Scalar(0.016) * t53) - (Scalar(0.02) * t61))))) + (Scalar(0.055) * (t49 - (Scalar(0.04) * t53)))) + t112;
-  const Scalar t116 = ((t110 + (Scalar(0.634) * (t59 + ((Scalar(0.016) * t55) - (Scalar(0.02) * t62))))) + (Scalar(0.055) * (t50 - (Scalar(0.04) * t55)))) + t113;
-  const Scalar t117 = ((t114 + (Scalar(0.055) * t57)) + (Scalar(0.54) * (t63 + (Scalar(0.036) * t66)))) + (Scalar(0.055) * (q[0] + (t23 - t93)));
-  const Scalar t118 = ((t115 + (Scalar(0.055) * t58)) + (Scalar(0.54) * (t64 + (Scalar(0.036) * t68)))) + (Scalar(0.055) * (q[1] + (t26 - t95)));
-  const Scalar t119 = ((t116 + (Scalar(0.055) * t59)) + (Scalar(0.54) * (t65 + (Scalar(0.036) * t70)))) + (Scalar(0.055) * (q[2] + (t29 - t97)));
-  const Scalar t120 = Scalar(0.064) * ((t72 - (Scalar(0.209) * t75)) - (Scalar(0.061) * ((((t43 * cos_LH_hip_joint) - (t67 * sin_LH_hip_joint)) * sin_LH_knee_joint) + (t75 * cos_LH_knee_joint))));
-  const Scalar t121 = Scalar(0.064) * ((t73 - (Scalar(0.209) * t76)) - (Scalar(0.061) * ((t76 * cos_LH_knee_joint) - (((t16 * cos_LH_hip_joint) + (t69 * sin_LH_hip_joint)) * sin_LH_knee_joint))));
-  const Scalar t122 = Scalar(0.064) * ((t74 - (Scalar(0.209) * t77)) - (Scalar(0.061) * ((((t44 * cos_LH_hip_joint) - (t71 * sin_LH_hip_joint)) * sin_LH_knee_joint) + (t77 * cos_LH_knee_joint))));
-  const Scalar t123 = ((t117 + (Scalar(0.634) * (t72 - ((Scalar(0.016) * t66) + (Scalar(0.02) * t75))))) + (Scalar(0.055) * (t63 + (Scalar(0.04) * t66)))) + t120;
-  const Scalar t124 = ((t118 + (Scalar(0.634) * (t73 - ((Scalar(0.016) * t68) + (Scalar(0.02) * t76))))) + (Scalar(0.055) * (t64 + (Scalar(0.04) * t68)))) + t121;
-  const Scalar t125 = ((t119 + (Scalar(0.634) * (t74 - ((Scalar(0.016) * t70) + (Scalar(0.02) * t77))))) + (Scalar(0.055) * (t65 + (Scalar(0.04) * t70)))) + t122;
-  const Scalar t126 = ((t123 + (Scalar(0.055) * t72)) + (Scalar(0.54) * (t78 - (Scalar(0.036) * t81)))) + (Scalar(0.055) * (q[0] - t94));
-  const Scalar t127 = ((t124 + (Scalar(0.055) * t73)) + (Scalar(0.54) * (t79 - (Scalar(0.036) * t83)))) + (Scalar(0.055) * (q[1] - t96));
-  const Scalar t128 = ((t125 + (Scalar(0.055) * t74)) + (Scalar(0.54) * (t80 - (Scalar(0.036) * t85)))) + (Scalar(0.055) * (q[2] - t98));
-  const Scalar t129 = Scalar(0.064) * ((t87 - (Scalar(0.209) * t90)) - (Scalar(0.061) * ((((t43 * cos_RH_hip_joint) - (t82 * sin_RH_hip_joint)) * sin_RH_knee_joint) + (t90 * cos_RH_knee_joint))));
-  const Scalar t130 = Scalar(0.064) * ((t88 - (Scalar(0.209) * t91)) - (Scalar(0.061) * ((t91 * cos_RH_knee_joint) - (((t16 * cos_RH_hip_joint) + (t84 * sin_RH_hip_joint)) * sin_RH_knee_joint))));
-  const Scalar t131 = Scalar(0.064) * ((t89 - (Scalar(0.209) * t92)) - (Scalar(0.061) * ((((t44 * cos_RH_hip_joint) - (t86 * sin_RH_hip_joint)) * sin_RH_knee_joint) + (t92 * cos_RH_knee_joint))));
-  const Scalar t132 = ((t126 + (Scalar(0.634) * (t87 + ((Scalar(0.016) * t81) - (Scalar(0.02) * t90))))) + (Scalar(0.055) * (t78 - (Scalar(0.04) * t81)))) + t129;
-  const Scalar t133 = ((t127 + (Scalar(0.634) * (t88 + ((Scalar(0.016) * t83) - (Scalar(0.02) * t91))))) + (Scalar(0.055) * (t79 - (Scalar(0.04) * t83)))) + t130;
-  const Scalar t134 = ((t128 + (Scalar(0.634) * (t89 + ((Scalar(0.016) * t85) - (Scalar(0.02) * t92))))) + (Scalar(0.055) * (t80 - (Scalar(0.04) * t85)))) + t131;
+  const Scalar t99 = (((Scalar(3.3) * q[0]) + (Scalar(0.055) * (q[0] + t94))) + (Scalar(0.055) * (q[0] + (t93 - t23)))) + (Scalar(0.055) * (q[0] + (t23 - t93)));
+  const Scalar t100 = (((Scalar(3.3) * q[1]) + (Scalar(0.055) * (q[1] + t96))) + (Scalar(0.055) * (q[1] + (t95 - t26)))) + (Scalar(0.055) * (q[1] + (t26 - t95)));
+  const Scalar t101 = (((Scalar(3.3) * q[2]) + (Scalar(0.055) * (q[2] + t98))) + (Scalar(0.055) * (q[2] + (t97 - t29)))) + (Scalar(0.055) * (q[2] + (t29 - t97)));
+  const Scalar t102 = (Scalar(0.064) * (t40 - (Scalar(0.209) * t45))) - (Scalar(0.003904) * ((((cos_LF_hip_joint * t43) - (t35 * sin_LF_hip_joint)) * sin_LF_knee_joint) + (t45 * cos_LF_knee_joint)));
+  const Scalar t103 = (Scalar(0.064) * (t41 - (Scalar(0.209) * t46))) - (Scalar(0.003904) * ((t46 * cos_LF_knee_joint) - (((t16 * cos_LF_hip_joint) + (t37 * sin_LF_hip_joint)) * sin_LF_knee_joint)));
+  const Scalar t104 = (Scalar(0.064) * (t42 - (Scalar(0.209) * t47))) - (Scalar(0.003904) * ((((cos_LF_hip_joint * t44) - (t39 * sin_LF_hip_joint)) * sin_LF_knee_joint) + (t47 * cos_LF_knee_joint)));
+  const Scalar t105 = (Scalar(0.064) * (t57 - (Scalar(0.209) * t60))) - (Scalar(0.003904) * ((((t43 * cos_RF_hip_joint) - (t52 * sin_RF_hip_joint)) * sin_RF_knee_joint) + (t60 * cos_RF_knee_joint)));
+  const Scalar t106 = (Scalar(0.064) * (t58 - (Scalar(0.209) * t61))) - (Scalar(0.003904) * ((t61 * cos_RF_knee_joint) - (((t16 * cos_RF_hip_joint) + (t54 * sin_RF_hip_joint)) * sin_RF_knee_joint)));
+  const Scalar t107 = (Scalar(0.064) * (t59 - (Scalar(0.209) * t62))) - (Scalar(0.003904) * ((((t44 * cos_RF_hip_joint) - (t56 * sin_RF_hip_joint)) * sin_RF_knee_joint) + (t62 * cos_RF_knee_joint)));
+  const Scalar t108 = (Scalar(0.064) * (t72 - (Scalar(0.209) * t75))) - (Scalar(0.003904) * ((((t43 * cos_LH_hip_joint) - (t67 * sin_LH_hip_joint)) * sin_LH_knee_joint) + (t75 * cos_LH_knee_joint)));
+  const Scalar t109 = (Scalar(0.064) * (t73 - (Scalar(0.209) * t76))) - (Scalar(0.003904) * ((t76 * cos_LH_knee_joint) - (((t16 * cos_LH_hip_joint) + (t69 * sin_LH_hip_joint)) * sin_LH_knee_joint)));
+  const Scalar t110 = (Scalar(0.064) * (t74 - (Scalar(0.209) * t77))) - (Scalar(0.003904) * ((((t44 * cos_LH_hip_joint) - (t71 * sin_LH_hip_joint)) * sin_LH_knee_joint) + (t77 * cos_LH_knee_joint)));
+  const Scalar t111 = (Scalar(0.064) * (t87 - (Scalar(0.209) * t90))) - (Scalar(0.003904) * ((((t43 * cos_RH_hip_joint) - (t82 * sin_RH_hip_joint)) * sin_RH_knee_joint) + (t90 * cos_RH_knee_joint)));
+  const Scalar t112 = (Scalar(0.064) * (t88 - (Scalar(0.209) * t91))) - (Scalar(0.003904) * ((t91 * cos_RH_knee_joint) - (((t16 * cos_RH_hip_joint) + (t84 * sin_RH_hip_joint)) * sin_RH_knee_joint)));
+  const Scalar t113 = (Scalar(0.064) * (t89 - (Scalar(0.209) * t92))) - (Scalar(0.003904) * ((((t44 * cos_RH_hip_joint) - (t86 * sin_RH_hip_joint)) * sin_RH_knee_joint) + (t92 * cos_RH_knee_joint)));
+  const Scalar t114 = (((Scalar(0.634) * t87) + ((Scalar(0.010144) * t81) - (Scalar(0.01268) * t90))) + (Scalar(0.055) * t87)) + t111;
+  const Scalar t115 = (((Scalar(0.634) * t88) + ((Scalar(0.010144) * t83) - (Scalar(0.01268) * t91))) + (Scalar(0.055) * t88)) + t112;
+  const Scalar t116 = (((Scalar(0.634) * t89) + ((Scalar(0.010144) * t85) - (Scalar(0.01268) * t92))) + (Scalar(0.055) * t89)) + t113;
+  const Scalar t117 = (t99 + (Scalar(0.055) * (q[0] - t94))) + ((((Scalar(0.54) * t78) - (Scalar(0.01944) * t81)) + (Scalar(0.055) * (t78 - (Scalar(0.04) * t81)))) + t114);
+  const Scalar t118 = (t100 + (Scalar(0.055) * (q[1] - t96))) + ((((Scalar(0.54) * t79) - (Scalar(0.01944) * t83)) + (Scalar(0.055) * (t79 - (Scalar(0.04) * t83)))) + t115);
+  const Scalar t119 = (t101 + (Scalar(0.055) * (q[2] - t98))) + ((((Scalar(0.54) * t80) - (Scalar(0.01944) * t85)) + (Scalar(0.055) * (t80 - (Scalar(0.04) * t85)))) + t116);
+  const Scalar t120 = (((Scalar(0.634) * t72) - ((Scalar(0.010144) * t66) + (Scalar(0.01268) * t75))) + (Scalar(0.055) * t72)) + t108;
+  const Scalar t121 = (((Scalar(0.634) * t73) - ((Scalar(0.010144) * t68) + (Scalar(0.01268) * t76))) + (Scalar(0.055) * t73)) + t109;
+  const Scalar t122 = (((Scalar(0.634) * t74) - ((Scalar(0.010144) * t70) + (Scalar(0.01268) * t77))) + (Scalar(0.055) * t74)) + t110;
+  const Scalar t123 = t117 + ((((Scalar(0.54) * t63) + (Scalar(0.01944) * t66)) + (Scalar(0.055) * (t63 + (Scalar(0.04) * t66)))) + t120);
+  const Scalar t124 = t118 + ((((Scalar(0.54) * t64) + (Scalar(0.01944) * t68)) + (Scalar(0.055) * (t64 + (Scalar(0.04) * t68)))) + t121);
+  const Scalar t125 = t119 + ((((Scalar(0.54) * t65) + (Scalar(0.01944) * t70)) + (Scalar(0.055) * (t65 + (Scalar(0.04) * t70)))) + t122);
+  const Scalar t126 = (((Scalar(0.634) * t57) + ((Scalar(0.010144) * t51) - (Scalar(0.01268) * t60))) + (Scalar(0.055) * t57)) + t105;
+  const Scalar t127 = (((Scalar(0.634) * t58) + ((Scalar(0.010144) * t53) - (Scalar(0.01268) * t61))) + (Scalar(0.055) * t58)) + t106;
+  const Scalar t128 = (((Scalar(0.634) * t59) + ((Scalar(0.010144) * t55) - (Scalar(0.01268) * t62))) + (Scalar(0.055) * t59)) + t107;
+  const Scalar t129 = t123 + ((((Scalar(0.54) * t48) - (Scalar(0.01944) * t51)) + (Scalar(0.055) * (t48 - (Scalar(0.04) * t51)))) + t126);
+  const Scalar t130 = t124 + ((((Scalar(0.54) * t49) - (Scalar(0.01944) * t53)) + (Scalar(0.055) * (t49 - (Scalar(0.04) * t53)))) + t127);
+  const Scalar t131 = t125 + ((((Scalar(0.54) * t50) - (Scalar(0.01944) * t55)) + (Scalar(0.055) * (t50 - (Scalar(0.04) * t55)))) + t128);
+  const Scalar t132 = (((Scalar(0.634) * t40) - ((Scalar(0.010144) * t34) + (Scalar(0.01268) * t45))) + (Scalar(0.055) * t40)) + t102;
+  const Scalar t133 = (((Scalar(0.634) * t41) - ((Scalar(0.010144) * t36) + (Scalar(0.01268) * t46))) + (Scalar(0.055) * t41)) + t103;
+  const Scalar t134 = (((Scalar(0.634) * t42) - ((Scalar(0.010144) * t38) + (Scalar(0.01268) * t47))) + (Scalar(0.055) * t42)) + t104;
   const Scalar t135 = (v[2] * v[4]) - (v[1] * v[5]);
   const Scalar t136 = (v[0] * v[5]) - (v[2] * v[3]);
   const Scalar t137 = (v[1] * v[3]) - (v[0] * v[4]);
@@ -813,13 +813,13 @@ RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, S
   Adot_v[4] = t686;
   const Scalar t687 = ((t19 * t682) + (t20 * t683)) + (t21 * t684);
   Adot_v[5] = t687;
-  const Scalar t688 = q[0] - (Scalar(0.11220825852782766) * (t132 + (Scalar(0.055) * t87)));
-  const Scalar t689 = q[1] - (Scalar(0.11220825852782766) * (t133 + (Scalar(0.055) * t88)));
+  const Scalar t688 = q[0] - (Scalar(0.11220825852782762) * (t129 + ((((Scalar(0.54) * t31) + (Scalar(0.01944) * t34)) + (Scalar(0.055) * (t31 + (Scalar(0.04) * t34)))) + t132)));
+  const Scalar t689 = q[1] - (Scalar(0.11220825852782762) * (t130 + ((((Scalar(0.54) * t32) + (Scalar(0.01944) * t36)) + (Scalar(0.055) * (t32 + (Scalar(0.04) * t36)))) + t133)));
   Adot_v[2] = (((t19 * t679) + (t20 * t680)) + (t21 * t681)) + ((t686 * t688) - (t685 * t689));
-  const Scalar t690 = q[2] - (Scalar(0.11220825852782766) * (t134 + (Scalar(0.055) * t89)));
+  const Scalar t690 = q[2] - (Scalar(0.11220825852782762) * (t131 + ((((Scalar(0.54) * t33) + (Scalar(0.01944) * t38)) + (Scalar(0.055) * (t33 + (Scalar(0.04) * t38)))) + t134)));
   // outputs
   Adot_v[0] = (((t13 * t679) + (t14 * t680)) + (t15 * t681)) + ((t687 * t689) - (t686 * t690));
   Adot_v[1] = (((t16 * t679) + (t17 * t680)) + (t18 * t681)) + ((t685 * t690) - (t687 * t688));
 }
 
-}  // namespace rbdc_gen::mini_cheetah_rotors::common::centroidal_bias_6d6b9ac9f894
+}  // namespace rbdc_gen::mini_cheetah_rotors::common::centroidal_bias_5473b5e511a9
