@@ -15,6 +15,9 @@ def specs(nv):
     """name → (doc, input names, [(output name, rows, cols, doc)]) of the centroidal functions, for
     their scalar and lane traces (passes/trace.py, passes/lane_functions.py)."""
     return {
+        "center_of_mass": (
+            "Centre of mass and its velocity, world frame (bodies and rotors).", ("q", "v"),
+            [("com", 3, 1, "centre of mass"), ("com_velocity", 3, 1, "its velocity")]),
         "center_of_mass_jacobian": (
             "Centre-of-mass Jacobian J_c, ċ = J_c v, world frame.", ("q",),
             [("J_c", 3, nv, "centre-of-mass Jacobian")]),
@@ -86,6 +89,11 @@ def center_of_mass_velocity(m):
         return (mass,) + tuple(sp.matvec(frames[i][0], momentum))
     total = _subtree_sums(m, own)[0]
     return sp.vscale(ex.const(1.0) / total[0], total[1:])
+
+
+def center_of_mass_outputs(m):
+    """center_of_mass's outputs, for its scalar and its lane trace."""
+    return {"com": tuple(center_of_mass(m)), "com_velocity": tuple(center_of_mass_velocity(m))}
 
 
 def center_of_mass_jacobian(m):

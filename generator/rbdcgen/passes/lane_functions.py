@@ -17,6 +17,7 @@ DERIVATIVES = {"inverse_dynamics_derivatives": differentiate.inverse_dynamics_de
                "forward_dynamics_derivatives": lane_derivatives.forward_dynamics_derivatives}
 # centroidal function → its trace on the lane model, outputs in the full robot's columns
 CENTROIDAL = {
+    "center_of_mass": centroidal.center_of_mass_outputs,
     "center_of_mass_jacobian": lambda m: {"J_c": _full_columns(m, centroidal.center_of_mass_jacobian(m))},
     "centroidal_momentum_matrix": lambda m: {"A_G": _full_columns(m, centroidal.centroidal_momentum_matrix(m))},
     "centroidal_bias": lambda m: {"Adot_v": tuple(centroidal.centroidal_bias(m))}}

@@ -257,11 +257,7 @@ def _whole_body_spec(robot, nf, n_frames):
             ("q", "v"),
             [("Jdot_v", 3, nf, "one column per foot, world frame")],
             lambda m: {"Jdot_v": _columns(frames.feet_bias_accelerations(m))}),
-        "center_of_mass": (
-            "Centre of mass and its velocity, world frame (bodies and rotors).", ("q", "v"),
-            [("com", 3, 1, "centre of mass"), ("com_velocity", 3, 1, "its velocity")],
-            lambda m: {"com": tuple(centroidal.center_of_mass(m)),
-                       "com_velocity": tuple(centroidal.center_of_mass_velocity(m))}),
+        "center_of_mass": centroidal_specs["center_of_mass"] + (centroidal.center_of_mass_outputs,),
         "center_of_mass_jacobian": centroidal_specs["center_of_mass_jacobian"] + (
             lambda m: {"J_c": _matrix(centroidal.center_of_mass_jacobian(m), nv)},),
         "centroidal_momentum_matrix": centroidal_specs["centroidal_momentum_matrix"] + (
