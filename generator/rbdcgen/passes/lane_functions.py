@@ -41,17 +41,9 @@ def spec(robot, nf):
     """trace.py's function table for the lane functions (same shape as trace._spec)."""
     nv = robot.nv
     scalar = differentiate.spec(robot, nf, 0)  # the contact functions have no lane version
-    in_lanes = {name + "_lanes": (scalar[name][0] + " The four isomorphic limbs in SIMD lanes, the "
-                                  "trunk scalar; equals %s." % name,) + scalar[name][1:3] + (trace,)
-                for name, trace in DERIVATIVES.items()}
-    centroidal_specs = centroidal.specs(nv)
-    centroidal_in_lanes = {
-        name + "_lanes": (centroidal_specs[name][0] + " The four isomorphic limbs in SIMD lanes, the trunk "
-                          "scalar; equals %s." % name,) + centroidal_specs[name][1:] + (trace,)
-        for name, trace in CENTROIDAL.items()}
     return {
-        **in_lanes,
-        **centroidal_in_lanes,
+        **_in_lanes(scalar, DERIVATIVES),
+        **_in_lanes(centroidal.specs(nv), CENTROIDAL),
         "bias_lanes": (
             "Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes "
             "evaluated together in SIMD lanes, the trunk scalar; equals bias.",
@@ -91,6 +83,14 @@ def spec(robot, nf):
             osc.output_specs(robot.n_joints),
             lambda m: _osc_outputs(m, osc.osc_open_chain(m))),
     }
+
+
+def _in_lanes(specs, traces):
+    """The lane function of each scalar function in `traces` (name → its lane trace): its scalar
+    namesake's doc, inputs and outputs (`specs`: name → (doc, inputs, outputs, …))."""
+    return {name + "_lanes": (specs[name][0] + " The four isomorphic limbs in SIMD lanes, the trunk "
+                              "scalar; equals %s." % name,) + tuple(specs[name][1:3]) + (trace,)
+            for name, trace in traces.items()}
 
 
 def _osc_outputs(m, result):

@@ -2,8 +2,9 @@
 default"): the scalar tree, the robot's isomorphic limbs in SIMD lanes, (forward- and
 contact-dynamics derivatives) a looped solve with SIMD across the right-hand sides
 (looped_solve.py), (forward dynamics) the articulated-body algorithm (algorithms/aba.py), or
-(mass_matrix_factor) the factorisation as a loop (looped_factor.py). The quantity is the same; only how it is evaluated changes, so the function
-keeps its plain name and its doc gains one line that says the choice and its numbers.
+(mass_matrix_factor) the factorisation as a loop (looped_factor.py). The quantity is the same;
+only how it is evaluated changes, so the function keeps its plain name and its doc gains one line
+that says the choice and its numbers.
 
 The cost is the arithmetic instructions the body issues: every operation node once, a lane
 operation being one vector instruction for all limbs, the sum over the lanes two (a horizontal
