@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_b1b126f6e37b.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_a1b0c09d924e.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_b1b126f6e37b.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_a1b0c09d924e.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -29,10 +29,10 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param dlambda_dtau out 12x12: ∂λ/∂τ
 ///
 /// operations    mul    add  div  sqrt  trig  neg   total
-///             65589  62852   26     0    24  108  128599
-/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 51451 arithmetic
-///   instructions, scalar tree 100266
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_b1b126f6e37b::contact_dynamics_derivatives;
+///             65809  63072   26     0    24  117  129048
+/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 51900 arithmetic
+///   instructions, scalar tree 100706
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_a1b0c09d924e::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // impulse_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose impulse_dynamics is the same code:
-//   mini_cheetah/common/impulse_dynamics_dc94105a0d3c.hpp
+//   mini_cheetah/common/impulse_dynamics_d954ac532b15.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/impulse_dynamics_dc94105a0d3c.hpp"
+#include "mini_cheetah/common/impulse_dynamics_d954ac532b15.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -25,8 +25,8 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param impulse out 12x1: contact impulses, world; rows 3k + r: contact k (the scene's contacts in the robot's foot order), world axis r
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             3960  3211   26     0    24    1   7222
-using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_dc94105a0d3c::impulse_dynamics;
+///             4180  3431   26     0    24    0   7661
+using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_d954ac532b15::impulse_dynamics;
 
 /// impulse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -68,6 +68,20 @@ def ldlt_solve(L, inv_d, b):
     return x
 
 
+def unit_lower_inverse(L):
+    """L⁻¹ of a unit lower triangular L (rows, its strict lower triangle read), column by column:
+    L⁻¹[i][j] = −Σ_{j≤k<i} L[i][k] L⁻¹[k][j]."""
+    n = len(L)
+    inverse = [[ex.const(1.0 if i == j else 0.0) for j in range(n)] for i in range(n)]
+    for j in range(n):
+        for i in range(j + 1, n):
+            x = ex.const(0.0)
+            for k in range(j, i):
+                x = x - L[i][k] * inverse[k][j]
+            inverse[i][j] = x
+    return inverse
+
+
 def _transpose(rows):
     return [list(column) for column in zip(*rows)]
 
@@ -100,10 +114,17 @@ class Delassus:
 
     def solve(self, b):
         """A x = b by the proximal steps x ← x + F⁻¹(b − A x) from x = 0 (F = A + μ1), each taken as
-        x ← F⁻¹(b + μ x), the same step without the product A x."""
-        x = sp.zeros(len(b))
+        x ← F⁻¹(b + μ x), the same step without the product A x, and F⁻¹ = L⁻ᵀ D⁻¹ L⁻¹ applied as
+        two products with L⁻¹, formed once: a substitution chains each entry through every earlier
+        one, and five of them in a row were latency bound (docs/performance.md, "The Delassus
+        steps as products")."""
+        L_inv, inv_d = unit_lower_inverse(self.factor[0]), self.factor[1]
+        n = len(b)
+        x = None
         for _ in range(PROXIMAL_STEPS):
-            x = ldlt_solve(*self.factor, [b_r + self.mu * x_r for b_r, x_r in zip(b, x)])
+            r = list(b) if x is None else [b_r + self.mu * x_r for b_r, x_r in zip(b, x)]
+            y = [sp.dot(L_inv[i][:i + 1], r[:i + 1]) * inv_d[i] for i in range(n)]
+            x = [sp.dot([L_inv[k][i] for k in range(i, n)], y[i:]) for i in range(n)]
         return x
 
     def step_sum(self):
