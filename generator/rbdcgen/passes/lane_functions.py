@@ -4,8 +4,8 @@ outputs as their scalar namesakes, emitted only when a scene lists them (scene.L
 from __future__ import annotations
 
 from . import differentiate, lane_derivatives
-from ..algorithms import centroidal, crba, forward_dynamics, osc, rnea
-from ..views.limb_lanes import LaneModel
+from ..algorithms import centroidal, crba, forward_dynamics, frames, osc, rnea
+from ..views.limb_lanes import LaneModel, frame_shapes
 from ..views.limbs import isomorphic_limbs
 
 # derivative function → the trace of its lane function: its own on the lane model (the analytic RNEA
@@ -21,11 +21,15 @@ CENTROIDAL = {
     "center_of_mass_jacobian": lambda m: {"J_c": _full_columns(m, centroidal.center_of_mass_jacobian(m))},
     "centroidal_momentum_matrix": lambda m: {"A_G": _full_columns(m, centroidal.centroidal_momentum_matrix(m))},
     "centroidal_bias": lambda m: {"Adot_v": tuple(centroidal.centroidal_bias(m))}}
+# frame function → its trace on the lane model (views/limb_lanes.lane_frames): rows per scene frame
+FRAMES = {"frame_jacobians": lambda m: dict(zip(("J_local", "J_world"), (
+    _columns(m.scatter_frame_rows(rows)) for rows in frames.frame_jacobians(m))))}
 # lane function → the function it equals
 SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
           "mass_matrix_lanes": "mass_matrix", "mass_matrix_lower_lanes": "mass_matrix_lower",
           "forward_dynamics_lanes": "forward_dynamics", "osc_open_chain_lanes": "osc_open_chain",
-          **{name + "_lanes": name for name in DERIVATIVES}, **{name + "_lanes": name for name in CENTROIDAL}}
+          **{name + "_lanes": name for name in DERIVATIVES}, **{name + "_lanes": name for name in CENTROIDAL},
+          **{name + "_lanes": name for name in FRAMES}}
 # function → its lane function
 LANE_NAME = {scalar: lanes for lanes, scalar in SCALAR.items()}
 # lane functions with the foot forces as lane inputs
@@ -34,16 +38,26 @@ WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_derivatives_lanes", "os
 
 def model(robot, scene, zero_inputs, name):
     """The traced model of lane function `name`: the trunk and one lane limb."""
-    return LaneModel(robot, scene, isomorphic_limbs(robot), zero_inputs, feet=name in WITH_FEET)
+    return LaneModel(robot, scene, isomorphic_limbs(robot), zero_inputs, feet=name in WITH_FEET,
+                     frames=SCALAR[name] in FRAMES)
 
 
-def spec(robot, nf):
-    """trace.py's function table for the lane functions (same shape as trace._spec)."""
+def available(robot, scene, name, limbs):
+    """LimbError if the lane form of `name` does not apply to this scene: a frame function needs the
+    same frames on every limb (views/limb_lanes.frame_shapes)."""
+    if name in FRAMES:
+        frame_shapes(scene.frames_for(robot), limbs)
+
+
+def spec(robot, nf, whole_body):
+    """trace.py's function table for the lane functions (same shape as trace._spec); `whole_body`:
+    the scalar whole-body functions' table (trace._whole_body_spec)."""
     nv = robot.nv
     scalar = differentiate.spec(robot, nf, 0)  # the contact functions have no lane version
     return {
         **_in_lanes(scalar, DERIVATIVES),
         **_in_lanes(centroidal.specs(nv), CENTROIDAL),
+        **_in_lanes(whole_body, FRAMES),
         "bias_lanes": (
             "Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes "
             "evaluated together in SIMD lanes, the trunk scalar; equals bias.",

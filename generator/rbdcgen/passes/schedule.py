@@ -46,7 +46,7 @@ def _forms(robot, scene, name):
     lane_name = lane_functions.LANE_NAME.get(name)
     if lane_name is not None:
         try:
-            isomorphic_limbs(robot)
+            lane_functions.available(robot, scene, name, isomorphic_limbs(robot))
             forms["limb_lanes"] = lambda: _as(trace_function(robot, scene, lane_name), name)
         except LimbError:
             if scene.schedule == "limb_lanes":

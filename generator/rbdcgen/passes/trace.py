@@ -274,8 +274,9 @@ def _whole_body_spec(robot, nf, n_frames):
 def _lookup(robot, scene, name):
     """(doc, input names, output specs, build) of function `name` for this robot and scene."""
     nf, nc = len(scene.feet_for(robot)), len(scene.contacts_for(robot))
-    spec = {**_spec(robot, nf, nc), **_whole_body_spec(robot, nf, len(scene.frames_for(robot))),
-            **differentiate.spec(robot, nf, nc), **lane_functions.spec(robot, nf)}
+    whole_body = _whole_body_spec(robot, nf, len(scene.frames_for(robot)))
+    spec = {**_spec(robot, nf, nc), **whole_body, **differentiate.spec(robot, nf, nc),
+            **lane_functions.spec(robot, nf, whole_body)}
     if name not in spec:
         raise KeyError("unknown function '%s'" % name)
     return _in_frame_axes(scene, name, spec[name])
@@ -290,7 +291,7 @@ FRAME_AXES_OUTPUT = {"frame_velocities": {"local": "v_local", "world": "v_world"
 def _in_frame_axes(scene, name, entry):
     """A frame function's entry with only the output of the scene's frame_axes (the other one's
     work then falls to DCE); any other entry as it is."""
-    keep = FRAME_AXES_OUTPUT.get(name, {}).get(scene.frame_axes)
+    keep = FRAME_AXES_OUTPUT.get(lane_functions.SCALAR.get(name, name), {}).get(scene.frame_axes)
     if keep is None:
         return entry
     doc, inputs, outputs, build = entry

@@ -42,9 +42,14 @@ class LaneModel(TracedModel):
     With `feet`, the scene's feet become lane feet (the same number on each limb, at the same
     bodies of the limb) with the lane input lane_f; without, the traced function uses no feet."""
 
-    def __init__(self, robot, scene, limbs, zero_inputs=(), feet=False):
+    def __init__(self, robot, scene, limbs, zero_inputs=(), feet=False, frames=False):
         super().__init__(robot, scene, zero_inputs)
         self.full = self.robot
+        self.frame_places = ()
+        if frames:
+            self.frames, self.frame_places = lane_frames(self.frames, limbs)
+        else:
+            self.frames = ()
         self.limbs = limbs
         self.graph = ex.current_graph()  # holds the lane constants' values
         self.robot = _reduced_tree(self.full, limbs)
@@ -198,6 +203,24 @@ class LaneModel(TracedModel):
                 full[self.full_index(x, k)] = ex.lane_get(value, k)
         return tuple(full)
 
+    def scatter_frame_rows(self, rows):
+        """Rows of 6 per reduced frame (columns: the reduced tree's dofs) as the scene's frames'
+        rows over the full robot's dofs: a trunk frame's as they are (no joint moves it), a lane
+        frame's lane k for the frame on limb k, limb k's joint columns from the lane limb's, the
+        other limbs' zero."""
+        full = []
+        for kind, n, k in self.frame_places:
+            for r in range(6):
+                row = rows[6 * n + r]
+                out = [ex.const(0.0)] * self.full.nv
+                for x, value in enumerate(row):
+                    if kind == "trunk":
+                        out[x] = value  # trunk frames: root columns only
+                    else:
+                        out[self.full_index(x, k)] = ex.lane_get(value, k)
+                full.append(tuple(out))
+        return tuple(full)
+
     def scatter_joint_columns(self, rows):
         """A matrix (rows) whose columns are the reduced tree's joints as the full robot's: lane k of
         the lane limb's joint l goes to limb k's joint l's column."""
@@ -218,6 +241,41 @@ class LaneModel(TracedModel):
                 for k in range(ex.LANES):
                     full[self.full_index(r, k)][self.full_index(c, k)] = ex.lane_get(value, k)
         return full
+
+
+def frame_shapes(frames, limbs):
+    """The scene's frames split into those on the trunk and, per limb, those on it (ordered by limb
+    body and rotation), if every limb carries the same frames (at the same limb bodies, with the same
+    rotations), else LimbError."""
+    limb_of = {body: (k, l) for k, limb in enumerate(limbs) for l, body in enumerate(limb)}
+
+    def place(f):
+        return limb_of[f.body][1], sp.snap_rotation(f.rotation)
+
+    # each limb's frames by limb body and rotation (stable: frames at one place pair in scene order)
+    per_limb = [sorted((f for f in frames if f.body in limb_of and limb_of[f.body][0] == k), key=place)
+                for k in range(len(limbs))]
+    shapes = {tuple(place(f) for f in fs) for fs in per_limb}
+    if len(shapes) != 1:
+        raise LimbError("the scene's frames are not the same on every limb")
+    return [f for f in frames if f.body == 0], per_limb, next(iter(shapes))
+
+
+def lane_frames(frames, limbs):
+    """The scene's frames on the reduced tree: those on the trunk as they are, those on the limbs
+    as lane frames (frame_shapes; the translation a lane constant). Also, per scene frame, its
+    place: ("trunk", n, 0) or ("lane", n, k), n indexing the reduced frames (trunk frames first)."""
+    trunk, per_limb, shape = frame_shapes(frames, limbs)
+    reduced = list(trunk)
+    for n, (l, rotation) in enumerate(shape):
+        lanes = [fs[n] for fs in per_limb]
+        translation = tuple(ex.lane_const([f.translation[c] for f in lanes]) for c in range(3))
+        reduced.append(replace(lanes[0], name="/".join(f.name for f in lanes), body=l + 1,
+                               rotation=rotation, translation=translation))
+    lane_of = {f.name: (len(trunk) + n, k) for k, fs in enumerate(per_limb) for n, f in enumerate(fs)}
+    places = tuple(("trunk", trunk.index(f), 0) if f.body == 0 else ("lane",) + lane_of[f.name]
+                   for f in frames)
+    return tuple(reduced), places
 
 
 def _sum_lanes(value):

@@ -18,6 +18,7 @@ from rbdcgen.frontend.ir import Actuator
 from rbdcgen.passes.lane_functions import SCALAR
 from rbdcgen.views.limbs import LimbError, isomorphic_limbs
 from rbdcgen.frontend.scene import default_scene
+from rbdcgen.passes.schedule import scheduled_function
 from rbdcgen.passes.trace import trace_function
 
 
@@ -35,6 +36,9 @@ class LaneConstants(unittest.TestCase):
             self.assertEqual((x * c).op, "mul")  # no lane is 0 or 1 in every lane: a lane product
             self.assertEqual(ex.lane_sum(x).op, "mul")  # a scalar summed over the lanes: 4 x
             self.assertIs(ex.lane_get(x, 2), x)
+
+
+LANE_FRAMES = ("RF_foot", "trunk", "LH_hip", "LF_foot", "RF_hip", "RH_foot", "LF_hip", "LH_foot", "RH_hip")
 
 
 @unittest.skipIf(mini_cheetah.skip_reason(), mini_cheetah.skip_reason())
@@ -59,10 +63,20 @@ class MiniCheetahLanes(unittest.TestCase):
             robot = _scrambled_limbs(mini_cheetah.load(base), random.Random(seed))
             self._check_equal(robot, names)
 
+    def test_frames_in_lanes_only_on_every_limb(self):
+        """`auto` takes the lane frame Jacobians for the four feet and keeps the scalar tree when
+        the frames are not the same on every limb."""
+        robot = mini_cheetah.load()
+        feet = replace(default_scene(), frames=("LF_foot", "RF_foot", "LH_foot", "RH_foot"))
+        self.assertTrue(scheduled_function(robot, feet, "frame_jacobians").schedule.startswith("limb lanes"))
+        two = replace(default_scene(), frames=("LF_foot", "RF_foot"))
+        self.assertFalse(scheduled_function(robot, two, "frame_jacobians").schedule.startswith("limb lanes"))
+
     def _check_equal(self, robot, names, seeds=(7,)):
         """The lane functions `names` equal their scalar namesakes on random states; returns the
-        traced (lane, scalar) pairs."""
-        scene = default_scene()
+        traced (lane, scalar) pairs. The frames: the trunk's and two per limb, in an order that
+        is not the limbs' (each output row must land on its frame's)."""
+        scene = replace(default_scene(), frames=LANE_FRAMES)
         pairs = []
         for name in names:
             lanes = trace_function(robot, scene, name)
