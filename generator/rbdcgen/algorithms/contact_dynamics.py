@@ -86,31 +86,19 @@ def _transpose(rows):
     return [list(column) for column in zip(*rows)]
 
 
-class Delassus:
-    """J (contact rows), A = J M⁻¹Jᵀ and the factor of A + μ1, through half of M's solve: with
-    M = Lᵀ D L and Z = L⁻ᵀJᵀ (a column non-zero only on its contact's tree ancestors), A = Zᵀ D⁻¹ Z
-    and M⁻¹Jᵀλ = L⁻¹ D⁻¹ Z λ, one substitution for all contacts instead of one per row of J."""
+class DampedSolve:
+    """The damped Delassus system of A (symmetric rows, contact order): A + μ1 factorised once
+    (dense LDLᵀ), μ = DAMPING_RELATIVE · tr(A)/m + DAMPING_FLOOR, and its proximal solve."""
 
-    def __init__(self, m):
-        robot = m.robot
-        self._parents = parents = fd.dof_parents(robot)
-        self._L, inv_diag = fd.mass_matrix_factor(m)
-        self.J = contact_rows(m, feet_jacobian(m))
-        m.mark("contact: Delassus matrix J M⁻¹Jᵀ and its damped factor")
-        self.A, self._D_inv_Z = fd.half_solve_gram(self._L, inv_diag, parents, self.J, m.into_dof)
-        n = len(self.J)
+    def __init__(self, A):
+        self.A = A
+        n = len(A)
         trace = ex.const(0.0)
         for r in range(n):
-            trace = trace + self.A[r][r]
+            trace = trace + A[r][r]
         self.mu = ex.const(DAMPING_RELATIVE / n) * trace + ex.const(DAMPING_FLOOR)
-        damped = [[self.A[r][s] + self.mu if r == s else self.A[r][s] for s in range(n)] for r in range(n)]
+        damped = [[A[r][s] + self.mu if r == s else A[r][s] for s in range(n)] for r in range(n)]
         self.factor = dense_ldlt(damped)
-
-    @cached_property
-    def Minv_Jt(self):
-        """M⁻¹Jᵀ, one column per row of J (the derivatives need it whole)."""
-        return [fd.ltdl_substitute(self._L, self._parents, column, range(len(column)))
-                for column in self._D_inv_Z]
 
     def solve(self, b):
         """A x = b by the proximal steps x ← x + F⁻¹(b − A x) from x = 0 (F = A + μ1), each taken as
@@ -147,6 +135,34 @@ class Delassus:
         y = ldlt_solve(*self.factor, b)
         return [sp.dot(row, y) for row in Q]
 
+
+class Delassus(DampedSolve):
+    """J (contact rows), A = J M⁻¹Jᵀ and the factor of A + μ1, through half of M's solve: with
+    M = Lᵀ D L and Z = L⁻ᵀJᵀ (a column non-zero only on its contact's tree ancestors), A = Zᵀ D⁻¹ Z
+    and M⁻¹Jᵀλ = L⁻¹ D⁻¹ Z λ, one substitution for all contacts instead of one per row of J."""
+
+    def __init__(self, m):
+        self._parents = parents = fd.dof_parents(m.robot)
+        self._L, inv_diag = fd.mass_matrix_factor(m)
+        self.J = contact_rows(m, feet_jacobian(m))
+        m.mark("contact: Delassus matrix J M⁻¹Jᵀ and its damped factor")
+        A, self._D_inv_Z = fd.half_solve_gram(self._L, inv_diag, parents, self.J, m.into_dof)
+        super().__init__(A)
+
+    def feet_rows(self, m, values):
+        """A per-foot quantity's rows (3 per foot) aligned with J's."""
+        return contact_rows(m, values)
+
+    def rows(self, values):
+        """Values aligned with J's rows in the contact order of A (here the same)."""
+        return list(values)
+
+    @cached_property
+    def Minv_Jt(self):
+        """M⁻¹Jᵀ, one column per row of J (the derivatives need it whole)."""
+        return [fd.ltdl_substitute(self._L, self._parents, column, range(len(column)))
+                for column in self._D_inv_Z]
+
     def apply_Minv_Jt(self, lam):
         """M⁻¹Jᵀ λ = L⁻¹ (D⁻¹Z λ)."""
         n = len(self._parents)
@@ -156,23 +172,76 @@ class Delassus:
         return fd.ltdl_substitute(self._L, self._parents, y, range(n))
 
 
-def contact_dynamics(m):
-    """(a, λ): a₀ = M⁻¹(Sᵀτ − c − g), A λ = −(J a₀ + J̇v), a = a₀ + M⁻¹Jᵀλ."""
+class LaneDelassus(DampedSolve):
+    """Delassus on the lane model (views/limb_lanes.py) with one contact foot per limb, the lane
+    foot: J's three rows are lane rows (lane k: contact k), and Z = L⁻ᵀJᵀ keeps its lanes apart
+    (contact k's column is non-zero on limb k and the trunk only, so no lane sum where a limb meets
+    the trunk). A's diagonal 3 × 3 blocks are lane dot products over the limb's and the trunk's
+    dofs; an off-diagonal block, two contacts on different limbs, sums over the trunk's dofs only,
+    between their lanes. The dense solve is scalar; λ returns to the lanes through one-hot lane
+    constants."""
+
+    def __init__(self, m, contact_lanes):
+        self._lanes = contact_lanes  # lane of each contact, in the scene's contact order
+        self._parents = parents = fd.dof_parents(m.robot)
+        self._L, inv_diag = fd.mass_matrix_factor(m)
+        self._root = m.robot.root_dofs
+        self._into_root = m.into_root
+        self.J = feet_jacobian(m)
+        m.mark("contact: Delassus matrix J M⁻¹Jᵀ and its damped factor")
+        Z = [fd.ltdl_forward(self._L, parents, row) for row in self.J]
+        self._D_inv_Z = [[z * d for z, d in zip(column, inv_diag)] for column in Z]
+        blocks = [[sp.dot(Z[r], self._D_inv_Z[s]) for s in range(3)] for r in range(3)]
+        trunk = range(self._root)
+        rows = [(c, r) for c in range(len(contact_lanes)) for r in range(3)]
+        A = [[None] * len(rows) for _ in rows]
+        for i, (c, r) in enumerate(rows):
+            for j, (d, s) in enumerate(rows[:i + 1]):
+                k, l = contact_lanes[c], contact_lanes[d]
+                A[i][j] = A[j][i] = (ex.lane_get(blocks[r][s], k) if c == d else
+                                     sp.dot([ex.lane_get(Z[r][t], k) for t in trunk],
+                                            [ex.lane_get(self._D_inv_Z[s][t], l) for t in trunk]))
+        super().__init__(A)
+
+    def feet_rows(self, m, values):
+        return list(values)  # the lane foot's three rows
+
+    def rows(self, values):
+        """Lane values aligned with J's three rows as scalars in contact order."""
+        return [ex.lane_get(values[r], k) for k in self._lanes for r in range(3)]
+
+    def apply_Minv_Jt(self, lam):
+        """M⁻¹Jᵀ λ = L⁻¹ (D⁻¹Z λ): λ's rows back in the lanes, limb k's dofs take contact k's
+        columns lane by lane, the trunk's dofs every contact's (the sum over the lanes)."""
+        n = len(self._parents)
+        in_lanes = []
+        for r in range(3):
+            x = ex.const(0.0)
+            for c, k in enumerate(self._lanes):
+                x = x + ex.lane_const([1.0 if lane == k else 0.0 for lane in range(ex.LANES)]) * lam[3 * c + r]
+            in_lanes.append(x)
+        y = [sp.dot([column[i] for column in self._D_inv_Z], in_lanes) for i in range(n)]
+        y = [self._into_root(x) if i < self._root else x for i, x in enumerate(y)]
+        return fd.ltdl_substitute(self._L, self._parents, y, range(n))
+
+
+def contact_dynamics(m, delassus=Delassus):
+    """(a, λ): a₀ = M⁻¹(Sᵀτ − c − g), A λ = −(J a₀ + J̇v), a = a₀ + M⁻¹Jᵀλ; `delassus` builds the
+    Delassus system from m (LaneDelassus on the lane model)."""
     a0 = fd.free_acceleration(m)
-    delassus = Delassus(m)
+    delassus = delassus(m)
     m.mark("contact: J̇v of the contact points")
-    bias = contact_rows(m, [x for foot in feet_bias_accelerations(m) for x in foot])
+    bias = delassus.feet_rows(m, [x for foot in feet_bias_accelerations(m) for x in foot])
     m.mark("contact: forces and acceleration")
-    b = [-(gamma + sp.dot(row, a0)) for gamma, row in zip(bias, delassus.J)]
-    lam = delassus.solve(b)
+    lam = delassus.solve(delassus.rows([-(gamma + sp.dot(row, a0)) for gamma, row in zip(bias, delassus.J)]))
     return sp.vadd(a0, delassus.apply_Minv_Jt(lam)), lam
 
 
-def impulse_dynamics(m):
+def impulse_dynamics(m, delassus=Delassus):
     """(v⁺, Λ): A Λ = −(1 + e) J v⁻, v⁺ = v⁻ + M⁻¹JᵀΛ, e = the restitution input."""
-    delassus = Delassus(m)
+    delassus = delassus(m)
     m.mark("impact: impulses and velocity")
     scale = ex.const(1.0) + m.restitution
-    b = [-(scale * sp.dot(row, m.v)) for row in delassus.J]
-    impulse = delassus.solve(b)
-    return sp.vadd(m.v, delassus.apply_Minv_Jt(impulse)), impulse
+    v = m.tree_velocity
+    impulse = delassus.solve(delassus.rows([-(scale * sp.dot(row, v)) for row in delassus.J]))
+    return sp.vadd(v, delassus.apply_Minv_Jt(impulse)), impulse

@@ -4,8 +4,8 @@ outputs as their scalar namesakes, emitted only when a scene lists them (scene.L
 from __future__ import annotations
 
 from . import differentiate, lane_derivatives
-from ..algorithms import centroidal, crba, forward_dynamics, frames, osc, rnea
-from ..views.limb_lanes import LaneModel, frame_shapes
+from ..algorithms import centroidal, contact_dynamics, crba, forward_dynamics, frames, osc, rnea
+from ..views.limb_lanes import LaneModel, contact_lanes, frame_shapes
 from ..views.limbs import isomorphic_limbs
 
 # derivative function → the trace of its lane function: its own on the lane model (the analytic RNEA
@@ -24,16 +24,21 @@ CENTROIDAL = {
 # frame function → its trace on the lane model (views/limb_lanes.lane_frames): rows per scene frame
 FRAMES = {"frame_jacobians": lambda m: dict(zip(("J_local", "J_world"), (
     _columns(m.scatter_frame_rows(rows)) for rows in frames.frame_jacobians(m))))}
+# contact function → its trace on the lane model, one contact foot per limb (LaneDelassus)
+CONTACT = {
+    "contact_dynamics": lambda m: _contact_outputs(m, ("a", "lambda"), contact_dynamics.contact_dynamics),
+    "impulse_dynamics": lambda m: _contact_outputs(m, ("v_plus", "impulse"), contact_dynamics.impulse_dynamics)}
 # lane function → the function it equals
 SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
           "mass_matrix_lanes": "mass_matrix", "mass_matrix_lower_lanes": "mass_matrix_lower",
           "forward_dynamics_lanes": "forward_dynamics", "osc_open_chain_lanes": "osc_open_chain",
           **{name + "_lanes": name for name in DERIVATIVES}, **{name + "_lanes": name for name in CENTROIDAL},
-          **{name + "_lanes": name for name in FRAMES}}
+          **{name + "_lanes": name for name in FRAMES}, **{name + "_lanes": name for name in CONTACT}}
 # function → its lane function
 LANE_NAME = {scalar: lanes for lanes, scalar in SCALAR.items()}
 # lane functions with the foot forces as lane inputs
-WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_derivatives_lanes", "osc_open_chain_lanes")
+WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_derivatives_lanes", "osc_open_chain_lanes",
+             "contact_dynamics_lanes", "impulse_dynamics_lanes")
 
 
 def model(robot, scene, zero_inputs, name):
@@ -47,17 +52,20 @@ def available(robot, scene, name, limbs):
     same frames on every limb (views/limb_lanes.frame_shapes)."""
     if name in FRAMES:
         frame_shapes(scene.frames_for(robot), limbs)
+    if name in CONTACT:
+        contact_lanes(scene.feet_for(robot), scene.contacts_for(robot), limbs)
 
 
-def spec(robot, nf, whole_body):
-    """trace.py's function table for the lane functions (same shape as trace._spec); `whole_body`:
-    the scalar whole-body functions' table (trace._whole_body_spec)."""
+def spec(robot, nf, scalar_specs):
+    """trace.py's function table for the lane functions (same shape as trace._spec); `scalar_specs`:
+    the scalar functions' table the frame and contact functions take their signatures from."""
     nv = robot.nv
     scalar = differentiate.spec(robot, nf, 0)  # the contact functions have no lane version
     return {
         **_in_lanes(scalar, DERIVATIVES),
         **_in_lanes(centroidal.specs(nv), CENTROIDAL),
-        **_in_lanes(whole_body, FRAMES),
+        **_in_lanes(scalar_specs, FRAMES),
+        **_in_lanes(scalar_specs, CONTACT),
         "bias_lanes": (
             "Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes "
             "evaluated together in SIMD lanes, the trunk scalar; equals bias.",
@@ -105,6 +113,14 @@ def _in_lanes(specs, traces):
     return {name + "_lanes": (specs[name][0] + " The four isomorphic limbs in SIMD lanes, the trunk "
                               "scalar; equals %s." % name,) + tuple(specs[name][1:3]) + (trace,)
             for name, trace in traces.items()}
+
+
+def _contact_outputs(m, names, function):
+    """A contact function's joint-space output scattered to the full robot, its contact rows (scalar
+    already, in contact order) as they are."""
+    lanes = contact_lanes(m.kept_feet, m.contacts, m.limbs)
+    x, rows = function(m, lambda model: contact_dynamics.LaneDelassus(model, lanes))
+    return {names[0]: m.scatter(x), names[1]: tuple(rows)}
 
 
 def _osc_outputs(m, result):

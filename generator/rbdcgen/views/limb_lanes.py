@@ -60,6 +60,7 @@ class LaneModel(TracedModel):
             for name, index in (("q", lambda j: j.q_index), ("v", lambda j: j.v_index),
                                 ("a", lambda j: j.v_index),
                                 ("tau", lambda j: j.v_index - self.full.root_dofs))}
+        self.kept_feet = self.feet  # the full robot's
         self.feet = self._lane_feet() if feet else ()
 
     def layout(self):
@@ -124,6 +125,10 @@ class LaneModel(TracedModel):
 
     def vi(self, i):
         return self._lane_input("v", i)
+
+    @property
+    def tree_velocity(self):
+        return tuple(self.v[:self.robot.root_dofs]) + tuple(self.vi(i) for i in range(1, self.robot.nb))
 
     def ai(self, i):
         return self._lane_input("a", i)
@@ -241,6 +246,18 @@ class LaneModel(TracedModel):
                 for k in range(ex.LANES):
                     full[self.full_index(r, k)][self.full_index(c, k)] = ex.lane_get(value, k)
         return full
+
+
+def contact_lanes(feet, contacts, limbs):
+    """The lane of each contact foot, when each limb carries exactly one of the kept feet (the lane
+    foot of contact dynamics on the lane model) and at most one contact, else LimbError."""
+    limb_of = {body: k for k, limb in enumerate(limbs) for body in limb}
+    if sorted(limb_of.get(foot.body, -1) for foot in feet) != list(range(len(limbs))):
+        raise LimbError("the kept feet are not one per limb")
+    lanes = tuple(limb_of[foot.body] for foot in contacts)
+    if len(set(lanes)) != len(lanes):  # a foot listed twice: its two contacts share the limb's dofs
+        raise LimbError("a limb has two contacts")
+    return lanes
 
 
 def frame_shapes(frames, limbs):

@@ -53,6 +53,11 @@ class TracedModel:
         return self.tree_input("v", self.coupled.nv)
 
     @property
+    def tree_velocity(self):
+        """v over the traced tree's dofs (the lane model's: the trunk's and the lane limb's)."""
+        return self.v
+
+    @property
     def a(self):
         return self.tree_input("a", self.coupled.nv)
 

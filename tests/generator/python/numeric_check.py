@@ -29,6 +29,7 @@ def random_state(robot, nf, seed):
         "tau": [rng.uniform(-5.0, 5.0) for _ in range(robot.n_joints)],
         "f": [rng.uniform(-20.0, 20.0) for _ in range(3 * nf)],
         "ground_mass": [rng.uniform(10.0, 1e3)],
+        "restitution": [rng.uniform(0.0, 1.0)],
     }
 
 

@@ -72,6 +72,14 @@ class MiniCheetahLanes(unittest.TestCase):
         two = replace(default_scene(), frames=("LF_foot", "RF_foot"))
         self.assertFalse(scheduled_function(robot, two, "frame_jacobians").schedule.startswith("limb lanes"))
 
+    def test_contacts_in_lanes_only_with_one_foot_per_limb(self):
+        """The lane contact dynamics needs the kept feet one per limb; two feet kept: the scalar
+        tree."""
+        robot = mini_cheetah.load()
+        self.assertTrue(scheduled_function(robot, default_scene(), "contact_dynamics").schedule.startswith("limb lanes"))
+        two = replace(default_scene(), feet=("LF_foot", "RH_foot"))
+        self.assertFalse(scheduled_function(robot, two, "impulse_dynamics").schedule.startswith("limb lanes"))
+
     def _check_equal(self, robot, names, seeds=(7,)):
         """The lane functions `names` equal their scalar namesakes on random states; returns the
         traced (lane, scalar) pairs. The frames: the trunk's and two per limb, in an order that
