@@ -4,7 +4,7 @@ outputs as their scalar namesakes, emitted only when a scene lists them (scene.L
 from __future__ import annotations
 
 from . import differentiate, lane_derivatives
-from ..algorithms import centroidal, contact_dynamics, crba, forward_dynamics, frames, osc, rnea
+from ..algorithms import centroidal, contact_dynamics, crba, forward_dynamics, osc, rnea
 from ..views.limb_lanes import LaneModel, contact_lanes, frame_shapes
 from ..views.limbs import isomorphic_limbs
 
@@ -21,9 +21,9 @@ CENTROIDAL = {
     "center_of_mass_jacobian": lambda m: {"J_c": _full_columns(m, centroidal.center_of_mass_jacobian(m))},
     "centroidal_momentum_matrix": lambda m: {"A_G": _full_columns(m, centroidal.centroidal_momentum_matrix(m))},
     "centroidal_bias": lambda m: {"Adot_v": tuple(centroidal.centroidal_bias(m))}}
-# frame function → its trace on the lane model (views/limb_lanes.lane_frames): rows per scene frame
-FRAMES = {"frame_jacobians": lambda m: dict(zip(("J_local", "J_world"), (
-    _columns(m.scatter_frame_rows(rows)) for rows in frames.frame_jacobians(m))))}
+# the frame functions: traced on the lane model by their scalar builders (views/limb_lanes.lane_frames;
+# m.frame_values and m.frame_rows put the lane frames' results in the scene's frame order)
+FRAMES = ("frame_placements", "frame_velocities", "frame_jacobians", "frame_bias_accelerations")
 # contact function → its trace on the lane model, one contact foot per limb (LaneDelassus)
 CONTACT = {
     "contact_dynamics": lambda m: _contact_outputs(m, ("a", "lambda"), contact_dynamics.contact_dynamics),
@@ -64,7 +64,7 @@ def spec(robot, nf, scalar_specs):
     return {
         **_in_lanes(scalar, DERIVATIVES),
         **_in_lanes(centroidal.specs(nv), CENTROIDAL),
-        **_in_lanes(scalar_specs, FRAMES),
+        **_in_lanes(scalar_specs, {name: scalar_specs[name][3] for name in FRAMES}),
         **_in_lanes(scalar_specs, CONTACT),
         "bias_lanes": (
             "Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes "

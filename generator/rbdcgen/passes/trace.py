@@ -220,8 +220,10 @@ def _whole_body_spec(robot, nf, n_frames):
     nv = robot.nv
     centroidal_specs = centroidal.specs(nv)
 
+    # m.frame_values / m.frame_rows: the traced frames' results in the scene's frame order (the lane
+    # model's lane frames taken apart), so the same builders serve the lane functions
     def placements(m):
-        rotations, positions = frames.frame_placements(m)
+        rotations, positions = (m.frame_values(x) for x in frames.frame_placements(m))
         return {"R": tuple(x for R in rotations for c in range(3) for x in (R[0][c], R[1][c], R[2][c])),
                 "p": _columns(positions)}
 
@@ -241,17 +243,17 @@ def _whole_body_spec(robot, nf, n_frames):
             "Spatial velocities (ω; v) of the scene's frames at their origins.", ("q", "v"),
             [("v_local", 6, n_frames, "frame axes (Pinocchio's LOCAL, rows angular first)"),
              ("v_world", 6, n_frames, "world axes (LOCAL_WORLD_ALIGNED, rows angular first)")],
-            lambda m: pair(("v_local", "v_world"), frames.frame_velocities(m))),
+            lambda m: pair(("v_local", "v_world"), map(m.frame_values, frames.frame_velocities(m)))),
         "frame_jacobians": (
             "6 × nv Jacobians of the scene's frames (paper 000 Eq. B3 moved to the frame).", ("q",),
             [("J_local", 6 * n_frames, nv, "rows 6k … 6k+5: frame k's J, frame axes (J v = v_local)"),
              ("J_world", 6 * n_frames, nv, "rows 6k … 6k+5: frame k's J, world axes (J v = v_world)")],
-            lambda m: pair_matrices(("J_local", "J_world"), frames.frame_jacobians(m))),
+            lambda m: pair_matrices(("J_local", "J_world"), map(m.frame_rows, frames.frame_jacobians(m)))),
         "frame_bias_accelerations": (
             "J̇v of the scene's frames: their accelerations at a = 0.", ("q", "v"),
             [("spatial", 6, n_frames, "J̇_local v: spatial acceleration, frame axes"),
              ("classical", 6, n_frames, "J̇_world v: (ω̇; p̈ of the origin), world axes")],
-            lambda m: pair(("spatial", "classical"), frames.frame_bias_accelerations(m))),
+            lambda m: pair(("spatial", "classical"), map(m.frame_values, frames.frame_bias_accelerations(m)))),
         "feet_bias_accelerations": (
             "J̇v of the feet: each foot point's classical acceleration at a = 0, world frame.",
             ("q", "v"),

@@ -208,7 +208,11 @@ class LaneModel(TracedModel):
                 full[self.full_index(x, k)] = ex.lane_get(value, k)
         return tuple(full)
 
-    def scatter_frame_rows(self, rows):
+    def frame_values(self, values):
+        """A trunk frame's value as it is, a lane frame's lane k for the frame on limb k."""
+        return [values[n] if kind == "trunk" else _lane_part(values[n], k) for kind, n, k in self.frame_places]
+
+    def frame_rows(self, rows):
         """Rows of 6 per reduced frame (columns: the reduced tree's dofs) as the scene's frames'
         rows over the full robot's dofs: a trunk frame's as they are (no joint moves it), a lane
         frame's lane k for the frame on limb k, limb k's joint columns from the lane limb's, the
@@ -293,6 +297,13 @@ def lane_frames(frames, limbs):
     places = tuple(("trunk", trunk.index(f), 0) if f.body == 0 else ("lane",) + lane_of[f.name]
                    for f in frames)
     return tuple(reduced), places
+
+
+def _lane_part(value, lane):
+    """Lane `lane` of a value, a vector or matrix (nested tuples)."""
+    if isinstance(value, (tuple, list)):
+        return tuple(_lane_part(x, lane) for x in value)
+    return ex.lane_get(value, lane)
 
 
 def _sum_lanes(value):

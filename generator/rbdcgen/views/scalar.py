@@ -173,6 +173,16 @@ class TracedModel:
         unchanged here; summed over the lanes of a lane foot (views/limb_lanes.LaneModel)."""
         return term
 
+    def frame_values(self, values):
+        """Per-frame values (one per traced frame: a vector or a matrix) in the scene's frame order:
+        unchanged here; a lane frame's lanes taken apart (views/limb_lanes.LaneModel)."""
+        return values
+
+    def frame_rows(self, rows):
+        """Rows of 6 per traced frame over the traced tree's dofs as the scene's frames' rows over
+        the robot's: unchanged here (views/limb_lanes.LaneModel)."""
+        return rows
+
     def scatter_matrix(self, rows):
         """A joint-space matrix (rows) of the traced tree as the robot's: unchanged here; a lane
         limb's entries scattered to every limb (views/limb_lanes.LaneModel)."""
