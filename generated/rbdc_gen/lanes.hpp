@@ -98,6 +98,12 @@ RBDC_HOST_DEVICE inline void store_lanes(T* p, const Lanes<T>& x) noexcept {
   LanesOf<T>::store(p, x);
 }
 
+/// The lanes rotated: lane k of the result is lane (k + Shift) mod 4 of x (one shuffle).
+template <int Shift, class L>
+RBDC_HOST_DEVICE inline L rotate_lanes(const L& x) noexcept {
+  return make_lanes(x[Shift & 3], x[(Shift + 1) & 3], x[(Shift + 2) & 3], x[(Shift + 3) & 3]);
+}
+
 /// The sum over the lanes, (x[0] + x[1]) + (x[2] + x[3]).
 template <class T>
 RBDC_HOST_DEVICE inline T lane_sum(const LaneArray<T>& x) noexcept {

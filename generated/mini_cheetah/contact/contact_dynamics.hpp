@@ -7,11 +7,11 @@
 // contact_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics is the same code:
-//   mini_cheetah/common/contact_dynamics_68d351d83dd1.hpp
+//   mini_cheetah/common/contact_dynamics_1a29c7c7a06b.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_68d351d83dd1.hpp"
+#include "mini_cheetah/common/contact_dynamics_1a29c7c7a06b.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -25,10 +25,10 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param lambda out 12x1: contact forces on the feet, world; rows 3k + r: contact k (the scene's contacts in the robot's foot order), world axis r
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             5619  4618   26     0    24   80  10367
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 5600 arithmetic
+///             5727  4708   26     0    24   80  10565
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 5240 arithmetic
 ///   instructions, scalar tree 10140
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_68d351d83dd1::contact_dynamics;
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_1a29c7c7a06b::contact_dynamics;
 
 /// contact_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

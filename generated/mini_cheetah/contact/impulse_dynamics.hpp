@@ -7,11 +7,11 @@
 // impulse_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose impulse_dynamics is the same code:
-//   mini_cheetah/common/impulse_dynamics_92c0b2e52bfa.hpp
+//   mini_cheetah/common/impulse_dynamics_8ad203ab924d.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/impulse_dynamics_92c0b2e52bfa.hpp"
+#include "mini_cheetah/common/impulse_dynamics_8ad203ab924d.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -25,10 +25,10 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param impulse out 12x1: contact impulses, world; rows 3k + r: contact k (the scene's contacts in the robot's foot order), world axis r
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             4262  3472   26     0    24   76   7860
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4833 arithmetic
+///             4370  3562   26     0    24   76   8058
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4473 arithmetic
 ///   instructions, scalar tree 7661
-using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_92c0b2e52bfa::impulse_dynamics;
+using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_8ad203ab924d::impulse_dynamics;
 
 /// impulse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

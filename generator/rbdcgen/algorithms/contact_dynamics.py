@@ -178,8 +178,8 @@ class LaneDelassus(DampedSolve):
     (contact k's column is non-zero on limb k and the trunk only, so no lane sum where a limb meets
     the trunk). A's diagonal 3 × 3 blocks are lane dot products over the limb's and the trunk's
     dofs; an off-diagonal block, two contacts on different limbs, sums over the trunk's dofs only,
-    between their lanes. The dense solve is scalar; λ returns to the lanes through one-hot lane
-    constants."""
+    one lane against another: a lane dot product with the second operand's lanes rotated. The dense
+    solve is scalar; λ returns to the lanes through one-hot lane constants."""
 
     def __init__(self, m, contact_lanes):
         self._lanes = contact_lanes  # lane of each contact, in the scene's contact order
@@ -191,16 +191,23 @@ class LaneDelassus(DampedSolve):
         m.mark("contact: Delassus matrix J M⁻¹Jᵀ and its damped factor")
         Z = [fd.ltdl_forward(self._L, parents, row) for row in self.J]
         self._D_inv_Z = [[z * d for z, d in zip(column, inv_diag)] for column in Z]
-        blocks = [[sp.dot(Z[r], self._D_inv_Z[s]) for s in range(3)] for r in range(3)]
         trunk = range(self._root)
+        # shifted[δ][r][s], lane k: Z_r's column of contact k against D⁻¹Z_s's of the contact δ lanes
+        # on (its lanes rotated); δ = 0 sums over all dofs (a diagonal block), δ ≠ 0 over the trunk's.
+        # A is symmetric: δ ≤ LANES/2 covers every pair of lanes.
+        shifted = [[[sp.dot(Z[r], self._D_inv_Z[s]) for s in range(3)] for r in range(3)]]
+        for delta in range(1, ex.LANES // 2 + 1):
+            shifted.append([[sp.dot([Z[r][t] for t in trunk],
+                                    [ex.lane_rotate(self._D_inv_Z[s][t], delta) for t in trunk])
+                             for s in range(3)] for r in range(3)])
         rows = [(c, r) for c in range(len(contact_lanes)) for r in range(3)]
         A = [[None] * len(rows) for _ in rows]
         for i, (c, r) in enumerate(rows):
             for j, (d, s) in enumerate(rows[:i + 1]):
                 k, l = contact_lanes[c], contact_lanes[d]
-                A[i][j] = A[j][i] = (ex.lane_get(blocks[r][s], k) if c == d else
-                                     sp.dot([ex.lane_get(Z[r][t], k) for t in trunk],
-                                            [ex.lane_get(self._D_inv_Z[s][t], l) for t in trunk]))
+                delta = (l - k) % ex.LANES
+                A[i][j] = A[j][i] = (ex.lane_get(shifted[delta][r][s], k) if delta < len(shifted) else
+                                     ex.lane_get(shifted[ex.LANES - delta][s][r], l))
         super().__init__(A)
 
     def feet_rows(self, m, values):

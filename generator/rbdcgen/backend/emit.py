@@ -180,6 +180,8 @@ def emit_body(fn, angle_names=None):
             return "%s[%d]" % node.value
         if node.op == "lane_get":
             return "%s[%d]" % (text(node.args[0], True), node.value)
+        if node.op == "lane_rotate":
+            return "rotate_lanes<%d>(%s)" % (node.value, text(node.args[0], False))
         if node.op == "neg":
             body = "-" + text(node.args[0], True)
         elif node.op in ("add", "sub"):

@@ -343,6 +343,17 @@ def lane_get(x, lane):
     return x.graph.intern("lane_get", (x,), int(lane)) if x.lane else x
 
 
+def lane_rotate(x, shift):
+    """x with its lanes rotated: lane k holds lane (k + shift) mod LANES of x (one shuffle)."""
+    shift %= LANES
+    if not x.lane or shift == 0:
+        return x
+    values = constant_lanes(x)
+    if values is not None:
+        return lane_const(values[(k + shift) % LANES] for k in range(LANES))
+    return x.graph.intern("lane_rotate", (x,), shift)
+
+
 def reachable(outputs):
     """Nodes reaching `outputs` (dead-code elimination), in a deterministic topological order:
     depth-first post-order, operands before users, outputs visited in the given order."""
@@ -463,6 +474,9 @@ def evaluate(outputs, inputs):
             values[node.id] = (x[0] + x[1]) + (x[2] + x[3])
         elif node.op == "lane_get":
             values[node.id] = values[node.args[0].id][node.value]
+        elif node.op == "lane_rotate":
+            x = values[node.args[0].id]
+            values[node.id] = tuple(x[(k + node.value) % LANES] for k in range(LANES))
         else:
             values[node.id] = _lanewise(_EVAL[node.op], [values[a.id] for a in node.args])
     return [values[node.id] for node in outputs]

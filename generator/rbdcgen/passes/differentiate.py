@@ -213,6 +213,8 @@ def substitute(outputs, replacement):
                 new[node.id] = node
             elif node.op == "lane_get":
                 new[node.id] = ex.lane_get(args[0], node.value)
+            elif node.op == "lane_rotate":
+                new[node.id] = ex.lane_rotate(args[0], node.value)
             else:
                 new[node.id] = _BUILD[node.op](*args)
     return [new[node.id] for node in outputs]

@@ -36,6 +36,12 @@ class LaneConstants(unittest.TestCase):
             self.assertEqual((x * c).op, "mul")  # no lane is 0 or 1 in every lane: a lane product
             self.assertEqual(ex.lane_sum(x).op, "mul")  # a scalar summed over the lanes: 4 x
             self.assertIs(ex.lane_get(x, 2), x)
+            rotated = ex.lane_rotate(c, 1)  # a lane constant rotates by folding
+            self.assertEqual(graph.lane_constants[rotated.value[1]], (-1.0, 2.0, 0.5, 1.0))
+            self.assertIs(ex.lane_rotate(x, 3), x)  # a value the lanes share
+            y = ex.symbol("lane_q", 0)
+            self.assertEqual(ex.evaluate([ex.lane_rotate(y, 3)], {"lane_q": [(1.0, 2.0, 3.0, 4.0)]}),
+                             [(4.0, 1.0, 2.0, 3.0)])
 
 
 LANE_FRAMES = ("RF_foot", "trunk", "LH_hip", "LF_foot", "RF_hip", "RH_foot", "LF_hip", "LH_foot", "RH_hip")
