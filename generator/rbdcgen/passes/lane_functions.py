@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from . import differentiate, lane_derivatives
 from ..algorithms import centroidal, contact_dynamics, crba, forward_dynamics, osc, rnea
-from ..views.limb_lanes import LaneModel, contact_lanes, frame_shapes
+from ..views.limb_lanes import LaneModel, contact_lanes, feet_shape, frame_shapes
 from ..views.limbs import isomorphic_limbs
 
 # derivative function → the trace of its lane function: its own on the lane model (the analytic RNEA
@@ -24,6 +24,8 @@ CENTROIDAL = {
 # the frame functions: traced on the lane model by their scalar builders (views/limb_lanes.lane_frames;
 # m.frame_values and m.frame_rows put the lane frames' results in the scene's frame order)
 FRAMES = ("frame_placements", "frame_velocities", "frame_jacobians", "frame_bias_accelerations")
+# the same for the feet's J̇v (m.feet_values: the lane feet's results as the kept feet's)
+FEET = ("feet_bias_accelerations",)
 # contact function → its trace on the lane model, one contact foot per limb (LaneDelassus)
 CONTACT = {
     "contact_dynamics": lambda m: _contact_outputs(m, ("a", "lambda"), contact_dynamics.contact_dynamics),
@@ -33,12 +35,12 @@ SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
           "mass_matrix_lanes": "mass_matrix", "mass_matrix_lower_lanes": "mass_matrix_lower",
           "forward_dynamics_lanes": "forward_dynamics", "osc_open_chain_lanes": "osc_open_chain",
           **{name + "_lanes": name for name in DERIVATIVES}, **{name + "_lanes": name for name in CENTROIDAL},
-          **{name + "_lanes": name for name in FRAMES}, **{name + "_lanes": name for name in CONTACT}}
+          **{name + "_lanes": name for name in FRAMES + FEET}, **{name + "_lanes": name for name in CONTACT}}
 # function → its lane function
 LANE_NAME = {scalar: lanes for lanes, scalar in SCALAR.items()}
 # lane functions with the foot forces as lane inputs
 WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_derivatives_lanes", "osc_open_chain_lanes",
-             "contact_dynamics_lanes", "impulse_dynamics_lanes")
+             "contact_dynamics_lanes", "impulse_dynamics_lanes", "feet_bias_accelerations_lanes")
 
 
 def model(robot, scene, zero_inputs, name):
@@ -54,6 +56,8 @@ def available(robot, scene, name, limbs):
         frame_shapes(scene.frames_for(robot), limbs)
     if name in CONTACT:
         contact_lanes(scene.feet_for(robot), scene.contacts_for(robot), limbs)
+    if name in FEET:
+        feet_shape(robot.name, scene.feet_for(robot), limbs)
 
 
 def spec(robot, nf, scalar_specs):
@@ -64,7 +68,7 @@ def spec(robot, nf, scalar_specs):
     return {
         **_in_lanes(scalar, DERIVATIVES),
         **_in_lanes(centroidal.specs(nv), CENTROIDAL),
-        **_in_lanes(scalar_specs, {name: scalar_specs[name][3] for name in FRAMES}),
+        **_in_lanes(scalar_specs, {name: scalar_specs[name][3] for name in FRAMES + FEET}),
         **_in_lanes(scalar_specs, CONTACT),
         "bias_lanes": (
             "Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes "

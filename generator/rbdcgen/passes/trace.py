@@ -258,7 +258,7 @@ def _whole_body_spec(robot, nf, n_frames):
             "J̇v of the feet: each foot point's classical acceleration at a = 0, world frame.",
             ("q", "v"),
             [("Jdot_v", 3, nf, "one column per foot, world frame")],
-            lambda m: {"Jdot_v": _columns(frames.feet_bias_accelerations(m))}),
+            lambda m: {"Jdot_v": _columns(m.feet_values(frames.feet_bias_accelerations(m)))}),
         "center_of_mass": centroidal_specs["center_of_mass"] + (centroidal.center_of_mass_outputs,),
         "center_of_mass_jacobian": centroidal_specs["center_of_mass_jacobian"] + (
             lambda m: {"J_c": _matrix(centroidal.center_of_mass_jacobian(m), nv)},),

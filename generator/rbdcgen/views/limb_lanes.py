@@ -74,16 +74,15 @@ class LaneModel(TracedModel):
 
     # --- lane values --------------------------------------------------------------------------
     def _lane_feet(self):
-        """The scene's feet as lane feet of the reduced tree, and their lane input lane_f."""
+        """The scene's feet as lane feet of the reduced tree, and their lane input lane_f; per kept
+        foot its place (lane foot n, lane k) in foot_places."""
         kept = list(self.feet)
-        per_limb = [[k for k, foot in enumerate(kept) if foot.body in limb] for limb in self.limbs]
-        shapes = {tuple(limb.index(kept[k].body) for k in feet) for limb, feet in zip(self.limbs, per_limb)}
-        if len(shapes) != 1 or sum(map(len, per_limb)) != len(kept):
-            raise LimbError("robot '%s': the kept feet are not the same on every limb"
-                            % self.full.name)
+        per_limb, shape = feet_shape(self.full.name, kept, self.limbs)
+        self.foot_places = tuple((feet_k.index(f), k) for f in range(len(kept))
+                                 for k, feet_k in enumerate(per_limb) if f in feet_k)
         feet = []
         self.lane_inputs["lane_f"] = []
-        for n, body in enumerate(next(iter(shapes))):
+        for n, body in enumerate(shape):
             lanes = [kept[feet_k[n]] for feet_k in per_limb]
             offset = tuple(ex.lane_const([foot.offset[c] for foot in lanes]) for c in range(3))
             feet.append(replace(lanes[0], name="/".join(f.name for f in lanes), body=body + 1,
@@ -208,6 +207,10 @@ class LaneModel(TracedModel):
                 full[self.full_index(x, k)] = ex.lane_get(value, k)
         return tuple(full)
 
+    def feet_values(self, values):
+        """Per lane foot values as the kept feet's: lane k of lane foot n for the foot on limb k."""
+        return [_lane_part(values[n], k) for n, k in self.foot_places]
+
     def frame_values(self, values):
         """A trunk frame's value as it is, a lane frame's lane k for the frame on limb k."""
         return [values[n] if kind == "trunk" else _lane_part(values[n], k) for kind, n, k in self.frame_places]
@@ -250,6 +253,16 @@ class LaneModel(TracedModel):
                 for k in range(ex.LANES):
                     full[self.full_index(r, k)][self.full_index(c, k)] = ex.lane_get(value, k)
         return full
+
+
+def feet_shape(robot_name, kept, limbs):
+    """Per limb the indices of the kept feet on it, and the limb bodies they sit on (the same on
+    every limb, else LimbError)."""
+    per_limb = [[k for k, foot in enumerate(kept) if foot.body in limb] for limb in limbs]
+    shapes = {tuple(limb.index(kept[k].body) for k in feet) for limb, feet in zip(limbs, per_limb)}
+    if len(shapes) != 1 or sum(map(len, per_limb)) != len(kept):
+        raise LimbError("robot '%s': the kept feet are not the same on every limb" % robot_name)
+    return per_limb, next(iter(shapes))
 
 
 def contact_lanes(feet, contacts, limbs):

@@ -173,6 +173,11 @@ class TracedModel:
         unchanged here; summed over the lanes of a lane foot (views/limb_lanes.LaneModel)."""
         return term
 
+    def feet_values(self, values):
+        """Per-foot values (one per traced foot) as the kept feet's: unchanged here; the lane feet's
+        lanes taken apart (views/limb_lanes.LaneModel)."""
+        return values
+
     def frame_values(self, values):
         """Per-frame values (one per traced frame: a vector or a matrix) in the scene's frame order:
         unchanged here; a lane frame's lanes taken apart (views/limb_lanes.LaneModel)."""
