@@ -7,7 +7,8 @@ are solved through their Schur complement, the Delassus matrix A = J M⁻¹Jᵀ 
 LᵀDL factor of forward_dynamics), with the runtime's damping: A + μ1 factorised once (dense LDLᵀ of
 the small contact block), μ = DAMPING_RELATIVE · tr(A)/m + DAMPING_FLOOR, and PROXIMAL_STEPS proximal
 steps λ ← λ + (A + μ1)⁻¹(b − A λ) from λ = 0. Redundant contacts (a singular A) then give the
-least-norm λ instead of a division by zero."""
+least-norm λ instead of a division by zero. On the lane model (one contact foot per limb) the
+Delassus matrix is built by LaneDelassus, the damped solve being the same (DampedSolve)."""
 
 from __future__ import annotations
 

@@ -51,7 +51,9 @@ def model(robot, scene, zero_inputs, name):
 
 def available(robot, scene, name, limbs):
     """LimbError if the lane form of `name` does not apply to this scene: a frame function needs the
-    same frames on every limb (views/limb_lanes.frame_shapes)."""
+    same frames on every limb (views/limb_lanes.frame_shapes), the contact functions one kept foot
+    and at most one contact per limb (contact_lanes), the feet's J̇v the same feet on every limb
+    (feet_shape)."""
     if name in FRAMES:
         frame_shapes(scene.frames_for(robot), limbs)
     if name in CONTACT:
@@ -64,7 +66,7 @@ def spec(robot, nf, scalar_specs):
     """trace.py's function table for the lane functions (same shape as trace._spec); `scalar_specs`:
     the scalar functions' table the frame and contact functions take their signatures from."""
     nv = robot.nv
-    scalar = differentiate.spec(robot, nf, 0)  # the contact functions have no lane version
+    scalar = differentiate.spec(robot, nf, 0)  # the contact derivatives have no lane version
     return {
         **_in_lanes(scalar, DERIVATIVES),
         **_in_lanes(centroidal.specs(nv), CENTROIDAL),
