@@ -209,27 +209,23 @@ class LaneModel(TracedModel):
 
     def feet_values(self, values):
         """Per lane foot values as the kept feet's: lane k of lane foot n for the foot on limb k."""
-        return [_lane_part(values[n], k) for n, k in self.foot_places]
+        return _places(values, self.foot_places)
 
     def frame_values(self, values):
-        """A trunk frame's value as it is, a lane frame's lane k for the frame on limb k."""
-        return [values[n] if kind == "trunk" else _lane_part(values[n], k) for kind, n, k in self.frame_places]
+        """Per reduced frame values as the scene's frames': lane k of reduced frame n for the frame
+        on limb k (a trunk frame's value is no lane value: as it is)."""
+        return _places(values, self.frame_places)
 
     def frame_rows(self, rows):
         """Rows of 6 per reduced frame (columns: the reduced tree's dofs) as the scene's frames'
-        rows over the full robot's dofs: a trunk frame's as they are (no joint moves it), a lane
-        frame's lane k for the frame on limb k, limb k's joint columns from the lane limb's, the
-        other limbs' zero."""
+        rows over the full robot's dofs: lane k for the frame on limb k, limb k's joint columns
+        from the lane limb's, the other limbs' zero (a trunk frame's joint columns are zeros)."""
         full = []
-        for kind, n, k in self.frame_places:
+        for n, k in self.frame_places:
             for r in range(6):
-                row = rows[6 * n + r]
                 out = [ex.const(0.0)] * self.full.nv
-                for x, value in enumerate(row):
-                    if kind == "trunk":
-                        out[x] = value  # trunk frames: root columns only
-                    else:
-                        out[self.full_index(x, k)] = ex.lane_get(value, k)
+                for x, value in enumerate(rows[6 * n + r]):
+                    out[self.full_index(x, k)] = ex.lane_get(value, k)
                 full.append(tuple(out))
         return tuple(full)
 
@@ -298,7 +294,7 @@ def frame_shapes(frames, limbs):
 def lane_frames(frames, limbs):
     """The scene's frames on the reduced tree: those on the trunk as they are, those on the limbs
     as lane frames (frame_shapes; the translation a lane constant). Also, per scene frame, its
-    place: ("trunk", n, 0) or ("lane", n, k), n indexing the reduced frames (trunk frames first)."""
+    place (n, k): reduced frame n (trunk frames first), lane k (0 for a trunk frame)."""
     trunk, per_limb, shape = frame_shapes(frames, limbs)
     reduced = list(trunk)
     for n, (l, rotation) in enumerate(shape):
@@ -307,9 +303,13 @@ def lane_frames(frames, limbs):
         reduced.append(replace(lanes[0], name="/".join(f.name for f in lanes), body=l + 1,
                                rotation=rotation, translation=translation))
     lane_of = {f.name: (len(trunk) + n, k) for k, fs in enumerate(per_limb) for n, f in enumerate(fs)}
-    places = tuple(("trunk", trunk.index(f), 0) if f.body == 0 else ("lane",) + lane_of[f.name]
-                   for f in frames)
+    places = tuple((trunk.index(f), 0) if f.body == 0 else lane_of[f.name] for f in frames)
     return tuple(reduced), places
+
+
+def _places(values, places):
+    """Lane k of values[n] for each place (n, k)."""
+    return [_lane_part(values[n], k) for n, k in places]
 
 
 def _lane_part(value, lane):
