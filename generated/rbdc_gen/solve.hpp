@@ -79,36 +79,45 @@ using ColumnRun = Run<Scalar, NC % run_size<Scalar>() == 0 ? run_size<Scalar>() 
 #define RBDC_WIDE_RUNS
 #endif
 
+/// The dof tree as the looped solve walks it, tables the generator writes (looped_solve.py): dof i's
+/// factor entries L[k] for k in [first[i], first[i + 1]) are at its ancestors ancestor[k], nearest
+/// first (the packed layout of L); dof j's descendants are below_dof[e] for e in [below_first[j],
+/// below_first[j + 1]), deepest first, their entry at j being L[below_entry[e]]. NE ≥ 1 (a tree
+/// without ancestors has one unused entry).
+template <int NV, int NE>
+struct DofTree {
+  int first[NV + 1];
+  int ancestor[NE];
+  int below_first[NV + 1];
+  int below_dof[NE];
+  int below_entry[NE];
+};
+
 /// Solves M X = B in place for the NC columns of B (row-major NV × NC), M = Lᵀ D L over the dof
-/// tree: parent[i] is dof i's parent dof (−1 at a root, parents before children), L holds dof i's
-/// factor entries at its ancestors, dof by dof, nearest ancestor first, D_inv the inverse pivots.
-template <class Scalar, int NV, int NC>
-RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_columns(const int (&parent)[NV], const Scalar* L,
+/// tree, L its factor entries in the packed layout of `tree`, D_inv the inverse pivots. Both passes
+/// sum each row of X locally from rows already final (no aliasing with the rows it reads), in the
+/// order they became final: the row finished last comes last, so a row's sum runs while the rows
+/// before it finish instead of after (a walk up the parents, nearest first, waited on each).
+template <class Scalar, int NV, int NC, int NE>
+RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_columns(const DofTree<NV, NE>& tree, const Scalar* L,
                                                                const Scalar* D_inv, Scalar* B) noexcept {
   using R = ColumnRun<Scalar, NC>;
   constexpr int W = R::size;
-  int first[NV];  // where dof i's entries start in L
-  int entries = 0;
-  for (int i = 0; i < NV; ++i) {
-    first[i] = entries;
-    for (int j = parent[i]; j != -1; j = parent[j]) ++entries;
-  }
-  typename R::type row[NC / W];  // row i of B held locally: no aliasing with the rows it updates or reads
-  for (int i = NV - 1; i >= 0; --i) {  // B ← L⁻ᵀ B, leaves to root
-    for (int c = 0; c < NC / W; ++c) row[c] = R::load(B + i * NC + c * W);
-    int k = first[i];
-    for (int j = parent[i]; j != -1; j = parent[j], ++k) {
-      Scalar* row_j = B + j * NC;
-      const Scalar l = L[k];
-      for (int c = 0; c < NC / W; ++c) R::store(row_j + c * W, R::load(row_j + c * W) - l * row[c]);
+  typename R::type row[NC / W];
+  for (int j = NV - 1; j >= 0; --j) {  // B ← L⁻ᵀ B, leaves to root: row j from its descendants'
+    for (int c = 0; c < NC / W; ++c) row[c] = R::load(B + j * NC + c * W);
+    for (int e = tree.below_first[j]; e < tree.below_first[j + 1]; ++e) {
+      const Scalar* row_i = B + tree.below_dof[e] * NC;
+      const Scalar l = L[tree.below_entry[e]];
+      for (int c = 0; c < NC / W; ++c) row[c] -= l * R::load(row_i + c * W);
     }
+    for (int c = 0; c < NC / W; ++c) R::store(B + j * NC + c * W, row[c]);
   }
-  for (int i = 0; i < NV; ++i) {  // B ← L⁻¹ D⁻¹ B, root to leaves (ancestors' rows final)
+  for (int i = 0; i < NV; ++i) {  // B ← L⁻¹ D⁻¹ B, root to leaves: row i from its ancestors', root first
     const Scalar d = D_inv[i];
     for (int c = 0; c < NC / W; ++c) row[c] = R::load(B + i * NC + c * W) * d;
-    int k = first[i];
-    for (int j = parent[i]; j != -1; j = parent[j], ++k) {
-      const Scalar* row_j = B + j * NC;
+    for (int k = tree.first[i + 1] - 1; k >= tree.first[i]; --k) {
+      const Scalar* row_j = B + tree.ancestor[k] * NC;
       const Scalar l = L[k];
       for (int c = 0; c < NC / W; ++c) row[c] -= l * R::load(row_j + c * W);
     }
@@ -116,32 +125,69 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_columns(const int (&paren
   }
 }
 
-/// C ← A B (Minus: A B − C) for row-major A (M × K), B (K × NC) and C (M × NC): each row of C summed
-/// in a local array (no aliasing with B, so it stays in vector registers), one SIMD multiply-add
-/// per run of columns per entry of A.
-template <class Scalar, int M, int K, int NC, bool Minus>
-RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_rows(const Scalar* A, const Scalar* B, Scalar* C) noexcept {
+/// C ← A B + Sign·D (Sign 0, −1 or 1) for row-major A (M × K, LDA entries per row), B (K × NC), D and
+/// C (M × NC; D may be C): each row of C summed in a local array (no aliasing with B, so it stays in
+/// vector registers), one SIMD multiply-add per run of columns per entry of A.
+template <class Scalar, int M, int K, int NC, int Sign, int LDA>
+RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_rows(const Scalar* A, const Scalar* B, const Scalar* D,
+                                                          Scalar* C) noexcept {
   using R = ColumnRun<Scalar, NC>;
   constexpr int W = R::size;
   for (int i = 0; i < M; ++i) {
     typename R::type row[NC / W];
-    for (int c = 0; c < NC / W; ++c) row[c] = Minus ? -R::load(C + i * NC + c * W) : R::zero();
+    for (int c = 0; c < NC / W; ++c)
+      row[c] = Sign == 0 ? R::zero() : Sign < 0 ? -R::load(D + i * NC + c * W) : R::load(D + i * NC + c * W);
     for (int k = 0; k < K; ++k) {
-      const Scalar a = A[i * K + k];
+      const Scalar a = A[i * LDA + k];
       for (int c = 0; c < NC / W; ++c) row[c] += a * R::load(B + k * NC + c * W);
     }
     for (int c = 0; c < NC / W; ++c) R::store(C + i * NC + c * W, row[c]);
   }
 }
 
-template <class Scalar, int M, int K, int NC>
+/// C ← A B.
+template <class Scalar, int M, int K, int NC, int LDA = K>
 RBDC_HOST_DEVICE inline void multiply(const Scalar* A, const Scalar* B, Scalar* C) noexcept {
-  multiply_rows<Scalar, M, K, NC, false>(A, B, C);
+  multiply_rows<Scalar, M, K, NC, 0, LDA>(A, B, C, C);
 }
 
-template <class Scalar, int M, int K, int NC>
+/// C ← A B − C.
+template <class Scalar, int M, int K, int NC, int LDA = K>
 RBDC_HOST_DEVICE inline void multiply_minus(const Scalar* A, const Scalar* B, Scalar* C) noexcept {
-  multiply_rows<Scalar, M, K, NC, true>(A, B, C);
+  multiply_rows<Scalar, M, K, NC, -1, LDA>(A, B, C, C);
+}
+
+/// C ← D + A B (C not B).
+template <class Scalar, int M, int K, int NC, int LDA = K>
+RBDC_HOST_DEVICE inline void multiply_add(const Scalar* A, const Scalar* B, const Scalar* D, Scalar* C) noexcept {
+  multiply_rows<Scalar, M, K, NC, 1, LDA>(A, B, D, C);
+}
+
+/// The non-zeros of a row-major M × K matrix, a table the generator writes (looped_solve.py): row i's
+/// at columns column[e] for e in [first[i], first[i + 1]). NNZ ≥ 1 (one unused entry when none).
+template <int M, int NNZ>
+struct RowSparsity {
+  int first[M + 1];
+  int column[NNZ];
+};
+
+/// C ← A B − C as multiply_minus, reading only A's non-zeros (a contact row is zero off its foot's
+/// path: half of the Mini Cheetah's).
+template <class Scalar, int M, int K, int NC, int NNZ>
+RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_sparse_minus(const RowSparsity<M, NNZ>& sparsity, const Scalar* A,
+                                                                  const Scalar* B, Scalar* C) noexcept {
+  using R = ColumnRun<Scalar, NC>;
+  constexpr int W = R::size;
+  for (int i = 0; i < M; ++i) {
+    typename R::type row[NC / W];
+    for (int c = 0; c < NC / W; ++c) row[c] = -R::load(C + i * NC + c * W);
+    for (int e = sparsity.first[i]; e < sparsity.first[i + 1]; ++e) {
+      const int k = sparsity.column[e];
+      const Scalar a = A[i * K + k];
+      for (int c = 0; c < NC / W; ++c) row[c] += a * R::load(B + k * NC + c * W);
+    }
+    for (int c = 0; c < NC / W; ++c) R::store(C + i * NC + c * W, row[c]);
+  }
 }
 
 /// Solves F X = B in place for the NC columns of B (row-major N × NC), F = L D Lᵀ dense: L row-major,
@@ -169,24 +215,30 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ldlt_solve_columns(const Scalar* L, 
   }
 }
 
-/// Q = Σ_{j<Steps} Gʲ, G = 1 − F⁻¹A (F = L D Lᵀ, all N × N row-major): the proximal steps
-/// x ← G x + F⁻¹b from x = 0 give x = Q F⁻¹b after Steps steps (Horner: Q = G + G Q, then + 1).
-template <class Scalar, int N, int Steps>
-RBDC_HOST_DEVICE inline void proximal_step_sum(const Scalar* L, const Scalar* D_inv, const Scalar* A,
-                                               Scalar* Q) noexcept {
-  static_assert(Steps >= 2, "at least two proximal steps");
-  Scalar G[N * N];
-  Scalar GQ[N * N];
-  for (int k = 0; k < N * N; ++k) G[k] = A[k];
-  ldlt_solve_columns<Scalar, N, N>(L, D_inv, G);
-  for (int i = 0; i < N; ++i)
-    for (int j = 0; j < N; ++j) G[i * N + j] = Scalar(i == j ? 1 : 0) - G[i * N + j];
-  for (int k = 0; k < N * N; ++k) Q[k] = G[k];
-  for (int step = 2; step < Steps; ++step) {
-    multiply<Scalar, N, N, N>(G, Q, GQ);
-    for (int k = 0; k < N * N; ++k) Q[k] = G[k] + GQ[k];
+/// The proximal steps x ← F⁻¹(b + μx) from x = 0, Steps of them, give x = Q F⁻¹b with
+/// Q = Σ_{j<Steps} Gʲ, G = μF⁻¹ (eigenvalues μ/(aᵢ + μ) ∈ (0, 1]: Q stays bounded when contacts are
+/// redundant and F⁻¹ is not). F = L D Lᵀ comes as F⁻¹'s halves U = L⁻ᵀ and DL = D⁻¹L⁻¹ (both
+/// row-major N × P, their last P − N columns zero); this forms V = Q U (N × P), so that x = V (DL b):
+/// F⁻¹'s large factor D⁻¹ meets each right-hand side before anything is summed into it (a Q F⁻¹
+/// formed as one matrix lost the small components of redundant contacts' solutions to the large
+/// ones). Horner's rule V ← U + G V from V = U, all products: no substitution (its rows wait on each
+/// other) and no element-wise pass between them (a wide load of narrow stores waits for them to
+/// retire). Rows of P columns (P a multiple of the SIMD run) keep them vectorised where N is not.
+template <class Scalar, int N, int P, int Steps>
+RBDC_HOST_DEVICE inline void proximal_step_sum(const Scalar* U, const Scalar* DL, const Scalar mu, Scalar* V) noexcept {
+  static_assert(Steps >= 2 && P >= N, "two proximal steps at least, P ≥ N columns");
+  Scalar U_mu[N * P];
+  for (int k = 0; k < N * P; ++k) U_mu[k] = mu * U[k];
+  alignas(64) Scalar G[N * P];
+  multiply<Scalar, N, N, P, P>(U_mu, DL, G);  // μF⁻¹
+  alignas(64) Scalar other[N * P];
+  Scalar* next = (Steps - 1) % 2 == 0 ? other : V;  // the last product lands in V
+  const Scalar* last = U;
+  for (int step = 1; step < Steps; ++step) {
+    multiply_add<Scalar, N, N, P, P>(G, last, U, next);
+    last = next;
+    next = next == V ? other : V;
   }
-  for (int i = 0; i < N; ++i) Q[i * N + i] += Scalar(1);
 }
 
 /// M = Lᵀ D L over the dof tree (Featherstone's LTDL), in place, for mass_matrix_factor's looped form:

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_587fbc5f55f3.hpp
+//   arm7/common/forward_dynamics_derivatives_8a718b4039ad.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_587fbc5f55f3.hpp"
+#include "arm7/common/forward_dynamics_derivatives_8a718b4039ad.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -31,7 +31,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///             3538  3058    6     0    14   15   6631
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4993 arithmetic
 ///   instructions, scalar tree 6236
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_587fbc5f55f3::forward_dynamics_derivatives;
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_8a718b4039ad::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

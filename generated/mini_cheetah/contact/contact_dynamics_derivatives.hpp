@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_a1b0c09d924e.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_da144c40b799.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_a1b0c09d924e.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_da144c40b799.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -29,10 +29,11 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param dlambda_dtau out 12x12: ∂λ/∂τ
 ///
 /// operations    mul    add  div  sqrt  trig  neg   total
-///             65809  63072   26     0    24  117  129048
-/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 51900 arithmetic
-///   instructions, scalar tree 100706
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_a1b0c09d924e::contact_dynamics_derivatives;
+///             65906  63586   26     0    24  185  129727
+/// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
+///   lanes, the solve's right-hand sides in SIMD across columns): 35446 arithmetic
+///   instructions, scalar tree 100706, looped solve 52264
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_da144c40b799::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

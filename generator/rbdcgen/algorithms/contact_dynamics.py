@@ -107,7 +107,7 @@ class DampedSolve:
         two products with L⁻¹, formed once: a substitution chains each entry through every earlier
         one, and five of them in a row were latency bound (docs/performance.md, "The Delassus
         steps as products")."""
-        L_inv, inv_d = unit_lower_inverse(self.factor[0]), self.factor[1]
+        L_inv, inv_d = self.lower_inverse, self.factor[1]
         n = len(b)
         x = None
         for _ in range(PROXIMAL_STEPS):
@@ -115,6 +115,11 @@ class DampedSolve:
             y = [sp.dot(L_inv[i][:i + 1], r[:i + 1]) * inv_d[i] for i in range(n)]
             x = [sp.dot([L_inv[k][i] for k in range(i, n)], y[i:]) for i in range(n)]
         return x
+
+    @cached_property
+    def lower_inverse(self):
+        """L⁻¹ of the factor's unit lower triangle (rows)."""
+        return unit_lower_inverse(self.factor[0])
 
     def step_sum(self):
         """Q = Σ_{j<PROXIMAL_STEPS} Gʲ, G = 1 − F⁻¹A (F = A + μ1), built by Horner's rule: the proximal
@@ -163,6 +168,14 @@ class Delassus(DampedSolve):
         """M⁻¹Jᵀ, one column per row of J (the derivatives need it whole)."""
         return [fd.ltdl_substitute(self._L, self._parents, column, range(len(column)))
                 for column in self._D_inv_Z]
+
+    def feet_forces(self, m, lam):
+        """The feet's forces (3 per kept foot, zero off the contacts) of the contact forces λ."""
+        forces = list(sp.zeros(3 * len(m.feet)))
+        for c, foot in enumerate(m.contacts):
+            k = m.feet.index(foot)
+            forces[3 * k:3 * k + 3] = lam[3 * c:3 * c + 3]
+        return forces
 
     def apply_Minv_Jt(self, lam):
         """M⁻¹Jᵀ λ = L⁻¹ (D⁻¹Z λ)."""
@@ -218,16 +231,44 @@ class LaneDelassus(DampedSolve):
         """Lane values aligned with J's three rows as scalars in contact order."""
         return [ex.lane_get(values[r], k) for k in self._lanes for r in range(3)]
 
-    def apply_Minv_Jt(self, lam):
-        """M⁻¹Jᵀ λ = L⁻¹ (D⁻¹Z λ): λ's rows back in the lanes, limb k's dofs take contact k's
-        columns lane by lane, the trunk's dofs every contact's (the sum over the lanes)."""
-        n = len(self._parents)
+    def feet_forces(self, m, lam):
+        """The lane foot's force: λ in the lanes."""
+        return self._in_lanes(lam)
+
+    def _in_lanes(self, lam):
+        """λ's three rows back in the lanes through one-hot lane constants (zero in a lane without
+        contact)."""
         in_lanes = []
         for r in range(3):
             x = ex.const(0.0)
             for c, k in enumerate(self._lanes):
                 x = x + ex.lane_const([1.0 if lane == k else 0.0 for lane in range(ex.LANES)]) * lam[3 * c + r]
             in_lanes.append(x)
+        return in_lanes
+
+    def full_J(self, m):
+        """J's rows over the full robot's dofs, in contact order: contact c's lane of the lane rows,
+        the other limbs' columns zero."""
+        rows = []
+        for k in self._lanes:
+            for r in range(3):
+                row = [ex.const(0.0)] * m.full.nv
+                for x, value in enumerate(self.J[r]):
+                    row[m.full_index(x, k)] = ex.lane_get(value, k)
+                rows.append(row)
+        return rows
+
+    def full_Minv_Jt(self, m):
+        """M⁻¹Jᵀ over the full robot's dofs, one column per row of full_J: L⁻¹(D⁻¹Z) with contact k's
+        column in lane k (LaneModel.substitute_limb_columns)."""
+        per_axis = [m.substitute_limb_columns(self._L, self._parents, column) for column in self._D_inv_Z]
+        return [m.scatter(per_axis[r][k]) for k in self._lanes for r in range(3)]
+
+    def apply_Minv_Jt(self, lam):
+        """M⁻¹Jᵀ λ = L⁻¹ (D⁻¹Z λ): λ's rows back in the lanes, limb k's dofs take contact k's
+        columns lane by lane, the trunk's dofs every contact's (the sum over the lanes)."""
+        n = len(self._parents)
+        in_lanes = self._in_lanes(lam)
         y = [sp.dot([column[i] for column in self._D_inv_Z], in_lanes) for i in range(n)]
         y = [self._into_root(x) if i < self._root else x for i, x in enumerate(y)]
         return fd.ltdl_substitute(self._L, self._parents, y, range(n))

@@ -403,7 +403,7 @@ def absorb_negations(outputs):
             return const(-node.value)
         if node.op == "neg":
             return node.args[0]
-        if uses[node.id] != 1:
+        if uses.get(node.id) != 1:  # a node this pass rebuilt: its uses unknown, keep it
             return None
         if node.op == "sub":
             return intern("sub", (node.args[1], node.args[0]))

@@ -39,7 +39,8 @@ def _add(seeds, node, direction, tangent):
 
 
 def configuration_seeds(m):
-    """Seeds of the nv configuration tangents, keys q_direction(k), for a TracedModel `m`."""
+    """Seeds of the nv configuration tangents, keys q_direction(k), for a TracedModel `m` (or a
+    LaneModel: nv of the reduced tree)."""
     robot = m.robot
     q = m.q
     seeds = {}
@@ -60,16 +61,15 @@ def configuration_seeds(m):
             for r in range(3):
                 for c in range(3):
                     _add(seeds, R[r][c], q_direction(k), R_hat[r][c])
-    for i in range(1, robot.nb):
-        joint = robot.joints[i]
-        _add(seeds, q[joint.q_index], q_direction(joint.v_index), ex.const(1.0))
+    for i in range(1, robot.nb):  # m.qi: a lane symbol on the lane model (lane k's own tangent)
+        _add(seeds, m.qi(i), q_direction(robot.joints[i].v_index), ex.const(1.0))
     return seeds
 
 
 def velocity_seeds(m):
     """Seeds of the nv velocity directions, keys v_direction(k): plain partials."""
     return {node.id: {v_direction(k): ex.const(1.0)}
-            for k, node in enumerate(m.v) if node.op != "const"}
+            for k, node in enumerate(m.tree_velocity) if node.op != "const"}
 
 
 def integrate(robot, q, delta):

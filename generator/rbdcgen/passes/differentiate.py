@@ -138,7 +138,7 @@ def _state_seeds(m, with_velocity=True):
     return seeds
 
 
-def _q_and_v(m, outputs, q_name, v_name):
+def q_and_v(m, outputs, q_name, v_name):
     seeds = _state_seeds(m)
     return {q_name: jacobian_columns(outputs, seeds, _q_dirs(m)),
             v_name: jacobian_columns(outputs, seeds, _v_dirs(m))}
@@ -158,7 +158,7 @@ def _rnea_q_and_v(m, base_acceleration, joint_accelerations, with_velocity, name
     tangents of the traced RNEA for a robot with rotors (which the recursion does not model)."""
     if has_rotors(m.robot):
         tau = rnea.rnea(m, base_acceleration, joint_accelerations, with_velocity)
-        return _q_and_v(m, tau, *names)
+        return q_and_v(m, tau, *names)
     dq, dv = rnea_derivatives(m, base_acceleration, joint_accelerations, with_velocity)
     return {name: _column_major(m.scatter_matrix(rows)) for name, rows in zip(names, (dq, dv))}
 
@@ -320,36 +320,41 @@ CONTACT_COLUMNS = (("da_dq", "dlambda_dq"), ("da_dv", "dlambda_dv"), ("da_dtau",
 
 
 def _contact_right_hand_sides(m):
-    """The columns (r₁, r₂) of contact_dynamics_derivatives, q then v then τ (CONTACT_COLUMNS' order):
-    r₁ the forward-dynamics residual's derivatives at placeholder a and f, r₂ the tangents of the
-    contact points' J a + J̇v at the placeholder a (zero for τ), r₁ = −Sᵀ for τ."""
-    robot = m.robot
-    nv = robot.nv
+    """The columns (r₁, r₂) of contact_dynamics_derivatives (contact_columns), r₂ the tangents of the
+    contact points' J a + J̇v at the placeholder a."""
     dq, dv = residual_derivatives(m)
     pddot = [sp.dot(row, m.a) + bias for row, bias in zip(
         cd.contact_rows(m, jacobian.feet_jacobian(m)),
         cd.contact_rows(m, [x for foot in kinematics.feet_bias_accelerations(m) for x in foot]))]
-    r2 = _q_and_v(m, pddot, "q", "v")
+    r2 = q_and_v(m, pddot, "q", "v")
     nc3 = len(pddot)
 
     def split(flat):
-        return [[flat[c * nc3 + r] for r in range(nc3)] for c in range(nv)]
+        return [[flat[c * nc3 + r] for r in range(nc3)] for c in range(m.robot.nv)]
 
+    return contact_columns(m.robot, dq, dv, split(r2["q"]), split(r2["v"]))
+
+
+def contact_columns(robot, dq, dv, r2_q, r2_v):
+    """The columns (r₁, r₂) of contact_dynamics_derivatives, q then v then τ (CONTACT_COLUMNS' order),
+    from the forward-dynamics residual's derivatives dq, dv (rows) at placeholder a and f and r₂'s
+    columns along q and v: r₁ = −Sᵀ and r₂ = 0 for τ."""
+    nv = robot.nv
     selection = [[ex.const(-1.0 if r == robot.joints[i].v_index else 0.0) for r in range(nv)]
                  for i in range(1, robot.nb)]                                     # −Sᵀ
     r1 = ([[dq[r][c] for r in range(nv)] for c in range(nv)]
           + [[dv[r][c] for r in range(nv)] for c in range(nv)] + selection)
-    return r1, split(r2["q"]) + split(r2["v"]) + [sp.zeros(nc3) for _ in selection]
+    return r1, r2_q + r2_v + [sp.zeros(len(r2_q[0])) for _ in selection]
 
 
-def _at_contact_solution(m, named):
-    """{name: expressions} with the placeholders a and f replaced by contact_dynamics' a and λ."""
-    a, lam = cd.contact_dynamics(m)
-    forces = list(sp.zeros(3 * len(m.feet)))
-    for k, foot in enumerate(m.contacts):
-        j = m.feet.index(foot)
-        forces[3 * j:3 * j + 3] = lam[3 * k:3 * k + 3]
-    return replace_symbols(named, list(m.a) + list(m.f), list(a) + forces)
+def at_contact_solution(m, named, delassus=cd.Delassus):
+    """{name: expressions} with the placeholders a and f (m.tree_acceleration, the feet's forces)
+    replaced by contact_dynamics' a and λ (`delassus` as in contact_dynamics)."""
+    system = delassus(m)
+    a, lam = cd.contact_dynamics(m, delassus)
+    forces = [x for k in range(len(m.feet)) for x in m.foot_force(k)]
+    return replace_symbols(named, list(m.tree_acceleration) + forces,
+                           list(a) + system.feet_forces(m, lam))
 
 
 def contact_dynamics_derivatives(m):
@@ -381,33 +386,39 @@ def contact_dynamics_derivatives(m):
         named[a_name] = [x for col in da[first:first + width] for x in col]
         named[l_name] = [x for col in dlam[first:first + width] for x in col]
         first += width
-    return _at_contact_solution(m, named)
+    return at_contact_solution(m, named)
 
 
 def contact_dynamics_derivative_terms(m):
-    """What contact_dynamics_derivatives solves, unsolved (passes/looped_solve.py solves it in a loop),
-    all row-major: `R1`, `R2`, the right-hand sides r₁ (nv rows) and r₂ (3nc rows) side by side,
-    each row zero-padded to `padded` columns;
-    `J`, the contact rows; `Minv_Jt`, M⁻¹Jᵀ; `F_L`, `F_D_inv`, the damped Delassus factor (unit lower
-    triangle, zeros above); `A`, the Delassus matrix (the loop forms Delassus.step_sum from it and
-    the factor); `L`, `D_inv`, M's tree factor as in
-    forward_dynamics_derivative_terms."""
-    nv = m.robot.nv
+    """What contact_dynamics_derivatives solves, unsolved (passes/looped_solve.py solves it in a loop):
+    contact_terms of the scalar tree."""
     r1_columns, r2_columns = _contact_right_hand_sides(m)
     delassus = cd.Delassus(m)
     parents = fd.dof_parents(m.robot)
     L, inv_diag = fd.mass_matrix_factor(m)
-    F_L, F_D_inv = delassus.factor
-    n = len(F_D_inv)
+    return at_contact_solution(m, contact_terms(r1_columns, r2_columns, delassus, delassus.J, delassus.Minv_Jt,
+                                                fd.packed_factor(L, parents), inv_diag))
+
+
+def contact_terms(r1_columns, r2_columns, damped, J, Minv_Jt, L, D_inv):
+    """The terms of contact_dynamics_derivatives' looped form, all row-major: `R1`, `R2`, the
+    right-hand sides r₁ (nv rows) and r₂ (3nc rows) side by side, each row zero-padded to `padded`
+    columns; `J`, the contact rows; `Minv_Jt`, M⁻¹Jᵀ (given as its columns); the damped Delassus
+    matrix F = L D Lᵀ of `damped` (a DampedSolve) as F⁻¹'s two halves, `F_U` = L⁻ᵀ and `F_DL` =
+    D⁻¹L⁻¹ (rows padded like R2's: the loop multiplies them), and `mu`, its damping (the loop forms
+    the proximal steps' closed form from them; contact_dynamics' steps already trace L⁻¹); `L`,
+    `D_inv`, M's tree factor as in forward_dynamics_derivative_terms (L packed)."""
+    nv = len(r1_columns[0])
+    L_inv, D_inv_F = damped.lower_inverse, damped.factor[1]
+    n = len(D_inv_F)
     zero = ex.const(0.0)
-    terms = {"R1": _rows(r1_columns, nv), "R2": _rows(r2_columns, n),
-             "J": [x for row in delassus.J for x in row],
-             "Minv_Jt": [column[r] for r in range(nv) for column in delassus.Minv_Jt],
-             "F_L": [F_L[r][c] if c < r else zero for r in range(n) for c in range(n)],
-             "F_D_inv": list(F_D_inv), "A": [x for row in delassus.A for x in row],
-             "L": fd.packed_factor(L, parents),
-             "D_inv": list(inv_diag)}
-    return _at_contact_solution(m, terms)
+    return {"R1": _rows(r1_columns, nv), "R2": _rows(r2_columns, n),
+            "J": [x for row in J for x in row],
+            "Minv_Jt": [column[r] for r in range(nv) for column in Minv_Jt],
+            "F_U": _rows([[L_inv[c][r] if r <= c else zero for r in range(n)] for c in range(n)], n),
+            "F_DL": _rows([[L_inv[r][c] * D_inv_F[r] if c <= r else zero for r in range(n)] for c in range(n)], n),
+            "mu": [damped.mu],
+            "L": list(L), "D_inv": list(D_inv)}
 
 
 def replace_symbols(named, symbols, values):
@@ -464,9 +475,9 @@ def spec(robot, nf, nc):
             [("R1", nv, padded(2 * nv + nj), "r₁ columns, row-major, zero-padded"),
              ("R2", m3, padded(2 * nv + nj), "r₂ columns, row-major, zero-padded"),
              ("J", m3, nv, "contact rows, row-major"), ("Minv_Jt", nv, m3, "M⁻¹Jᵀ, row-major"),
-             ("F_L", m3, m3, "damped Delassus factor, unit lower, row-major"),
-             ("F_D_inv", m3, 1, "its inverse pivots"),
-             ("A", m3, m3, "Delassus matrix J M⁻¹Jᵀ, row-major"),
+             ("F_U", m3, padded(m3), "L⁻ᵀ of the damped Delassus factor L D Lᵀ, row-major, zero-padded"),
+             ("F_DL", m3, padded(m3), "D⁻¹L⁻¹, row-major, zero-padded"),
+             ("mu", 1, 1, "its damping μ"),
              ("L", fd.factor_entries(robot), 1, "M's factor entries at each dof's ancestors"),
              ("D_inv", nv, 1, "M's inverse pivots")],
             contact_dynamics_derivative_terms),

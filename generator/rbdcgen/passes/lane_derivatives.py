@@ -47,7 +47,6 @@ def forward_dynamics_derivatives(m):
     for row in range(len(J)):                                                      # Jᵀ
         for k, column in enumerate(limb_columns(list(J[row]))):
             out["da_df"][m.foot_force_index(row, k)] = column
-    symbols = list(m.a[:root]) + [m.ai(i) for i in range(1, robot.nb)]
     order = ("da_dq", "da_dv", "da_dtau", "da_df")
     return differentiate.replace_symbols({name: [x for column in out[name] for x in column] for name in order},
-                                       symbols, fd.forward_dynamics(m))
+                                       m.tree_acceleration, fd.forward_dynamics(m))

@@ -3,7 +3,7 @@ outputs as their scalar namesakes, emitted only when a scene lists them (scene.L
 
 from __future__ import annotations
 
-from . import differentiate, lane_derivatives
+from . import differentiate, lane_contact_derivatives, lane_derivatives
 from ..algorithms import centroidal, contact_dynamics, crba, forward_dynamics, osc, rnea
 from ..views.limb_lanes import LaneModel, contact_lanes, feet_shape, frame_shapes
 from ..views.limbs import isomorphic_limbs
@@ -30,17 +30,22 @@ FEET = ("feet_bias_accelerations",)
 CONTACT = {
     "contact_dynamics": lambda m: _contact_outputs(m, ("a", "lambda"), contact_dynamics.contact_dynamics),
     "impulse_dynamics": lambda m: _contact_outputs(m, ("v_plus", "impulse"), contact_dynamics.impulse_dynamics)}
+# the traced terms of contact_dynamics_derivatives' looped form (looped_solve.py), one contact foot
+# per limb as CONTACT
+CONTACT_TERMS = {"contact_dynamics_derivative_terms": lane_contact_derivatives.contact_dynamics_derivative_terms}
 # lane function → the function it equals
 SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
           "mass_matrix_lanes": "mass_matrix", "mass_matrix_lower_lanes": "mass_matrix_lower",
           "forward_dynamics_lanes": "forward_dynamics", "osc_open_chain_lanes": "osc_open_chain",
           **{name + "_lanes": name for name in DERIVATIVES}, **{name + "_lanes": name for name in CENTROIDAL},
-          **{name + "_lanes": name for name in FRAMES + FEET}, **{name + "_lanes": name for name in CONTACT}}
+          **{name + "_lanes": name for name in FRAMES + FEET}, **{name + "_lanes": name for name in CONTACT},
+          **{name + "_lanes": name for name in CONTACT_TERMS}}
 # function → its lane function
 LANE_NAME = {scalar: lanes for lanes, scalar in SCALAR.items()}
 # lane functions with the foot forces as lane inputs
 WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_derivatives_lanes", "osc_open_chain_lanes",
-             "contact_dynamics_lanes", "impulse_dynamics_lanes", "feet_bias_accelerations_lanes")
+             "contact_dynamics_lanes", "impulse_dynamics_lanes", "feet_bias_accelerations_lanes",
+             "contact_dynamics_derivative_terms_lanes")
 
 
 def model(robot, scene, zero_inputs, name):
@@ -56,22 +61,22 @@ def available(robot, scene, name, limbs):
     (feet_shape)."""
     if name in FRAMES:
         frame_shapes(scene.frames_for(robot), limbs)
-    if name in CONTACT:
+    if name in CONTACT or name in CONTACT_TERMS:
         contact_lanes(scene.feet_for(robot), scene.contacts_for(robot), limbs)
     if name in FEET:
         feet_shape(robot.name, scene.feet_for(robot), limbs)
 
 
-def spec(robot, nf, scalar_specs):
+def spec(robot, scalar_specs):
     """trace.py's function table for the lane functions (same shape as trace._spec); `scalar_specs`:
-    the scalar functions' table the frame and contact functions take their signatures from."""
+    the scalar functions' table (derivatives included) the lane functions take their signatures from."""
     nv = robot.nv
-    scalar = differentiate.spec(robot, nf, 0)  # the contact derivatives have no lane version
     return {
-        **_in_lanes(scalar, DERIVATIVES),
+        **_in_lanes(scalar_specs, DERIVATIVES),
         **_in_lanes(centroidal.specs(nv), CENTROIDAL),
         **_in_lanes(scalar_specs, {name: scalar_specs[name][3] for name in FRAMES + FEET}),
         **_in_lanes(scalar_specs, CONTACT),
+        **_in_lanes(scalar_specs, CONTACT_TERMS),
         "bias_lanes": (
             "Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes "
             "evaluated together in SIMD lanes, the trunk scalar; equals bias.",

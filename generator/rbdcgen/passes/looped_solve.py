@@ -70,8 +70,8 @@ class LoopedSolve:
         return -(-self.columns // SIMD_DOUBLES) * (2 * self.multiply_adds() + self.nv)
 
     def _tree_solve(self, target):
-        return ["const int dof_parent[%d] = {%s};" % (self.nv, ", ".join(map(str, self.parents))),
-                f"ltdl_solve_columns<Scalar, {self.nv}, {self.columns}>(dof_parent, solve_L, solve_D_inv, {target});"]
+        return [dof_tree(self.parents),
+                f"ltdl_solve_columns<Scalar, {self.nv}, {self.columns}>(dof_tree, solve_L, solve_D_inv, {target});"]
 
     def loops(self):
         """The C++ statements after the terms: solve, then copy each block into its output."""
@@ -87,49 +87,90 @@ class LoopedSolve:
 @dataclass(frozen=True)
 class LoopedContactSolve(LoopedSolve):
     """contact_dynamics_derivatives' columns (differentiate.contact_dynamics_derivative_terms): Y = M⁻¹R1,
-    B = J Y − R2, ∂λ = Q F⁻¹B with Q = Σ_{j<PROXIMAL_STEPS} (1 − F⁻¹A)ʲ (Delassus.step_sum, formed by
-    loops too), ∂a = M⁻¹Jᵀ∂λ − Y, each step a loop over all columns. `blocks` are the
-    ∂a outputs, `lambda_blocks` the ∂λ ones (same widths), `contact_rows` = 3·nc."""
+    B = J Y − R2, ∂λ = Q F⁻¹B = V (D⁻¹L⁻¹B) with Q = Σ_{j<PROXIMAL_STEPS} (μF⁻¹)ʲ (the proximal steps in
+    closed form, DampedSolve.step_sum) and V = Q L⁻ᵀ formed once by loops (proximal_step_sum),
+    ∂a = M⁻¹Jᵀ∂λ − Y, each a loop over all columns. `blocks` are the ∂a outputs, `lambda_blocks`
+    the ∂λ ones (same widths), `contact_rows` = 3·nc."""
     lambda_blocks: Tuple[Tuple[str, int], ...] = ()
     contact_rows: int = 0
+    contact_columns: Tuple[Tuple[int, ...], ...] = ()  # per row of J, its non-zero columns
 
     def multiply_adds(self):
         n, m = self.nv, self.contact_rows
-        return super().multiply_adds() + 2 * n * m + m * (m - 1) + m * m
+        nonzeros = sum(map(len, self.contact_columns))
+        return super().multiply_adds() + nonzeros + n * m + 2 * m * m
+
+    def _step_sum_columns(self):
+        """V's rows are padded like the right-hand sides'."""
+        return differentiate.padded(self.contact_rows)
 
     def _step_sum_multiply_adds(self):
-        """Q = Σ Gʲ (Delassus.step_sum), formed once per call: F⁻¹A by the factor (m columns), then
-        PROXIMAL_STEPS − 2 products G Q."""
-        m = self.contact_rows
-        return m * m * (m - 1) + (PROXIMAL_STEPS - 2) * m ** 3
+        """V, formed once per call: G = (μL⁻ᵀ)(D⁻¹L⁻¹), then PROXIMAL_STEPS − 1 products V ← L⁻ᵀ + G V,
+        all over V's padded columns."""
+        m, p = self.contact_rows, self._step_sum_columns()
+        return PROXIMAL_STEPS * m * m * p
 
     def operations(self):
-        m, once = self.contact_rows, self._step_sum_multiply_adds()
+        m, p, once = self.contact_rows, self._step_sum_columns(), self._step_sum_multiply_adds()
         ops = super().operations()
-        return {"mul": ops["mul"] + (self.columns + m) * m + once,   # the Delassus pivots
-                "add": ops["add"] + once + (PROXIMAL_STEPS - 1) * m * m}
+        return {"mul": ops["mul"] + once + m * p,                              # μL⁻ᵀ
+                "add": ops["add"] + once + (PROXIMAL_STEPS - 1) * m * p}       # + L⁻ᵀ
 
     def instructions(self):
-        m = self.contact_rows
-        return super().instructions() + -(-m // SIMD_DOUBLES) * (
-            2 * self._step_sum_multiply_adds() // m + m + (PROXIMAL_STEPS - 1) * m)
+        m, p = self.contact_rows, self._step_sum_columns()
+        runs = -(-p // SIMD_DOUBLES)
+        return super().instructions() + m * p + runs * (2 * self._step_sum_multiply_adds() // p + (PROXIMAL_STEPS - 1) * m)
 
     def loops(self):
-        n, m, c = self.nv, self.contact_rows, self.columns
+        n, m, c, p = self.nv, self.contact_rows, self.columns, self._step_sum_columns()
         return (self._tree_solve("solve_R1")                                               # Y = M⁻¹R1
-                + [f"multiply_minus<Scalar, {m}, {n}, {c}>(solve_J, solve_R1, solve_R2);",    # B = J Y − R2
-                   f"ldlt_solve_columns<Scalar, {m}, {c}>(solve_F_L, solve_F_D_inv, solve_R2);",  # F⁻¹B
-                   f"alignas(64) Scalar solve_Q[{m * m}];",
-                   f"proximal_step_sum<Scalar, {m}, {PROXIMAL_STEPS}>(solve_F_L, solve_F_D_inv, solve_A, solve_Q);",
-                   f"alignas(64) Scalar solve_dlambda[{m * c}];",
-                   f"multiply<Scalar, {m}, {m}, {c}>(solve_Q, solve_R2, solve_dlambda);",       # ∂λ
-                   f"multiply_minus<Scalar, {n}, {m}, {c}>(solve_Minv_Jt, solve_dlambda, solve_R1);"]  # ∂a
-                + _copies(self.blocks, "solve_R1", n, c) + _copies(self.lambda_blocks, "solve_dlambda", m, c))
+                + [row_sparsity("J_sparsity", self.contact_columns),
+                   f"multiply_sparse_minus<Scalar, {m}, {n}, {c}>(J_sparsity, solve_J, solve_R1, solve_R2);",  # B = J Y − R2
+                   f"alignas(64) Scalar solve_V[{m * p}];",
+                   f"proximal_step_sum<Scalar, {m}, {p}, {PROXIMAL_STEPS}>(solve_F_U, solve_F_DL, solve_mu[0], solve_V);",
+                   f"alignas(64) Scalar solve_DL_B[{m * c}];",
+                   f"multiply<Scalar, {m}, {m}, {c}, {p}>(solve_F_DL, solve_R2, solve_DL_B);",  # D⁻¹L⁻¹B
+                   f"multiply<Scalar, {m}, {m}, {c}, {p}>(solve_V, solve_DL_B, solve_R2);",     # ∂λ in R2
+                   f"multiply_minus<Scalar, {n}, {m}, {c}>(solve_Minv_Jt, solve_R2, solve_R1);"]  # ∂a
+                + _copies(self.blocks, "solve_R1", n, c) + _copies(self.lambda_blocks, "solve_R2", m, c))
 
     def emission(self, terms_name):
         return ("looped solve: %s writes the %d right-hand sides, the contact rows and the factors; loops "
-                "solve them all at once (M⁻¹, the Delassus system, M⁻¹Jᵀ), one SIMD row update per entry"
-                % (terms_name, self.width))
+                "solve them all at once (M⁻¹, the Delassus system's proximal steps in closed form, M⁻¹Jᵀ), "
+                "one SIMD row update per entry" % (terms_name, self.width))
+
+
+def dof_tree(parents):
+    """The C++ declaration of the rbdc_gen::DofTree `dof_tree` of the dof parents."""
+    n = len(parents)
+    ancestors = [dof_ancestors(parents, i) for i in range(n)]
+    first = [0]
+    for above in ancestors:
+        first.append(first[-1] + len(above))
+    below = [[(i, first[i] + ancestors[i].index(j)) for i in range(n - 1, j, -1) if j in ancestors[i]]
+             for j in range(n)]
+    below_first = [0]
+    for entries in below:
+        below_first.append(below_first[-1] + len(entries))
+    entries = max(first[-1], 1)  # no zero-size arrays: one unused entry
+
+    def table(values, size):
+        return "{" + ", ".join(map(str, list(values) + [0] * (size - len(values)))) + "}"
+
+    tables = [table(first, n + 1), table([j for above in ancestors for j in above], entries),
+              table(below_first, n + 1), table([i for column in below for i, _ in column], entries),
+              table([k for column in below for _, k in column], entries)]
+    return "const DofTree<%d, %d> dof_tree{%s};" % (n, entries, ", ".join(tables))
+
+
+def row_sparsity(name, columns):
+    """The C++ declaration of the rbdc_gen::RowSparsity `name` of rows with non-zeros at `columns`."""
+    first = [0]
+    for row in columns:
+        first.append(first[-1] + len(row))
+    flat = [k for row in columns for k in row] or [0]
+    return "const RowSparsity<%d, %d> %s{{%s}, {%s}};" % (
+        len(columns), len(flat), name, ", ".join(map(str, first)), ", ".join(map(str, flat)))
 
 
 def _copies(blocks, source, rows, columns):
@@ -146,17 +187,21 @@ def has_looped_form(robot, name):
     return name in TERMS and not robot.couplings
 
 
-def looped_function(robot, scene, name):
-    """`name` in its looped form: the traced terms, with the loops as a LoopedSolve."""
+def looped_function(robot, scene, name, terms_name=None):
+    """`name` in its looped form: the traced terms (function TERMS[name], or `terms_name`: its lane
+    function), with the loops as a LoopedSolve."""
     doc, inputs, outputs = signature(robot, scene, name)
-    terms = trace_function(robot, scene, TERMS[name])
+    terms = trace_function(robot, scene, terms_name or TERMS[name])
     parents = tuple(dof_parents(robot))
     if name == "contact_dynamics_derivatives":
         widths = {arg.name: arg.cols for arg in outputs}
         blocks = tuple((a, widths[a]) for a, _ in differentiate.CONTACT_COLUMNS)
         lambda_blocks = tuple((l, widths[l]) for _, l in differentiate.CONTACT_COLUMNS)
+        m = 3 * len(scene.contacts_for(robot))
+        J = terms.values["J"]  # row-major
+        columns = tuple(tuple(k for k in range(robot.nv) if not J[r * robot.nv + k].is_const(0.0)) for r in range(m))
         solve = LoopedContactSolve(parents=parents, blocks=blocks, terms=terms.outputs,
-                                   lambda_blocks=lambda_blocks, contact_rows=3 * len(scene.contacts_for(robot)))
+                                   lambda_blocks=lambda_blocks, contact_rows=m, contact_columns=columns)
     else:
         blocks = tuple((arg.name, arg.cols) for arg in outputs if arg.cols)
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs)

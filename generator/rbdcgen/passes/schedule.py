@@ -44,15 +44,13 @@ def _forms(robot, scene, name):
     """{form: how to trace it} for every form of `name` this robot allows, the scalar tree first."""
     forms = {"scalar": lambda: trace_function(robot, scene, name)}
     lane_name = lane_functions.LANE_NAME.get(name)
-    if lane_name is not None:
-        try:
-            lane_functions.available(robot, scene, name, isomorphic_limbs(robot))
-            forms["limb_lanes"] = lambda: _as(trace_function(robot, scene, lane_name), name)
-        except LimbError:
-            if scene.schedule == "limb_lanes":
-                raise
+    if lane_name is not None and _lanes_apply(robot, scene, name):
+        forms["limb_lanes"] = lambda: _as(trace_function(robot, scene, lane_name), name)
     if looped_solve.has_looped_form(robot, name):
         forms["looped_solve"] = lambda: looped_solve.looped_function(robot, scene, name)
+        lane_terms = lane_functions.LANE_NAME.get(looped_solve.TERMS[name])
+        if lane_terms is not None and _lanes_apply(robot, scene, looped_solve.TERMS[name]):
+            forms["lanes_looped_solve"] = lambda: looped_solve.looped_function(robot, scene, name, lane_terms)
     if name == "forward_dynamics" and aba.applies(robot):
         forms["aba"] = lambda: _as(trace_function(robot, scene, "forward_dynamics_aba"), name)
     if looped_factor.has_looped_form(robot, name):
@@ -60,14 +58,29 @@ def _forms(robot, scene, name):
     return forms
 
 
+def _lanes_apply(robot, scene, name):
+    """Whether the lane function of `name` applies (lane_functions.available); a scene that forces
+    limb lanes gets the reason when not."""
+    try:
+        lane_functions.available(robot, scene, name, isomorphic_limbs(robot))
+        return True
+    except LimbError:
+        if scene.schedule == "limb_lanes":
+            raise
+        return False
+
+
 # Quantities whose scalar form unrolls the factorisation of M.
 _UNROLL_FACTOR = ("mass_matrix_factor", "forward_dynamics")
 
 
 _SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "looped_solve": "looped solve",
+          "lanes_looped_solve": "limb lanes and a looped solve",
           "aba": "articulated-body algorithm", "looped_factor": "looped factor"}
 _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes, the trunk scalar)" % ex.LANES,
            "looped_solve": " (the solve's right-hand sides in SIMD across columns)",
+           "lanes_looped_solve": " (the terms traced with the %d isomorphic limbs in SIMD lanes, the "
+                                 "solve's right-hand sides in SIMD across columns)" % ex.LANES,
            "aba": " (O(n); the scalar tree is CRBA + the sparse LᵀDL factor)",
            "looped_factor": " (CRBA unrolled, the sparse LᵀDL factorisation a loop)"}
 

@@ -276,8 +276,9 @@ def _whole_body_spec(robot, nf, n_frames):
 def _lookup(robot, scene, name):
     """(doc, input names, output specs, build) of function `name` for this robot and scene."""
     nf, nc = len(scene.feet_for(robot)), len(scene.contacts_for(robot))
-    scalar = {**_spec(robot, nf, nc), **_whole_body_spec(robot, nf, len(scene.frames_for(robot)))}
-    spec = {**scalar, **differentiate.spec(robot, nf, nc), **lane_functions.spec(robot, nf, scalar)}
+    scalar = {**_spec(robot, nf, nc), **_whole_body_spec(robot, nf, len(scene.frames_for(robot))),
+              **differentiate.spec(robot, nf, nc)}
+    spec = {**scalar, **lane_functions.spec(robot, scalar)}
     if name not in spec:
         raise KeyError("unknown function '%s'" % name)
     return _in_frame_axes(scene, name, spec[name])

@@ -129,6 +129,10 @@ class LaneModel(TracedModel):
     def tree_velocity(self):
         return tuple(self.v[:self.robot.root_dofs]) + tuple(self.vi(i) for i in range(1, self.robot.nb))
 
+    @property
+    def tree_acceleration(self):
+        return tuple(self.a[:self.robot.root_dofs]) + tuple(self.ai(i) for i in range(1, self.robot.nb))
+
     def ai(self, i):
         return self._lane_input("a", i)
 
@@ -182,14 +186,19 @@ class LaneModel(TracedModel):
     def solve_limb_column(self, L, inv_diag, parents, b):
         """M⁻¹ b (forward_dynamics.ltdl_solve, L and D of the reduced tree) for a right-hand side b
         whose lane k stands for a column of limb k: non-zero in the trunk rows and limb k's rows
-        only. Returns per lane k the solution of limb k's column, a reduced vector (scatter) with
+        only. Returns per lane k the solution of limb k's column (substitute_limb_columns). The
+        leaves-to-root pass runs with the columns in lanes (no lane sum: only limb k's rows reach
+        lane k's trunk entries)."""
+        return self.substitute_limb_columns(L, parents, fd.ltdl_eliminate(L, inv_diag, parents, b))
+
+    def substitute_limb_columns(self, L, parents, y):
+        """The root-to-leaves pass x = L⁻¹y of M⁻¹'s solve for y = D⁻¹L⁻ᵀb of limb columns (lane k:
+        limb k's column): per lane k the solution of that column, a reduced vector (scatter) with
         scalar trunk entries and limb m's entries in lane m: the solution is dense, every limb moves
-        with the trunk. The leaves-to-root pass and the trunk's rows run with the columns in lanes
-        (no lane sum: only limb k's rows reach lane k's trunk entries); then, per lane k, the
-        trunk's solution of that column leaves its lane (lane_get) and the root-to-leaves pass runs
-        with the limbs in lanes, limb k's own part of the right-hand side masked to lane k."""
+        with the trunk. The trunk's rows run with the columns in lanes; then, per lane k, the
+        trunk's solution of that column leaves its lane (lane_get) and the limbs' rows run in lanes,
+        limb k's own part of y masked to lane k."""
         root = self.robot.root_dofs
-        y = fd.ltdl_eliminate(L, inv_diag, parents, b)
         trunk = fd.ltdl_substitute(L, parents, y[:root], range(root))
         solutions = []
         for k in range(ex.LANES):

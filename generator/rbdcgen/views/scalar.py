@@ -62,6 +62,11 @@ class TracedModel:
         return self.tree_input("a", self.coupled.nv)
 
     @property
+    def tree_acceleration(self):
+        """a over the traced tree's dofs (as tree_velocity)."""
+        return self.a
+
+    @property
     def tau(self):
         return self.input("tau", self.coupled.n_joints)
 

@@ -123,9 +123,9 @@ class AnalyticRecursionsEqualTangents(unittest.TestCase):
             m = TracedModel(robot, ALL)
             zero = sp.zeros(6)
             pairs = [(differentiate.inverse_dynamics_derivatives(m),
-                      differentiate._q_and_v(m, rnea.inverse_dynamics(m), "dtau_dq", "dtau_dv")),
+                      differentiate.q_and_v(m, rnea.inverse_dynamics(m), "dtau_dq", "dtau_dv")),
                      (differentiate.bias_derivatives(m),
-                      differentiate._q_and_v(m, rnea.rnea(m, rnea.base_acceleration(m, zero), None, True),
+                      differentiate.q_and_v(m, rnea.rnea(m, rnea.base_acceleration(m, zero), None, True),
                                            "dbias_dq", "dbias_dv"))]
             if robot.feet:
                 tangents = differentiate.jacobian_columns(rnea.feet_force_terms(m), configuration_seeds(m),

@@ -63,15 +63,17 @@ def solved_outputs(fn, state):
 
 def solved_contact_outputs(fn, state):
     """The same for contact_dynamics_derivatives: ∂λ from five proximal steps on the damped
-    Delassus matrix F (rebuilt from its factor), ∂a = M⁻¹(Jᵀ∂λ − r₁)."""
+    Delassus matrix F = L D Lᵀ (rebuilt from L⁻ᵀ and D⁻¹L⁻¹) and A = F − μ1, ∂a = M⁻¹(Jᵀ∂λ − r₁)."""
     solve = fn.solve
     terms = terms_of(fn, state)
     n, m, c = solve.nv, solve.contact_rows, solve.columns
     mass = mass_matrix(solve, terms)
     R1, R2 = (np.array(terms[k]).reshape(rows, c) for k, rows in (("R1", n), ("R2", m)))
-    J, A = np.array(terms["J"]).reshape(m, n), np.array(terms["A"]).reshape(m, m)
-    lower = np.array(terms["F_L"]).reshape(m, m) + np.eye(m)
-    F = lower @ np.diag(1.0 / np.array(terms["F_D_inv"])) @ lower.T
+    J = np.array(terms["J"]).reshape(m, n)
+    lower = np.linalg.inv(np.array(terms["F_U"]).reshape(m, -1)[:, :m].T)
+    pivots = 1.0 / np.diag(np.array(terms["F_DL"]).reshape(m, -1)[:, :m])
+    F = lower @ np.diag(pivots) @ lower.T
+    A = F - terms["mu"][0] * np.eye(m)
     b = J @ np.linalg.solve(mass, R1) - R2
     dlambda = np.zeros_like(b)
     for _ in range(5):

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_587fbc5f55f3 {
+namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_8a718b4039ad {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -1467,12 +1467,12 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   alignas(64) Scalar solve_L[21];
   alignas(64) Scalar solve_D_inv[7];
   forward_dynamics_derivatives_terms(q, v, tau, f, solve_rhs, solve_L, solve_D_inv);
-  const int dof_parent[7] = {-1, 0, 1, 2, 3, 4, 5};
-  ltdl_solve_columns<Scalar, 7, 24>(dof_parent, solve_L, solve_D_inv, solve_rhs);
+  const DofTree<7, 21> dof_tree{{0, 0, 1, 3, 6, 10, 15, 21}, {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0, 5, 4, 3, 2, 1, 0}, {0, 6, 11, 15, 18, 20, 21, 21}, {6, 5, 4, 3, 2, 1, 6, 5, 4, 3, 2, 6, 5, 4, 3, 6, 5, 4, 6, 5, 6}, {20, 14, 9, 5, 2, 0, 19, 13, 8, 4, 1, 18, 12, 7, 3, 17, 11, 6, 16, 10, 15}};
+  ltdl_solve_columns<Scalar, 7, 24>(dof_tree, solve_L, solve_D_inv, solve_rhs);
   copy_columns<Scalar, 7, 24>(solve_rhs, 0, 7, da_dq);
   copy_columns<Scalar, 7, 24>(solve_rhs, 7, 7, da_dv);
   copy_columns<Scalar, 7, 24>(solve_rhs, 14, 7, da_dtau);
   copy_columns<Scalar, 7, 24>(solve_rhs, 21, 3, da_df);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_587fbc5f55f3
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_8a718b4039ad
