@@ -286,10 +286,18 @@ RBDC_HOST_DEVICE inline void unpack_factor(const int (&parent)[NV], const Scalar
   }
 }
 
-/// Columns first … first + count − 1 of the row-major NV × NC matrix B, column-major into out.
+/// Columns first … first + count − 1 of the row-major NV × NC matrix B, column-major into out. Scalar
+/// moves: clang 14 vectorised this transposing copy with AVX-512 gathers and scatters, twice as slow
+/// (48 columns of 18 rows: 272 against 136 ns on an AMD EPYC; g++ 12 keeps it scalar).
 template <class Scalar, int NV, int NC>
 RBDC_HOST_DEVICE inline void copy_columns(const Scalar* B, int first, int count, Scalar* out) noexcept {
+#if defined(__clang__)
+#pragma clang loop vectorize(disable)
+#endif
   for (int c = 0; c < count; ++c)
+#if defined(__clang__)
+#pragma clang loop vectorize(disable)
+#endif
     for (int r = 0; r < NV; ++r) out[c * NV + r] = B[r * NC + first + c];
 }
 
