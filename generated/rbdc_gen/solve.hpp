@@ -126,23 +126,34 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_columns(const DofTree<NV,
 }
 
 /// C ← A B + Sign·D (Sign 0, −1 or 1) for row-major A (M × K, LDA entries per row), B (K × NC), D and
-/// C (M × NC; D may be C): each row of C summed in a local array (no aliasing with B, so it stays in
-/// vector registers), one SIMD multiply-add per run of columns per entry of A.
-template <class Scalar, int M, int K, int NC, int Sign, int LDA>
-RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_rows(const Scalar* A, const Scalar* B, const Scalar* D,
-                                                          Scalar* C) noexcept {
+/// C (M × NC; D may be C), rows i … i + H − 1 of C: each summed in a local array (no aliasing with B,
+/// so it stays in vector registers), one SIMD multiply-add per run of columns per entry of A; B's
+/// runs loaded once for the H rows (loads, not multiply-adds, bound a product with few runs a row).
+template <class Scalar, int K, int NC, int Sign, int LDA, int H>
+RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_row_block(int i, const Scalar* A, const Scalar* B, const Scalar* D,
+                                                               Scalar* C) noexcept {
   using R = ColumnRun<Scalar, NC>;
   constexpr int W = R::size;
-  for (int i = 0; i < M; ++i) {
-    typename R::type row[NC / W];
-    for (int c = 0; c < NC / W; ++c)
-      row[c] = Sign == 0 ? R::zero() : Sign < 0 ? -R::load(D + i * NC + c * W) : R::load(D + i * NC + c * W);
-    for (int k = 0; k < K; ++k) {
-      const Scalar a = A[i * LDA + k];
-      for (int c = 0; c < NC / W; ++c) row[c] += a * R::load(B + k * NC + c * W);
+  typename R::type row[H][NC / W];
+  for (int h = 0; h < H; ++h)
+    for (int c = 0; c < NC / W; ++c) {
+      const Scalar* d = D + (i + h) * NC + c * W;
+      row[h][c] = Sign == 0 ? R::zero() : Sign < 0 ? -R::load(d) : R::load(d);
     }
-    for (int c = 0; c < NC / W; ++c) R::store(C + i * NC + c * W, row[c]);
-  }
+  for (int k = 0; k < K; ++k)
+    for (int c = 0; c < NC / W; ++c) {
+      const typename R::type b = R::load(B + k * NC + c * W);
+      for (int h = 0; h < H; ++h) row[h][c] += A[(i + h) * LDA + k] * b;
+    }
+  for (int h = 0; h < H; ++h)
+    for (int c = 0; c < NC / W; ++c) R::store(C + (i + h) * NC + c * W, row[h][c]);
+}
+
+/// C ← A B + Sign·D over all M rows, two at a time.
+template <class Scalar, int M, int K, int NC, int Sign, int LDA>
+RBDC_HOST_DEVICE inline void multiply_rows(const Scalar* A, const Scalar* B, const Scalar* D, Scalar* C) noexcept {
+  for (int i = 0; i + 1 < M; i += 2) multiply_row_block<Scalar, K, NC, Sign, LDA, 2>(i, A, B, D, C);
+  if (M % 2) multiply_row_block<Scalar, K, NC, Sign, LDA, 1>(M - 1, A, B, D, C);
 }
 
 /// C ← A B.
