@@ -201,31 +201,6 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_sparse_minus(const RowSpars
   }
 }
 
-/// Solves F X = B in place for the NC columns of B (row-major N × NC), F = L D Lᵀ dense: L row-major,
-/// unit lower triangular (its strict lower triangle read), D_inv the inverse pivots.
-template <class Scalar, int N, int NC>
-RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ldlt_solve_columns(const Scalar* L, const Scalar* D_inv, Scalar* B) noexcept {
-  using R = ColumnRun<Scalar, NC>;
-  constexpr int W = R::size;
-  typename R::type row[NC / W];  // row i of B summed locally, as in multiply_rows
-  for (int i = 0; i < N; ++i) {  // B ← L⁻¹ B
-    for (int c = 0; c < NC / W; ++c) row[c] = R::load(B + i * NC + c * W);
-    for (int k = 0; k < i; ++k) {
-      const Scalar l = L[i * N + k];
-      for (int c = 0; c < NC / W; ++c) row[c] -= l * R::load(B + k * NC + c * W);
-    }
-    for (int c = 0; c < NC / W; ++c) R::store(B + i * NC + c * W, row[c]);
-  }
-  for (int i = N - 1; i >= 0; --i) {  // B ← L⁻ᵀ D⁻¹ B (the rows below i final)
-    for (int c = 0; c < NC / W; ++c) row[c] = R::load(B + i * NC + c * W) * D_inv[i];
-    for (int k = i + 1; k < N; ++k) {
-      const Scalar l = L[k * N + i];
-      for (int c = 0; c < NC / W; ++c) row[c] -= l * R::load(B + k * NC + c * W);
-    }
-    for (int c = 0; c < NC / W; ++c) R::store(B + i * NC + c * W, row[c]);
-  }
-}
-
 /// The proximal steps x ← F⁻¹(b + μx) from x = 0, Steps of them, give x = Q F⁻¹b with
 /// Q = Σ_{j<Steps} Gʲ, G = μF⁻¹ (eigenvalues μ/(aᵢ + μ) ∈ (0, 1]: Q stays bounded when contacts are
 /// redundant and F⁻¹ is not). F = L D Lᵀ comes as F⁻¹'s halves U = L⁻ᵀ and DL = D⁻¹L⁻¹ (both
