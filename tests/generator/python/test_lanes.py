@@ -86,11 +86,18 @@ class MiniCheetahLanes(unittest.TestCase):
         two = replace(default_scene(), feet=("LF_foot", "RH_foot"))
         self.assertFalse(scheduled_function(robot, two, "impulse_dynamics").schedule.startswith("limb lanes"))
 
-    def _check_equal(self, robot, names, seeds=(7,)):
+    def test_contact_functions_on_a_subset_of_the_feet(self):
+        """Two contacts (RF, LH: lanes 1 and 2, out of the scene's foot order): the lanes without a
+        contact carry no force, contact k's rows land on its own lane's columns."""
+        robot = mini_cheetah.load()
+        names = ("contact_dynamics_lanes", "contact_dynamics_derivative_terms_lanes")
+        self._check_equal(robot, names, scene=replace(default_scene(), contacts=("RF_foot", "LH_foot")))
+
+    def _check_equal(self, robot, names, seeds=(7,), scene=None):
         """The lane functions `names` equal their scalar namesakes on random states; returns the
         traced (lane, scalar) pairs. The frames: the trunk's and two per limb, in an order that
         is not the limbs' (each output row must land on its frame's)."""
-        scene = replace(default_scene(), frames=LANE_FRAMES)
+        scene = replace(scene or default_scene(), frames=LANE_FRAMES)
         pairs = []
         for name in names:
             lanes = trace_function(robot, scene, name)
