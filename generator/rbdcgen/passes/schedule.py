@@ -74,6 +74,10 @@ def _lanes_apply(robot, scene, name):
 _UNROLL_FACTOR = ("mass_matrix_factor", "forward_dynamics")
 
 
+# A forced schedule → the forms that satisfy it, in order of preference (limb lanes: the contact
+# derivatives' lane terms under their looped solve too).
+_FORCED = {"limb_lanes": ("limb_lanes", "lanes_looped_solve")}
+
 _SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "looped_solve": "looped solve",
           "lanes_looped_solve": "limb lanes and a looped solve",
           "aba": "articulated-body algorithm", "looped_factor": "looped factor"}
@@ -91,8 +95,9 @@ def scheduled_function(robot, scene, name):
     forms = _forms(robot, scene, name)
     if len(forms) == 1 or scene.schedule == "scalar":
         return forms["scalar"]()
-    if scene.schedule in forms:
-        return replace(forms[scene.schedule](), schedule="%s, as the scene asks" % _SHORT[scene.schedule])
+    forced = next((form for form in _FORCED.get(scene.schedule, (scene.schedule,)) if form in forms), None)
+    if forced is not None:
+        return replace(forms[forced](), schedule="%s, as the scene asks" % _SHORT[forced])
     if scene.schedule != "auto":  # a form this function does not have: the scalar tree
         return forms["scalar"]()
     untraced = []

@@ -93,6 +93,15 @@ class MiniCheetahLanes(unittest.TestCase):
         names = ("contact_dynamics_lanes", "contact_dynamics_derivative_terms_lanes")
         self._check_equal(robot, names, scene=replace(default_scene(), contacts=("RF_foot", "LH_foot")))
 
+    def test_limb_lanes_forces_the_contact_derivatives_lane_terms(self):
+        """The contact derivatives have no limb-lane form of their own: `schedule: limb_lanes` gives
+        them their looped solve with the terms in lanes."""
+        robot = mini_cheetah.load()
+        scene = replace(default_scene(), schedule="limb_lanes")
+        fn = scheduled_function(robot, scene, "contact_dynamics_derivatives")
+        self.assertEqual(fn.schedule, "limb lanes and a looped solve, as the scene asks")
+        self.assertIsNotNone(fn.solve)
+
     def _check_equal(self, robot, names, seeds=(7,), scene=None):
         """The lane functions `names` equal their scalar namesakes on random states; returns the
         traced (lane, scalar) pairs. The frames: the trunk's and two per limb, in an order that
