@@ -249,14 +249,7 @@ class LaneDelassus(DampedSolve):
     def full_J(self, m):
         """J's rows over the full robot's dofs, in contact order: contact c's lane of the lane rows,
         the other limbs' columns zero."""
-        rows = []
-        for k in self._lanes:
-            for r in range(3):
-                row = [ex.const(0.0)] * m.full.nv
-                for x, value in enumerate(self.J[r]):
-                    row[m.full_index(x, k)] = ex.lane_get(value, k)
-                rows.append(row)
-        return rows
+        return m.place_rows(self.J, [(0, k) for k in self._lanes], 3)
 
     def full_Minv_Jt(self, m):
         """M⁻¹Jᵀ over the full robot's dofs, one column per row of full_J: L⁻¹(D⁻¹Z) with contact k's

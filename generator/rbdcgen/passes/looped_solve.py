@@ -147,8 +147,10 @@ def dof_tree(parents):
     first = [0]
     for above in ancestors:
         first.append(first[-1] + len(above))
-    below = [[(i, first[i] + ancestors[i].index(j)) for i in range(n - 1, j, -1) if j in ancestors[i]]
-             for j in range(n)]
+    below = [[] for _ in range(n)]  # per dof its descendants and their entries, deepest first
+    for i in range(n - 1, -1, -1):
+        for e, j in enumerate(ancestors[i]):
+            below[j].append((i, first[i] + e))
     below_first = [0]
     for entries in below:
         below_first.append(below_first[-1] + len(entries))

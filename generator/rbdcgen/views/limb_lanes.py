@@ -229,11 +229,17 @@ class LaneModel(TracedModel):
         """Rows of 6 per reduced frame (columns: the reduced tree's dofs) as the scene's frames'
         rows over the full robot's dofs: lane k for the frame on limb k, limb k's joint columns
         from the lane limb's, the other limbs' zero (a trunk frame's joint columns are zeros)."""
+        return self.place_rows(rows, self.frame_places, 6)
+
+    def place_rows(self, rows, places, per_place):
+        """Rows over the reduced tree's dofs, `per_place` of them per reduced place n, as rows over the
+        full robot's dofs, one block per (n, lane k) of `places`: lane k, limb k's joint columns
+        from the lane limb's, the other limbs' zero."""
         full = []
-        for n, k in self.frame_places:
-            for r in range(6):
+        for n, k in places:
+            for r in range(per_place):
                 out = [ex.const(0.0)] * self.full.nv
-                for x, value in enumerate(rows[6 * n + r]):
+                for x, value in enumerate(rows[per_place * n + r]):
                     out[self.full_index(x, k)] = ex.lane_get(value, k)
                 full.append(tuple(out))
         return tuple(full)
