@@ -78,7 +78,7 @@ class Graph:
         if op == "sym":
             node.lane = value[0].startswith(LANE_ARRAY_PREFIX)
         else:
-            node.lane = op not in ("lane_sum", "lane_get") and any(a.lane for a in args)
+            node.lane = op not in ("lane_sum", "lane_get") and _any_lane(args)
         self.nodes.append(node)
         return node
 
@@ -184,10 +184,19 @@ def constant_lanes(x):
     return None
 
 
+def _any_lane(args):
+    """Whether any of the nodes `args` is a lane value (a loop: `any` over a generator costs more for
+    one or two operands, and this runs for every node traced)."""
+    for a in args:
+        if a.lane:
+            return True
+    return False
+
+
 def _fold_lanes(function, *args):
     """function over floats applied lane by lane when every operand is constant and one of them a
     lane constant (the folding of `c1 op c2` for lanes), else None."""
-    if not any(a.lane for a in args):
+    if not _any_lane(args):
         return None
     lanes = [constant_lanes(a) for a in args]
     if any(v is None for v in lanes):
@@ -362,19 +371,18 @@ def reachable(outputs):
     for root in outputs:
         if root.id in seen:
             continue
-        stack = [(root, False)]
+        seen.add(root.id)
+        stack = [(root, iter(root.args))]   # each node with the operands it has yet to visit
         while stack:
-            node, expanded = stack.pop()
-            if expanded:
-                order.append(node)
-                continue
-            if node.id in seen:
-                continue
-            seen.add(node.id)
-            stack.append((node, True))
-            for arg in reversed(node.args):
+            node, operands = stack[-1]
+            for arg in operands:
                 if arg.id not in seen:
-                    stack.append((arg, False))
+                    seen.add(arg.id)
+                    stack.append((arg, iter(arg.args)))
+                    break
+            else:
+                stack.pop()
+                order.append(node)
     return order
 
 

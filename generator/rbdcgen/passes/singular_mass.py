@@ -10,7 +10,6 @@ import math
 import sys
 
 from ..frontend.scene import default_scene
-from ..graph import expr as ex
 from .trace import trace_function
 
 SINGULAR_PIVOT = 1e-12
@@ -43,9 +42,11 @@ def _dof_label(robot, k):
 @functools.lru_cache(maxsize=None)
 def singularity(robot):
     """Why the robot's M is singular by the rule, or None when it is positive definite."""
-    M = trace_function(robot, default_scene(), "mass_matrix").values["M"]
+    M = trace_function(robot, default_scene(), "mass_matrix",
+                       known_inputs={"q": generic_configuration(robot)}).values["M"]
     n = robot.nv
-    flat = ex.evaluate(list(M), {"q": generic_configuration(robot)})
+    assert all(x.op == "const" for x in M), "mass_matrix at a known q should fold to constants"
+    flat = [x.value for x in M]
     H = [[flat[c * n + r] for c in range(n)] for r in range(n)]   # the output is column-major
     diagonal = [H[k][k] for k in range(n)]
     for k in range(n - 1, -1, -1):

@@ -308,8 +308,9 @@ def signature(robot, scene, name):
     return doc, inputs, tuple(Argument(*spec) for spec in output_specs)
 
 
-def trace_function(robot, scene, name):
-    """Traces one function of the scene into a fresh graph."""
+def trace_function(robot, scene, name, known_inputs=None):
+    """Traces one function of the scene into a fresh graph; `known_inputs` ({name: floats}, scalar
+    functions only) traces those inputs as constants: the function evaluated by folding."""
     nf, nc = len(scene.feet_for(robot)), len(scene.contacts_for(robot))
     doc, input_names, output_specs, build = _lookup(robot, scene, name)
     tree = coupled.tree_view(robot)
@@ -320,7 +321,7 @@ def trace_function(robot, scene, name):
     with ex.Graph() as graph:
         lanes = name in lane_functions.SCALAR
         m = (lane_functions.model(robot, scene, zero, name) if lanes
-             else TracedModel(robot, scene, zero_inputs=zero))
+             else TracedModel(robot, scene, zero_inputs=zero, known_inputs=known_inputs))
         try:
             values = project.traced_values(robot, name, m, build, output_specs)
         except ZeroDivisionError:

@@ -16,7 +16,7 @@ class TracedModel:
     `inputs` maps an input array name (q, v, a, tau, f, ground_mass, restitution) to its length; an input the
     scene declares zero is all constant zeros, so everything depending on it folds away."""
 
-    def __init__(self, robot, scene, zero_inputs=()):
+    def __init__(self, robot, scene, zero_inputs=(), known_inputs=None):
         self.robot = coupled.tree_view(robot)  # the algorithms see the tree (views/coupled.py)
         self.coupled = robot                     # the inputs have its independent coordinates
         self.scene = scene
@@ -25,6 +25,7 @@ class TracedModel:
         self.contacts = scene.contacts_for(robot)
         self.gravity = sp.vec(scene.gravity_for(robot))
         self.zero_inputs = tuple(zero_inputs)
+        self.known_inputs = known_inputs or {}   # {name: floats}: traced as constants, so all folds
         self._cache = {}
 
     # --- inputs -------------------------------------------------------------------------------
@@ -33,6 +34,8 @@ class TracedModel:
         if key not in self._cache:
             if name in self.zero_inputs:
                 self._cache[key] = sp.zeros(size)
+            elif name in self.known_inputs:
+                self._cache[key] = tuple(ex.const(x) for x in self.known_inputs[name])
             else:
                 self._cache[key] = tuple(ex.symbol(name, k) for k in range(size))
         return self._cache[key]
