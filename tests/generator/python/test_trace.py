@@ -71,6 +71,16 @@ class DegenerateRobots(unittest.TestCase):
         self.assertIn("massless", str(caught.exception))
 
 
+class KnownInputs(unittest.TestCase):
+    def test_a_function_traced_with_known_inputs_folds_to_its_value_there(self):
+        robot = load_ir(RAW)
+        state = random_state(robot, 2, seed=3)
+        symbolic = evaluate(trace_function(robot, default_scene(), "mass_matrix"), state)["M"]
+        folded = trace_function(robot, default_scene(), "mass_matrix", known_inputs={"q": state["q"]})
+        self.assertTrue(all(x.op == "const" for x in folded.values["M"]))
+        self.assertLess(max_relative_error([x.value for x in folded.values["M"]], symbolic), 1e-14)
+
+
 class CombinedFunctions(unittest.TestCase):
     def test_step_terms_equal_the_separate_functions_in_fewer_operations(self):
         robot = load_ir(RAW)
