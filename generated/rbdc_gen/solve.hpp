@@ -128,7 +128,8 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_column_block(const DofTre
 /// stay in vector registers (32 with AVX-512) and its rows no longer fit in L1. Talos's 184 columns
 /// (23 runs of 8, 74 KB of rows) as blocks of 12 and 11 runs: 11.8 → 6.0 µs with g++ 12, 10.6 → 10.1
 /// µs with clang 14 (one driver, AMD EPYC, bitwise the same); humanoid32's 16 runs split in two
-/// were 10-15 % slower with either compiler, so 16 runs stay one block.
+/// were 10-15 % slower with either compiler, so 16 runs stay one block. With AVX2 (runs of 4)
+/// humanoid32's 32 runs split in two: its solve 8.8 → 6.5 µs (docs/performance.md).
 constexpr int LTDL_BLOCK_RUNS = 16;
 
 /// Solves M X = B in place for the NC columns of B (row-major NV × NC), M = Lᵀ D L over the dof
