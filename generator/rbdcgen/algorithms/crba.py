@@ -65,6 +65,19 @@ def mass_matrix(m):
     return H
 
 
+def body_transforms(m):
+    """X_λ(i)^i = X_J(q_i) X_T(i) of every body i ≥ 1 as one transform, E row-major then r: what the
+    looped CRBA (rbdc_gen/crba.hpp, passes/looped_crba.py) reads."""
+    values = []
+    for i in range(1, m.robot.nb):
+        m.mark("body transforms", i)
+        X = m.X_tree(i).then(m.X_joint(i))
+        E = sp.identity3() if X.E is None else X.E
+        r = sp.zeros(3) if X.r is None else X.r
+        values += [e for row in E for e in row] + list(r)
+    return tuple(values)
+
+
 # The doc of the output M of mass_matrix_lower and its lane version.
 LOWER_TRIANGLE_DOC = ("mass matrix, lower triangle (row ≥ column); the entries above the diagonal "
                       "are not written")

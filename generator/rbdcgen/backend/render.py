@@ -30,6 +30,7 @@ COMMON_DIR = "common"  # <robot>/common/: function bodies shared by the robot's 
 BATCH_HEADER = "rbdc_gen/batch.hpp"  # SIMD packs of states (docs/performance.md)
 LANES_HEADER = "rbdc_gen/lanes.hpp"  # one SIMD lane per limb, for the lane functions only
 SOLVE_HEADER = "rbdc_gen/solve.hpp"  # looped solves, for the functions in looped-solve form only
+CRBA_HEADER = "rbdc_gen/crba.hpp"  # the CRBA as a loop, for the functions in looped-CRBA form only
 
 # The Eigen type aliases of docs/generated_api.md: name, rows, cols (as C++ expressions), doc.
 ALIASES = (
@@ -161,8 +162,11 @@ def body_record(function, arguments: list[dict], robot, robot_id: str, robot_inp
               "generator_version": VERSION}
     if function.lanes is not None:
         record["lanes"] = True  # the body includes LANES_HEADER
-    if function.solve is not None:
-        record["solve"] = True  # the body includes SOLVE_HEADER
+    if function.solve is not None:  # the body includes the loops' headers
+        if SOLVE_HEADER in function.solve.headers:
+            record["solve"] = True
+        if CRBA_HEADER in function.solve.headers:
+            record["crba"] = True
     if function.schedule:
         record["schedule"] = function.schedule  # the view passes/schedule.py chose, and why
     digest = hashlib.sha256(json.dumps(record, sort_keys=True).encode()).hexdigest()
@@ -217,8 +221,10 @@ def render_robot_scene(robot, scene, functions, robot_name: str, inputs, layout:
               "aliases": [{"name": n, "rows": r, "cols": c, "doc": d} for n, r, c, d in ALIASES]}
     records = [function_record(f, robot, scene, robot_id, scene_id, robot_inputs) for f in functions]
     lane_files = [lanes_file(layout)] if any(f.lanes is not None for f in functions) else []
-    solve_files = [solve_file(layout)] if any(f.solve is not None for f in functions) else []
-    files = [support_file(layout), batch_file(layout), *lane_files, *solve_files,
+    loop_headers = {h for f in functions if f.solve is not None for h in f.solve.headers}
+    loop_files = [_library_file(layout, template, path) for template, path in
+                  (("solve.hpp.j2", SOLVE_HEADER), ("crba.hpp.j2", CRBA_HEADER)) if path in loop_headers]
+    files = [support_file(layout), batch_file(layout), *lane_files, *loop_files,
              GeneratedFile(umbrella, environment.get_template("robot_scene.hpp.j2").render(
                  **common, functions=records))]
     function_template = environment.get_template("function.hpp.j2")
@@ -245,6 +251,3 @@ def batch_file(layout: Layout) -> GeneratedFile:
 def lanes_file(layout: Layout) -> GeneratedFile:
     return _library_file(layout, "lanes.hpp.j2", LANES_HEADER)
 
-
-def solve_file(layout: Layout) -> GeneratedFile:
-    return _library_file(layout, "solve.hpp.j2", SOLVE_HEADER)

@@ -6,15 +6,18 @@ chain (a 100-body chain: 9.6 MB of straight-line code, and most of the generator
 In the looped form the traced part writes only M's entries at each dof's ancestors and its diagonal
 (the CRBA, O(n²) on a chain) into local arrays and ltdl_factor (rbdc_gen/solve.hpp) factorises them
 in place: one multiply-add per entry of the ancestor row it updates, contiguous in the packed
-layout, so the inner loop is a SIMD axpy. Its code does not grow with the robot."""
+layout, so the inner loop is a SIMD axpy. Its code does not grow with the robot. In the looped-CRBA
+form (where the unrolled CRBA is past looped_crba.UNROLL_LIMIT, or a scene asks) the packed entries
+come from the looped CRBA instead, and the traced part is only the bodies' transforms."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from typing import Tuple
+from typing import Optional, Tuple
 
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents
-from .looped_solve import SIMD_DOUBLES
+from . import looped_crba
+from .looped_solve import HEADER, SIMD_DOUBLES
 from .trace import Argument, signature, trace_function
 
 TERMS = "mass_matrix_factor_terms"
@@ -36,10 +39,15 @@ def factor_multiply_adds(parents):
 
 @dataclass(frozen=True)
 class LoopedFactor:
-    """M = Lᵀ D L by ltdl_factor over the packed entries the terms (L, D) hold, then unpacked into
-    the outputs L (nv × nv), D and D_inv."""
+    """M = Lᵀ D L by ltdl_factor over the packed entries the terms (L, D) hold, or `crba` writes from
+    the terms' transforms, then unpacked into the outputs L (nv × nv), D and D_inv."""
     parents: Tuple[int, ...]
     terms: Tuple[Argument, ...]
+    crba: Optional[looped_crba.LoopedCrba] = None
+
+    @property
+    def headers(self):
+        return (HEADER,) + (() if self.crba is None else self.crba.headers)
 
     @property
     def nv(self):
@@ -54,23 +62,31 @@ class LoopedFactor:
         update of i's row (a multiply-add per entry)."""
         row = sum(len(dof_ancestors(self.parents, i)) for _, i in self._pairs())
         pairs = len(self._pairs())
-        return {"div": self.nv, "mul": 2 * pairs + row, "add": pairs + row}
+        counts = {"div": self.nv, "mul": 2 * pairs + row, "add": pairs + row}
+        for kind, n in (() if self.crba is None else self.crba.operations().items()):
+            counts[kind] = counts.get(kind, 0) + n
+        return counts
 
     def instructions(self):
         """Vector instructions: a row update a load, a multiply-add and a store per SIMD_DOUBLES
         entries, plus PAIR_OVERHEAD per pair and one division per dof."""
         rows = sum(-(-len(dof_ancestors(self.parents, i)) // SIMD_DOUBLES) for _, i in self._pairs())
-        return 3 * rows + PAIR_OVERHEAD * len(self._pairs()) + self.nv
+        crba = 0 if self.crba is None else self.crba.instructions()
+        return 3 * rows + PAIR_OVERHEAD * len(self._pairs()) + self.nv + crba
 
     def loops(self):
-        return ["const int dof_parent[%d] = {%s};" % (self.nv, ", ".join(map(str, self.parents))),
+        crba = [] if self.crba is None else [
+            "alignas(64) Scalar solve_L[%d];" % max(1, len(self._pairs())),
+            "Scalar solve_D[%d];" % self.nv, *self.crba.loops()]
+        return crba + ["const int dof_parent[%d] = {%s};" % (self.nv, ", ".join(map(str, self.parents))),
                 f"ltdl_factor<Scalar, {self.nv}>(dof_parent, solve_L, solve_D, D_inv);",
                 f"unpack_factor<Scalar, {self.nv}>(dof_parent, solve_L, solve_D, L, D);"]
 
     def emission(self, terms_name):
-        return ("looped factor: %s writes M's %d entries at the dofs' ancestors and its diagonal, "
-                "ltdl_factor factorises them in place (%d multiply-adds, a SIMD row update per ancestor "
-                "pair)" % (terms_name, self.terms[0].size, factor_multiply_adds(self.parents)))
+        source = ("%s writes M's %d entries at the dofs' ancestors and its diagonal" % (terms_name, self.terms[0].size)
+                  if self.crba is None else self.crba.emission(terms_name) + ", into M's entries at the dofs' ancestors")
+        return ("looped factor: %s, ltdl_factor factorises them in place (%d multiply-adds, a SIMD row update "
+                "per ancestor pair)" % (source, factor_multiply_adds(self.parents)))
 
 
 def has_looped_form(robot, name):
@@ -84,10 +100,12 @@ def unrolled_too_large(robot):
     return factor_multiply_adds(dof_parents(robot)) > UNROLL_LIMIT
 
 
-def looped_function(robot, scene, name):
-    """mass_matrix_factor in its looped form: the traced terms, with the loop as a LoopedFactor."""
+def looped_function(robot, scene, name, crba=False):
+    """mass_matrix_factor in its looped form: the traced terms, with the loop as a LoopedFactor; with
+    `crba`, M's entries from the looped CRBA (passes/looped_crba.py)."""
     doc, inputs, outputs = signature(robot, scene, name)
-    terms = trace_function(robot, scene, TERMS)
+    terms = trace_function(robot, scene, looped_crba.TERMS if crba else TERMS)
     assert terms.inputs == inputs
-    solve = LoopedFactor(parents=tuple(dof_parents(robot)), terms=terms.outputs)
+    solve = LoopedFactor(parents=tuple(dof_parents(robot)), terms=terms.outputs,
+                         crba=looped_crba.LoopedCrba(robot=robot, terms=terms.outputs, packed=True) if crba else None)
     return replace(terms, name=name, doc=doc, outputs=outputs, computes=name, solve=solve)

@@ -13,7 +13,7 @@ with the robot."""
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from typing import Tuple
+from typing import ClassVar, Tuple
 
 from ..algorithms.contact_dynamics import PROXIMAL_STEPS
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents
@@ -26,6 +26,7 @@ TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_terms",
 # Doubles per vector instruction the cost model assumes: AVX2, the widest every x86-64 machine we
 # build for has (AVX-512 halves the loop's instructions again).
 SIMD_DOUBLES = 4
+HEADER = "rbdc_gen/solve.hpp"  # the loops
 
 
 @dataclass(frozen=True)
@@ -37,6 +38,7 @@ class LoopedSolve:
     parents: Tuple[int, ...]
     blocks: Tuple[Tuple[str, int], ...]
     terms: Tuple[Argument, ...]
+    headers: ClassVar[Tuple[str, ...]] = (HEADER,)
 
     @property
     def nv(self):

@@ -2,17 +2,18 @@
 default"): the scalar tree, the robot's isomorphic limbs in SIMD lanes, (forward- and
 contact-dynamics derivatives) a looped solve with SIMD across the right-hand sides
 (looped_solve.py), (forward dynamics) the articulated-body algorithm (algorithms/aba.py), or
-(mass_matrix_factor) the factorisation as a loop (looped_factor.py). The quantity is the same;
+(mass_matrix_factor) the factorisation as a loop (looped_factor.py), or (mass_matrix) the CRBA as a
+loop over the bodies (looped_crba.py). The quantity is the same;
 only how it is evaluated changes, so the function keeps its plain name and its doc gains one line
 that says the choice and its numbers.
 
 The cost is the arithmetic instructions the body issues: every operation node once, a lane
 operation being one vector instruction for all limbs, the sum over the lanes two (a horizontal
 add of four), a looped solve's row update one per looped_solve.SIMD_DOUBLES columns. Where the
-unrolled factor is past looped_factor.UNROLL_LIMIT, `auto` does not trace the forms that unroll it
-(tracing them alone would take minutes) when another form exists. A scene may force a form
-(`schedule: scalar`, `limb_lanes`, `looped_solve`, `aba` or `looped_factor`) where the function has
-it."""
+unrolled factor is past looped_factor.UNROLL_LIMIT, or the unrolled CRBA past looped_crba.UNROLL_LIMIT,
+`auto` does not trace the forms that unroll it (tracing them alone would take minutes) when another
+form exists. A scene may force a form (`schedule: scalar`, `limb_lanes`, `looped_solve`, `aba`,
+`looped_factor` or `looped_crba`) where the function has it."""
 
 from __future__ import annotations
 
@@ -22,7 +23,7 @@ from ..algorithms import aba
 from ..algorithms.forward_dynamics import dof_parents
 from ..graph import expr as ex
 from ..views.limbs import LimbError, isomorphic_limbs
-from . import lane_functions, looped_factor, looped_solve, singular_mass
+from . import lane_functions, looped_crba, looped_factor, looped_solve, singular_mass
 from .trace import signature, trace_function
 
 _LANE_SUM_INSTRUCTIONS = 2  # log2(LANES) horizontal additions
@@ -55,6 +56,10 @@ def _forms(robot, scene, name):
         forms["aba"] = lambda: _as(trace_function(robot, scene, "forward_dynamics_aba"), name)
     if looped_factor.has_looped_form(robot, name):
         forms["looped_factor"] = lambda: looped_factor.looped_function(robot, scene, name)
+    if looped_crba.has_looped_form(robot, name):
+        forms["looped_crba"] = lambda: looped_crba.looped_function(robot, scene, name)
+    if looped_factor.has_looped_form(robot, name) and looped_crba.has_looped_form(robot, "mass_matrix"):
+        forms["looped_crba"] = lambda: looped_factor.looped_function(robot, scene, name, crba=True)
     return forms
 
 
@@ -72,6 +77,10 @@ def _lanes_apply(robot, scene, name):
 
 # Quantities whose scalar form unrolls the factorisation of M.
 _UNROLL_FACTOR = ("mass_matrix_factor", "forward_dynamics")
+# Quantities → their forms that unroll the CRBA (the others: the looped CRBA, the articulated-body
+# algorithm).
+_UNROLL_CRBA = {"mass_matrix": ("scalar",), "mass_matrix_factor": ("scalar", "looped_factor"),
+                "forward_dynamics": ("scalar",)}
 
 
 # A forced schedule → the forms that satisfy it, in order of preference (limb lanes: the contact
@@ -80,13 +89,14 @@ _FORCED = {"limb_lanes": ("limb_lanes", "lanes_looped_solve")}
 
 _SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "looped_solve": "looped solve",
           "lanes_looped_solve": "limb lanes and a looped solve",
-          "aba": "articulated-body algorithm", "looped_factor": "looped factor"}
+          "aba": "articulated-body algorithm", "looped_factor": "looped factor", "looped_crba": "looped CRBA"}
 _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes, the trunk scalar)" % ex.LANES,
            "looped_solve": " (the solve's right-hand sides in SIMD across columns)",
            "lanes_looped_solve": " (the terms traced with the %d isomorphic limbs in SIMD lanes, the "
                                  "solve's right-hand sides in SIMD across columns)" % ex.LANES,
            "aba": " (O(n); the scalar tree is CRBA + the sparse LᵀDL factor)",
-           "looped_factor": " (CRBA unrolled, the sparse LᵀDL factorisation a loop)"}
+           "looped_factor": " (the sparse LᵀDL factorisation a loop)",
+           "looped_crba": " (a loop over the bodies, the tree's constants in a table)"}
 
 
 def scheduled_function(robot, scene, name):
@@ -105,6 +115,12 @@ def scheduled_function(robot, scene, name):
         del forms["scalar"]
         untraced.append("scalar tree not traced (its factorisation alone: %d multiply-adds)"
                         % looped_factor.factor_multiply_adds(dof_parents(robot)))
+    unrolling = _UNROLL_CRBA.get(name, ())
+    if looped_crba.unrolled_too_large(robot) and any(form not in unrolling for form in forms):
+        for form in unrolling:
+            if forms.pop(form, None) is not None:
+                untraced.append("%s not traced (its CRBA: %d body-ancestor steps)"
+                                % (_SHORT[form], looped_crba.ancestor_steps(robot)))
     traced = {form: trace() for form, trace in forms.items()}
     cost = {form: instructions(fn) for form, fn in traced.items()}
     best = min(cost, key=lambda form: cost[form])  # dicts keep order: the scalar tree wins a tie

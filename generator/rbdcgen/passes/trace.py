@@ -134,6 +134,12 @@ def _spec(robot, nf, nc):
             "Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).", ("q",),
             [("M", nv, nv, "mass matrix, full symmetric")],
             lambda m: {"M": _matrix(crba.mass_matrix(m), nv)}),
+        "body_transforms": (
+            "Each body's transform X_λ(i)^i = X_J X_T from q (the looped CRBA's input, "
+            "passes/looped_crba.py).", ("q",),
+            [("X", 12, robot.nb - 1, "column i − 1: body i's E row-major (parent → body coordinates), "
+                                     "then r (its origin in parent coordinates)")],
+            lambda m: {"X": crba.body_transforms(m)}),
         "mass_matrix_lower": (
             "Joint-space inertia matrix M (CRBA, paper 000 Alg. 5), its lower triangle only (n(n+1)/2 "
             "stores instead of n²): for Eigen's M.selfadjointView<Eigen::Lower>() and its LDLᵀ/LLᵀ.",

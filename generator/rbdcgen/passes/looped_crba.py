@@ -1,0 +1,166 @@
+"""The looped form of the CRBA, for mass_matrix and (under the looped factor) mass_matrix_factor
+(docs/performance.md, "The mass matrix as a loop").
+
+Unrolled, the CRBA is one force transform per (body, ancestor) pair: O(n²) straight-line code on a
+chain (a 200-body chain: 26 MB of C++, most of the generator's time and more than any compiler takes
+in 20 s). In the looped form the traced part writes only each body's transform X_λ(i)^i = (E, r) from
+q (O(n), sines and cosines folded with the tree's constant placements), and crba_loop
+(rbdc_gen/crba.hpp) runs the recursion with the rest of the tree (parents, axes, inertias) in a table.
+The loop folds nothing (every transform is a dense 3 × 3 rotation and a translation), so on a small
+robot the unrolled CRBA wins by cost; past UNROLL_LIMIT ancestor steps it is not traced at all."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from typing import ClassVar, Tuple
+
+from ..algorithms.forward_dynamics import dof_parents
+from ..graph.spatial import snap_axis
+from .trace import Argument, signature, trace_function
+
+TERMS = "body_transforms"
+HEADER = "rbdc_gen/crba.hpp"
+# Past this many (body, ancestor) steps the unrolled CRBA is not traced: a 60-body chain (1 770
+# steps) already writes ~2.5 MB of mass matrix; humanoid32 has 129, Talos 238.
+UNROLL_LIMIT = 1000
+# crba_loop's arithmetic (rbdc_gen/crba.hpp), per call of each piece: (multiplications, additions).
+CONGRUENCE = (75, 69)      # a composite inertia into its parent's
+FORCE_TO_PARENT = (24, 18)  # Xᵀ F
+REVOLUTE_FORCE = (15, 9)    # F = I_c (a; 0)
+PRISMATIC_FORCE = (9, 3)    # F = I_c (0; a)
+PROJECTION = (3, 2)         # Sᵀ F
+# Instructions the cost model counts per multiply-add pair (a fused multiply-add, or a lone one) and
+# per ancestor step besides its arithmetic (the table's axis, the walk, the stores).
+STEP_OVERHEAD = 8
+
+
+def ancestor_steps(robot):
+    """(body, ancestor body) pairs with a joint: the force transforms of the unrolled CRBA."""
+    steps = 0
+    for i in range(1, robot.nb):
+        j = robot.parent[i]
+        while j != 0:
+            steps += 1
+            j = robot.parent[j]
+    return steps
+
+
+def unrolled_too_large(robot):
+    return ancestor_steps(robot) > UNROLL_LIMIT
+
+
+def _packed_first(parents):
+    """Where each dof's entries start in ltdl_factor's packed layout (its ancestors, nearest first)."""
+    first, total = [], 0
+    for i in range(len(parents)):
+        first.append(total)
+        j = parents[i]
+        while j != -1:
+            total += 1
+            j = parents[j]
+    return first
+
+
+def _upper(matrix):
+    return [matrix[0][0], matrix[0][1], matrix[0][2], matrix[1][1], matrix[1][2], matrix[2][2]]
+
+
+@dataclass(frozen=True)
+class LoopedCrba:
+    """crba_loop over the robot's bodies, reading the terms' transforms X, writing M whole
+    (`packed` False: the argument M) or ltdl_factor's packed entries (solve_L, solve_D)."""
+    robot: object
+    terms: Tuple[Argument, ...]
+    packed: bool = False
+    headers: ClassVar[Tuple[str, ...]] = (HEADER,)
+
+    @property
+    def nb(self):
+        return self.robot.nb
+
+    def _counts(self):
+        robot = self.robot
+        mul = add = 0
+        for i in range(1, robot.nb):
+            if robot.floating_base or robot.parent[i] != 0:
+                mul, add = mul + CONGRUENCE[0], add + CONGRUENCE[1]
+            force = REVOLUTE_FORCE if robot.joints[i].type == "revolute" else PRISMATIC_FORCE
+            mul, add = mul + force[0] + PROJECTION[0], add + force[1] + PROJECTION[1] + 1  # + armature
+        steps = ancestor_steps(robot)
+        mul += steps * (FORCE_TO_PARENT[0] + PROJECTION[0])
+        add += steps * (FORCE_TO_PARENT[1] + PROJECTION[1])
+        if robot.floating_base:  # each body's force into the trunk's coordinates
+            mul += (robot.nb - 1) * FORCE_TO_PARENT[0]
+            add += (robot.nb - 1) * FORCE_TO_PARENT[1]
+        return mul, add, steps
+
+    def operations(self):
+        mul, add, _ = self._counts()
+        return {"mul": mul, "add": add, "neg": 3 if self.robot.floating_base else 0}
+
+    def instructions(self):
+        mul, add, steps = self._counts()
+        return max(mul, add) + STEP_OVERHEAD * (steps + self.nb)
+
+    def table(self):
+        """The tree's constants as a CrbaTree initialiser."""
+        robot = self.robot
+
+        def row(values):
+            return "{" + ", ".join(values) + "}"
+
+        def number(x):
+            return repr(float(x))
+
+        bodies = range(robot.nb)
+        joints = robot.joints
+        inertia = [_upper(_inertia_at_origin(robot.bodies[i])) for i in bodies]
+        fields = [
+            row(str(robot.parent[i] if i else -1) for i in bodies),
+            row(str(joints[i].v_index if i else -1) for i in bodies),
+            row("true" if i and joints[i].type == "revolute" else "false" for i in bodies),
+            row(row(number(x) for x in (snap_axis(joints[i].axis) if i else (0.0, 0.0, 0.0))) for i in bodies),
+            row(number(robot.bodies[i].mass) for i in bodies),
+            row(row(number(robot.bodies[i].mass * c) for c in robot.bodies[i].com) for i in bodies),
+            row(row(number(x) for x in inertia[i]) for i in bodies),
+            row(number(joints[i].actuator.armature if i and joints[i].actuator else 0.0) for i in bodies)]
+        return f"const CrbaTree<{robot.nb}> crba_tree{{{', '.join(fields)}}};"
+
+    def loops(self):
+        nv = self.robot.nv
+        floating = "true" if self.robot.floating_base else "false"
+        if self.packed:
+            first = _packed_first(dof_parents(self.robot))
+            out = [f"const int packed_first[{nv}] = {{{', '.join(map(str, first))}}};",
+                   f"const PackedMassMatrix<Scalar, {nv}> crba_out{{solve_L, solve_D, packed_first}};"]
+        else:
+            out = [f"const DenseMassMatrix<Scalar, {nv}> crba_out{{M}};"]
+        return [self.table(), *out,
+                f"crba_loop<Scalar, {self.nb}, {nv}, {floating}>(crba_tree, solve_X, crba_out);"]
+
+    def emission(self, terms_name):
+        return ("looped CRBA: %s writes the %d bodies' transforms, crba_loop runs the recursion over a "
+                "table of the tree (%d body-ancestor steps)" % (terms_name, self.nb - 1, ancestor_steps(self.robot)))
+
+
+def _inertia_at_origin(body):
+    """Ī = I_c + m (|c|² 1 − c cᵀ), as spatial.Inertia.from_body."""
+    c, m = body.com, body.mass
+    cc = sum(x * x for x in c)
+    return [[body.inertia_com[i][j] + m * ((cc if i == j else 0.0) - c[i] * c[j]) for j in range(3)]
+            for i in range(3)]
+
+
+def has_looped_form(robot, name):
+    """mass_matrix on a tree without rotors or couplings (both change M beyond the bodies' CRBA)."""
+    return (name == "mass_matrix" and robot.nb > 1 and not robot.couplings
+            and not any(j.actuator is not None and j.actuator.rotor is not None for j in robot.joints))
+
+
+def looped_function(robot, scene, name):
+    """mass_matrix in its looped-CRBA form: the traced transforms, with the loop as a LoopedCrba."""
+    doc, inputs, outputs = signature(robot, scene, name)
+    terms = trace_function(robot, scene, TERMS)
+    assert terms.inputs == inputs
+    return replace(terms, name=name, doc=doc, outputs=outputs, computes=name,
+                   solve=LoopedCrba(robot=robot, terms=terms.outputs))
