@@ -6,8 +6,9 @@ chain (a 200-body chain: 26 MB of C++, most of the generator's time and more tha
 in 20 s). In the looped form the traced part writes only each body's transform X_λ(i)^i = (E, r) from
 q (O(n), sines and cosines folded with the tree's constant placements), and crba_loop
 (rbdc_gen/crba.hpp) runs the recursion with the rest of the tree (parents, axes, inertias) in a table.
-The loop folds nothing (every transform is a dense 3 × 3 rotation and a translation), so on a small
-robot the unrolled CRBA wins by cost; past UNROLL_LIMIT ancestor steps it is not traced at all."""
+The loop works in the root's coordinates (one transform per body, a dot product per (body,
+ancestor) pair, as Pinocchio's crba in the world frame) and folds nothing, so on a small robot the
+unrolled CRBA wins by cost; past UNROLL_LIMIT ancestor steps it is not traced at all."""
 
 from __future__ import annotations
 
@@ -24,14 +25,16 @@ HEADER = "rbdc_gen/crba.hpp"
 # steps) already writes ~2.5 MB of mass matrix; humanoid32 has 129, Talos 238.
 UNROLL_LIMIT = 1000
 # crba_loop's arithmetic (rbdc_gen/crba.hpp), per call of each piece: (multiplications, additions).
-CONGRUENCE = (75, 69)      # a composite inertia into its parent's
-FORCE_TO_PARENT = (24, 18)  # Xᵀ F
-REVOLUTE_FORCE = (15, 9)    # F = I_c (a; 0)
-PRISMATIC_FORCE = (9, 3)    # F = I_c (0; a)
-PROJECTION = (3, 2)         # Sᵀ F
-# Instructions the cost model counts per multiply-add pair (a fused multiply-add, or a lone one) and
-# per ancestor step besides its arithmetic (the table's axis, the walk, the stores).
-STEP_OVERHEAD = 8
+ROOT_TRANSFORM = (36, 27)  # X_0^i = X_i X_0^λ(i), below the root's children
+AXIS = (9, 6)              # the joint axis in root coordinates
+REVOLUTE_SUBSPACE = (6, 3)  # S = (z; p × z)
+CONGRUENCE = (75, 59)      # the body's inertia in root coordinates
+ACCUMULATE = (0, 10)       # into the parent's composite inertia
+APPLY = (24, 18)           # F = I_c S
+PROJECTION = (6, 5)        # Sᵀ F
+# Instructions the cost model counts per ancestor step and per body besides the arithmetic (the
+# walk, the table, the stores); the arithmetic itself as max(multiplications, additions): fused.
+STEP_OVERHEAD = 4
 
 
 def ancestor_steps(robot):
@@ -79,20 +82,18 @@ class LoopedCrba:
         return self.robot.nb
 
     def _counts(self):
+        """(multiplications, additions, ancestor steps) of crba_loop, by trip count."""
         robot = self.robot
-        mul = add = 0
+        pieces = []
         for i in range(1, robot.nb):
-            if robot.floating_base or robot.parent[i] != 0:
-                mul, add = mul + CONGRUENCE[0], add + CONGRUENCE[1]
-            force = REVOLUTE_FORCE if robot.joints[i].type == "revolute" else PRISMATIC_FORCE
-            mul, add = mul + force[0] + PROJECTION[0], add + force[1] + PROJECTION[1] + 1  # + armature
+            below_root = robot.parent[i] != 0
+            pieces += [AXIS, CONGRUENCE, APPLY, PROJECTION, (0, 1)]  # (0, 1): the armature
+            pieces += [ROOT_TRANSFORM] if below_root else []
+            pieces += [REVOLUTE_SUBSPACE] if robot.joints[i].type == "revolute" else []
+            pieces += [ACCUMULATE] if below_root or robot.floating_base else []
         steps = ancestor_steps(robot)
-        mul += steps * (FORCE_TO_PARENT[0] + PROJECTION[0])
-        add += steps * (FORCE_TO_PARENT[1] + PROJECTION[1])
-        if robot.floating_base:  # each body's force into the trunk's coordinates
-            mul += (robot.nb - 1) * FORCE_TO_PARENT[0]
-            add += (robot.nb - 1) * FORCE_TO_PARENT[1]
-        return mul, add, steps
+        pieces += [PROJECTION] * steps
+        return sum(m for m, _ in pieces), sum(a for _, a in pieces), steps
 
     def operations(self):
         mul, add, _ = self._counts()
@@ -114,7 +115,7 @@ class LoopedCrba:
 
         bodies = range(robot.nb)
         joints = robot.joints
-        inertia = [_upper(_inertia_at_origin(robot.bodies[i])) for i in bodies]
+        inertia = [_upper(inertia_at_origin(robot.bodies[i])) for i in bodies]
         fields = [
             row(str(robot.parent[i] if i else -1) for i in bodies),
             row(str(joints[i].v_index if i else -1) for i in bodies),
@@ -143,8 +144,8 @@ class LoopedCrba:
                 "table of the tree (%d body-ancestor steps)" % (terms_name, self.nb - 1, ancestor_steps(self.robot)))
 
 
-def _inertia_at_origin(body):
-    """Ī = I_c + m (|c|² 1 − c cᵀ), as spatial.Inertia.from_body."""
+def inertia_at_origin(body):
+    """Ī = I_c + m (|c|² 1 − c cᵀ), in floats, as spatial.Inertia.from_body."""
     c, m = body.com, body.mass
     cc = sum(x * x for x in c)
     return [[body.inertia_com[i][j] + m * ((cc if i == j else 0.0) - c[i] * c[j]) for j in range(3)]

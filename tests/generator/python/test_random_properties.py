@@ -3,7 +3,8 @@ plain ones (revolute, continuous, prismatic, fixed joints merged), massless bodi
 over twelve decades with near-singular inertias, mimic joints; floating and fixed bases. For a finite
 state nothing is NaN; M is symmetric and, where the model is regular, positive definite; inverse
 dynamics undoes forward dynamics: ID(q, v, FD(q, v, τ)) = (0, τ). Against the runtime the same kinds
-are checked by `rbdc verify` (verify_random_robots.py)."""
+are checked by `rbdc verify` (verify_random_robots.py). The singular-mass rule's O(n) pivots (the
+articulated inertias) give the verdict of factoring M itself, dof and pivot."""
 
 import json
 import math
@@ -19,6 +20,7 @@ from numeric_check import evaluate, random_state
 from rbdcgen.frontend.ir import load_ir
 from rbdcgen.frontend.random_robot import random_urdf
 from rbdcgen.frontend.scene import Scene
+from rbdcgen.passes import singular_mass
 from rbdcgen.passes.singular_mass import singularity
 from rbdcgen.passes.trace import trace_function
 
@@ -65,6 +67,18 @@ class RandomRobotProperties(unittest.TestCase):
         scale = max([1.0] + [abs(x) for x in tau] + [abs(x) for x in want])
         error = max(abs(x - y) for x, y in zip(tau, want)) / scale
         self.assertLess(error, TOLERANCE[kind], "%s: ID(FD(τ)) − (0, τ) = %.1e relative" % (where, error))
+
+    def test_articulated_pivots_give_the_verdict_of_the_factored_mass_matrix(self):
+        for kind in ("plain", "massless", "extremes"):  # mimic: the rule factors M (no articulated form)
+            for seed in SEEDS:
+                robot = load(random_urdf(seed, max_links=8, **KINDS[kind]), "floating" if seed % 2 == 0 else "fixed")
+                articulated = singular_mass._articulated_small_pivot(robot)
+                factored = singular_mass._factored_small_pivot(robot)
+                with self.subTest(kind=kind, seed=seed, articulated=articulated, factored=factored):
+                    self.assertEqual(articulated is None, factored is None)
+                    if factored is not None:
+                        self.assertEqual(articulated[0], factored[0])
+                        self.assertAlmostEqual(articulated[1], factored[1], delta=1e-9 * max(1.0, factored[2]))
 
     def test_every_kind(self):
         for kind in KINDS:
