@@ -65,11 +65,26 @@ def mass_matrix(m):
     return H
 
 
+def depth_first_order(robot):
+    """The bodies in depth-first order, the root first and children in index order: the numbering
+    itself for a robot loaded from a URDF; a regular topology file may number otherwise."""
+    children = [[] for _ in range(robot.nb)]
+    for i in range(1, robot.nb):
+        children[robot.parent[i]].append(i)
+    order, stack = [], [0]
+    while stack:
+        i = stack.pop()
+        order.append(i)
+        stack.extend(reversed(children[i]))
+    return order
+
+
 def body_transforms(m):
-    """X_λ(i)^i = X_J(q_i) X_T(i) of every body i ≥ 1 as one transform, E row-major then r: what the
-    looped CRBA (rbdc_gen/crba.hpp, passes/looped_crba.py) reads."""
+    """X_λ(i)^i = X_J(q_i) X_T(i) of every body i ≥ 1 as one transform, E row-major then r, the
+    bodies in depth_first_order: what the looped CRBA (rbdc_gen/crba.hpp, passes/looped_crba.py)
+    reads."""
     values = []
-    for i in range(1, m.robot.nb):
+    for i in depth_first_order(m.robot)[1:]:
         m.mark("body transforms", i)
         X = m.X_tree(i).then(m.X_joint(i))
         E = sp.identity3() if X.E is None else X.E

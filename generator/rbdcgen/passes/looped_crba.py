@@ -15,6 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import ClassVar, Tuple
 
+from ..algorithms.crba import depth_first_order
 from ..algorithms.forward_dynamics import dof_parents
 from ..graph.spatial import snap_axis
 from .trace import Argument, signature, trace_function
@@ -32,6 +33,7 @@ CONGRUENCE = (75, 59)      # the body's inertia in root coordinates
 ACCUMULATE = (0, 10)       # into the parent's composite inertia
 APPLY = (24, 18)           # F = I_c S
 PROJECTION = (6, 5)        # Sᵀ F
+PRODUCT_BLOCK = 8          # the products S_jᵀ F_i run in blocks of 8 bodies (kBlock)
 # Instructions the cost model counts per ancestor step and per body besides the arithmetic (the
 # walk, the table, the stores); the arithmetic itself as max(multiplications, additions): fused.
 STEP_OVERHEAD = 4
@@ -46,6 +48,33 @@ def ancestor_steps(robot):
             steps += 1
             j = robot.parent[j]
     return steps
+
+
+def subtree_ends(parents):
+    """end[i]: one past body i's last descendant when `parents` is depth-first numbered (the subtree
+    of i is then i … end − 1)."""
+    end = list(range(1, len(parents) + 1))
+    for i in range(len(parents) - 1, 0, -1):
+        end[parents[i]] = max(end[parents[i]], end[i])
+    return end
+
+
+def product_lanes(robot):
+    """The products S_jᵀ F_i crba_loop computes: for each body j with descendants, the blocks of
+    PRODUCT_BLOCK bodies (in depth-first order) that cover them, padding included."""
+    parents = _table_parents(robot)
+    lanes = 0
+    for j, end in enumerate(subtree_ends(parents)):
+        if j and end > j + 1:
+            lanes += -(-end // PRODUCT_BLOCK) * PRODUCT_BLOCK - (j + 1) // PRODUCT_BLOCK * PRODUCT_BLOCK
+    return lanes
+
+
+def _table_parents(robot):
+    """The parents in depth-first order (crba.depth_first_order), as the table holds them."""
+    order = depth_first_order(robot)
+    position = {body: k for k, body in enumerate(order)}
+    return [position[robot.parent[i]] if i else -1 for i in order]
 
 
 def unrolled_too_large(robot):
@@ -92,7 +121,7 @@ class LoopedCrba:
             pieces += [REVOLUTE_SUBSPACE] if robot.joints[i].type == "revolute" else []
             pieces += [ACCUMULATE] if below_root or robot.floating_base else []
         steps = ancestor_steps(robot)
-        pieces += [PROJECTION] * steps
+        pieces += [PROJECTION] * product_lanes(robot)
         return sum(m for m, _ in pieces), sum(a for _, a in pieces), steps
 
     def operations(self):
@@ -104,8 +133,11 @@ class LoopedCrba:
         return max(mul, add) + STEP_OVERHEAD * (steps + self.nb)
 
     def table(self):
-        """The tree's constants as a CrbaTree initialiser."""
+        """The tree's constants as a CrbaTree initialiser, the bodies in depth-first order (the
+        order of the terms' transforms)."""
         robot = self.robot
+        order = depth_first_order(robot)
+        parents = _table_parents(robot)
 
         def row(values):
             return "{" + ", ".join(values) + "}"
@@ -113,18 +145,19 @@ class LoopedCrba:
         def number(x):
             return repr(float(x))
 
-        bodies = range(robot.nb)
-        joints = robot.joints
-        inertia = [_upper(inertia_at_origin(robot.bodies[i])) for i in bodies]
+        joints = [robot.joints[i] for i in order]
+        bodies = [robot.bodies[i] for i in order]
+        rest = [0.0, 0.0, 0.0]
         fields = [
-            row(str(robot.parent[i] if i else -1) for i in bodies),
-            row(str(joints[i].v_index if i else -1) for i in bodies),
-            row("true" if i and joints[i].type == "revolute" else "false" for i in bodies),
-            row(row(number(x) for x in (snap_axis(joints[i].axis) if i else (0.0, 0.0, 0.0))) for i in bodies),
-            row(number(robot.bodies[i].mass) for i in bodies),
-            row(row(number(robot.bodies[i].mass * c) for c in robot.bodies[i].com) for i in bodies),
-            row(row(number(x) for x in inertia[i]) for i in bodies),
-            row(number(joints[i].actuator.armature if i and joints[i].actuator else 0.0) for i in bodies)]
+            row(map(str, parents)),
+            row(map(str, subtree_ends(parents))),
+            row(str(joint.v_index if k else -1) for k, joint in enumerate(joints)),
+            row("true" if k and joint.type == "revolute" else "false" for k, joint in enumerate(joints)),
+            row(row(number(x) for x in (snap_axis(joint.axis) if k else rest)) for k, joint in enumerate(joints)),
+            row(number(body.mass) for body in bodies),
+            row(row(number(body.mass * c) for c in body.com) for body in bodies),
+            row(row(number(x) for x in _upper(inertia_at_origin(body))) for body in bodies),
+            row(number(joint.actuator.armature if k and joint.actuator else 0.0) for k, joint in enumerate(joints))]
         return f"const CrbaTree<{robot.nb}> crba_tree{{{', '.join(fields)}}};"
 
     def loops(self):

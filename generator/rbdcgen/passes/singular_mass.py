@@ -14,6 +14,7 @@ import math
 import sys
 
 from ..algorithms.aba import applies as articulated_pivots_apply
+from ..algorithms.crba import depth_first_order
 from ..frontend.scene import default_scene
 from ..graph.spatial import snap_axis
 from .looped_crba import inertia_at_origin
@@ -88,6 +89,7 @@ def _articulated_small_pivot(robot):
     factor: each joint dof's pivot on the way in, then the floating trunk's 6 × 6 I^A_0 factored."""
     X = trace_function(robot, default_scene(), "body_transforms",
                        known_inputs={"q": generic_configuration(robot)}).values["X"]
+    column = {body: k - 1 for k, body in enumerate(depth_first_order(robot))}  # body i's transform
     articulated = [_spatial_inertia(body) for body in robot.bodies]
     composite = [[row[:] for row in inertia] for inertia in articulated]
     for i in range(robot.nb - 1, 0, -1):
@@ -101,7 +103,7 @@ def _articulated_small_pivot(robot):
         if not pivot > SINGULAR_PIVOT * diagonal:
             return joint.v_index, pivot, diagonal
         j = robot.parent[i]
-        transform = _motion_transform([x.value for x in X[12 * (i - 1):12 * i]])
+        transform = _motion_transform([x.value for x in X[12 * column[i]:12 * column[i] + 12]])
         composite[j] = _plus(composite[j], _congruence(transform, composite[i]))
         if j != 0 or robot.floating_base:
             projected = [[articulated[i][r][c] - U[r] * U[c] / pivot for c in range(6)] for r in range(6)]

@@ -137,8 +137,9 @@ def _spec(robot, nf, nc):
         "body_transforms": (
             "Each body's transform X_λ(i)^i = X_J X_T from q (the looped CRBA's input, "
             "passes/looped_crba.py).", ("q",),
-            [("X", 12, robot.nb - 1, "column i − 1: body i's E row-major (parent → body coordinates), "
-                                     "then r (its origin in parent coordinates)")],
+            [("X", 12, robot.nb - 1, "column k: the (k + 1)-th body in depth-first order (crba.depth_first_order), "
+                                     "its E row-major (parent → body coordinates), then r (its origin in "
+                                     "parent coordinates)")],
             lambda m: {"X": crba.body_transforms(m)}),
         "mass_matrix_lower": (
             "Joint-space inertia matrix M (CRBA, paper 000 Alg. 5), its lower triangle only (n(n+1)/2 "
