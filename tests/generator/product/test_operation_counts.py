@@ -2,7 +2,8 @@
 compiled with a scalar type that counts every arithmetic operator, sin, cos and sqrt, and one call
 must match the header's table kind by kind. Run on the looped CRBA and the looped factor it feeds
 (passes/looped_crba.py, looped_factor.py: the loops are counted by trip count, the traced transforms
-node by node), floating and fixed, revolute and prismatic joints, a branched tree."""
+node by node), floating and fixed, and on forward dynamics (straight-line) with its derivatives in
+the looped solve (looped_solve.py); revolute and prismatic joints, a branched tree."""
 import os
 import re
 import subprocess
@@ -55,13 +56,24 @@ void report(const char* name, F call) {
 }
 int main() {
   namespace g = rbdc_gen::counted::counted;
-  Counted q[g::nq], M[g::nv * g::nv], L[g::nv * g::nv], D[g::nv], D_inv[g::nv];
+  static Counted q[g::nq], v[g::nv], tau[g::n_joints], f[3 * g::n_feet];
+  static Counted A[g::nv * g::nv], B[g::nv * g::nv], C[g::nv * g::nv], E[g::nv * 3 * g::n_feet];
   for (int k = 0; k < g::nq; ++k) q[k] = 0.1 * k;
   if (g::nq > g::nv) q[3] = 1.0;  // the base quaternion's w
-  report("mass_matrix", [&] { g::mass_matrix(q, M); });
-  report("mass_matrix_factor", [&] { g::mass_matrix_factor(q, L, D, D_inv); });
+  for (int k = 0; k < g::nv; ++k) v[k] = 0.2 * k;
+  for (int k = 0; k < g::n_joints; ++k) tau[k] = 0.3 * k;
+  for (int k = 0; k < 3 * g::n_feet; ++k) f[k] = 0.1 * k;
+  CALLS
 }
 """
+# The scenes checked, each with the calls of its functions.
+LOOPED_CRBA = (SCENE, """
+  report("mass_matrix", [&] { g::mass_matrix(q, A); });
+  report("mass_matrix_factor", [&] { g::mass_matrix_factor(q, A, B, C); });""")
+LOOPED_SOLVE = ("name: counted\nquantities: [forward_dynamics]\nderivatives: [forward_dynamics_derivatives]\n"
+                "schedule: looped_solve\n", """
+  report("forward_dynamics", [&] { g::forward_dynamics(q, v, tau, f, A); });
+  report("forward_dynamics_derivatives", [&] { g::forward_dynamics_derivatives(q, v, tau, f, A, B, C, E); });""")
 
 
 def tree_urdf():
@@ -85,15 +97,16 @@ def header_counts(directory):
 
 
 class OperationCountTest(unittest.TestCase):
-    def check(self, base):
+    def check(self, base, scene=LOOPED_CRBA):
+        text, calls = scene
         with tempfile.TemporaryDirectory() as tmp:
             directory = Path(tmp)
             (directory / "counted.urdf").write_text(tree_urdf())
-            (directory / "counted.yaml").write_text(SCENE)
+            (directory / "counted.yaml").write_text(text)
             result = run_rbdc("generate", directory / "counted.urdf", f"--{base}-base",
                               "--scene", directory / "counted.yaml", "-o", directory)
             self.assertEqual(result.returncode, 0, result.stderr)
-            (directory / "driver.cpp").write_text(DRIVER)
+            (directory / "driver.cpp").write_text(DRIVER.replace("CALLS", calls))
             compiler = os.environ.get("CXX", "c++")
             build = subprocess.run([compiler, "-std=c++17", "-O0", "-I", str(directory), "-I", "/usr/include/eigen3",
                                     str(directory / "driver.cpp"), "-o", str(directory / "driver")],
@@ -101,17 +114,21 @@ class OperationCountTest(unittest.TestCase):
             self.assertEqual(build.returncode, 0, build.stderr)
             run = subprocess.run([str(directory / "driver")], capture_output=True, text=True, check=True)
             expected = header_counts(directory)
-            for line in run.stdout.splitlines():
+            lines = run.stdout.splitlines()
+            self.assertEqual(len(lines), calls.count("report("))
+            for line in lines:
                 name, *values = line.split()
-                self.assertIn("looped CRBA", (directory / "counted" / "counted" / f"{name}.hpp").read_text()
-                              + "".join(p.read_text() for p in (directory / "counted" / "common").glob(f"{name}_*.hpp")))
                 self.assertEqual(dict(zip(KINDS, map(int, values))), expected[name], f"{base} {name}")
+            return "".join(p.read_text() for p in (directory / "counted" / "common").glob("*.hpp"))
 
-    def test_floating_base(self):
-        self.check("floating")
+    def test_looped_crba_floating_base(self):
+        self.assertIn("looped CRBA", self.check("floating"))
 
-    def test_fixed_base(self):
-        self.check("fixed")
+    def test_looped_crba_fixed_base(self):
+        self.assertIn("looped CRBA", self.check("fixed"))
+
+    def test_looped_solve_and_straight_line(self):
+        self.assertIn("schedule: looped solve", self.check("floating", LOOPED_SOLVE))
 
 
 if __name__ == "__main__":
