@@ -13,17 +13,18 @@ unrolled CRBA wins by cost; past UNROLL_LIMIT ancestor steps it is not traced at
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from itertools import accumulate
 from typing import ClassVar, Tuple
 
 from ..algorithms.crba import depth_first_order
-from ..algorithms.forward_dynamics import dof_parents
+from ..algorithms.forward_dynamics import dof_ancestors, dof_parents
 from ..graph.spatial import snap_axis
 from .trace import Argument, signature, trace_function
 
 TERMS = "body_transforms"
 HEADER = "rbdc_gen/crba.hpp"
 # Past this many (body, ancestor) steps the unrolled CRBA is not traced: a 60-body chain (1 770
-# steps) already writes ~2.5 MB of mass matrix; humanoid32 has 129, Talos 238.
+# steps) would write ~2.3 MB of mass matrix (chain200: 26 MB for 19 900); humanoid32 has 129, Talos 238.
 UNROLL_LIMIT = 1000
 # crba_loop's arithmetic (rbdc_gen/crba.hpp), per call of each piece: (multiplications, additions).
 ROOT_TRANSFORM = (36, 27)  # X_0^i = X_i X_0^λ(i), below the root's children
@@ -83,14 +84,7 @@ def unrolled_too_large(robot):
 
 def _packed_first(parents):
     """Where each dof's entries start in ltdl_factor's packed layout (its ancestors, nearest first)."""
-    first, total = [], 0
-    for i in range(len(parents)):
-        first.append(total)
-        j = parents[i]
-        while j != -1:
-            total += 1
-            j = parents[j]
-    return first
+    return list(accumulate([0] + [len(dof_ancestors(parents, i)) for i in range(len(parents) - 1)]))
 
 
 def _upper(matrix):
@@ -147,13 +141,13 @@ class LoopedCrba:
 
         joints = [robot.joints[i] for i in order]
         bodies = [robot.bodies[i] for i in order]
-        rest = [0.0, 0.0, 0.0]
+        no_axis = [0.0, 0.0, 0.0]  # the root's
         fields = [
             row(map(str, parents)),
             row(map(str, subtree_ends(parents))),
             row(str(joint.v_index if k else -1) for k, joint in enumerate(joints)),
             row("true" if k and joint.type == "revolute" else "false" for k, joint in enumerate(joints)),
-            row(row(number(x) for x in (snap_axis(joint.axis) if k else rest)) for k, joint in enumerate(joints)),
+            row(row(number(x) for x in (snap_axis(joint.axis) if k else no_axis)) for k, joint in enumerate(joints)),
             row(number(body.mass) for body in bodies),
             row(row(number(body.mass * c) for c in body.com) for body in bodies),
             row(row(number(x) for x in _upper(inertia_at_origin(body))) for body in bodies),
