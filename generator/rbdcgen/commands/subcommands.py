@@ -14,6 +14,16 @@ from .pipeline import compile_robot, render
 from ..backend.render import COMMON_DIR
 
 _INCLUDE = re.compile(r'^#include "([^"]+)"', re.MULTILINE)
+# Past this size a header's straight-line code takes g++ -O3 about 20 s or more (a 200-body chain's
+# 4.2 MB forward dynamics: 17-20 s; docs/performance.md, "The mass matrix as a loop").
+LARGE_HEADER_BYTES = 4_000_000
+
+
+def large_header_warnings(files) -> list[str]:
+    """One warning per generated file past LARGE_HEADER_BYTES: the user learns before compiling."""
+    return [f"rbdc: warning: {f.path}: {len(f.text) / 1e6:.1f} MB of straight-line code; g++ -O3 may take "
+            f"20 s or far more to compile it (leave the quantity out of the scene if it is not needed)"
+            for f in files if len(f.text) > LARGE_HEADER_BYTES]
 
 
 def _compile(args, layout: Layout):
@@ -23,6 +33,8 @@ def _compile(args, layout: Layout):
 
 def generate(args, layout: Layout) -> int:
     files = render(_compile(args, layout), layout)
+    for warning in large_header_warnings(files):
+        print(warning, file=sys.stderr)
     out = args.output
     if args.list_outputs:
         for f in files:

@@ -1,10 +1,13 @@
 """The scene's base is decided once (pipeline.resolve_base): the command line's flag overrides the
-scene file, the loaded IR has the last word, and a flag the IR contradicts is an error."""
+scene file, the loaded IR has the last word, and a flag the IR contradicts is an error. `generate`
+warns about a header too large to compile quickly."""
 
 import os
 import unittest
 
 from numeric_check import DATA
+from rbdcgen.backend.render import GeneratedFile
+from rbdcgen.commands.subcommands import LARGE_HEADER_BYTES, large_header_warnings
 from rbdcgen.errors import RbdcError
 from rbdcgen.frontend.ir import load_ir
 from rbdcgen.frontend.layout import find_layout
@@ -43,3 +46,12 @@ class BaseResolution(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class LargeHeaders(unittest.TestCase):
+    def test_a_header_past_the_limit_is_named_in_a_warning(self):
+        files = [GeneratedFile("r/common/big.hpp", "x" * (LARGE_HEADER_BYTES + 1)),
+                 GeneratedFile("r/common/small.hpp", "x" * LARGE_HEADER_BYTES)]
+        warnings = large_header_warnings(files)
+        self.assertEqual(len(warnings), 1)
+        self.assertIn("r/common/big.hpp: 4.0 MB of straight-line code", warnings[0])
