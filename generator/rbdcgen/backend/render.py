@@ -73,7 +73,7 @@ def _alias_shapes(robot, scene) -> dict[str, tuple[int, int]]:
     dims = {"nq": robot.nq, "nv": robot.nv, "n_joints": robot.n_joints, "n_feet": len(scene.feet_for(robot))}
 
     def value(expression: str) -> int:  # "nv", "6" or "3 * n_feet"
-        factors = [dims.get(f.strip()) or int(f) for f in expression.split("*")]
+        factors = [dims[f.strip()] if f.strip() in dims else int(f) for f in expression.split("*")]  # n_feet may be 0
         return factors[0] * (factors[1] if len(factors) > 1 else 1)
 
     return {name: (value(rows), value(cols)) for name, rows, cols, _ in ALIASES}

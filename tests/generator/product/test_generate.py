@@ -158,6 +158,15 @@ class SceneTest(unittest.TestCase):
         self.assertIn("inverse_dynamics(const Scalar* q, const Scalar* a, Scalar* tau) noexcept", text)
         self.assertNotIn("v[", text)
 
+    def test_a_scene_without_feet_generates_the_derivatives(self):
+        # n_feet = 0 once made the Eigen aliases' shapes raise (0 is falsy): a traceback, not code
+        with tempfile.TemporaryDirectory() as out:
+            scene = Path(out) / "nofeet.yaml"
+            scene.write_text("name: nofeet\nfeet: []\nderivatives: [forward_dynamics_derivatives]\n")
+            result = run_rbdc("generate", MINI_CHEETAH, "--scene", scene, "-o", out)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertIn("constexpr int n_feet = 0;", (Path(out) / "mini_cheetah" / "nofeet.hpp").read_text())
+
     def test_generated_counts_are_below_generic(self):
         for name, counts in self.flops("full").items():
             self.assertLess(counts["generated"]["total"], counts["generic"]["total"], name)
