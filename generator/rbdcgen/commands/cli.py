@@ -66,6 +66,8 @@ def build_parser() -> argparse.ArgumentParser:
                       help="say what would be written or changed, write nothing")
     mode.add_argument("--check", action="store_true",
                       help="regenerate in memory and compare with DIR; exit 1 on any difference")
+    generate.add_argument("--verbose", action="store_true",
+                          help="print each function as it is traced: its form (schedule) and seconds, on stderr")
 
     flops = sub.add_parser(
         "flops", help="operation counts per function, generated vs generic",

@@ -34,7 +34,7 @@ def resolve_base(scene: Scene, flag: str | None, robot, robot_path: Path) -> Sce
 
 def compile_robot(robot_path: Path, scene_path: Path | None = None, topology: Path | None = None,
                   base: str | None = None, name: str | None = None, layout: Layout = None,
-                  mimic: str = "couple") -> Compilation:
+                  mimic: str = "couple", progress=None) -> Compilation:
     scene = load_scene(scene_path) if scene_path else default_scene()
     request = ModelRequest(robot=Path(robot_path), topology=Path(topology) if topology else None,
                            base=base or scene.base, locks=dict(scene.locked_joints), mimic=mimic)
@@ -44,7 +44,7 @@ def compile_robot(robot_path: Path, scene_path: Path | None = None, topology: Pa
     if not robot_name:
         raise RbdcError(f"{robot_path}: the robot has no name; give one with --name")
     inputs = request.inputs() + ([Path(scene_path)] if scene_path else [])
-    return Compilation(robot=robot, scene=scene, functions=trace_scene(robot, scene),
+    return Compilation(robot=robot, scene=scene, functions=trace_scene(robot, scene, progress),
                        robot_name=cpp_identifier(robot_name), inputs=inputs, robot_inputs=request.inputs())
 
 

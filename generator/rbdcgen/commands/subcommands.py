@@ -27,8 +27,15 @@ def large_header_warnings(files) -> list[str]:
 
 
 def _compile(args, layout: Layout):
+    progress = _print_progress if getattr(args, "verbose", False) else None
     return compile_robot(args.robot, args.scene, args.topology, args.base, getattr(args, "name", None), layout,
-                         mimic=args.mimic)
+                         mimic=args.mimic, progress=progress)
+
+
+def _print_progress(function, seconds):
+    """`generate --verbose`: one line per traced function, its form (the first clause of its schedule)."""
+    form = function.schedule.split(":")[0].split(" (")[0] if function.schedule else "scalar tree"
+    print(f"rbdc: {function.name}: {form}, {seconds:.1f} s", file=sys.stderr, flush=True)
 
 
 def generate(args, layout: Layout) -> int:

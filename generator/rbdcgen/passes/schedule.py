@@ -17,6 +17,7 @@ form exists. A scene may force a form (`schedule: scalar`, `limb_lanes`, `looped
 
 from __future__ import annotations
 
+import time
 from dataclasses import replace
 
 from ..algorithms import aba
@@ -135,8 +136,15 @@ def _as(form, name):
     return replace(form, name=name, computes=name)
 
 
-def trace_scene(robot, scene):
+def trace_scene(robot, scene, progress=None):
     """All functions of the scene, each on its scheduled view: its quantities in the order of
-    scene.QUANTITIES, then its derivatives in the order of scene.DERIVATIVES."""
+    scene.QUANTITIES, then its derivatives in the order of scene.DERIVATIVES. `progress(function,
+    seconds)`, if given, hears of each as it is done."""
     names = singular_mass.applicable(robot, scene, scene.quantities_for(robot) + scene.derivatives_for(robot))
-    return [scheduled_function(robot, scene, name) for name in names]
+    functions = []
+    for name in names:
+        start = time.monotonic()
+        functions.append(scheduled_function(robot, scene, name))
+        if progress is not None:
+            progress(functions[-1], time.monotonic() - start)
+    return functions

@@ -158,6 +158,16 @@ class SceneTest(unittest.TestCase):
         self.assertIn("inverse_dynamics(const Scalar* q, const Scalar* a, Scalar* tau) noexcept", text)
         self.assertNotIn("v[", text)
 
+    def test_verbose_reports_each_function_its_form_and_time(self):
+        with tempfile.TemporaryDirectory() as out:
+            result = run_rbdc("generate", MINI_CHEETAH, "--scene", SCENES / "full.yaml", "-o", out, "--verbose")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        lines = re.findall(r"^rbdc: (\w+): ([^,]+), \d+\.\d s$", result.stderr, re.MULTILINE)
+        names = [name for name, _ in lines]
+        self.assertIn("inverse_dynamics", names)
+        self.assertEqual(len(names), len(set(names)))
+        self.assertIn(("mass_matrix", "limb lanes"), lines)
+
     def test_a_scene_without_feet_generates_the_derivatives(self):
         # n_feet = 0 once made the Eigen aliases' shapes raise (0 is falsy): a traceback, not code
         with tempfile.TemporaryDirectory() as out:
