@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_da144c40b799.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_0bfe9adba839.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_da144c40b799.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_0bfe9adba839.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -28,12 +28,12 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param dlambda_dv out 12x18: ∂λ/∂v
 /// @param dlambda_dtau out 12x12: ∂λ/∂τ
 ///
-/// operations    mul    add  div  sqrt  trig  neg   total
-///             65906  63586   26     0    24  185  129727
+/// operations    mul    add  div  sqrt  trig   neg   total
+///             65906  62818   26     0    24  1625  130399
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 35446 arithmetic
 ///   instructions, scalar tree 100706, looped solve 52264
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_da144c40b799::contact_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_0bfe9adba839::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

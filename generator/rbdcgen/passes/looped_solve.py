@@ -113,10 +113,13 @@ class LoopedContactSolve(LoopedSolve):
         return PROXIMAL_STEPS * m * m * p
 
     def operations(self):
+        """As the loops run them (checked by product/test_operation_counts.py): V's products start
+        their sums from L⁻ᵀ (no addition for it), the two minus-products theirs from −R2 and −Y."""
         m, p, once = self.contact_rows, self._step_sum_columns(), self._step_sum_multiply_adds()
         ops = super().operations()
         return {"mul": ops["mul"] + once + m * p,                              # μL⁻ᵀ
-                "add": ops["add"] + once + (PROXIMAL_STEPS - 1) * m * p}       # + L⁻ᵀ
+                "add": ops["add"] + once,
+                "neg": (m + self.nv) * self.columns}
 
     def instructions(self):
         m, p = self.contact_rows, self._step_sum_columns()

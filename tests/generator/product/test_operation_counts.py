@@ -2,8 +2,9 @@
 compiled with a scalar type that counts every arithmetic operator, sin, cos and sqrt, and one call
 must match the header's table kind by kind. Run on the looped CRBA and the looped factor it feeds
 (passes/looped_crba.py, looped_factor.py: the loops are counted by trip count, the traced transforms
-node by node), floating and fixed, and on forward dynamics (straight-line) with its derivatives in
-the looped solve (looped_solve.py); revolute and prismatic joints, a branched tree."""
+node by node), floating and fixed, on forward dynamics (straight-line) with its derivatives in the
+looped solve (looped_solve.py), and on contact and impulse dynamics with the contact derivatives'
+looped solve; revolute and prismatic joints, a branched tree with two feet in contact."""
 import os
 import re
 import subprocess
@@ -74,6 +75,15 @@ LOOPED_SOLVE = ("name: counted\nquantities: [forward_dynamics]\nderivatives: [fo
                 "schedule: looped_solve\n", """
   report("forward_dynamics", [&] { g::forward_dynamics(q, v, tau, f, A); });
   report("forward_dynamics_derivatives", [&] { g::forward_dynamics_derivatives(q, v, tau, f, A, B, C, E); });""")
+LOOPED_CONTACT_SOLVE = ("name: counted\nquantities: [contact_dynamics, impulse_dynamics]\n"
+                        "derivatives: [contact_dynamics_derivatives]\nschedule: looped_solve\n", """
+  static Counted X[6][g::nv * g::nv];
+  Counted e[1] = {0.5};
+  report("contact_dynamics", [&] { g::contact_dynamics(q, v, tau, A, B); });
+  report("impulse_dynamics", [&] { g::impulse_dynamics(q, v, e, A, B); });
+  report("contact_dynamics_derivatives", [&] {
+    g::contact_dynamics_derivatives(q, v, tau, X[0], X[1], X[2], X[3], X[4], X[5]);
+  });""")
 
 
 def tree_urdf():
@@ -129,6 +139,9 @@ class OperationCountTest(unittest.TestCase):
 
     def test_looped_solve_and_straight_line(self):
         self.assertIn("schedule: looped solve", self.check("floating", LOOPED_SOLVE))
+
+    def test_contact_dynamics_and_the_looped_contact_solve(self):
+        self.assertIn("schedule: looped solve", self.check("floating", LOOPED_CONTACT_SOLVE))
 
 
 if __name__ == "__main__":

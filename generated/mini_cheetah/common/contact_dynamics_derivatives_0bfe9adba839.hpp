@@ -12,7 +12,7 @@
 #include "rbdc_gen/lanes.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_da144c40b799 {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_0bfe9adba839 {
 
 /// The traced part of contact_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -2821,8 +2821,8 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
 /// @param dlambda_dv out 12x18: ∂λ/∂v
 /// @param dlambda_dtau out 12x12: ∂λ/∂τ
 ///
-/// operations    mul    add  div  sqrt  trig  neg   total
-///             65906  63586   26     0    24  185  129727
+/// operations    mul    add  div  sqrt  trig   neg   total
+///             65906  62818   26     0    24  1625  130399
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 35446 arithmetic
 ///   instructions, scalar tree 100706, looped solve 52264
@@ -2859,4 +2859,4 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives(const Scalar* q, const
   copy_columns<Scalar, 12, 48>(solve_R2, 36, 12, dlambda_dtau);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_da144c40b799
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_0bfe9adba839
