@@ -1,10 +1,9 @@
-"""The operation counts in a generated header are the operations its code executes: the header is
-compiled with a scalar type that counts every arithmetic operator, sin, cos and sqrt, and one call
-must match the header's table kind by kind. Run on the looped CRBA and the looped factor it feeds
-(passes/looped_crba.py, looped_factor.py: the loops are counted by trip count, the traced transforms
-node by node), floating and fixed, on forward dynamics (straight-line) with its derivatives in the
-looped solve (looped_solve.py), and on contact and impulse dynamics with the contact derivatives'
-looped solve; revolute and prismatic joints, a branched tree with two feet in contact."""
+"""The operation counts in a generated header are the operations its code executes: every function of
+a scene is compiled with a scalar type that counts every arithmetic operator, sin, cos and sqrt, and
+one call must match the header's table kind by kind. Run on the looped forms (passes/looped_crba.py,
+looped_factor.py, looped_solve.py: loops counted by trip count, the traced parts node by node) on a
+branched tree with revolute and prismatic joints and two feet in contact, floating and fixed, and on
+the Mini Cheetah's `full` scene (limb lanes: a lane operation counts four, a sum over the lanes three)."""
 import os
 import re
 import subprocess
@@ -12,7 +11,7 @@ import tempfile
 import unittest
 from pathlib import Path
 
-from rbdc_cli import ROOT, run_rbdc
+from rbdc_cli import MINI_CHEETAH, SCENES, run_rbdc
 
 # A branched tree: a trunk, two chains of revolute and prismatic joints with tilted placements.
 URDF = """<robot name="counted">
@@ -24,12 +23,16 @@ LINK = ('<link name="l{i}"><inertial><origin xyz="0.02 0.01 0.1"/><mass value="0
         '<joint name="j{i}" type="{kind}"><parent link="{parent}"/><child link="l{i}"/>'
         '<origin xyz="0 0.01 0.2" rpy="0.1 0 0.2"/><axis xyz="{axis}"/>'
         '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>')
-SCENE = "name: counted\nquantities: [mass_matrix, mass_matrix_factor]\nschedule: looped_crba\n"
+LOOPED_CRBA = "name: counted\nquantities: [mass_matrix, mass_matrix_factor]\nschedule: looped_crba\n"
+LOOPED_SOLVE = ("name: counted\nquantities: [forward_dynamics, contact_dynamics, impulse_dynamics]\n"
+                "derivatives: [forward_dynamics_derivatives, contact_dynamics_derivatives]\nschedule: looped_solve\n")
 KINDS = ("mul", "add", "div", "sqrt", "trig", "neg")
+# The inputs by name (the rest of the arguments get scratch arrays); q's quaternion is set apart.
+INPUTS = {"q": "q", "v": "v", "a": "v", "tau": "tau", "f": "f"}
 
 DRIVER = r"""
 #include <cstdio>
-#include "counted/counted.hpp"
+#include "ROBOT/SCENE.hpp"
 struct Counted {
   double v;
   static long count[6];  // KINDS
@@ -56,34 +59,17 @@ void report(const char* name, F call) {
   std::printf("\n");
 }
 int main() {
-  namespace g = rbdc_gen::counted::counted;
-  static Counted q[g::nq], v[g::nv], tau[g::n_joints], f[3 * g::n_feet];
-  static Counted A[g::nv * g::nv], B[g::nv * g::nv], C[g::nv * g::nv], E[g::nv * 3 * g::n_feet];
+  namespace g = rbdc_gen::ROBOT::SCENE;
+  static Counted q[g::nq], v[g::nv], tau[g::nv], f[3 * g::n_feet + 1], scratch[12][4096];
   for (int k = 0; k < g::nq; ++k) q[k] = 0.1 * k;
   if (g::nq > g::nv) q[3] = 1.0;  // the base quaternion's w
   for (int k = 0; k < g::nv; ++k) v[k] = 0.2 * k;
-  for (int k = 0; k < g::n_joints; ++k) tau[k] = 0.3 * k;
+  for (int k = 0; k < g::nv; ++k) tau[k] = 0.3 * k;
   for (int k = 0; k < 3 * g::n_feet; ++k) f[k] = 0.1 * k;
-  CALLS
+  scratch[0][0] = 0.5;  // restitution, where a function reads it
+CALLS
 }
 """
-# The scenes checked, each with the calls of its functions.
-LOOPED_CRBA = (SCENE, """
-  report("mass_matrix", [&] { g::mass_matrix(q, A); });
-  report("mass_matrix_factor", [&] { g::mass_matrix_factor(q, A, B, C); });""")
-LOOPED_SOLVE = ("name: counted\nquantities: [forward_dynamics]\nderivatives: [forward_dynamics_derivatives]\n"
-                "schedule: looped_solve\n", """
-  report("forward_dynamics", [&] { g::forward_dynamics(q, v, tau, f, A); });
-  report("forward_dynamics_derivatives", [&] { g::forward_dynamics_derivatives(q, v, tau, f, A, B, C, E); });""")
-LOOPED_CONTACT_SOLVE = ("name: counted\nquantities: [contact_dynamics, impulse_dynamics]\n"
-                        "derivatives: [contact_dynamics_derivatives]\nschedule: looped_solve\n", """
-  static Counted X[6][g::nv * g::nv];
-  Counted e[1] = {0.5};
-  report("contact_dynamics", [&] { g::contact_dynamics(q, v, tau, A, B); });
-  report("impulse_dynamics", [&] { g::impulse_dynamics(q, v, e, A, B); });
-  report("contact_dynamics_derivatives", [&] {
-    g::contact_dynamics_derivatives(q, v, tau, X[0], X[1], X[2], X[3], X[4], X[5]);
-  });""")
 
 
 def tree_urdf():
@@ -95,53 +81,64 @@ def tree_urdf():
     return URDF.format(links="\n".join(links))
 
 
-def header_counts(directory):
-    """{function: {kind: n}} from the operations tables of the generated bodies."""
-    counts = {}
-    for path in (directory / "counted" / "common").glob("*.hpp"):
-        text = path.read_text()
-        name = re.search(r"inline void (\w+)\(", text.split("/// operations")[1]).group(1)
-        values = re.search(r"/// operations.*\n///\s+([\d\s]+)\n", text).group(1).split()
-        counts[name] = dict(zip(KINDS, map(int, values)))
-    return counts
+def scene_bodies(directory, robot, scene):
+    """{function: (its operations table, the C++ call of it)} for each function of the scene."""
+    functions = {}
+    for header in sorted((directory / robot / scene).glob("*.hpp")):
+        body = re.search(rf'#include "({robot}/common/[^"]+)"', header.read_text())
+        text = (directory / body.group(1)).read_text()
+        table = re.search(r"/// operations.*\n///\s+([\d\s]+)\n", text).group(1).split()
+        name, parameters = re.search(r"/// operations[\s\S]*?inline void (\w+)\(([^)]*)\) noexcept", text).groups()
+        arguments = [INPUTS.get(p.split("*")[-1].strip(), "scratch[%d]" % k) if p.strip().startswith("const")
+                     else "scratch[%d]" % k for k, p in enumerate(parameters.split(","))]
+        call = f'  report("{name}", [&] {{ g::{name}({", ".join(arguments)}); }});'
+        functions[name] = (dict(zip(KINDS, map(int, table))), call)
+    return functions
 
 
 class OperationCountTest(unittest.TestCase):
-    def check(self, base, scene=LOOPED_CRBA):
-        text, calls = scene
+    def check(self, robot_file, base, scene_text, robot, scene):
+        """The scene's functions counted; returns their bodies' text."""
         with tempfile.TemporaryDirectory() as tmp:
             directory = Path(tmp)
-            (directory / "counted.urdf").write_text(tree_urdf())
-            (directory / "counted.yaml").write_text(text)
-            result = run_rbdc("generate", directory / "counted.urdf", f"--{base}-base",
-                              "--scene", directory / "counted.yaml", "-o", directory)
+            (directory / "scene.yaml").write_text(scene_text)
+            result = run_rbdc("generate", robot_file, f"--{base}-base", "--scene", directory / "scene.yaml",
+                              "-o", directory)
             self.assertEqual(result.returncode, 0, result.stderr)
-            (directory / "driver.cpp").write_text(DRIVER.replace("CALLS", calls))
-            compiler = os.environ.get("CXX", "c++")
-            build = subprocess.run([compiler, "-std=c++17", "-O0", "-I", str(directory), "-I", "/usr/include/eigen3",
-                                    str(directory / "driver.cpp"), "-o", str(directory / "driver")],
-                                   capture_output=True, text=True)
+            functions = scene_bodies(directory, robot, scene)
+            calls = "\n".join(call for _, call in functions.values())
+            driver = DRIVER.replace("ROBOT", robot).replace("SCENE", scene).replace("CALLS", calls)
+            (directory / "driver.cpp").write_text(driver)
+            build = subprocess.run([os.environ.get("CXX", "c++"), "-std=c++17", "-O0", "-I", str(directory),
+                                    "-I", "/usr/include/eigen3", str(directory / "driver.cpp"),
+                                    "-o", str(directory / "driver")], capture_output=True, text=True)
             self.assertEqual(build.returncode, 0, build.stderr)
             run = subprocess.run([str(directory / "driver")], capture_output=True, text=True, check=True)
-            expected = header_counts(directory)
             lines = run.stdout.splitlines()
-            self.assertEqual(len(lines), calls.count("report("))
+            self.assertEqual(len(lines), len(functions))
             for line in lines:
                 name, *values = line.split()
-                self.assertEqual(dict(zip(KINDS, map(int, values))), expected[name], f"{base} {name}")
-            return "".join(p.read_text() for p in (directory / "counted" / "common").glob("*.hpp"))
+                self.assertEqual(dict(zip(KINDS, map(int, values))), functions[name][0], f"{robot} {base} {name}")
+            return "".join(p.read_text() for p in (directory / robot / "common").glob("*.hpp"))
+
+    def tree(self, base, scene_text):
+        with tempfile.TemporaryDirectory() as tmp:
+            urdf = Path(tmp) / "counted.urdf"
+            urdf.write_text(tree_urdf())
+            return self.check(urdf, base, scene_text, "counted", "counted")
 
     def test_looped_crba_floating_base(self):
-        self.assertIn("looped CRBA", self.check("floating"))
+        self.assertIn("looped CRBA", self.tree("floating", LOOPED_CRBA))
 
     def test_looped_crba_fixed_base(self):
-        self.assertIn("looped CRBA", self.check("fixed"))
+        self.assertIn("looped CRBA", self.tree("fixed", LOOPED_CRBA))
 
-    def test_looped_solve_and_straight_line(self):
-        self.assertIn("schedule: looped solve", self.check("floating", LOOPED_SOLVE))
+    def test_looped_solves_of_forward_and_contact_dynamics(self):
+        self.assertEqual(self.tree("floating", LOOPED_SOLVE).count("schedule: looped solve"), 2)
 
-    def test_contact_dynamics_and_the_looped_contact_solve(self):
-        self.assertIn("schedule: looped solve", self.check("floating", LOOPED_CONTACT_SOLVE))
+    def test_mini_cheetah_full_scene_in_limb_lanes(self):
+        self.assertIn("limb lanes", self.check(MINI_CHEETAH, "floating", (SCENES / "full.yaml").read_text(),
+                                               "mini_cheetah", "full"))
 
 
 if __name__ == "__main__":
