@@ -105,6 +105,14 @@ def packed_factor(L, parents):
     return [L[i][j] for i in range(n) for j in dof_ancestors(parents, i)] or [ex.const(0.0)]
 
 
+def packed_starts(parents):
+    """Where each dof's entries start in packed_factor's layout, and one past the last."""
+    starts = [0]
+    for i in range(len(parents)):
+        starts.append(starts[-1] + len(dof_ancestors(parents, i)))
+    return starts
+
+
 def factor_entries(robot):
     """How many entries packed_factor holds (at least one)."""
     parents = dof_parents(robot)

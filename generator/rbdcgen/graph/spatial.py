@@ -295,6 +295,14 @@ def outer(a, b):
 
 # --- spatial inertia ---------------------------------------------------------------------------
 
+def inertia_at_origin(body):
+    """A body's rotational inertia about its origin, in floats: Ī = I_c + m (|c|² 1 − c cᵀ)."""
+    c, m = body.com, body.mass
+    cc = sum(x * x for x in c)
+    return [[body.inertia_com[i][j] + m * ((cc if i == j else 0.0) - c[i] * c[j]) for j in range(3)]
+            for i in range(3)]
+
+
 class Inertia:
     """Spatial inertia at a frame origin from mass m, first moment h = m c and rotational inertia
     Ī about the origin: I = [Ī h̃; h̃ᵀ m1] (conventions.md, paper 000 Eq. 21 generalised)."""
@@ -306,13 +314,8 @@ class Inertia:
 
     @staticmethod
     def from_body(body):
-        c = body.com
-        m = body.mass
-        # Ī = I_c + m c̃ c̃ᵀ: computed from constants, folded to constants.
-        cc = sum(x * x for x in c)
-        ibar = [[body.inertia_com[i][j] + m * ((cc if i == j else 0.0) - c[i] * c[j])
-                 for j in range(3)] for i in range(3)]
-        return Inertia(ex.const(m), vec([m * x for x in c]), symmetric(mat(ibar)))
+        return Inertia(ex.const(body.mass), vec([body.mass * x for x in body.com]),
+                       symmetric(mat(inertia_at_origin(body))))
 
     def apply(self, v):
         """I v = (Ī ω + h × v_O, m v_O − h × ω)."""

@@ -13,12 +13,11 @@ unrolled CRBA wins by cost; past UNROLL_LIMIT ancestor steps it is not traced at
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from itertools import accumulate
 from typing import ClassVar, Tuple
 
 from ..algorithms.crba import depth_first_order
-from ..algorithms.forward_dynamics import dof_ancestors, dof_parents
-from ..graph.spatial import snap_axis
+from ..algorithms.forward_dynamics import dof_parents, packed_starts
+from ..graph.spatial import inertia_at_origin, snap_axis
 from .trace import Argument, signature, trace_function
 
 TERMS = "body_transforms"
@@ -80,11 +79,6 @@ def _table_parents(robot):
 
 def unrolled_too_large(robot):
     return ancestor_steps(robot) > UNROLL_LIMIT
-
-
-def _packed_first(parents):
-    """Where each dof's entries start in ltdl_factor's packed layout (its ancestors, nearest first)."""
-    return list(accumulate([0] + [len(dof_ancestors(parents, i)) for i in range(len(parents) - 1)]))
 
 
 def _upper(matrix):
@@ -158,7 +152,7 @@ class LoopedCrba:
         nv = self.robot.nv
         floating = "true" if self.robot.floating_base else "false"
         if self.packed:
-            first = _packed_first(dof_parents(self.robot))
+            first = packed_starts(dof_parents(self.robot))[:-1]
             out = [f"const int packed_first[{nv}] = {{{', '.join(map(str, first))}}};",
                    f"const PackedMassMatrix<Scalar, {nv}> crba_out{{solve_L, solve_D, packed_first}};"]
         else:
@@ -170,13 +164,6 @@ class LoopedCrba:
         return ("looped CRBA: %s writes the %d bodies' transforms, crba_loop runs the recursion over a "
                 "table of the tree (%d body-ancestor steps)" % (terms_name, self.nb - 1, ancestor_steps(self.robot)))
 
-
-def inertia_at_origin(body):
-    """Ī = I_c + m (|c|² 1 − c cᵀ), in floats, as spatial.Inertia.from_body."""
-    c, m = body.com, body.mass
-    cc = sum(x * x for x in c)
-    return [[body.inertia_com[i][j] + m * ((cc if i == j else 0.0) - c[i] * c[j]) for j in range(3)]
-            for i in range(3)]
 
 
 def has_looped_form(robot, name):

@@ -16,7 +16,7 @@ from dataclasses import dataclass, replace
 from typing import ClassVar, Tuple
 
 from ..algorithms.contact_dynamics import PROXIMAL_STEPS
-from ..algorithms.forward_dynamics import dof_ancestors, dof_parents
+from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
 from . import differentiate
 from .trace import Argument, signature, trace_function
 
@@ -149,9 +149,7 @@ def dof_tree(parents):
     """The C++ declaration of the rbdc_gen::DofTree `dof_tree` of the dof parents."""
     n = len(parents)
     ancestors = [dof_ancestors(parents, i) for i in range(n)]
-    first = [0]
-    for above in ancestors:
-        first.append(first[-1] + len(above))
+    first = packed_starts(parents)
     below = [[] for _ in range(n)]  # per dof its descendants and their entries, deepest first
     for i in range(n - 1, -1, -1):
         for e, j in enumerate(ancestors[i]):

@@ -76,12 +76,16 @@ def _lanes_apply(robot, scene, name):
         return False
 
 
-# Quantities whose scalar form unrolls the factorisation of M.
-_UNROLL_FACTOR = ("mass_matrix_factor", "forward_dynamics")
-# Quantities → their forms that unroll the CRBA (the others: the looped CRBA, the articulated-body
-# algorithm).
-_UNROLL_CRBA = {"mass_matrix": ("scalar",), "mass_matrix_factor": ("scalar", "looped_factor"),
-                "forward_dynamics": ("scalar",)}
+# The parts some forms unroll, too large to trace past a limit: (whether the robot is past it, what
+# the part costs, quantity → its forms that unroll the part). Those forms are left untraced where
+# another form remains (the loops, the articulated-body algorithm).
+_UNROLLED_PARTS = (
+    (looped_factor.unrolled_too_large,
+     lambda robot: "its factorisation alone: %d multiply-adds" % looped_factor.factor_multiply_adds(dof_parents(robot)),
+     {"mass_matrix_factor": ("scalar",), "forward_dynamics": ("scalar",)}),
+    (looped_crba.unrolled_too_large,
+     lambda robot: "its CRBA: %d body-ancestor steps" % looped_crba.ancestor_steps(robot),
+     {"mass_matrix": ("scalar",), "mass_matrix_factor": ("scalar", "looped_factor"), "forward_dynamics": ("scalar",)}))
 
 
 # A forced schedule → the forms that satisfy it, in order of preference (limb lanes: the contact
@@ -112,16 +116,12 @@ def scheduled_function(robot, scene, name):
     if scene.schedule != "auto":  # a form this function does not have: the scalar tree
         return forms["scalar"]()
     untraced = []
-    if name in _UNROLL_FACTOR and looped_factor.unrolled_too_large(robot):
-        del forms["scalar"]
-        untraced.append("scalar tree not traced (its factorisation alone: %d multiply-adds)"
-                        % looped_factor.factor_multiply_adds(dof_parents(robot)))
-    unrolling = _UNROLL_CRBA.get(name, ())
-    if looped_crba.unrolled_too_large(robot) and any(form not in unrolling for form in forms):
-        for form in unrolling:
-            if forms.pop(form, None) is not None:
-                untraced.append("%s not traced (its CRBA: %d body-ancestor steps)"
-                                % (_SHORT[form], looped_crba.ancestor_steps(robot)))
+    for too_large, cost_of, unrolled_by in _UNROLLED_PARTS:
+        unrolling = unrolled_by.get(name, ())
+        if too_large(robot) and any(form not in unrolling for form in forms):
+            for form in unrolling:
+                if forms.pop(form, None) is not None:
+                    untraced.append("%s not traced (%s)" % (_SHORT[form], cost_of(robot)))
     traced = {form: trace() for form, trace in forms.items()}
     cost = {form: instructions(fn) for form, fn in traced.items()}
     best = min(cost, key=lambda form: cost[form])  # dicts keep order: the scalar tree wins a tie

@@ -16,8 +16,7 @@ import sys
 from ..algorithms.aba import applies as articulated_pivots_apply
 from ..algorithms.crba import depth_first_order
 from ..frontend.scene import default_scene
-from ..graph.spatial import snap_axis
-from .looped_crba import inertia_at_origin
+from ..graph.spatial import inertia_at_origin, snap_axis
 from .trace import trace_function
 
 SINGULAR_PIVOT = 1e-12
