@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_252e3e8bbb6a.hpp
+//   humanoid32/common/forward_dynamics_derivatives_2dd3c377c1d6.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_252e3e8bbb6a.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_2dd3c377c1d6.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -30,8 +30,8 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// operations     mul     add  div  sqrt  trig  neg   total
 ///             110430  102564   33     0    64  197  213288
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 80616 arithmetic
-///   instructions, scalar tree 131228
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_252e3e8bbb6a::forward_dynamics_derivatives;
+///   instructions (cost 126805), scalar tree 131228 (cost 310187)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_2dd3c377c1d6::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   humanoid32/common/inverse_dynamics_derivatives_db164504d58b.hpp
+//   humanoid32/common/inverse_dynamics_derivatives_93fc735c0084.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/inverse_dynamics_derivatives_db164504d58b.hpp"
+#include "humanoid32/common/inverse_dynamics_derivatives_93fc735c0084.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -24,8 +24,10 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param dtau_dv out 38x38: ∂τ/∂v
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
-///             13850  11093    0     0    64   16  25023
-using ::rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_db164504d58b::inverse_dynamics_derivatives;
+///             22312  19788    0     0    64   30  42194
+/// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
+///   23193 arithmetic instructions (cost 46268), scalar tree 25023 (cost 55295)
+using ::rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_93fc735c0084::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

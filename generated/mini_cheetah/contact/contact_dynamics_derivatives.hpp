@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_0bfe9adba839.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_117dfe2cfcb3.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_0bfe9adba839.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_117dfe2cfcb3.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -32,8 +32,9 @@ namespace rbdc_gen::mini_cheetah::contact {
 ///             65906  62818   26     0    24  1625  130399
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 35446 arithmetic
-///   instructions, scalar tree 100706, looped solve 52264
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_0bfe9adba839::contact_dynamics_derivatives;
+///   instructions (cost 44190), scalar tree 100706 (cost 236934), looped solve 52264 (cost
+///   84554)
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_117dfe2cfcb3::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

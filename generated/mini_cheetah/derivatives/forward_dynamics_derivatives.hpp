@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_858b0b166bfe.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_2b25b613a773.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_858b0b166bfe.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_2b25b613a773.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -30,8 +30,9 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// operations    mul    add  div  sqrt  trig  neg  total
 ///             14047  12483   14     0    24  227  26795
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 7721 arithmetic
-///   instructions, scalar tree 25981, looped solve 17388
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_858b0b166bfe::forward_dynamics_derivatives;
+///   instructions (cost 13770), scalar tree 25981 (cost 57594), looped solve 17388 (cost
+///   27698)
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_2b25b613a773::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

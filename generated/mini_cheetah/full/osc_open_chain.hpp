@@ -7,11 +7,11 @@
 // osc_open_chain for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   mini_cheetah/common/osc_open_chain_cab8b7517991.hpp
+//   mini_cheetah/common/osc_open_chain_6ca902462725.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/osc_open_chain_cab8b7517991.hpp"
+#include "mini_cheetah/common/osc_open_chain_6ca902462725.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -27,8 +27,8 @@ namespace rbdc_gen::mini_cheetah::full {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2384  1837    8     0    24   32   4285
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1198 arithmetic
-///   instructions, scalar tree 4251
-using ::rbdc_gen::mini_cheetah::common::osc_open_chain_cab8b7517991::osc_open_chain;
+///   instructions, scalar tree 4251 (cost 5442)
+using ::rbdc_gen::mini_cheetah::common::osc_open_chain_6ca902462725::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -29,8 +29,11 @@ SUPPORT_HEADER = "rbdc_gen/support.hpp"
 COMMON_DIR = "common"  # <robot>/common/: function bodies shared by the robot's scenes
 BATCH_HEADER = "rbdc_gen/batch.hpp"  # SIMD packs of states (docs/performance.md)
 LANES_HEADER = "rbdc_gen/lanes.hpp"  # one SIMD lane per limb, for the lane functions only
-SOLVE_HEADER = "rbdc_gen/solve.hpp"  # looped solves, for the functions in looped-solve form only
-CRBA_HEADER = "rbdc_gen/crba.hpp"  # the CRBA as a loop, for the functions in looped-CRBA form only
+# The loops' library headers (a looped form's `solve.headers`), each rendered from its template where
+# some function of the scene includes it: looped solves and factors, the tree loops' shared ground,
+# the CRBA and the RNEA's derivatives as loops.
+LOOP_HEADERS = {"rbdc_gen/solve.hpp": "solve.hpp.j2", "rbdc_gen/body_tree.hpp": "body_tree.hpp.j2",
+                "rbdc_gen/crba.hpp": "crba.hpp.j2", "rbdc_gen/rnea_derivatives.hpp": "rnea_derivatives.hpp.j2"}
 
 # The Eigen type aliases of docs/generated_api.md: name, rows, cols (as C++ expressions), doc.
 ALIASES = (
@@ -163,10 +166,7 @@ def body_record(function, arguments: list[dict], robot, robot_id: str, robot_inp
     if function.lanes is not None:
         record["lanes"] = True  # the body includes LANES_HEADER
     if function.solve is not None:  # the body includes the loops' headers
-        if SOLVE_HEADER in function.solve.headers:
-            record["solve"] = True
-        if CRBA_HEADER in function.solve.headers:
-            record["crba"] = True
+        record["loop_headers"] = list(function.solve.headers)
     if function.schedule:
         record["schedule"] = function.schedule  # the view passes/schedule.py chose, and why
     digest = hashlib.sha256(json.dumps(record, sort_keys=True).encode()).hexdigest()
@@ -222,8 +222,7 @@ def render_robot_scene(robot, scene, functions, robot_name: str, inputs, layout:
     records = [function_record(f, robot, scene, robot_id, scene_id, robot_inputs) for f in functions]
     lane_files = [lanes_file(layout)] if any(f.lanes is not None for f in functions) else []
     loop_headers = {h for f in functions if f.solve is not None for h in f.solve.headers}
-    loop_files = [_library_file(layout, template, path) for template, path in
-                  (("solve.hpp.j2", SOLVE_HEADER), ("crba.hpp.j2", CRBA_HEADER)) if path in loop_headers]
+    loop_files = [_library_file(layout, template, path) for path, template in LOOP_HEADERS.items() if path in loop_headers]
     files = [support_file(layout), batch_file(layout), *lane_files, *loop_files,
              GeneratedFile(umbrella, environment.get_template("robot_scene.hpp.j2").render(
                  **common, functions=records))]

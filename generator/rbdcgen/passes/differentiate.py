@@ -27,8 +27,7 @@ from ..graph import expr as ex
 from ..graph import spatial as sp
 from ..algorithms import forward_dynamics as fd
 from ..algorithms import contact_dynamics as cd
-from ..algorithms import feet_force_derivatives, jacobian, kinematics, rnea
-from ..algorithms.crba import mass_matrix
+from ..algorithms import crba, feet_force_derivatives, jacobian, kinematics, rnea
 from ..algorithms.rnea_derivatives import has_rotors, rnea_derivatives
 from ..graph.manifold import configuration_seeds, q_direction, v_direction, velocity_seeds
 
@@ -191,7 +190,7 @@ def _solve_columns(m, columns):
     """M⁻¹ applied to each column (a list of nv-vectors) with the factor of forward_dynamics:
     the same LᵀDL nodes (hash-consing makes the second trace of M and its factor free)."""
     parents = fd.dof_parents(m.robot)
-    L, inv_diag = fd.ltdl(mass_matrix(m), parents)
+    L, inv_diag = fd.ltdl(crba.mass_matrix(m), parents)
     return [fd.ltdl_solve(L, inv_diag, parents, col) for col in columns]
 
 
@@ -309,7 +308,7 @@ def forward_dynamics_derivative_terms(m):
     columns = _forward_dynamics_columns(m)
     cols = [col for name in FORWARD_DYNAMICS_COLUMNS for col in columns[name]]
     parents = fd.dof_parents(m.robot)
-    L, inv_diag = fd.ltdl(mass_matrix(m), parents)
+    L, inv_diag = fd.ltdl(crba.mass_matrix(m), parents)
     terms = {"rhs": _rows(cols, nv), "L": fd.packed_factor(L, parents),
              "D_inv": inv_diag}
     return replace_symbols(terms, m.a, fd.forward_dynamics(m))
@@ -421,6 +420,11 @@ def contact_terms(r1_columns, r2_columns, damped, J, Minv_Jt, L, D_inv):
             "L": list(L), "D_inv": list(D_inv)}
 
 
+def _transforms_and_gravity(m):
+    """What the looped RNEA derivatives read: each body's transform and gravity in root coordinates."""
+    return {"X": crba.body_transforms(m), "g": m.gravity_in_base()}
+
+
 def replace_symbols(named, symbols, values):
     """{name: expressions} with each symbol replaced by its value, all lists in one substitution
     (shared subexpressions rebuilt once); returns {name: tuple}."""
@@ -462,6 +466,14 @@ def spec(robot, nf, nc):
              ("L", fd.factor_entries(robot), 1, "factor entries at each dof's ancestors"),
              ("D_inv", nv, 1, "inverse pivots")],
             forward_dynamics_derivative_terms),
+        **{name: ("The traced part of %s in its looped form (passes/looped_rnea_derivatives.py)." % quantity,
+                  inputs, [("X", 12, robot.nb - 1, "each body's transform (the body_transforms function's X)"),
+                           ("g", 3, 1, "gravity in the root's coordinates")],
+                  _transforms_and_gravity)
+           for name, quantity, inputs in (
+               ("inverse_dynamics_derivative_transforms", "inverse_dynamics_derivatives", ("q", "v", "a")),
+               ("bias_derivative_transforms", "bias_derivatives", ("q", "v")),
+               ("gravity_derivative_transforms", "gravity_derivatives", ("q",)))},
         "feet_velocity_derivatives": (
             "Derivative of the world foot velocities at fixed v.", ("q", "v"),
             [("dpdot_dq", 3 * nf, nv, "∂ṗ/∂q, rows 3k + r: foot k, world axis r" + on_q)],

@@ -12,13 +12,13 @@ with the robot."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import ClassVar, Tuple
 
 from ..algorithms.contact_dynamics import PROXIMAL_STEPS
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
 from . import differentiate
-from .trace import Argument, signature, trace_function
+from .trace import Argument, with_loop
 
 # The functions with a looped form, and the traced function that writes what they solve.
 TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_terms",
@@ -70,6 +70,10 @@ class LoopedSolve:
         """Vector instructions of the loops (a row update over the columns, SIMD_DOUBLES at a time):
         a load and a multiply-add per multiply-add, one per pivot."""
         return -(-self.columns // SIMD_DOUBLES) * (2 * self.multiply_adds() + self.nv)
+
+    def cost(self):
+        """In passes/schedule.py's units: the instructions themselves (SIMD row updates)."""
+        return self.instructions()
 
     def _tree_solve(self, target):
         return [dof_tree(self.parents),
@@ -195,8 +199,11 @@ def has_looped_form(robot, name):
 def looped_function(robot, scene, name, terms_name=None):
     """`name` in its looped form: the traced terms (function TERMS[name], or `terms_name`: its lane
     function), with the loops as a LoopedSolve."""
-    doc, inputs, outputs = signature(robot, scene, name)
-    terms = trace_function(robot, scene, terms_name or TERMS[name])
+    return with_loop(robot, scene, name, terms_name or TERMS[name], lambda terms, outputs: _solve(robot, scene, name, terms, outputs))
+
+
+def _solve(robot, scene, name, terms, outputs):
+    """The loops that solve the traced terms into the outputs of `name`."""
     parents = tuple(dof_parents(robot))
     if name == "contact_dynamics_derivatives":
         widths = {arg.name: arg.cols for arg in outputs}
@@ -211,5 +218,5 @@ def looped_function(robot, scene, name, terms_name=None):
         blocks = tuple((arg.name, arg.cols) for arg in outputs if arg.cols)
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs)
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)
-    assert terms.inputs == inputs and terms.outputs[0].cols == solve.columns
-    return replace(terms, name=name, doc=doc, outputs=outputs, computes=name, solve=solve)
+    assert terms.outputs[0].cols == solve.columns
+    return solve

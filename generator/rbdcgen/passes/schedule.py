@@ -3,17 +3,21 @@ default"): the scalar tree, the robot's isomorphic limbs in SIMD lanes, (forward
 contact-dynamics derivatives) a looped solve with SIMD across the right-hand sides
 (looped_solve.py), (forward dynamics) the articulated-body algorithm (algorithms/aba.py), or
 (mass_matrix_factor) the factorisation as a loop (looped_factor.py), or (mass_matrix) the CRBA as a
-loop over the bodies (looped_crba.py). The quantity is the same;
+loop over the bodies (looped_crba.py), or (the RNEA's derivatives) their recursion as a loop over the
+bodies (looped_rnea_derivatives.py). The quantity is the same;
 only how it is evaluated changes, so the function keeps its plain name and its doc gains one line
 that says the choice and its numbers.
 
 The cost is the arithmetic instructions the body issues: every operation node once, a lane
 operation being one vector instruction for all limbs, the sum over the lanes two (a horizontal
-add of four), a looped solve's row update one per looped_solve.SIMD_DOUBLES columns. Where the
-unrolled factor is past looped_factor.UNROLL_LIMIT, or the unrolled CRBA past looped_crba.UNROLL_LIMIT,
+add of four), a looped solve's row update one per looped_solve.SIMD_DOUBLES columns; straight-line
+code past FRONT_END_LIMIT instructions and the tree loops' and the factor's instructions weigh
+more, as measured (`cost`). Where the
+unrolled factor is past looped_factor.UNROLL_LIMIT, the unrolled CRBA past looped_crba.UNROLL_LIMIT, or
+the unrolled RNEA derivatives past looped_rnea_derivatives.UNROLL_LIMIT,
 `auto` does not trace the forms that unroll it (tracing them alone would take minutes) when another
 form exists. A scene may force a form (`schedule: scalar`, `limb_lanes`, `looped_solve`, `aba`,
-`looped_factor` or `looped_crba`) where the function has it."""
+`looped_factor`, `looped_crba` or `looped_rnea`) where the function has it."""
 
 from __future__ import annotations
 
@@ -24,7 +28,7 @@ from ..algorithms import aba
 from ..algorithms.forward_dynamics import dof_parents
 from ..graph import expr as ex
 from ..views.limbs import LimbError, isomorphic_limbs
-from . import lane_functions, looped_crba, looped_factor, looped_solve, singular_mass
+from . import lane_functions, looped_crba, looped_factor, looped_rnea_derivatives, looped_solve, singular_mass
 from .trace import signature, trace_function
 
 _LANE_SUM_INSTRUCTIONS = 2  # log2(LANES) horizontal additions
@@ -33,13 +37,35 @@ _LANE_SUM_INSTRUCTIONS = 2  # log2(LANES) horizontal additions
 def instructions(fn):
     """Arithmetic instructions of fn's live DAG (a lane operation issues once), and of its looped
     solve."""
-    count = fn.solve.instructions() if fn.solve is not None else 0
+    return straight_line_instructions(fn) + (fn.solve.instructions() if fn.solve is not None else 0)
+
+
+def straight_line_instructions(fn):
+    """Arithmetic instructions of fn's traced, straight-line part."""
+    count = 0
     for node in ex.reachable(fn.output_exprs()):
         if node.op == "lane_sum":
             count += _LANE_SUM_INSTRUCTIONS
         elif node.op not in ("const", "sym", "lane_get"):
             count += 1
     return count
+
+
+# Straight-line code runs from the op cache while it is short; past FRONT_END_LIMIT arithmetic
+# instructions each further one costs 1 + FRONT_END_PENALTY (fetched and decoded on every call).
+# Measured on an AMD EPYC (Zen 5), clang 14, per counted instruction: 0.084 ns for arm7's ∂τ (3 366),
+# 0.165-0.185 ns for the Mini Cheetah's (6 806), humanoid32's (25 023) and Talos's (46 718).
+FRONT_END_LIMIT = 3400
+FRONT_END_PENALTY = 1.4
+
+
+def cost(fn):
+    """What `auto` minimises, in units of one short straight-line instruction: the straight-line part
+    with the front-end penalty, the loops weighted by what each of their instructions was measured to
+    cost (their `cost()`)."""
+    n = straight_line_instructions(fn)
+    loops = fn.solve.cost() if fn.solve is not None else 0
+    return round(n + FRONT_END_PENALTY * max(0, n - FRONT_END_LIMIT) + loops)
 
 
 def _forms(robot, scene, name):
@@ -61,6 +87,8 @@ def _forms(robot, scene, name):
         forms["looped_crba"] = lambda: looped_crba.looped_function(robot, scene, name)
     if looped_factor.has_looped_form(robot, name) and looped_crba.has_looped_form(robot, "mass_matrix"):
         forms["looped_crba"] = lambda: looped_factor.looped_function(robot, scene, name, crba=True)
+    if looped_rnea_derivatives.has_looped_form(robot, name):
+        forms["looped_rnea"] = lambda: looped_rnea_derivatives.looped_function(robot, scene, name)
     return forms
 
 
@@ -85,7 +113,10 @@ _UNROLLED_PARTS = (
      {"mass_matrix_factor": ("scalar",), "forward_dynamics": ("scalar",)}),
     (looped_crba.unrolled_too_large,
      lambda robot: "its CRBA: %d body-ancestor steps" % looped_crba.ancestor_steps(robot),
-     {"mass_matrix": ("scalar",), "mass_matrix_factor": ("scalar", "looped_factor"), "forward_dynamics": ("scalar",)}))
+     {"mass_matrix": ("scalar",), "mass_matrix_factor": ("scalar", "looped_factor"), "forward_dynamics": ("scalar",)}),
+    (looped_rnea_derivatives.unrolled_too_large,
+     lambda robot: "its recursion: %d body-ancestor steps" % looped_rnea_derivatives.ancestor_steps(robot),
+     {name: ("scalar", "limb_lanes") for name in looped_rnea_derivatives.TERMS}))
 
 
 # A forced schedule → the forms that satisfy it, in order of preference (limb lanes: the contact
@@ -94,14 +125,16 @@ _FORCED = {"limb_lanes": ("limb_lanes", "lanes_looped_solve")}
 
 _SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "looped_solve": "looped solve",
           "lanes_looped_solve": "limb lanes and a looped solve",
-          "aba": "articulated-body algorithm", "looped_factor": "looped factor", "looped_crba": "looped CRBA"}
+          "aba": "articulated-body algorithm", "looped_factor": "looped factor", "looped_crba": "looped CRBA",
+          "looped_rnea": "looped RNEA derivatives"}
 _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes, the trunk scalar)" % ex.LANES,
            "looped_solve": " (the solve's right-hand sides in SIMD across columns)",
            "lanes_looped_solve": " (the terms traced with the %d isomorphic limbs in SIMD lanes, the "
                                  "solve's right-hand sides in SIMD across columns)" % ex.LANES,
            "aba": " (O(n); the scalar tree is CRBA + the sparse LᵀDL factor)",
            "looped_factor": " (the sparse LᵀDL factorisation a loop)",
-           "looped_crba": " (a loop over the bodies, the tree's constants in a table)"}
+           "looped_crba": " (a loop over the bodies, the tree's constants in a table)",
+           "looped_rnea": " (a loop over the bodies, the tree's constants in a table)"}
 
 
 def scheduled_function(robot, scene, name):
@@ -123,11 +156,22 @@ def scheduled_function(robot, scene, name):
                 if forms.pop(form, None) is not None:
                     untraced.append("%s not traced (%s)" % (_SHORT[form], cost_of(robot)))
     traced = {form: trace() for form, trace in forms.items()}
-    cost = {form: instructions(fn) for form, fn in traced.items()}
-    best = min(cost, key=lambda form: cost[form])  # dicts keep order: the scalar tree wins a tie
-    others = ", ".join(["%s %d" % (_SHORT[form], n) for form, n in cost.items() if form != best] + untraced)
-    return replace(traced[best], doc=signature(robot, scene, name)[0], schedule="%s%s: %d arithmetic instructions, %s"
-                   % (_SHORT[best], _DETAIL[best], cost[best], others))
+    figures = {form: (instructions(fn), cost(fn)) for form, fn in traced.items()}
+    best = min(figures, key=lambda form: figures[form][1])  # dicts keep order: the scalar tree wins a tie
+    others = ", ".join(["%s %s" % (_SHORT[form], _figures(*figures[form])) for form in figures if form != best]
+                       + untraced)
+    count, weighted = figures[best]
+    return replace(traced[best], doc=signature(robot, scene, name)[0], schedule="%s%s: %d arithmetic instructions%s, %s"
+                   % (_SHORT[best], _DETAIL[best], count, _cost(count, weighted), others))
+
+
+def _figures(count, weighted):
+    return "%d%s" % (count, _cost(count, weighted))
+
+
+def _cost(count, weighted):
+    """A form's cost where it differs from its instructions."""
+    return "" if weighted == count else " (cost %d)" % weighted
 
 
 def _as(form, name):

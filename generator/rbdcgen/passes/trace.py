@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Dict, Tuple
 
 from . import differentiate, lane_functions, project
@@ -348,3 +348,13 @@ def trace_function(robot, scene, name, known_inputs=None):
     return Function(name=name, doc=doc, inputs=inputs, outputs=outputs, values=values, graph=graph,
                     computes=lane_functions.SCALAR.get(name, name), lanes=m.layout() if lanes else None)
 
+
+
+def with_loop(robot, scene, name, terms_name, loop):
+    """`name` in a looped form: the traced function `terms_name` (the same inputs) writes what the
+    loop `loop(terms, outputs)` reads (the Function's `solve`: passes/looped_*.py); the function keeps
+    the signature of `name`."""
+    doc, inputs, outputs = signature(robot, scene, name)
+    terms = trace_function(robot, scene, terms_name)
+    assert terms.inputs == inputs
+    return replace(terms, name=name, doc=doc, outputs=outputs, computes=name, solve=loop(terms, outputs))

@@ -1,7 +1,7 @@
 """The operation counts in a generated header are the operations its code executes: every function of
 a scene is compiled with a scalar type that counts every arithmetic operator, sin, cos and sqrt, and
 one call must match the header's table kind by kind. Run on the looped forms (passes/looped_crba.py,
-looped_factor.py, looped_solve.py: loops counted by trip count, the traced parts node by node) on a
+looped_factor.py, looped_solve.py, looped_rnea_derivatives.py: loops counted by trip count, the traced parts node by node) on a
 branched tree with revolute and prismatic joints and two feet in contact, floating and fixed, and on
 the Mini Cheetah's `full` scene (limb lanes: a lane operation counts four, a sum over the lanes three)."""
 import os
@@ -24,6 +24,8 @@ LINK = ('<link name="l{i}"><inertial><origin xyz="0.02 0.01 0.1"/><mass value="0
         '<origin xyz="0 0.01 0.2" rpy="0.1 0 0.2"/><axis xyz="{axis}"/>'
         '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>')
 LOOPED_CRBA = "name: counted\nquantities: [mass_matrix, mass_matrix_factor]\nschedule: looped_crba\n"
+LOOPED_RNEA = ("name: counted\nderivatives: [inverse_dynamics_derivatives, bias_derivatives, gravity_derivatives]\n"
+               "schedule: looped_rnea\n")
 LOOPED_SOLVE = ("name: counted\nquantities: [forward_dynamics, contact_dynamics, impulse_dynamics]\n"
                 "derivatives: [forward_dynamics_derivatives, contact_dynamics_derivatives]\nschedule: looped_solve\n")
 KINDS = ("mul", "add", "div", "sqrt", "trig", "neg")
@@ -132,6 +134,12 @@ class OperationCountTest(unittest.TestCase):
 
     def test_looped_crba_fixed_base(self):
         self.assertIn("looped CRBA", self.tree("fixed", LOOPED_CRBA))
+
+    def test_looped_rnea_derivatives_floating_base(self):
+        self.assertEqual(self.tree("floating", LOOPED_RNEA).count("schedule: looped RNEA derivatives"), 3)
+
+    def test_looped_rnea_derivatives_fixed_base(self):
+        self.assertEqual(self.tree("fixed", LOOPED_RNEA).count("schedule: looped RNEA derivatives"), 3)
 
     def test_looped_solves_of_forward_and_contact_dynamics(self):
         self.assertEqual(self.tree("floating", LOOPED_SOLVE).count("schedule: looped solve"), 2)

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::mass_matrix_factor_67148791514e {
+namespace rbdc_gen::humanoid32::common::mass_matrix_factor_0388288c2dd7 {
 
 /// M = Lᵀ D L over the tree's dofs (CRBA + the sparse factorisation forward_dynamics uses).
 ///
@@ -21,7 +21,8 @@ namespace rbdc_gen::humanoid32::common::mass_matrix_factor_67148791514e {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             4120  3259   33     0    64   18   7494
-/// schedule: scalar tree: 7494 arithmetic instructions, looped factor 7929, looped CRBA 12023
+/// schedule: scalar tree: 7494 arithmetic instructions (cost 13226), looped factor 7929 (cost
+///   18974), looped CRBA 12023 (cost 30360)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scalar* D, Scalar* D_inv) noexcept {
   // sines and cosines of the joint angles
@@ -3662,4 +3663,4 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   D_inv[0] = Scalar(1) / t2011;
 }
 
-}  // namespace rbdc_gen::humanoid32::common::mass_matrix_factor_67148791514e
+}  // namespace rbdc_gen::humanoid32::common::mass_matrix_factor_0388288c2dd7

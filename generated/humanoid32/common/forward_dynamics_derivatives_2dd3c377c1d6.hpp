@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_252e3e8bbb6a {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_2dd3c377c1d6 {
 
 /// Block 0 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
@@ -30201,7 +30201,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 /// operations     mul     add  div  sqrt  trig  neg   total
 ///             110430  102564   33     0    64  197  213288
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 80616 arithmetic
-///   instructions, scalar tree 131228
+///   instructions (cost 126805), scalar tree 131228 (cost 310187)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 123 right-hand sides and
 ///   the factor, ltdl_solve_columns solves them all at once, one SIMD row update per factor
 ///   entry (336)
@@ -30219,4 +30219,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_columns<Scalar, 38, 128>(solve_rhs, 108, 15, da_df);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_252e3e8bbb6a
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_2dd3c377c1d6

@@ -12,7 +12,7 @@
 #include "rbdc_gen/lanes.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_0bfe9adba839 {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_117dfe2cfcb3 {
 
 /// The traced part of contact_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -2825,7 +2825,8 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
 ///             65906  62818   26     0    24  1625  130399
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 35446 arithmetic
-///   instructions, scalar tree 100706, looped solve 52264
+///   instructions (cost 44190), scalar tree 100706 (cost 236934), looped solve 52264 (cost
+///   84554)
 /// emission: looped solve: contact_dynamics_derivatives_terms writes the 48 right-hand sides, the
 ///   contact rows and the factors; loops solve them all at once (M⁻¹, the Delassus system's
 ///   proximal steps in closed form, M⁻¹Jᵀ), one SIMD row update per entry
@@ -2859,4 +2860,4 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives(const Scalar* q, const
   copy_columns<Scalar, 12, 48>(solve_R2, 36, 12, dlambda_dtau);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_0bfe9adba839
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_117dfe2cfcb3

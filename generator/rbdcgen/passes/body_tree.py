@@ -1,0 +1,105 @@
+"""What the loops over a tree's bodies share (rbdc_gen/body_tree.hpp): the tree's constants as a
+BodyTree table, the bodies in depth-first order (the order of the traced transforms,
+crba.body_transforms), and the operation counts of the pieces every such loop runs. Used by the
+looped CRBA (looped_crba.py) and the looped RNEA derivatives (looped_rnea_derivatives.py)."""
+
+from __future__ import annotations
+
+from ..algorithms.crba import depth_first_order
+from ..graph.spatial import inertia_at_origin, snap_axis
+
+HEADER = "rbdc_gen/body_tree.hpp"
+# Per call of each piece of body_tree.hpp: (multiplications, additions).
+ROOT_TRANSFORM = (36, 27)   # X_0^i = X_i X_0^λ(i), below the root's children
+AXIS = (9, 6)               # the joint axis in root coordinates
+REVOLUTE_SUBSPACE = (6, 3)  # S = (z; p × z)
+CONGRUENCE = (75, 59)       # the body's inertia in root coordinates
+ACCUMULATE = (0, 10)        # into the parent's composite inertia
+APPLY = (24, 18)            # F = I S
+PROJECTION = (6, 5)         # Sᵀ F
+CROSS = (6, 3)              # a × b
+SPATIAL_CROSS = (18, 12)    # x × y, x ×* f
+# Instructions the cost models count per ancestor step and per body besides the arithmetic (the
+# walk, the table, the stores); the arithmetic itself as max(multiplications, additions): fused.
+STEP_OVERHEAD = 4
+# What one counted instruction of a tree loop costs against one of short straight-line code (the
+# unit of passes/schedule.py), measured on an AMD EPYC (Zen 5), clang 14: the looped RNEA
+# derivatives 0.16-0.18 ns per counted instruction on arm7, the Mini Cheetah, humanoid32 and Talos,
+# the looped CRBA 0.17 on Talos, short straight-line code 0.084 (arm7's ∂τ).
+LOOP_WEIGHT = 2.0
+
+
+def ancestor_steps(robot):
+    """(body, ancestor body) pairs with a joint: the force transforms of the unrolled recursions."""
+    steps = 0
+    for i in range(1, robot.nb):
+        j = robot.parent[i]
+        while j != 0:
+            steps += 1
+            j = robot.parent[j]
+    return steps
+
+
+def subtree_ends(parents):
+    """end[i]: one past body i's last descendant when `parents` is depth-first numbered (the subtree
+    of i is then i … end − 1)."""
+    end = list(range(1, len(parents) + 1))
+    for i in range(len(parents) - 1, 0, -1):
+        end[parents[i]] = max(end[parents[i]], end[i])
+    return end
+
+
+def table_parents(robot):
+    """The parents in depth-first order (crba.depth_first_order), as the table holds them."""
+    order = depth_first_order(robot)
+    position = {body: k for k, body in enumerate(order)}
+    return [position[robot.parent[i]] if i else -1 for i in order]
+
+
+def applies(robot):
+    """A tree whose dynamics are its bodies' alone: no rotors, no couplings (both add terms the
+    loops do not model)."""
+    return (robot.nb > 1 and not robot.couplings
+            and not any(j.actuator is not None and j.actuator.rotor is not None for j in robot.joints))
+
+
+def _upper(matrix):
+    return [matrix[0][0], matrix[0][1], matrix[0][2], matrix[1][1], matrix[1][2], matrix[2][2]]
+
+
+def table(robot):
+    """The tree's constants as the BodyTree initialiser `tree`, the bodies in depth-first order."""
+    order = depth_first_order(robot)
+    parents = table_parents(robot)
+
+    def row(values):
+        return "{" + ", ".join(values) + "}"
+
+    def number(x):
+        return repr(float(x))
+
+    joints = [robot.joints[i] for i in order]
+    bodies = [robot.bodies[i] for i in order]
+    no_axis = [0.0, 0.0, 0.0]  # the root's
+    fields = [
+        row(map(str, parents)),
+        row(map(str, subtree_ends(parents))),
+        row(str(joint.v_index if k else -1) for k, joint in enumerate(joints)),
+        row("true" if k and joint.type == "revolute" else "false" for k, joint in enumerate(joints)),
+        row(row(number(x) for x in (snap_axis(joint.axis) if k else no_axis)) for k, joint in enumerate(joints)),
+        row(number(body.mass) for body in bodies),
+        row(row(number(body.mass * c) for c in body.com) for body in bodies),
+        row(row(number(x) for x in _upper(inertia_at_origin(body))) for body in bodies),
+        row(number(joint.actuator.armature if k and joint.actuator else 0.0) for k, joint in enumerate(joints))]
+    return f"const BodyTree<{robot.nb}> tree{{{', '.join(fields)}}};"
+
+
+def root_frame_pieces(robot):
+    """The pieces root_frames and root_inertias run: per body its frame, axis, subspace, inertia."""
+    pieces = []
+    for i in range(1, robot.nb):
+        pieces += [AXIS, CONGRUENCE]
+        pieces += [ROOT_TRANSFORM] if robot.parent[i] != 0 else []
+        pieces += [REVOLUTE_SUBSPACE] if robot.joints[i].type == "revolute" else []
+    return pieces
+
