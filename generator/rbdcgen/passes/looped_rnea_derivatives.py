@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from typing import ClassVar, Optional, Tuple
 
 from . import body_tree
-from .body_tree import (ACCUMULATE, APPLY, CROSS, PROJECTION, SPATIAL_CROSS, STEP_OVERHEAD,
+from .body_tree import (ACCUMULATE, APPLY, CROSS, SPATIAL_CROSS, STEP_OVERHEAD,
                         ancestor_steps)
 from .trace import Argument, with_loop
 
@@ -31,6 +31,17 @@ HEADER = "rbdc_gen/rnea_derivatives.hpp"
 UNROLL_LIMIT = 1000
 INERTIA_RATE = (43, 38)   # İ = v ×* I − I v×
 MASSLESS_ACCUMULATE = (0, 9)
+SUBTREE_LANE = (37, 32)   # per descendant of a body: its row's two entries and its column's two
+SUBTREE_LANE_AT_REST = (12, 10)  # without velocity: one each
+PRODUCT_BLOCK = 8         # the entries run in blocks of 8 descendants (kBlock)
+
+
+def subtree_lanes(robot):
+    """The lanes of the blocks rnea_derivatives_loop runs: for each body j ≥ 1, the blocks of
+    PRODUCT_BLOCK bodies (in depth-first order) that cover j and its descendants."""
+    ends = body_tree.subtree_ends(body_tree.table_parents(robot))
+    return sum(-(-ends[j] // PRODUCT_BLOCK) * PRODUCT_BLOCK - j // PRODUCT_BLOCK * PRODUCT_BLOCK
+               for j in range(1, robot.nb))
 
 
 def _times(piece, n):
@@ -69,24 +80,16 @@ class LoopedRneaDerivatives:
             pieces += [APPLY, SPATIAL_CROSS, APPLY, (0, 6)]
             if velocity:
                 pieces += [APPLY, SPATIAL_CROSS, APPLY, (6, 18), APPLY, SPATIAL_CROSS, (0, 12)]
-            depth = self._depth(i)
-            pieces.append(_times((25, 22) if velocity else PROJECTION, depth))  # row i, columns of i's path
-            pieces.append(_times(PROJECTION, (2 if velocity else 1) * (depth - 1)))  # column i, rows above
             if floating:
                 pieces += [CROSS] + ([_times(CROSS, 2), (3, 6)] if velocity else [])
+        # the entries along each body's subtree, blocks of PRODUCT_BLOCK bodies, padding included
+        pieces.append(_times(SUBTREE_LANE if velocity else SUBTREE_LANE_AT_REST, subtree_lanes(robot)))
         if floating:  # the trunk's block
             pieces += [_times(CROSS, 3), _times(APPLY, 3)]
             if velocity:
                 pieces += [_times(APPLY, 6), _times(SPATIAL_CROSS, 6), (0, 36),
                            _times(CROSS, 6), (9, 0), _times(APPLY, 3), (0, 18)]
         return sum(m for m, _ in pieces), sum(a for _, a in pieces)
-
-    def _depth(self, i):
-        """Bodies with a joint on the path from body i to the root, i included."""
-        depth = 0
-        while i != 0:
-            depth, i = depth + 1, self.robot.parent[i]
-        return depth
 
     def operations(self):
         mul, add = self._counts()
