@@ -30,6 +30,21 @@ struct DenseDerivatives {
   RBDC_HOST_DEVICE void v(int row, int col, const Scalar& value) const noexcept { dv[col * NV + row] = value; }
 };
 
+/// ∂τ/∂q and ∂τ/∂v subtracted from right-hand sides (row-major NV × NC, ∂/∂q in columns 0 … NV − 1,
+/// ∂/∂v in NV … 2 NV − 1) that hold the rest of −∂(RNEA − τ_e): forward_dynamics_derivatives' looped
+/// solve, whose columns are then −∂(RNEA − τ_e)/∂(q, v). Every entry is written once.
+template <class Scalar, int NV, int NC>
+struct SubtractedFromColumns {
+  Scalar* rhs;
+  RBDC_HOST_DEVICE void clear() const noexcept {}
+  RBDC_HOST_DEVICE void q(int row, int col, const Scalar& value) const noexcept {
+    rhs[row * NC + col] = rhs[row * NC + col] - value;
+  }
+  RBDC_HOST_DEVICE void v(int row, int col, const Scalar& value) const noexcept {
+    rhs[row * NC + NV + col] = rhs[row * NC + NV + col] - value;
+  }
+};
+
 namespace rnea_derivatives_detail {
 
 /// İ = v ×* I − I v× of inertia c (about the coordinates' origin) moving with twist v = (ω, υ)
@@ -59,6 +74,12 @@ RBDC_HOST_DEVICE inline CompositeInertia<Scalar> inertia_rate(const CompositeIne
   return out;
 }
 
+/// x · y_i for the 6-vectors y_k = rows[k][i] stored component by component: 6 multiplications, 5 additions.
+template <class Scalar, int NP>
+RBDC_HOST_DEVICE inline Scalar dot(const Scalar* x, const Scalar (*rows)[NP], int i) noexcept {
+  return ((x[0] * rows[0][i] + x[1] * rows[1][i]) + (x[2] * rows[2][i] + x[3] * rows[3][i])) + (x[4] * rows[4][i] + x[5] * rows[5][i]);
+}
+
 }  // namespace rnea_derivatives_detail
 
 /// ∂τ/∂q and ∂τ/∂v of τ = RNEA(q, v, a) (Velocity: v's terms, Acceleration: a's; gravity always) in
@@ -75,6 +96,7 @@ template <class Scalar, int NB, int NV, bool Floating, bool Velocity, bool Accel
 RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, const Scalar* X, const Scalar* g,
                                                    const Scalar* v, const Scalar* a, const Out& out) noexcept {
   using namespace tree_detail;
+  using rnea_derivatives_detail::dot;
   Scalar E0[NB][9], p0[NB][3], S[NB][6];
   CompositeInertia<Scalar> inertia[NB], rate[NB];  // I^C and İ^C once summed
   Scalar V[NB][6], A[NB][6], U[NB][6], C[NB][6], P[NB][6], F[NB][6];
@@ -132,7 +154,16 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
   out.clear();
   const Scalar* w = V[0];
   const Scalar* trunk_v = V[0] + 3;
-  for (int i = 1; i < NB; ++i) {  // body i's row ρ and column (G, D), then the pairs with its ancestors
+  // ρ^I, ρ^B, G and D component by component, so that the entries below run along the descendants in
+  // whole blocks of kBlock bodies (the root's and the padding's columns read, never used)
+  constexpr int kBlock = 8;
+  constexpr int NP = (NB + kBlock - 1) / kBlock * kBlock;
+  Scalar rows_I[6][NP], rows_B[6][NP], columns_G[6][NP], columns_D[6][NP];
+  for (int k = 0; k < 6; ++k) {
+    rows_I[k][0] = rows_B[k][0] = columns_G[k][0] = columns_D[k][0] = Scalar(0);
+    for (int i = NB; i < NP; ++i) rows_I[k][i] = rows_B[k][i] = columns_G[k][i] = columns_D[k][i] = Scalar(0);
+  }
+  for (int i = 1; i < NB; ++i) {  // body i's row ρ and column (G, D); the trunk's entries with body i
     Scalar rho_I[6], rho_B[6] = {}, G[6], D[6] = {}, t[6];
     apply(inertia[i], S[i], rho_I);
     force_cross(S[i], F[i], G);
@@ -151,20 +182,13 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
       force_cross(U[i], P[i], p);
       for (int k = 0; k < 6; ++k) G[k] = G[k] + (b[k] + p[k]);  // + B u
     }
-    const int di = tree.dof[i];
-    for (int j = i; j != 0; j = tree.parent[j]) {
-      const int dj = tree.dof[j];
-      if (Velocity) {
-        out.q(di, dj, project(C[j], rho_I) + project(U[j], rho_B));
-        out.v(di, dj, Scalar(2) * project(U[j], rho_I) + project(S[j], rho_B));
-      } else {
-        out.q(di, dj, project(C[j], rho_I));
-      }
-      if (j != i) {
-        out.q(dj, di, project(S[j], G));
-        if (Velocity) out.v(dj, di, project(S[j], D));
-      }
+    for (int k = 0; k < 6; ++k) {
+      rows_I[k][i] = rho_I[k];
+      rows_B[k][i] = rho_B[k];
+      columns_G[k][i] = G[k];
+      columns_D[k][i] = D[k];
     }
+    const int di = tree.dof[i];
     if (Floating) {  // the trunk's rows (S₀ = 1: G and D themselves) and columns
       Scalar g_x_rho[3];
       cross(g, rho_I + 3, g_x_rho);  // ρ·c_k for c_k = (0, e_k × g)
@@ -177,6 +201,37 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
         for (int k = 0; k < 6; ++k) out.v(k, di, D[k]);
         for (int k = 0; k < 3; ++k) out.v(di, k, rho_B[k] + (spin[k] + Scalar(2) * slide[k]));
         for (int k = 3; k < 6; ++k) out.v(di, k, rho_B[k]);
+      }
+    }
+  }
+  // Body j with its subtree i = j … end[j] − 1, SIMD along i: row i's entries in column j
+  // (ρ_i·c_j + …) and, below the diagonal, column i's in row j (S_j·G_i, S_j·D_i).
+  Scalar q_row[NP], v_row[NP], q_column[NP], v_column[NP];
+  for (int j = 1; j < NB; ++j) {
+    const Scalar *c = C[j], *u = U[j], *s = S[j];
+    const int first = j / kBlock * kBlock;
+    RBDC_SCALAR_LOOP  // the block, not the loop over blocks, is the vector
+    for (int block = first; block < tree.end[j]; block += kBlock)
+      for (int i = block; i < block + kBlock; ++i) {
+        const Scalar cI = dot(c, rows_I, i), sG = dot(s, columns_G, i);
+        if (Velocity) {
+          q_row[i] = cI + dot(u, rows_B, i);
+          v_row[i] = Scalar(2) * dot(u, rows_I, i) + dot(s, rows_B, i);
+          v_column[i] = dot(s, columns_D, i);
+        } else {
+          q_row[i] = cI;
+        }
+        q_column[i] = sG;
+      }
+    const int dj = tree.dof[j];
+    RBDC_SCALAR_LOOP
+    for (int i = j; i < tree.end[j]; ++i) {
+      const int di = tree.dof[i];
+      out.q(di, dj, q_row[i]);
+      if (Velocity) out.v(di, dj, v_row[i]);
+      if (i != j) {
+        out.q(dj, di, q_column[i]);
+        if (Velocity) out.v(dj, di, v_column[i]);
       }
     }
   }

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_dc681e50b9b0.hpp
+//   arm7/common/forward_dynamics_derivatives_889e49edaf01.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_dc681e50b9b0.hpp"
+#include "arm7/common/forward_dynamics_derivatives_889e49edaf01.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -30,8 +30,9 @@ namespace rbdc_gen::arm7::derivatives {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             3538  3058    6     0    14   15   6631
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4993 arithmetic
-///   instructions (cost 6459), scalar tree 6236 (cost 10206)
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_dc681e50b9b0::forward_dynamics_derivatives;
+///   instructions (cost 6459), scalar tree 6236 (cost 10206), looped RNEA derivatives 6391
+///   (cost 10430)
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_889e49edaf01::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // bias_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   humanoid32/common/bias_derivatives_53c367bd3f9b.hpp
+//   humanoid32/common/bias_derivatives_68e1fea38a24.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/bias_derivatives_53c367bd3f9b.hpp"
+#include "humanoid32/common/bias_derivatives_68e1fea38a24.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -23,10 +23,10 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param dbias_dv out 38x38: ∂c/∂v
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
-///             13826  11026    0     0    64   16  24932
-/// schedule: scalar tree: 24932 arithmetic instructions (cost 55077), looped RNEA derivatives 33116
-///   (cost 66114)
-using ::rbdc_gen::humanoid32::common::bias_derivatives_53c367bd3f9b::bias_derivatives;
+///             32235  28332    0     0    64   30  60661
+/// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
+///   21350 arithmetic instructions (cost 42582), scalar tree 24932 (cost 55077)
+using ::rbdc_gen::humanoid32::common::bias_derivatives_68e1fea38a24::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

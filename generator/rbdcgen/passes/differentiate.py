@@ -271,14 +271,22 @@ def _rows(columns, rows):
 FORWARD_DYNAMICS_COLUMNS = ("da_dq", "da_dv", "da_dtau", "da_df")
 
 
-def _forward_dynamics_columns(m):
+def _forward_dynamics_columns(m, looped_rnea=False):
     """The right-hand sides whose M⁻¹-images are ∂a: −∂(RNEA − τ_e)/∂(q, v) at the placeholder a,
-    Sᵀ and Jᵀ, as {output name: list of nv-columns}."""
+    Sᵀ and Jᵀ, as {output name: list of nv-columns}. With `looped_rnea` the ∂q and ∂v columns leave
+    out the RNEA's part (+∂τ_e/∂q and 0): the looped RNEA derivatives subtract it
+    (passes/looped_rnea_derivatives.py)."""
     robot = m.robot
     nv = robot.nv
-    dq, dv = residual_derivatives(m)
-    columns = {"da_dq": [[-dq[r][c] for r in range(nv)] for c in range(nv)],
-               "da_dv": [[-dv[r][c] for r in range(nv)] for c in range(nv)]}
+    if looped_rnea:
+        external = feet_force_derivatives.feet_force_term_derivatives(m) if m.feet else None
+        zero = ex.const(0.0)
+        columns = {"da_dq": [[external[r][c] if external else zero for r in range(nv)] for c in range(nv)],
+                   "da_dv": [[zero] * nv for _ in range(nv)]}
+    else:
+        dq, dv = residual_derivatives(m)
+        columns = {"da_dq": [[-dq[r][c] for r in range(nv)] for c in range(nv)],
+                   "da_dv": [[-dv[r][c] for r in range(nv)] for c in range(nv)]}
     columns["da_dtau"] = [[ex.const(1.0 if r == robot.joints[i].v_index else 0.0)
                            for r in range(nv)] for i in range(1, robot.nb)]       # Sᵀ
     J = jacobian.feet_jacobian(m) if m.feet else []
@@ -299,18 +307,22 @@ def forward_dynamics_derivatives(m):
                            fd.forward_dynamics(m))
 
 
-def forward_dynamics_derivative_terms(m):
+def forward_dynamics_derivative_terms(m, looped_rnea=False):
     """What forward_dynamics_derivatives solves, unsolved (passes/looped_solve.py solves it in a
     loop): `rhs`, the right-hand sides side by side, row-major (nv × columns, in the order of
     FORWARD_DYNAMICS_COLUMNS, each row zero-padded to `padded` columns); `L`, the factor's entries
-    at each dof's tree ancestors (dof by dof, nearest ancestor first); `D_inv`, its inverse pivots."""
+    at each dof's tree ancestors (dof by dof, nearest ancestor first); `D_inv`, its inverse pivots.
+    With `looped_rnea`, the RNEA's part of rhs left to its loop, which reads the bodies' transforms
+    `X`, gravity `g` and the acceleration `a`."""
     nv = m.robot.nv
-    columns = _forward_dynamics_columns(m)
+    columns = _forward_dynamics_columns(m, looped_rnea)
     cols = [col for name in FORWARD_DYNAMICS_COLUMNS for col in columns[name]]
     parents = fd.dof_parents(m.robot)
     L, inv_diag = fd.ltdl(crba.mass_matrix(m), parents)
     terms = {"rhs": _rows(cols, nv), "L": fd.packed_factor(L, parents),
              "D_inv": inv_diag}
+    if looped_rnea:
+        terms.update(_transforms_and_gravity(m), a=m.a)
     return replace_symbols(terms, m.a, fd.forward_dynamics(m))
 
 
@@ -474,6 +486,16 @@ def spec(robot, nf, nc):
                ("inverse_dynamics_derivative_transforms", "inverse_dynamics_derivatives", ("q", "v", "a")),
                ("bias_derivative_transforms", "bias_derivatives", ("q", "v")),
                ("gravity_derivative_transforms", "gravity_derivatives", ("q",)))},
+        "forward_dynamics_derivative_loop_terms": (
+            "The traced part of forward_dynamics_derivatives in its looped form with the looped RNEA "
+            "derivatives (passes/looped_solve.py, looped_rnea_derivatives.py).",
+            ("q", "v", "tau", "f"),
+            [("rhs", nv, padded(2 * nv + nj + 3 * nf), "right-hand sides without the RNEA's part, row-major"),
+             ("L", fd.factor_entries(robot), 1, "factor entries at each dof's ancestors"),
+             ("D_inv", nv, 1, "inverse pivots"),
+             ("X", 12, robot.nb - 1, "each body's transform (the body_transforms function's X)"),
+             ("g", 3, 1, "gravity in the root's coordinates"), ("a", nv, 1, "the forward dynamics' a")],
+            lambda m: forward_dynamics_derivative_terms(m, looped_rnea=True)),
         "feet_velocity_derivatives": (
             "Derivative of the world foot velocities at fixed v.", ("q", "v"),
             [("dpdot_dq", 3 * nf, nv, "∂ṗ/∂q, rows 3k + r: foot k, world axis r" + on_q)],

@@ -14,7 +14,7 @@ recursion; what it saves is code."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import ClassVar, Optional, Tuple
+from typing import ClassVar, Tuple
 
 from . import body_tree
 from .body_tree import (ACCUMULATE, APPLY, CROSS, SPATIAL_CROSS, STEP_OVERHEAD,
@@ -34,6 +34,7 @@ MASSLESS_ACCUMULATE = (0, 9)
 SUBTREE_LANE = (37, 32)   # per descendant of a body: its row's two entries and its column's two
 SUBTREE_LANE_AT_REST = (12, 10)  # without velocity: one each
 PRODUCT_BLOCK = 8         # the entries run in blocks of 8 descendants (kBlock)
+SIMD_DOUBLES = 4          # lanes per instruction the cost model assumes for the blocks (AVX2)
 
 
 def subtree_lanes(robot):
@@ -51,18 +52,22 @@ def _times(piece, n):
 @dataclass(frozen=True)
 class LoopedRneaDerivatives:
     """rnea_derivatives_loop over the robot's bodies, reading the terms' transforms X and gravity g,
-    and the function's own v and a (`velocity`, `acceleration`: whether they enter), writing the
-    outputs `dq` and `dv` (None: gravity_derivatives has no ∂/∂v)."""
+    the function's own v and the acceleration `acceleration_source` (`velocity`, `acceleration`:
+    whether they enter), writing through `writer` (the declaration of its output `out`, one of the
+    loop's writer types): the outputs themselves, or (`subtracting`) subtracted from a looped solve's
+    right-hand sides."""
     robot: object
     terms: Tuple[Argument, ...]
-    dq: str
-    dv: Optional[str]
+    writer: str
     velocity: bool
     acceleration: bool
+    acceleration_source: str = "a"
+    subtracting: bool = False
     headers: ClassVar[Tuple[str, ...]] = (body_tree.HEADER, HEADER)
 
-    def _counts(self):
-        """(multiplications, additions) of rnea_derivatives_loop, by trip count."""
+    def _counts(self, vector_width=1):
+        """(multiplications, additions) of rnea_derivatives_loop, by trip count; the entries' blocks
+        along the subtrees as `vector_width` lanes per instruction."""
         robot, velocity = self.robot, self.velocity
         floating = robot.floating_base
         pieces = body_tree.root_frame_pieces(robot)
@@ -83,20 +88,35 @@ class LoopedRneaDerivatives:
             if floating:
                 pieces += [CROSS] + ([_times(CROSS, 2), (3, 6)] if velocity else [])
         # the entries along each body's subtree, blocks of PRODUCT_BLOCK bodies, padding included
-        pieces.append(_times(SUBTREE_LANE if velocity else SUBTREE_LANE_AT_REST, subtree_lanes(robot)))
+        pieces.append(_times(SUBTREE_LANE if velocity else SUBTREE_LANE_AT_REST, subtree_lanes(robot) // vector_width))
         if floating:  # the trunk's block
             pieces += [_times(CROSS, 3), _times(APPLY, 3)]
             if velocity:
                 pieces += [_times(APPLY, 6), _times(SPATIAL_CROSS, 6), (0, 36),
                            _times(CROSS, 6), (9, 0), _times(APPLY, 3), (0, 18)]
+        if self.subtracting:
+            pieces.append((0, self._writes()))
         return sum(m for m, _ in pieces), sum(a for _, a in pieces)
+
+    def _writes(self):
+        """Entries the loop writes: per body j, its subtree's rows and (below the diagonal) columns;
+        with a floating trunk, its rows and columns with each body and its own block."""
+        robot = self.robot
+        ends = body_tree.subtree_ends(body_tree.table_parents(robot))
+        pairs = sum(2 * (ends[j] - j) - 1 for j in range(1, robot.nb))
+        trunk = robot.floating_base
+        q = pairs + (9 * (robot.nb - 1) + 18 if trunk else 0)
+        v = pairs + (12 * (robot.nb - 1) + 36 if trunk else 0) if self.velocity else 0
+        return q + v
 
     def operations(self):
         mul, add = self._counts()
         return {"mul": mul, "add": add}
 
     def instructions(self):
-        mul, add = self._counts()
+        """The arithmetic as max(multiplications, additions) (fused), the blocks SIMD_DOUBLES lanes at a
+        time, and STEP_OVERHEAD per ancestor step and twice per body."""
+        mul, add = self._counts(SIMD_DOUBLES)
         return max(mul, add) + STEP_OVERHEAD * (ancestor_steps(self.robot) + 2 * self.robot.nb)
 
     def cost(self):
@@ -106,9 +126,8 @@ class LoopedRneaDerivatives:
         robot = self.robot
         flags = ", ".join("true" if x else "false" for x in (robot.floating_base, self.velocity, self.acceleration))
         v = "v" if self.velocity else "nullptr"
-        a = "a" if self.acceleration else "nullptr"
-        return [body_tree.table(robot),
-                f"const DenseDerivatives<Scalar, {robot.nv}> out{{{self.dq}, {self.dv or 'nullptr'}}};",
+        a = self.acceleration_source if self.acceleration else "nullptr"
+        return [body_tree.table(robot), f"const {self.writer};",
                 f"rnea_derivatives_loop<Scalar, {robot.nb}, {robot.nv}, {flags}>(tree, solve_X, solve_g, {v}, {a}, out);"]
 
     def emission(self, terms_name):
@@ -129,7 +148,17 @@ def looped_function(robot, scene, name):
     """`name` in its looped form: the traced transforms, with the loop as a LoopedRneaDerivatives."""
     def loop(terms, outputs):
         inputs = {arg.name for arg in terms.inputs}
-        return LoopedRneaDerivatives(robot=robot, terms=terms.outputs, dq=outputs[0].name,
-                                     dv=outputs[1].name if len(outputs) > 1 else None,
+        dv = outputs[1].name if len(outputs) > 1 else "nullptr"
+        return LoopedRneaDerivatives(robot=robot, terms=terms.outputs,
+                                     writer=f"DenseDerivatives<Scalar, {robot.nv}> out{{{outputs[0].name}, {dv}}}",
                                      velocity="v" in inputs, acceleration="a" in inputs)
     return with_loop(robot, scene, name, TERMS[name], loop)
+
+
+def subtracted_from(robot, terms, rhs, columns):
+    """The loop that subtracts ∂τ/∂q and ∂τ/∂v at the terms' acceleration `a` from the right-hand
+    sides `rhs` (row-major, `columns` wide, ∂/∂q and ∂/∂v in its first 2 nv columns): a looped
+    solve's (looped_solve.py)."""
+    return LoopedRneaDerivatives(robot=robot, terms=terms,
+                                 writer=f"SubtractedFromColumns<Scalar, {robot.nv}, {columns}> out{{{rhs}}}",
+                                 velocity=True, acceleration=True, acceleration_source="solve_a", subtracting=True)

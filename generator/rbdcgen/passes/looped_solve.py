@@ -13,16 +13,19 @@ with the robot."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import ClassVar, Tuple
+from typing import Optional, Tuple
 
 from ..algorithms.contact_dynamics import PROXIMAL_STEPS
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
-from . import differentiate
+from . import differentiate, looped_rnea_derivatives
+from .looped_rnea_derivatives import LoopedRneaDerivatives
 from .trace import Argument, with_loop
 
 # The functions with a looped form, and the traced function that writes what they solve.
 TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_terms",
          "contact_dynamics_derivatives": "contact_dynamics_derivative_terms"}
+# The terms when the RNEA's derivatives are a loop too (looped_rnea_derivatives.py).
+LOOP_TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_loop_terms"}
 # Doubles per vector instruction the cost model assumes: AVX2, the widest every x86-64 machine we
 # build for has (AVX-512 halves the loop's instructions again).
 SIMD_DOUBLES = 4
@@ -34,11 +37,16 @@ class LoopedSolve:
     """M⁻¹ B for the columns of B = [blocks], solved in place by ltdl_solve_columns; block k is
     output blocks[k][0], blocks[k][1] columns wide, B's rows zero-padded to `columns`
     (differentiate.padded). `terms`: the local arrays the traced part writes (rhs, L, D_inv of
-    differentiate.forward_dynamics_derivative_terms)."""
+    differentiate.forward_dynamics_derivative_terms). `rnea`: the looped RNEA derivatives that
+    complete the right-hand sides first, if any."""
     parents: Tuple[int, ...]
     blocks: Tuple[Tuple[str, int], ...]
     terms: Tuple[Argument, ...]
-    headers: ClassVar[Tuple[str, ...]] = (HEADER,)
+    rnea: Optional[LoopedRneaDerivatives] = None
+
+    @property
+    def headers(self):
+        return (HEADER,) + (() if self.rnea is None else self.rnea.headers)
 
     @property
     def nv(self):
@@ -64,30 +72,40 @@ class LoopedSolve:
 
     def operations(self):
         """Multiplications and additions of the loops (and one multiplication per pivot)."""
-        return {"mul": self.columns * (self.multiply_adds() + self.nv), "add": self.columns * self.multiply_adds()}
+        ops = {"mul": self.columns * (self.multiply_adds() + self.nv), "add": self.columns * self.multiply_adds()}
+        for kind, n in (() if self.rnea is None else self.rnea.operations().items()):
+            ops[kind] = ops.get(kind, 0) + n
+        return ops
 
     def instructions(self):
         """Vector instructions of the loops (a row update over the columns, SIMD_DOUBLES at a time):
         a load and a multiply-add per multiply-add, one per pivot."""
-        return -(-self.columns // SIMD_DOUBLES) * (2 * self.multiply_adds() + self.nv)
+        rnea = 0 if self.rnea is None else self.rnea.instructions()
+        return -(-self.columns // SIMD_DOUBLES) * (2 * self.multiply_adds() + self.nv) + rnea
 
     def cost(self):
-        """In passes/schedule.py's units: the instructions themselves (SIMD row updates)."""
-        return self.instructions()
+        """In passes/schedule.py's units: the row updates' instructions themselves, the RNEA loop's
+        as it weighs them."""
+        if self.rnea is None:
+            return self.instructions()
+        return self.instructions() - self.rnea.instructions() + self.rnea.cost()
 
     def _tree_solve(self, target):
         return [dof_tree(self.parents),
                 f"ltdl_solve_columns<Scalar, {self.nv}, {self.columns}>(dof_tree, solve_L, solve_D_inv, {target});"]
 
     def loops(self):
-        """The C++ statements after the terms: solve, then copy each block into its output."""
-        body = self._tree_solve("solve_rhs")
+        """The C++ statements after the terms: the RNEA loop if any, solve, then copy each block into
+        its output."""
+        body = ([] if self.rnea is None else self.rnea.loops()) + self._tree_solve("solve_rhs")
         return body + _copies(self.blocks, "solve_rhs", self.nv, self.columns)
 
     def emission(self, terms_name):
-        return ("looped solve: %s writes the %d right-hand sides and the factor, ltdl_solve_columns "
+        rnea = ("" if self.rnea is None else ", rnea_derivatives_loop subtracts ∂τ/∂(q, v) over a table of the "
+                "tree (the RNEA's derivatives as a loop)")
+        return ("looped solve: %s writes the %d right-hand sides and the factor%s, ltdl_solve_columns "
                 "solves them all at once, one SIMD row update per factor entry (%d)"
-                % (terms_name, self.width, self.factor_entries))
+                % (terms_name, self.width, rnea, self.factor_entries))
 
 
 @dataclass(frozen=True)
@@ -196,14 +214,16 @@ def has_looped_form(robot, name):
     return name in TERMS and not robot.couplings
 
 
-def looped_function(robot, scene, name, terms_name=None):
+def looped_function(robot, scene, name, terms_name=None, rnea=False):
     """`name` in its looped form: the traced terms (function TERMS[name], or `terms_name`: its lane
-    function), with the loops as a LoopedSolve."""
-    return with_loop(robot, scene, name, terms_name or TERMS[name], lambda terms, outputs: _solve(robot, scene, name, terms, outputs))
+    function, or with `rnea` LOOP_TERMS[name]), with the loops as a LoopedSolve."""
+    terms_name = LOOP_TERMS[name] if rnea else terms_name or TERMS[name]
+    return with_loop(robot, scene, name, terms_name, lambda terms, outputs: _solve(robot, scene, name, terms, outputs, rnea))
 
 
-def _solve(robot, scene, name, terms, outputs):
-    """The loops that solve the traced terms into the outputs of `name`."""
+def _solve(robot, scene, name, terms, outputs, rnea=False):
+    """The loops that solve the traced terms into the outputs of `name` (with `rnea`, after the
+    looped RNEA derivatives complete them)."""
     parents = tuple(dof_parents(robot))
     if name == "contact_dynamics_derivatives":
         widths = {arg.name: arg.cols for arg in outputs}
@@ -216,7 +236,9 @@ def _solve(robot, scene, name, terms, outputs):
                                    lambda_blocks=lambda_blocks, contact_rows=m, contact_columns=columns)
     else:
         blocks = tuple((arg.name, arg.cols) for arg in outputs if arg.cols)
-        solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs)
+        columns = differentiate.padded(sum(width for _, width in blocks))
+        solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs, rnea=looped_rnea_derivatives.subtracted_from(
+            robot, terms.outputs, "solve_rhs", columns) if rnea else None)
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)
     assert terms.outputs[0].cols == solve.columns
     return solve

@@ -89,6 +89,8 @@ def _forms(robot, scene, name):
         forms["looped_crba"] = lambda: looped_factor.looped_function(robot, scene, name, crba=True)
     if looped_rnea_derivatives.has_looped_form(robot, name):
         forms["looped_rnea"] = lambda: looped_rnea_derivatives.looped_function(robot, scene, name)
+    if name in looped_solve.LOOP_TERMS and looped_rnea_derivatives.has_looped_form(robot, "inverse_dynamics_derivatives"):
+        forms["looped_rnea"] = lambda: looped_solve.looped_function(robot, scene, name, rnea=True)
     return forms
 
 
@@ -116,7 +118,8 @@ _UNROLLED_PARTS = (
      {"mass_matrix": ("scalar",), "mass_matrix_factor": ("scalar", "looped_factor"), "forward_dynamics": ("scalar",)}),
     (looped_rnea_derivatives.unrolled_too_large,
      lambda robot: "its recursion: %d body-ancestor steps" % looped_rnea_derivatives.ancestor_steps(robot),
-     {name: ("scalar", "limb_lanes") for name in looped_rnea_derivatives.TERMS}))
+     {**{name: ("scalar", "limb_lanes") for name in looped_rnea_derivatives.TERMS},
+      **{name: ("scalar", "looped_solve", "lanes_looped_solve") for name in looped_solve.LOOP_TERMS}}))
 
 
 # A forced schedule → the forms that satisfy it, in order of preference (limb lanes: the contact

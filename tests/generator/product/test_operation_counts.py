@@ -24,8 +24,8 @@ LINK = ('<link name="l{i}"><inertial><origin xyz="0.02 0.01 0.1"/><mass value="0
         '<origin xyz="0 0.01 0.2" rpy="0.1 0 0.2"/><axis xyz="{axis}"/>'
         '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>')
 LOOPED_CRBA = "name: counted\nquantities: [mass_matrix, mass_matrix_factor]\nschedule: looped_crba\n"
-LOOPED_RNEA = ("name: counted\nderivatives: [inverse_dynamics_derivatives, bias_derivatives, gravity_derivatives]\n"
-               "schedule: looped_rnea\n")
+LOOPED_RNEA = ("name: counted\nderivatives: [inverse_dynamics_derivatives, bias_derivatives, gravity_derivatives, "
+               "forward_dynamics_derivatives]\nschedule: looped_rnea\n")
 LOOPED_SOLVE = ("name: counted\nquantities: [forward_dynamics, contact_dynamics, impulse_dynamics]\n"
                 "derivatives: [forward_dynamics_derivatives, contact_dynamics_derivatives]\nschedule: looped_solve\n")
 KINDS = ("mul", "add", "div", "sqrt", "trig", "neg")
@@ -136,10 +136,10 @@ class OperationCountTest(unittest.TestCase):
         self.assertIn("looped CRBA", self.tree("fixed", LOOPED_CRBA))
 
     def test_looped_rnea_derivatives_floating_base(self):
-        self.assertEqual(self.tree("floating", LOOPED_RNEA).count("schedule: looped RNEA derivatives"), 3)
+        self.assertEqual(self.tree("floating", LOOPED_RNEA).count("schedule: looped RNEA derivatives"), 4)
 
     def test_looped_rnea_derivatives_fixed_base(self):
-        self.assertEqual(self.tree("fixed", LOOPED_RNEA).count("schedule: looped RNEA derivatives"), 3)
+        self.assertEqual(self.tree("fixed", LOOPED_RNEA).count("schedule: looped RNEA derivatives"), 4)
 
     def test_looped_solves_of_forward_and_contact_dynamics(self):
         self.assertEqual(self.tree("floating", LOOPED_SOLVE).count("schedule: looped solve"), 2)

@@ -1,7 +1,8 @@
 """The looped RNEA derivatives (passes/looped_rnea_derivatives.py): the traced part writes each body's
 transform (as the looped CRBA's) and gravity in the root's coordinates; the loop's flags follow the
-function's inputs (a scene's zero inputs included); `auto` takes the loop where it costs fewer
-instructions and, past UNROLL_LIMIT ancestor steps, does not trace the unrolled recursion. The C++
+function's inputs (a scene's zero inputs included); `auto` takes the loop where it costs less and,
+past UNROLL_LIMIT ancestor steps, does not trace the unrolled recursion, for ∂τ and for ∂a (whose
+looped solve then has the loop subtract ∂τ from its right-hand sides). The C++
 loop is checked against the runtime by generator_verify_random_looped_rnea and its operation count by
 product/test_operation_counts.py."""
 
@@ -43,7 +44,7 @@ class LoopedRneaDerivatives(unittest.TestCase):
         flags = {}
         for name in NAMES:
             solve = scheduled_function(FLOATING, scene("looped_rnea", name), name).solve
-            flags[name] = (solve.velocity, solve.acceleration, solve.dv is not None)
+            flags[name] = (solve.velocity, solve.acceleration, "nullptr}" not in solve.writer)
         self.assertEqual(flags, {"inverse_dynamics_derivatives": (True, True, True),
                                  "bias_derivatives": (True, False, True),
                                  "gravity_derivatives": (False, False, False)})
@@ -57,9 +58,12 @@ class LoopedRneaDerivatives(unittest.TestCase):
         self.assertIn("looped RNEA derivatives", small.schedule)  # traced and counted, not taken
         links = 46
         self.assertGreater(looped.ancestor_steps(chain(links)), looped.UNROLL_LIMIT)
-        large = scheduled_function(chain(links), scene("auto"), "inverse_dynamics_derivatives")
-        self.assertTrue(large.schedule.startswith("looped RNEA derivatives"), large.schedule)
-        self.assertIn("scalar tree not traced", large.schedule)
+        for name in ("inverse_dynamics_derivatives", "forward_dynamics_derivatives"):
+            large = scheduled_function(chain(links), scene("auto", name), name)
+            self.assertTrue(large.schedule.startswith("looped RNEA derivatives"), large.schedule)
+            self.assertIn("scalar tree not traced", large.schedule)
+        self.assertIn("looped solve not traced", large.schedule)  # ∂a's solve with the ∂τ unrolled
+        self.assertIsNotNone(large.solve.rnea)
 
     def test_only_the_rnea_derivatives_of_an_uncoupled_tree(self):
         self.assertTrue(all(looped.has_looped_form(FLOATING, name) for name in NAMES))
