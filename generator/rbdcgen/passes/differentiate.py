@@ -27,7 +27,7 @@ from ..graph import expr as ex
 from ..graph import spatial as sp
 from ..algorithms import forward_dynamics as fd
 from ..algorithms import contact_dynamics as cd
-from ..algorithms import crba, feet_force_derivatives, jacobian, kinematics, rnea
+from ..algorithms import aba, crba, feet_force_derivatives, jacobian, kinematics, rnea
 from ..algorithms.rnea_derivatives import has_rotors, rnea_derivatives
 from ..graph.manifold import configuration_seeds, q_direction, v_direction, velocity_seeds
 
@@ -307,23 +307,25 @@ def forward_dynamics_derivatives(m):
                            fd.forward_dynamics(m))
 
 
-def forward_dynamics_derivative_terms(m, looped_rnea=False):
+def forward_dynamics_derivative_terms(m, looped_rnea=False, looped_factor=False):
     """What forward_dynamics_derivatives solves, unsolved (passes/looped_solve.py solves it in a
     loop): `rhs`, the right-hand sides side by side, row-major (nv × columns, in the order of
     FORWARD_DYNAMICS_COLUMNS, each row zero-padded to `padded` columns); `L`, the factor's entries
     at each dof's tree ancestors (dof by dof, nearest ancestor first); `D_inv`, its inverse pivots.
     With `looped_rnea`, the RNEA's part of rhs left to its loop, which reads the bodies' transforms
-    `X`, gravity `g` and the acceleration `a`."""
+    `X`, gravity `g` and the acceleration `a`; with `looped_factor` also M's factor (the looped CRBA
+    and factor), and a by the articulated-body algorithm (O(n))."""
     nv = m.robot.nv
     columns = _forward_dynamics_columns(m, looped_rnea)
     cols = [col for name in FORWARD_DYNAMICS_COLUMNS for col in columns[name]]
-    parents = fd.dof_parents(m.robot)
-    L, inv_diag = fd.ltdl(crba.mass_matrix(m), parents)
-    terms = {"rhs": _rows(cols, nv), "L": fd.packed_factor(L, parents),
-             "D_inv": inv_diag}
+    terms = {"rhs": _rows(cols, nv)}
+    if not looped_factor:
+        parents = fd.dof_parents(m.robot)
+        L, inv_diag = fd.ltdl(crba.mass_matrix(m), parents)
+        terms.update(L=fd.packed_factor(L, parents), D_inv=inv_diag)
     if looped_rnea:
         terms.update(_transforms_and_gravity(m), a=m.a)
-    return replace_symbols(terms, m.a, fd.forward_dynamics(m))
+    return replace_symbols(terms, m.a, aba.forward_dynamics_aba(m) if looped_factor else fd.forward_dynamics(m))
 
 
 # The column blocks of contact_dynamics_derivatives: (∂a output, ∂λ output), in column order.
@@ -496,6 +498,15 @@ def spec(robot, nf, nc):
              ("X", 12, robot.nb - 1, "each body's transform (the body_transforms function's X)"),
              ("g", 3, 1, "gravity in the root's coordinates"), ("a", nv, 1, "the forward dynamics' a")],
             lambda m: forward_dynamics_derivative_terms(m, looped_rnea=True)),
+        "forward_dynamics_derivative_tree_terms": (
+            "The traced part of forward_dynamics_derivatives in its looped form with the looped CRBA, "
+            "factor and RNEA derivatives (passes/looped_solve.py).",
+            ("q", "v", "tau", "f"),
+            [("rhs", nv, padded(2 * nv + nj + 3 * nf), "right-hand sides without the RNEA's part, row-major"),
+             ("X", 12, robot.nb - 1, "each body's transform (the body_transforms function's X)"),
+             ("g", 3, 1, "gravity in the root's coordinates"),
+             ("a", nv, 1, "the forward dynamics' a (articulated-body algorithm)")],
+            lambda m: forward_dynamics_derivative_terms(m, looped_rnea=True, looped_factor=True)),
         "feet_velocity_derivatives": (
             "Derivative of the world foot velocities at fixed v.", ("q", "v"),
             [("dpdot_dq", 3 * nf, nv, "∂ṗ/∂q, rows 3k + r: foot k, world axis r" + on_q)],

@@ -76,7 +76,8 @@ class LoopedCrba:
     def cost(self):
         return body_tree.LOOP_WEIGHT * self.instructions()
 
-    def loops(self):
+    def loops(self, with_table=True):
+        """The C++ statements; `with_table` False where another loop already declared the tree's table."""
         nv = self.robot.nv
         floating = "true" if self.robot.floating_base else "false"
         if self.packed:
@@ -85,7 +86,7 @@ class LoopedCrba:
                    f"const PackedMassMatrix<Scalar, {nv}> crba_out{{solve_L, solve_D, packed_first}};"]
         else:
             out = [f"const DenseMassMatrix<Scalar, {nv}> crba_out{{M}};"]
-        return [body_tree.table(self.robot), *out,
+        return [body_tree.table(self.robot)] * with_table + [*out,
                 f"crba_loop<Scalar, {self.nb}, {nv}, {floating}>(tree, solve_X, crba_out);"]
 
     def emission(self, terms_name):

@@ -48,6 +48,7 @@ class LoopedFactor:
     parents: Tuple[int, ...]
     terms: Tuple[Argument, ...]
     crba: Optional[looped_crba.LoopedCrba] = None
+    unpack: bool = True  # False: the factor stays packed in solve_L, its inverse pivots in solve_D_inv
 
     @property
     def headers(self):
@@ -83,13 +84,17 @@ class LoopedFactor:
         own = self.instructions() - (0 if self.crba is None else self.crba.instructions())
         return FACTOR_WEIGHT * own + (0 if self.crba is None else self.crba.cost())
 
-    def loops(self):
+    def loops(self, with_table=True):
         crba = [] if self.crba is None else [
             "alignas(64) Scalar solve_L[%d];" % max(1, len(self._pairs())),
-            "Scalar solve_D[%d];" % self.nv, *self.crba.loops()]
-        return crba + ["const int dof_parent[%d] = {%s};" % (self.nv, ", ".join(map(str, self.parents))),
-                f"ltdl_factor<Scalar, {self.nv}>(dof_parent, solve_L, solve_D, D_inv);",
-                f"unpack_factor<Scalar, {self.nv}>(dof_parent, solve_L, solve_D, L, D);"]
+            "Scalar solve_D[%d];" % self.nv, *self.crba.loops(with_table)]
+        pivots = "D_inv" if self.unpack else "solve_D_inv"
+        body = crba + ([] if self.unpack else [f"Scalar solve_D_inv[{self.nv}];"]) + [
+            "const int dof_parent[%d] = {%s};" % (self.nv, ", ".join(map(str, self.parents))),
+            f"ltdl_factor<Scalar, {self.nv}>(dof_parent, solve_L, solve_D, {pivots});"]
+        if self.unpack:
+            body.append(f"unpack_factor<Scalar, {self.nv}>(dof_parent, solve_L, solve_D, L, D);")
+        return body
 
     def emission(self, terms_name):
         source = ("%s writes M's %d entries at the dofs' ancestors and its diagonal" % (terms_name, self.terms[0].size)

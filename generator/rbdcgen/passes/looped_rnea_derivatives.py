@@ -122,12 +122,13 @@ class LoopedRneaDerivatives:
     def cost(self):
         return body_tree.LOOP_WEIGHT * self.instructions()
 
-    def loops(self):
+    def loops(self, with_table=True):
+        """The C++ statements; `with_table` False where another loop already declared the tree's table."""
         robot = self.robot
         flags = ", ".join("true" if x else "false" for x in (robot.floating_base, self.velocity, self.acceleration))
         v = "v" if self.velocity else "nullptr"
         a = self.acceleration_source if self.acceleration else "nullptr"
-        return [body_tree.table(robot), f"const {self.writer};",
+        return [body_tree.table(robot)] * with_table + [f"const {self.writer};",
                 f"rnea_derivatives_loop<Scalar, {robot.nb}, {robot.nv}, {flags}>(tree, solve_X, solve_g, {v}, {a}, out);"]
 
     def emission(self, terms_name):

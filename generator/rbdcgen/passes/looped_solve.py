@@ -17,15 +17,17 @@ from typing import Optional, Tuple
 
 from ..algorithms.contact_dynamics import PROXIMAL_STEPS
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
-from . import differentiate, looped_rnea_derivatives
+from . import differentiate, looped_crba, looped_rnea_derivatives
 from .looped_rnea_derivatives import LoopedRneaDerivatives
 from .trace import Argument, with_loop
 
 # The functions with a looped form, and the traced function that writes what they solve.
 TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_terms",
          "contact_dynamics_derivatives": "contact_dynamics_derivative_terms"}
-# The terms when the RNEA's derivatives are a loop too (looped_rnea_derivatives.py).
+# The terms when the RNEA's derivatives are a loop too (looped_rnea_derivatives.py), and when M's
+# factor is as well (the looped CRBA and factor: looped_crba.py, looped_factor.py).
 LOOP_TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_loop_terms"}
+TREE_TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_tree_terms"}
 # Doubles per vector instruction the cost model assumes: AVX2, the widest every x86-64 machine we
 # build for has (AVX-512 halves the loop's instructions again).
 SIMD_DOUBLES = 4
@@ -38,15 +40,20 @@ class LoopedSolve:
     output blocks[k][0], blocks[k][1] columns wide, B's rows zero-padded to `columns`
     (differentiate.padded). `terms`: the local arrays the traced part writes (rhs, L, D_inv of
     differentiate.forward_dynamics_derivative_terms). `rnea`: the looped RNEA derivatives that
-    complete the right-hand sides first, if any."""
+    complete the right-hand sides first, if any; `factor`: the looped CRBA and factor (a
+    looped_factor.LoopedFactor, packed) that write solve_L and solve_D_inv first, if the terms do not."""
     parents: Tuple[int, ...]
     blocks: Tuple[Tuple[str, int], ...]
     terms: Tuple[Argument, ...]
     rnea: Optional[LoopedRneaDerivatives] = None
+    factor: object = None
+
+    def _parts(self):
+        return [part for part in (self.factor, self.rnea) if part is not None]
 
     @property
     def headers(self):
-        return (HEADER,) + (() if self.rnea is None else self.rnea.headers)
+        return tuple(dict.fromkeys((HEADER,) + tuple(h for part in self._parts() for h in part.headers)))
 
     @property
     def nv(self):
@@ -73,22 +80,21 @@ class LoopedSolve:
     def operations(self):
         """Multiplications and additions of the loops (and one multiplication per pivot)."""
         ops = {"mul": self.columns * (self.multiply_adds() + self.nv), "add": self.columns * self.multiply_adds()}
-        for kind, n in (() if self.rnea is None else self.rnea.operations().items()):
-            ops[kind] = ops.get(kind, 0) + n
+        for part in self._parts():
+            for kind, n in part.operations().items():
+                ops[kind] = ops.get(kind, 0) + n
         return ops
 
     def instructions(self):
         """Vector instructions of the loops (a row update over the columns, SIMD_DOUBLES at a time):
         a load and a multiply-add per multiply-add, one per pivot."""
-        rnea = 0 if self.rnea is None else self.rnea.instructions()
-        return -(-self.columns // SIMD_DOUBLES) * (2 * self.multiply_adds() + self.nv) + rnea
+        return (-(-self.columns // SIMD_DOUBLES) * (2 * self.multiply_adds() + self.nv)
+                + sum(part.instructions() for part in self._parts()))
 
     def cost(self):
-        """In passes/schedule.py's units: the row updates' instructions themselves, the RNEA loop's
-        as it weighs them."""
-        if self.rnea is None:
-            return self.instructions()
-        return self.instructions() - self.rnea.instructions() + self.rnea.cost()
+        """In passes/schedule.py's units: the row updates' instructions themselves, the other loops'
+        as each weighs them."""
+        return self.instructions() + sum(part.cost() - part.instructions() for part in self._parts())
 
     def _tree_solve(self, target):
         return [dof_tree(self.parents),
@@ -97,15 +103,19 @@ class LoopedSolve:
     def loops(self):
         """The C++ statements after the terms: the RNEA loop if any, solve, then copy each block into
         its output."""
-        body = ([] if self.rnea is None else self.rnea.loops()) + self._tree_solve("solve_rhs")
+        body = [] if self.factor is None else self.factor.loops()
+        body += [] if self.rnea is None else self.rnea.loops(with_table=self.factor is None)
+        body += self._tree_solve("solve_rhs")
         return body + _copies(self.blocks, "solve_rhs", self.nv, self.columns)
 
     def emission(self, terms_name):
-        rnea = ("" if self.rnea is None else ", rnea_derivatives_loop subtracts ∂τ/∂(q, v) over a table of the "
-                "tree (the RNEA's derivatives as a loop)")
-        return ("looped solve: %s writes the %d right-hand sides and the factor%s, ltdl_solve_columns "
+        factor = (" and the factor" if self.factor is None else
+                  ", crba_loop and ltdl_factor M's factor over a table of the tree (the looped CRBA and factor)")
+        rnea = ("" if self.rnea is None else ", rnea_derivatives_loop subtracts ∂τ/∂(q, v) over the table "
+                "(the RNEA's derivatives as a loop)")
+        return ("looped solve: %s writes the %d right-hand sides%s%s, ltdl_solve_columns "
                 "solves them all at once, one SIMD row update per factor entry (%d)"
-                % (terms_name, self.width, rnea, self.factor_entries))
+                % (terms_name, self.width, factor, rnea, self.factor_entries))
 
 
 @dataclass(frozen=True)
@@ -214,16 +224,18 @@ def has_looped_form(robot, name):
     return name in TERMS and not robot.couplings
 
 
-def looped_function(robot, scene, name, terms_name=None, rnea=False):
+def looped_function(robot, scene, name, terms_name=None, rnea=False, factor=False):
     """`name` in its looped form: the traced terms (function TERMS[name], or `terms_name`: its lane
-    function, or with `rnea` LOOP_TERMS[name]), with the loops as a LoopedSolve."""
-    terms_name = LOOP_TERMS[name] if rnea else terms_name or TERMS[name]
-    return with_loop(robot, scene, name, terms_name, lambda terms, outputs: _solve(robot, scene, name, terms, outputs, rnea))
+    function; with `rnea` LOOP_TERMS[name], with `factor` too TREE_TERMS[name]), with the loops as a
+    LoopedSolve."""
+    terms_name = TREE_TERMS[name] if factor else LOOP_TERMS[name] if rnea else terms_name or TERMS[name]
+    return with_loop(robot, scene, name, terms_name,
+                     lambda terms, outputs: _solve(robot, scene, name, terms, outputs, rnea or factor, factor))
 
 
-def _solve(robot, scene, name, terms, outputs, rnea=False):
+def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
     """The loops that solve the traced terms into the outputs of `name` (with `rnea`, after the
-    looped RNEA derivatives complete them)."""
+    looped RNEA derivatives complete them; with `factor`, with M's factor from the looped CRBA)."""
     parents = tuple(dof_parents(robot))
     if name == "contact_dynamics_derivatives":
         widths = {arg.name: arg.cols for arg in outputs}
@@ -237,8 +249,11 @@ def _solve(robot, scene, name, terms, outputs, rnea=False):
     else:
         blocks = tuple((arg.name, arg.cols) for arg in outputs if arg.cols)
         columns = differentiate.padded(sum(width for _, width in blocks))
+        from .looped_factor import LoopedFactor  # it imports this module's loops' header
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs, rnea=looped_rnea_derivatives.subtracted_from(
-            robot, terms.outputs, "solve_rhs", columns) if rnea else None)
+            robot, terms.outputs, "solve_rhs", columns) if rnea else None, factor=LoopedFactor(
+            parents=parents, terms=terms.outputs, crba=looped_crba.LoopedCrba(robot=robot, terms=terms.outputs, packed=True),
+            unpack=False) if factor else None)
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)
     assert terms.outputs[0].cols == solve.columns
     return solve

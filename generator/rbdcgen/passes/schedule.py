@@ -91,6 +91,7 @@ def _forms(robot, scene, name):
         forms["looped_rnea"] = lambda: looped_rnea_derivatives.looped_function(robot, scene, name)
     if name in looped_solve.LOOP_TERMS and looped_rnea_derivatives.has_looped_form(robot, "inverse_dynamics_derivatives"):
         forms["looped_rnea"] = lambda: looped_solve.looped_function(robot, scene, name, rnea=True)
+        forms["looped_crba"] = lambda: looped_solve.looped_function(robot, scene, name, factor=True)
     return forms
 
 
@@ -112,10 +113,12 @@ def _lanes_apply(robot, scene, name):
 _UNROLLED_PARTS = (
     (looped_factor.unrolled_too_large,
      lambda robot: "its factorisation alone: %d multiply-adds" % looped_factor.factor_multiply_adds(dof_parents(robot)),
-     {"mass_matrix_factor": ("scalar",), "forward_dynamics": ("scalar",)}),
+     {"mass_matrix_factor": ("scalar",), "forward_dynamics": ("scalar",),
+      "forward_dynamics_derivatives": ("scalar", "looped_solve", "lanes_looped_solve", "looped_rnea")}),
     (looped_crba.unrolled_too_large,
      lambda robot: "its CRBA: %d body-ancestor steps" % looped_crba.ancestor_steps(robot),
-     {"mass_matrix": ("scalar",), "mass_matrix_factor": ("scalar", "looped_factor"), "forward_dynamics": ("scalar",)}),
+     {"mass_matrix": ("scalar",), "mass_matrix_factor": ("scalar", "looped_factor"), "forward_dynamics": ("scalar",),
+      "forward_dynamics_derivatives": ("scalar", "looped_solve", "lanes_looped_solve", "looped_rnea")}),
     (looped_rnea_derivatives.unrolled_too_large,
      lambda robot: "its recursion: %d body-ancestor steps" % looped_rnea_derivatives.ancestor_steps(robot),
      {**{name: ("scalar", "limb_lanes") for name in looped_rnea_derivatives.TERMS},

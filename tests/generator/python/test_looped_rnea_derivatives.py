@@ -58,12 +58,16 @@ class LoopedRneaDerivatives(unittest.TestCase):
         self.assertIn("looped RNEA derivatives", small.schedule)  # traced and counted, not taken
         links = 46
         self.assertGreater(looped.ancestor_steps(chain(links)), looped.UNROLL_LIMIT)
-        for name in ("inverse_dynamics_derivatives", "forward_dynamics_derivatives"):
-            large = scheduled_function(chain(links), scene("auto", name), name)
-            self.assertTrue(large.schedule.startswith("looped RNEA derivatives"), large.schedule)
-            self.assertIn("scalar tree not traced", large.schedule)
-        self.assertIn("looped solve not traced", large.schedule)  # ∂a's solve with the ∂τ unrolled
+        large = scheduled_function(chain(links), scene("auto"), "inverse_dynamics_derivatives")
+        self.assertTrue(large.schedule.startswith("looped RNEA derivatives"), large.schedule)
+        self.assertIn("scalar tree not traced", large.schedule)
+        # ∂a: every form that unrolls the CRBA or ∂τ left untraced; the looped solve's other loops remain
+        large = scheduled_function(chain(links), scene("auto", "forward_dynamics_derivatives"), "forward_dynamics_derivatives")
+        self.assertTrue(large.schedule.startswith("looped CRBA"), large.schedule)
+        for form in ("scalar tree", "looped solve", "looped RNEA derivatives"):
+            self.assertIn(form + " not traced", large.schedule)
         self.assertIsNotNone(large.solve.rnea)
+        self.assertIsNotNone(large.solve.factor)
 
     def test_only_the_rnea_derivatives_of_an_uncoupled_tree(self):
         self.assertTrue(all(looped.has_looped_form(FLOATING, name) for name in NAMES))

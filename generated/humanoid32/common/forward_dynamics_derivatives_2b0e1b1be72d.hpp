@@ -13,7 +13,7 @@
 #include "rbdc_gen/body_tree.hpp"
 #include "rbdc_gen/rnea_derivatives.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_b4a9ab363e31 {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_2b0e1b1be72d {
 
 /// Block 0 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
@@ -15941,11 +15941,11 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 ///             132430  122994   33     0    64   52  255573
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
 ///   82092 arithmetic instructions (cost 121778), scalar tree 131228 (cost 310187), looped
-///   solve 80616 (cost 126805)
+///   solve 80616 (cost 126805), looped CRBA 92298 (cost 147919)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 123 right-hand sides and
-///   the factor, rnea_derivatives_loop subtracts ∂τ/∂(q, v) over a table of the tree (the
-///   RNEA's derivatives as a loop), ltdl_solve_columns solves them all at once, one SIMD
-///   row update per factor entry (336)
+///   the factor, rnea_derivatives_loop subtracts ∂τ/∂(q, v) over the table (the RNEA's
+///   derivatives as a loop), ltdl_solve_columns solves them all at once, one SIMD row
+///   update per factor entry (336)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* da_df) noexcept {
   alignas(64) Scalar solve_rhs[4864];
@@ -15966,4 +15966,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_columns<Scalar, 38, 128>(solve_rhs, 108, 15, da_df);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_b4a9ab363e31
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_2b0e1b1be72d
