@@ -22,20 +22,21 @@
 namespace rbdc_gen {
 
 /// A tree's constants for the loops over its bodies. Body i ≥ 1 hangs from parent[i] < i on one joint
-/// (revolute or prismatic along the unit axis[i], dof index dof[i]); its descendants are bodies i + 1
-/// … end[i] − 1 (depth-first numbering); its spatial inertia at its origin is mass[i], h = mass · com
-/// and Ī (upper triangle xx, xy, xz, yy, yz, zz); armature[i] joins M's diagonal. Body 0 is the root:
-/// fixed, or the floating trunk whose six dofs come first.
+/// (revolute or prismatic along the unit axis (axis[0][i], axis[1][i], axis[2][i]), dof index dof[i]);
+/// its descendants are bodies i + 1 … end[i] − 1 (depth-first numbering); its spatial inertia at its
+/// origin is mass[i], h = mass · com (h[k][i]) and Ī (Ibar[k][i], the upper triangle xx, xy, xz, yy,
+/// yz, zz); armature[i] joins M's diagonal. Vectors component by component, as the loops hold them.
+/// Body 0 is the root: fixed, or the floating trunk whose six dofs come first.
 template <int NB>
 struct BodyTree {
   int parent[NB];
   int end[NB];
   int dof[NB];
   bool revolute[NB];
-  double axis[NB][3];
+  double axis[3][NB];
   double mass[NB];
-  double h[NB][3];
-  double Ibar[NB][6];
+  double h[3][NB];
+  double Ibar[6][NB];
   double armature[NB];
 };
 
@@ -132,53 +133,92 @@ RBDC_HOST_DEVICE inline void force_cross(const Scalar* x, const Scalar* f, Scala
   cross(x, f + 3, out + 3);
 }
 
+/// Body i's vector of N components from / into arrays stored component by component (x[k][i]), the
+/// layout of the loops over bodies: loops whose bodies do not wait on each other then run SIMD across
+/// the bodies.
+template <int N = 6, class Scalar, int NP>
+RBDC_HOST_DEVICE inline void load(const Scalar (*x)[NP], int i, Scalar* out) noexcept {
+  for (int k = 0; k < N; ++k) out[k] = x[k][i];
+}
+template <int N = 6, class Scalar, int NP>
+RBDC_HOST_DEVICE inline void store(Scalar (*x)[NP], int i, const Scalar* in) noexcept {
+  for (int k = 0; k < N; ++k) x[k][i] = in[k];
+}
+
+/// Body i's inertia (mass, first moment, rotational inertia) from / into ten such arrays.
+template <class Scalar, int NP>
+RBDC_HOST_DEVICE inline CompositeInertia<Scalar> load_inertia(const Scalar (*x)[NP], int i) noexcept {
+  CompositeInertia<Scalar> c;
+  c.m = x[0][i];
+  for (int k = 0; k < 3; ++k) c.h[k] = x[1 + k][i];
+  for (int k = 0; k < 6; ++k) c.I[k] = x[4 + k][i];
+  return c;
+}
+template <class Scalar, int NP>
+RBDC_HOST_DEVICE inline void store(Scalar (*x)[NP], int i, const CompositeInertia<Scalar>& c) noexcept {
+  x[0][i] = c.m;
+  for (int k = 0; k < 3; ++k) x[1 + k][i] = c.h[k];
+  for (int k = 0; k < 6; ++k) x[4 + k][i] = c.I[k];
+}
+
 /// Each body's frame X_0^i = (E0, p0) (root → body i) and motion subspace S_i in the root's
-/// coordinates, from the traced transforms: X holds 12 values per body i ≥ 1 from X[12 (i − 1)], E
-/// row-major (parent → body coordinates), then r (the body's origin in parent coordinates).
-/// E0_i = E E0_λ (27 multiplications, 18 additions) and p0_i = p0_λ + E0_λᵀ r (9, 9) below the
-/// root's children; the axis z = E0ᵀ a (9, 6); S = (z; p0 × z) (6, 3) or (0; z).
-template <class Scalar, int NB>
-RBDC_HOST_DEVICE inline void root_frames(const BodyTree<NB>& tree, const Scalar* X, Scalar (*E0)[9], Scalar (*p0)[3],
-                                         Scalar (*S)[6]) noexcept {
+/// coordinates (component by component), from the traced transforms: X holds 12 values per body
+/// i ≥ 1 from X[12 (i − 1)], E row-major (parent → body coordinates), then r (the body's origin in
+/// parent coordinates). E0_i = E E0_λ (27 multiplications, 18 additions) and p0_i = p0_λ + E0_λᵀ r
+/// (9, 9) below the root's children, parents first; then, SIMD across the bodies, the axis z = E0ᵀ a
+/// (9, 6) and S = (z; p0 × z) (6, 3) or (0; z).
+template <class Scalar, int NB, int NP>
+RBDC_HOST_DEVICE inline void root_frames(const BodyTree<NB>& tree, const Scalar* X, Scalar (*E0)[NP], Scalar (*p0)[NP],
+                                         Scalar (*S)[NP]) noexcept {
+  RBDC_SCALAR_LOOP
   for (int i = 1; i < NB; ++i) {
     const int parent = tree.parent[i];
     const Scalar* E = X + 12 * (i - 1);
     const Scalar* r = E + 9;
     if (parent == 0) {  // the root's coordinates: X_0^i = X_i
-      for (int k = 0; k < 9; ++k) E0[i][k] = E[k];
-      for (int k = 0; k < 3; ++k) p0[i][k] = r[k];
+      for (int k = 0; k < 9; ++k) E0[k][i] = E[k];
+      for (int k = 0; k < 3; ++k) p0[k][i] = r[k];
     } else {
-      const Scalar* Ep = E0[parent];
+      Scalar Ep[9];
+      load<9>(E0, parent, Ep);
       for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) E0[i][3 * a + b] = E[3 * a] * Ep[b] + E[3 * a + 1] * Ep[3 + b] + E[3 * a + 2] * Ep[6 + b];
-      for (int k = 0; k < 3; ++k) p0[i][k] = p0[parent][k] + (Ep[k] * r[0] + Ep[3 + k] * r[1] + Ep[6 + k] * r[2]);
+        for (int b = 0; b < 3; ++b) E0[3 * a + b][i] = E[3 * a] * Ep[b] + E[3 * a + 1] * Ep[3 + b] + E[3 * a + 2] * Ep[6 + b];
+      for (int k = 0; k < 3; ++k) p0[k][i] = p0[k][parent] + (Ep[k] * r[0] + Ep[3 + k] * r[1] + Ep[6 + k] * r[2]);
     }
-    Scalar z[3];
+  }
+  for (int i = 1; i < NB; ++i) {
+    Scalar E[9], p[3], z[3], s[6];
+    load<9>(E0, i, E);
+    load<3>(p0, i, p);
     for (int k = 0; k < 3; ++k)
-      z[k] = E0[i][k] * Scalar(tree.axis[i][0]) + E0[i][3 + k] * Scalar(tree.axis[i][1]) + E0[i][6 + k] * Scalar(tree.axis[i][2]);
-    if (tree.revolute[i]) {
-      for (int k = 0; k < 3; ++k) S[i][k] = z[k];
-      cross(p0[i], z, S[i] + 3);
-    } else {
-      for (int k = 0; k < 3; ++k) {
-        S[i][k] = Scalar(0);
-        S[i][3 + k] = z[k];
-      }
+      z[k] = E[k] * Scalar(tree.axis[0][i]) + E[3 + k] * Scalar(tree.axis[1][i]) + E[6 + k] * Scalar(tree.axis[2][i]);
+    Scalar p_x_z[3];
+    cross(p, z, p_x_z);
+    for (int k = 0; k < 3; ++k) {
+      s[k] = tree.revolute[i] ? z[k] : Scalar(0);
+      s[3 + k] = tree.revolute[i] ? p_x_z[k] : z[k];
     }
+    store(S, i, s);
   }
 }
 
-/// Each body's inertia at its origin from the table, moved into the root's coordinates for i ≥ 1
-/// (congruence with X_0^i); the root's as it is.
-template <class Scalar, int NB>
-RBDC_HOST_DEVICE inline void root_inertias(const BodyTree<NB>& tree, const Scalar (*E0)[9], const Scalar (*p0)[3],
-                                           CompositeInertia<Scalar>* inertia) noexcept {
+/// Each body's inertia at its origin from the table (component by component), moved into the root's
+/// coordinates for i ≥ 1 (congruence with X_0^i), SIMD across the bodies; the root's as it is.
+template <class Scalar, int NB, int NP>
+RBDC_HOST_DEVICE inline void root_inertias(const BodyTree<NB>& tree, const Scalar (*E0)[NP], const Scalar (*p0)[NP],
+                                           Scalar (*inertia)[NP]) noexcept {
   for (int i = 0; i < NB; ++i) {
-    CompositeInertia<Scalar>& c = inertia[i];
+    CompositeInertia<Scalar> c;
     c.m = Scalar(tree.mass[i]);
-    for (int k = 0; k < 3; ++k) c.h[k] = Scalar(tree.h[i][k]);
-    for (int k = 0; k < 6; ++k) c.I[k] = Scalar(tree.Ibar[i][k]);
-    if (i > 0) c = congruence(E0[i], p0[i], c);
+    for (int k = 0; k < 3; ++k) c.h[k] = Scalar(tree.h[k][i]);
+    for (int k = 0; k < 6; ++k) c.I[k] = Scalar(tree.Ibar[k][i]);
+    if (i > 0) {
+      Scalar E[9], p[3];
+      load<9>(E0, i, E);
+      load<3>(p0, i, p);
+      c = congruence(E, p, c);
+    }
+    store(inertia, i, c);
   }
 }
 

@@ -96,100 +96,145 @@ template <class Scalar, int NB, int NV, bool Floating, bool Velocity, bool Accel
 RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, const Scalar* X, const Scalar* g,
                                                    const Scalar* v, const Scalar* a, const Out& out) noexcept {
   using namespace tree_detail;
-  using rnea_derivatives_detail::dot;
-  Scalar E0[NB][9], p0[NB][3], S[NB][6];
-  CompositeInertia<Scalar> inertia[NB], rate[NB];  // I^C and İ^C once summed
-  Scalar V[NB][6], A[NB][6], U[NB][6], C[NB][6], P[NB][6], F[NB][6];
-  root_frames(tree, X, E0, p0, S);
-  root_inertias(tree, E0, p0, inertia);
+  using namespace rnea_derivatives_detail;
+  // Every per-body quantity component by component (x[k][i]: component k of body i), so that the
+  // loops whose bodies do not wait on each other run SIMD across the bodies: RBDC_SCALAR_LOOP marks
+  // those that follow the parents (outward and inward), where they would gather.
+  constexpr int kBlock = 8;
+  constexpr int NP = (NB + kBlock - 1) / kBlock * kBlock;
+  Scalar S[6][NP], V[6][NP], A[6][NP], U[6][NP], C[6][NP], P[6][NP], F[6][NP];
+  Scalar V_parent[6][NP], A_parent[6][NP], inertia[10][NP], rate[10][NP];  // I^C and İ^C once summed
+  {
+    Scalar E0[9][NP], p0[3][NP];
+    root_frames(tree, X, E0, p0, S);
+    root_inertias(tree, E0, p0, inertia);
+  }
   for (int k = 0; k < 6; ++k) {  // the root: the trunk's twist and acceleration, or at rest
-    V[0][k] = Floating && Velocity ? v[k] : Scalar(0);
-    A[0][k] = Floating && Acceleration ? a[k] : Scalar(0);
+    V[k][0] = Floating && Velocity ? v[k] : Scalar(0);
+    A[k][0] = Floating && Acceleration ? a[k] : Scalar(0);
   }
   if (Floating && Velocity) {  // the classical trunk acceleration's spatial part: − (0, ω × v)
+    const Scalar w[3] = {V[0][0], V[1][0], V[2][0]}, u[3] = {V[3][0], V[4][0], V[5][0]};
     Scalar w_x_v[3];
-    cross(V[0], V[0] + 3, w_x_v);
-    for (int k = 0; k < 3; ++k) A[0][3 + k] = A[0][3 + k] - w_x_v[k];
+    cross(w, u, w_x_v);
+    for (int k = 0; k < 3; ++k) A[3 + k][0] = A[3 + k][0] - w_x_v[k];
   }
-  for (int k = 0; k < 3; ++k) A[0][3 + k] = A[0][3 + k] - g[k];  // gravity as a fictitious acceleration
-  for (int i = 1; i < NB; ++i) {  // outward: u, c, v, a (parents first)
+  for (int k = 0; k < 3; ++k) A[3 + k][0] = A[3 + k][0] - g[k];  // gravity as a fictitious acceleration
+  RBDC_SCALAR_LOOP
+  for (int i = 1; i < NB; ++i) {  // outward, parents first: v
     const int parent = tree.parent[i];
-    motion_cross(A[parent], S[i], C[i]);
-    if (Velocity) {
-      const Scalar rate_i = v[tree.dof[i]];
-      Scalar t[6];
-      motion_cross(V[parent], S[i], U[i]);
-      motion_cross(V[parent], U[i], t);
-      for (int k = 0; k < 6; ++k) {
-        C[i][k] = C[i][k] + t[k];
-        V[i][k] = V[parent][k] + S[i][k] * rate_i;
-        A[i][k] = A[parent][k] + U[i][k] * rate_i;
-      }
-    } else {
-      for (int k = 0; k < 6; ++k) A[i][k] = A[parent][k];
+    for (int k = 0; k < 6; ++k) {
+      V_parent[k][i] = V[k][parent];
+      V[k][i] = Velocity ? V_parent[k][i] + S[k][i] * v[tree.dof[i]] : Scalar(0);
     }
-    if (Acceleration)
-      for (int k = 0; k < 6; ++k) A[i][k] = A[i][k] + S[i][k] * a[tree.dof[i]];
+  }
+  if (Velocity)
+    for (int i = 1; i < NB; ++i) {  // u = v_λ × S
+      Scalar vp[6], s[6], u[6];
+      load(V_parent, i, vp);
+      load(S, i, s);
+      motion_cross(vp, s, u);
+      store(U, i, u);
+    }
+  RBDC_SCALAR_LOOP
+  for (int i = 1; i < NB; ++i) {  // outward, parents first: a
+    const int parent = tree.parent[i];
+    for (int k = 0; k < 6; ++k) {
+      A_parent[k][i] = A[k][parent];
+      A[k][i] = Velocity ? A_parent[k][i] + U[k][i] * v[tree.dof[i]] : A_parent[k][i];
+      if (Acceleration) A[k][i] = A[k][i] + S[k][i] * a[tree.dof[i]];
+    }
+  }
+  for (int i = 1; i < NB; ++i) {  // c = a_λ × S + v_λ × u
+    Scalar ap[6], s[6], c[6];
+    load(A_parent, i, ap);
+    load(S, i, s);
+    motion_cross(ap, s, c);
+    if (Velocity) {
+      Scalar vp[6], u[6], t[6];
+      load(V_parent, i, vp);
+      load(U, i, u);
+      motion_cross(vp, u, t);
+      for (int k = 0; k < 6; ++k) c[k] = c[k] + t[k];
+    }
+    store(C, i, c);
   }
   for (int i = Floating ? 0 : 1; i < NB; ++i) {  // each body's force, momentum and inertia rate
-    apply(inertia[i], A[i], F[i]);
+    const CompositeInertia<Scalar> I = load_inertia(inertia, i);
+    Scalar ai[6], f[6];
+    load(A, i, ai);
+    apply(I, ai, f);
     if (Velocity) {
-      Scalar t[6];
-      apply(inertia[i], V[i], P[i]);
-      force_cross(V[i], P[i], t);
-      for (int k = 0; k < 6; ++k) F[i][k] = F[i][k] + t[k];
-      rate[i] = rnea_derivatives_detail::inertia_rate(inertia[i], V[i]);
+      Scalar vi[6], p[6], t[6];
+      load(V, i, vi);
+      apply(I, vi, p);
+      force_cross(vi, p, t);
+      for (int k = 0; k < 6; ++k) f[k] = f[k] + t[k];
+      store(P, i, p);
+      store(rate, i, inertia_rate(I, vi));
     }
+    store(F, i, f);
   }
+  RBDC_SCALAR_LOOP
   for (int i = NB - 1; i >= 1; --i) {  // inward: the subtrees' composites, plain sums in root coordinates
     const int parent = tree.parent[i];
     if (!Floating && parent == 0) continue;
-    accumulate(inertia[i], inertia[parent]);
-    for (int k = 0; k < 6; ++k) F[parent][k] = F[parent][k] + F[i][k];
+    for (int k = 0; k < 10; ++k) inertia[k][parent] = inertia[k][parent] + inertia[k][i];
+    for (int k = 0; k < 6; ++k) F[k][parent] = F[k][parent] + F[k][i];
     if (Velocity) {
-      accumulate<true>(rate[i], rate[parent]);
-      for (int k = 0; k < 6; ++k) P[parent][k] = P[parent][k] + P[i][k];
+      for (int k = 1; k < 10; ++k) rate[k][parent] = rate[k][parent] + rate[k][i];  // its mass stays 0
+      for (int k = 0; k < 6; ++k) P[k][parent] = P[k][parent] + P[k][i];
     }
   }
-  out.clear();
-  const Scalar* w = V[0];
-  const Scalar* trunk_v = V[0] + 3;
-  // ρ^I, ρ^B, G and D component by component, so that the entries below run along the descendants in
-  // whole blocks of kBlock bodies (the root's and the padding's columns read, never used)
-  constexpr int kBlock = 8;
-  constexpr int NP = (NB + kBlock - 1) / kBlock * kBlock;
+  // ρ^I = I^C S, ρ^B = B^Cᵀ S, G = S ×* F + I^C c + B^C u and D = 2 I^C u + B^C S of each body (the root's
+  // and the padding's columns zero: the blocks below read them, never use them)
   Scalar rows_I[6][NP], rows_B[6][NP], columns_G[6][NP], columns_D[6][NP];
   for (int k = 0; k < 6; ++k) {
     rows_I[k][0] = rows_B[k][0] = columns_G[k][0] = columns_D[k][0] = Scalar(0);
     for (int i = NB; i < NP; ++i) rows_I[k][i] = rows_B[k][i] = columns_G[k][i] = columns_D[k][i] = Scalar(0);
   }
-  for (int i = 1; i < NB; ++i) {  // body i's row ρ and column (G, D); the trunk's entries with body i
-    Scalar rho_I[6], rho_B[6] = {}, G[6], D[6] = {}, t[6];
-    apply(inertia[i], S[i], rho_I);
-    force_cross(S[i], F[i], G);
-    apply(inertia[i], C[i], t);
+  for (int i = 1; i < NB; ++i) {
+    const CompositeInertia<Scalar> I = load_inertia(inertia, i);
+    Scalar s[6], f[6], c[6], rho_I[6], rho_B[6] = {}, G[6], D[6] = {}, t[6];
+    load(S, i, s);
+    load(F, i, f);
+    load(C, i, c);
+    apply(I, s, rho_I);
+    force_cross(s, f, G);
+    apply(I, c, t);
     for (int k = 0; k < 6; ++k) G[k] = G[k] + t[k];
     if (Velocity) {
-      Scalar b[6], p[6];
-      apply(rate[i], S[i], b);  // İ S
-      force_cross(S[i], P[i], p);  // S ×* P
-      apply(inertia[i], U[i], t);
+      const CompositeInertia<Scalar> R = load_inertia(rate, i);
+      Scalar u[6], p[6], b[6], x[6];
+      load(U, i, u);
+      load(P, i, p);
+      apply(R, s, b);       // İ S
+      force_cross(s, p, x);  // S ×* P
+      apply(I, u, t);
       for (int k = 0; k < 6; ++k) {
-        rho_B[k] = b[k] - p[k];                      // Bᵀ S = İ S − S ×* P
-        D[k] = (b[k] + p[k]) + Scalar(2) * t[k];     // B S + 2 I u
+        rho_B[k] = b[k] - x[k];                   // Bᵀ S = İ S − S ×* P
+        D[k] = (b[k] + x[k]) + Scalar(2) * t[k];  // B S + 2 I u
       }
-      apply(rate[i], U[i], b);
-      force_cross(U[i], P[i], p);
-      for (int k = 0; k < 6; ++k) G[k] = G[k] + (b[k] + p[k]);  // + B u
+      apply(R, u, b);
+      force_cross(u, p, x);
+      for (int k = 0; k < 6; ++k) G[k] = G[k] + (b[k] + x[k]);  // + B u
     }
-    for (int k = 0; k < 6; ++k) {
-      rows_I[k][i] = rho_I[k];
-      rows_B[k][i] = rho_B[k];
-      columns_G[k][i] = G[k];
-      columns_D[k][i] = D[k];
-    }
-    const int di = tree.dof[i];
-    if (Floating) {  // the trunk's rows (S₀ = 1: G and D themselves) and columns
+    store(rows_I, i, rho_I);
+    store(rows_B, i, rho_B);
+    store(columns_G, i, G);
+    store(columns_D, i, D);
+  }
+  out.clear();
+  Scalar w[3], trunk_v[3];
+  for (int k = 0; k < 3; ++k) w[k] = V[k][0], trunk_v[k] = V[3 + k][0];
+  if (Floating)
+    for (int i = 1; i < NB; ++i) {  // the trunk's rows (S₀ = 1: G and D themselves) and columns with body i
+      const int di = tree.dof[i];
+      Scalar rho_I[6], rho_B[6], G[6], D[6];
+      load(rows_I, i, rho_I);
+      load(rows_B, i, rho_B);
+      load(columns_G, i, G);
+      load(columns_D, i, D);
       Scalar g_x_rho[3];
       cross(g, rho_I + 3, g_x_rho);  // ρ·c_k for c_k = (0, e_k × g)
       for (int k = 0; k < 6; ++k) out.q(k, di, G[k]);
@@ -203,12 +248,14 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
         for (int k = 3; k < 6; ++k) out.v(di, k, rho_B[k]);
       }
     }
-  }
   // Body j with its subtree i = j … end[j] − 1, SIMD along i: row i's entries in column j
   // (ρ_i·c_j + …) and, below the diagonal, column i's in row j (S_j·G_i, S_j·D_i).
   Scalar q_row[NP], v_row[NP], q_column[NP], v_column[NP];
   for (int j = 1; j < NB; ++j) {
-    const Scalar *c = C[j], *u = U[j], *s = S[j];
+    Scalar c[6], u[6] = {}, s[6];
+    load(C, j, c);
+    if (Velocity) load(U, j, u);
+    load(S, j, s);
     const int first = j / kBlock * kBlock;
     RBDC_SCALAR_LOOP  // the block, not the loop over blocks, is the vector
     for (int block = first; block < tree.end[j]; block += kBlock)
@@ -236,30 +283,35 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
     }
   }
   if (Floating) {  // the trunk's block: I^C₀ c_k, and B^C₀ e_k + I^C₀ shift_k
+    const CompositeInertia<Scalar> I = load_inertia(inertia, 0);
     for (int k = 0; k < 3; ++k) {
       Scalar e[3] = {}, c[6] = {}, f[6];
       e[k] = Scalar(1);
       cross(e, g, c + 3);
-      apply(inertia[0], c, f);
+      apply(I, c, f);
       for (int r = 0; r < 6; ++r) out.q(r, k, f[r]);
     }
-    if (Velocity)
+    if (Velocity) {
+      const CompositeInertia<Scalar> R = load_inertia(rate, 0);
+      Scalar p0[6];
+      load(P, 0, p0);
       for (int k = 0; k < 6; ++k) {
         Scalar e[6] = {}, f[6], t[6];
         e[k] = Scalar(1);
-        apply(rate[0], e, f);
-        force_cross(e, P[0], t);
+        apply(R, e, f);
+        force_cross(e, p0, t);
         for (int r = 0; r < 6; ++r) f[r] = f[r] + t[r];
         if (k < 3) {
           Scalar shift[6];
           cross(w, e, shift);
           cross(trunk_v, e, shift + 3);
           for (int r = 3; r < 6; ++r) shift[r] = Scalar(2) * shift[r];
-          apply(inertia[0], shift, t);
+          apply(I, shift, t);
           for (int r = 0; r < 6; ++r) f[r] = f[r] + t[r];
         }
         for (int r = 0; r < 6; ++r) out.v(r, k, f[r]);
       }
+    }
   }
 }
 

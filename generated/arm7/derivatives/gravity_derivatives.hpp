@@ -7,11 +7,11 @@
 // gravity_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   arm7/common/gravity_derivatives_70882b2a89d7.hpp
+//   arm7/common/gravity_derivatives_cf6816bbb5f8.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/gravity_derivatives_70882b2a89d7.hpp"
+#include "arm7/common/gravity_derivatives_cf6816bbb5f8.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::arm7::derivatives {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             274  182    0     0    12    6    474
-/// schedule: scalar tree: 474 arithmetic instructions, looped RNEA derivatives 1942 (cost 3860)
-using ::rbdc_gen::arm7::common::gravity_derivatives_70882b2a89d7::gravity_derivatives;
+/// schedule: scalar tree: 474 arithmetic instructions, looped RNEA derivatives 1942 (cost 2709)
+using ::rbdc_gen::arm7::common::gravity_derivatives_cf6816bbb5f8::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   arm7/common/inverse_dynamics_derivatives_0f0a7367288b.hpp
+//   arm7/common/inverse_dynamics_derivatives_c9d4b6e8c9bc.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/inverse_dynamics_derivatives_0f0a7367288b.hpp"
+#include "arm7/common/inverse_dynamics_derivatives_c9d4b6e8c9bc.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -25,8 +25,8 @@ namespace rbdc_gen::arm7::derivatives {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1796  1548    0     0    12   10   3366
-/// schedule: scalar tree: 3366 arithmetic instructions, looped RNEA derivatives 4063 (cost 8102)
-using ::rbdc_gen::arm7::common::inverse_dynamics_derivatives_0f0a7367288b::inverse_dynamics_derivatives;
+/// schedule: scalar tree: 3366 arithmetic instructions, looped RNEA derivatives 4063 (cost 5679)
+using ::rbdc_gen::arm7::common::inverse_dynamics_derivatives_c9d4b6e8c9bc::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   arm7/common/mass_matrix_9d63e1bd05ba.hpp
+//   arm7/common/mass_matrix_94571527d2aa.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/mass_matrix_9d63e1bd05ba.hpp"
+#include "arm7/common/mass_matrix_94571527d2aa.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::arm7::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             192  164    0     0    12    2    370
-/// schedule: scalar tree: 370 arithmetic instructions, looped CRBA 1484 (cost 2944)
-using ::rbdc_gen::arm7::common::mass_matrix_9d63e1bd05ba::mass_matrix;
+/// schedule: scalar tree: 370 arithmetic instructions, looped CRBA 1484 (cost 2068)
+using ::rbdc_gen::arm7::common::mass_matrix_94571527d2aa::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

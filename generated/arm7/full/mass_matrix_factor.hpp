@@ -7,11 +7,11 @@
 // mass_matrix_factor for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   arm7/common/mass_matrix_factor_c81f3c02acd9.hpp
+//   arm7/common/mass_matrix_factor_e8fff2f1e436.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/mass_matrix_factor_c81f3c02acd9.hpp"
+#include "arm7/common/mass_matrix_factor_e8fff2f1e436.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -25,8 +25,8 @@ namespace rbdc_gen::arm7::full {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             262  214    6     0    12    2    496
 /// schedule: scalar tree: 496 arithmetic instructions, looped factor 593 (cost 1150), looped CRBA
-///   1707 (cost 3724)
-using ::rbdc_gen::arm7::common::mass_matrix_factor_c81f3c02acd9::mass_matrix_factor;
+///   1707 (cost 2848)
+using ::rbdc_gen::arm7::common::mass_matrix_factor_e8fff2f1e436::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

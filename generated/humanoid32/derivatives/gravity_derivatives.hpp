@@ -7,11 +7,11 @@
 // gravity_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   humanoid32/common/gravity_derivatives_e679d132891f.hpp
+//   humanoid32/common/gravity_derivatives_833d62be67aa.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/gravity_derivatives_e679d132891f.hpp"
+#include "humanoid32/common/gravity_derivatives_833d62be67aa.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             3276  1924    0     0    64   61   5325
 /// schedule: scalar tree: 5325 arithmetic instructions (cost 8020), looped RNEA derivatives 9856
-///   (cost 19594)
-using ::rbdc_gen::humanoid32::common::gravity_derivatives_e679d132891f::gravity_derivatives;
+///   (cost 13751)
+using ::rbdc_gen::humanoid32::common::gravity_derivatives_833d62be67aa::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

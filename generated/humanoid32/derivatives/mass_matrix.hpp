@@ -7,11 +7,11 @@
 // mass_matrix for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   humanoid32/common/mass_matrix_a7b977fd1123.hpp
+//   humanoid32/common/mass_matrix_dfce22501ab3.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/mass_matrix_a7b977fd1123.hpp"
+#include "humanoid32/common/mass_matrix_dfce22501ab3.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2081  1487    0     0    64   20   3652
-/// schedule: scalar tree: 3652 arithmetic instructions (cost 4005), looped CRBA 7746 (cost 15390)
-using ::rbdc_gen::humanoid32::common::mass_matrix_a7b977fd1123::mass_matrix;
+/// schedule: scalar tree: 3652 arithmetic instructions (cost 4005), looped CRBA 7746 (cost 10804)
+using ::rbdc_gen::humanoid32::common::mass_matrix_dfce22501ab3::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

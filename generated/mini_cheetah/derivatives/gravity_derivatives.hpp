@@ -7,11 +7,11 @@
 // gravity_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   mini_cheetah/common/gravity_derivatives_1474c38f1d84.hpp
+//   mini_cheetah/common/gravity_derivatives_83ca85f50036.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/gravity_derivatives_1474c38f1d84.hpp"
+#include "mini_cheetah/common/gravity_derivatives_83ca85f50036.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             593  379    0     0    24   62   1058
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 296 arithmetic
-///   instructions, scalar tree 1051, looped RNEA derivatives 3370 (cost 6684)
-using ::rbdc_gen::mini_cheetah::common::gravity_derivatives_1474c38f1d84::gravity_derivatives;
+///   instructions, scalar tree 1051, looped RNEA derivatives 3370 (cost 4696)
+using ::rbdc_gen::mini_cheetah::common::gravity_derivatives_83ca85f50036::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix_factor for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   mini_cheetah/common/mass_matrix_factor_6541333e6387.hpp
+//   mini_cheetah/common/mass_matrix_factor_881e4d541f36.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/mass_matrix_factor_6541333e6387.hpp"
+#include "mini_cheetah/common/mass_matrix_factor_881e4d541f36.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -25,8 +25,8 @@ namespace rbdc_gen::mini_cheetah::full {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             846  729   14     0    24   15   1628
 /// schedule: scalar tree: 1628 arithmetic instructions, looped factor 1909 (cost 4729), looped CRBA
-///   3380 (cost 8412)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_factor_6541333e6387::mass_matrix_factor;
+///   3380 (cost 7085)
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_factor_881e4d541f36::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -24,9 +24,10 @@ SPATIAL_CROSS = (18, 12)    # x × y, x ×* f
 STEP_OVERHEAD = 4
 # What one counted instruction of a tree loop costs against one of short straight-line code (the
 # unit of passes/schedule.py), measured on an AMD EPYC (Zen 5), clang 14: the looped RNEA
-# derivatives 0.16-0.18 ns per counted instruction on arm7, the Mini Cheetah, humanoid32 and Talos,
-# the looped CRBA 0.17 on Talos, short straight-line code 0.084 (arm7's ∂τ).
-LOOP_WEIGHT = 2.0
+# derivatives 0.11-0.14 ns per counted instruction on arm7, the Mini Cheetah, humanoid32 and Talos,
+# short straight-line code 0.084 (arm7's ∂τ). (The looped CRBA, 0.13 on Talos, loses to the unrolled
+# CRBA there by this weight too: 1.45 against 1.09 µs.)
+LOOP_WEIGHT = 1.4
 
 
 def ancestor_steps(robot):
@@ -81,25 +82,32 @@ def table(robot):
     joints = [robot.joints[i] for i in order]
     bodies = [robot.bodies[i] for i in order]
     no_axis = [0.0, 0.0, 0.0]  # the root's
+    axes = [snap_axis(joint.axis) if k else no_axis for k, joint in enumerate(joints)]
+    moments = [[body.mass * c for c in body.com] for body in bodies]
+    rotational = [_upper(inertia_at_origin(body)) for body in bodies]
+
+    def components(vectors, n):  # component by component, as BodyTree holds them
+        return row(row(number(vector[k]) for vector in vectors) for k in range(n))
+
     fields = [
         row(map(str, parents)),
         row(map(str, subtree_ends(parents))),
         row(str(joint.v_index if k else -1) for k, joint in enumerate(joints)),
         row("true" if k and joint.type == "revolute" else "false" for k, joint in enumerate(joints)),
-        row(row(number(x) for x in (snap_axis(joint.axis) if k else no_axis)) for k, joint in enumerate(joints)),
+        components(axes, 3),
         row(number(body.mass) for body in bodies),
-        row(row(number(body.mass * c) for c in body.com) for body in bodies),
-        row(row(number(x) for x in _upper(inertia_at_origin(body))) for body in bodies),
+        components(moments, 3),
+        components(rotational, 6),
         row(number(joint.actuator.armature if k and joint.actuator else 0.0) for k, joint in enumerate(joints))]
     return f"const BodyTree<{robot.nb}> tree{{{', '.join(fields)}}};"
 
 
 def root_frame_pieces(robot):
-    """The pieces root_frames and root_inertias run: per body its frame, axis, subspace, inertia."""
+    """The pieces root_frames and root_inertias run: per body its frame, axis, subspace (p0 × z for
+    every joint, the prismatic ones selecting z instead), inertia."""
     pieces = []
     for i in range(1, robot.nb):
-        pieces += [AXIS, CONGRUENCE]
+        pieces += [AXIS, REVOLUTE_SUBSPACE, CONGRUENCE]
         pieces += [ROOT_TRANSFORM] if robot.parent[i] != 0 else []
-        pieces += [REVOLUTE_SUBSPACE] if robot.joints[i].type == "revolute" else []
     return pieces
 

@@ -6,11 +6,11 @@
 // mass_matrix for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   two_link/common/mass_matrix_56d6796d81c1.hpp
+//   two_link/common/mass_matrix_5fc110d68453.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/mass_matrix_56d6796d81c1.hpp"
+#include "two_link/common/mass_matrix_5fc110d68453.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -21,8 +21,8 @@ namespace rbdc_gen::two_link::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              15   13    0     0     0    0     28
-/// schedule: scalar tree: 28 arithmetic instructions, looped CRBA 349 (cost 683)
-using ::rbdc_gen::two_link::common::mass_matrix_56d6796d81c1::mass_matrix;
+/// schedule: scalar tree: 28 arithmetic instructions, looped CRBA 355 (cost 491)
+using ::rbdc_gen::two_link::common::mass_matrix_5fc110d68453::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -6,11 +6,11 @@
 // mass_matrix_factor for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   two_link/common/mass_matrix_factor_400d6184d50b.hpp
+//   two_link/common/mass_matrix_factor_c74b5afa8850.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/mass_matrix_factor_400d6184d50b.hpp"
+#include "two_link/common/mass_matrix_factor_c74b5afa8850.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -23,9 +23,9 @@ namespace rbdc_gen::two_link::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              15   13    1     0     0    0     29
-/// schedule: scalar tree: 29 arithmetic instructions, looped factor 38 (cost 63), looped CRBA 359
-///   (cost 718)
-using ::rbdc_gen::two_link::common::mass_matrix_factor_400d6184d50b::mass_matrix_factor;
+/// schedule: scalar tree: 29 arithmetic instructions, looped factor 38 (cost 63), looped CRBA 365
+///   (cost 526)
+using ::rbdc_gen::two_link::common::mass_matrix_factor_c74b5afa8850::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::two_link::common::mass_matrix_factor_400d6184d50b {
+namespace rbdc_gen::two_link::common::mass_matrix_factor_c74b5afa8850 {
 
 /// M = Lᵀ D L over the tree's dofs (CRBA + the sparse factorisation forward_dynamics uses).
 ///
@@ -21,8 +21,8 @@ namespace rbdc_gen::two_link::common::mass_matrix_factor_400d6184d50b {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              15   13    1     0     0    0     29
-/// schedule: scalar tree: 29 arithmetic instructions, looped factor 38 (cost 63), looped CRBA 359
-///   (cost 718)
+/// schedule: scalar tree: 29 arithmetic instructions, looped factor 38 (cost 63), looped CRBA 365
+///   (cost 526)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scalar* D, Scalar* D_inv) noexcept {
   L[0] = Scalar(1);
@@ -42,4 +42,4 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   D_inv[0] = Scalar(1) / t3;
 }
 
-}  // namespace rbdc_gen::two_link::common::mass_matrix_factor_400d6184d50b
+}  // namespace rbdc_gen::two_link::common::mass_matrix_factor_c74b5afa8850

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::gravity_derivatives_1474c38f1d84 {
+namespace rbdc_gen::mini_cheetah::common::gravity_derivatives_83ca85f50036 {
 
 /// Derivative of the gravity terms g.
 ///
@@ -21,7 +21,7 @@ namespace rbdc_gen::mini_cheetah::common::gravity_derivatives_1474c38f1d84 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             593  379    0     0    24   62   1058
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 296 arithmetic
-///   instructions, scalar tree 1051, looped RNEA derivatives 3370 (cost 6684)
+///   instructions, scalar tree 1051, looped RNEA derivatives 3370 (cost 4696)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -265,4 +265,4 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   store_lanes(dg_dq + 52, make_lanes(t116[3], t117[3], Scalar(0), Scalar(0)));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::gravity_derivatives_1474c38f1d84
+}  // namespace rbdc_gen::mini_cheetah::common::gravity_derivatives_83ca85f50036

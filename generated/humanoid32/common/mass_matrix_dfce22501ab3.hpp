@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::mass_matrix_a7b977fd1123 {
+namespace rbdc_gen::humanoid32::common::mass_matrix_dfce22501ab3 {
 
 /// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).
 ///
@@ -19,7 +19,7 @@ namespace rbdc_gen::humanoid32::common::mass_matrix_a7b977fd1123 {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2081  1487    0     0    64   20   3652
-/// schedule: scalar tree: 3652 arithmetic instructions (cost 4005), looped CRBA 7746 (cost 15390)
+/// schedule: scalar tree: 3652 arithmetic instructions (cost 4005), looped CRBA 7746 (cost 10804)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   // sines and cosines of the joint angles
@@ -2848,4 +2848,4 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   M[116] = t1276;
 }
 
-}  // namespace rbdc_gen::humanoid32::common::mass_matrix_a7b977fd1123
+}  // namespace rbdc_gen::humanoid32::common::mass_matrix_dfce22501ab3

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_92dde733fd57 {
+namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_d1e06b234d40 {
 
 /// Derivatives of the inverse dynamics τ = M a + c + g (∂τ/∂a is M).
 ///
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_92dde733f
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             3488  3195    0     0    24   58   6765
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1842 arithmetic
-///   instructions, scalar tree 6806 (cost 11574), looped RNEA derivatives 7696 (cost 15336)
+///   instructions, scalar tree 6806 (cost 11574), looped RNEA derivatives 7696 (cost 10752)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* dtau_dq, Scalar* dtau_dv) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -770,4 +770,4 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   store_lanes(dtau_dv + 52, make_lanes(t501[3], t503[3], Scalar(0), Scalar(0)));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_92dde733fd57
+}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_d1e06b234d40

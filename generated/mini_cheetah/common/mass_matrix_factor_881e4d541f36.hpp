@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::mass_matrix_factor_6541333e6387 {
+namespace rbdc_gen::mini_cheetah::common::mass_matrix_factor_881e4d541f36 {
 
 /// M = Lᵀ D L over the tree's dofs (CRBA + the sparse factorisation forward_dynamics uses).
 ///
@@ -22,7 +22,7 @@ namespace rbdc_gen::mini_cheetah::common::mass_matrix_factor_6541333e6387 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             846  729   14     0    24   15   1628
 /// schedule: scalar tree: 1628 arithmetic instructions, looped factor 1909 (cost 4729), looped CRBA
-///   3380 (cost 8412)
+///   3380 (cost 7085)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scalar* D, Scalar* D_inv) noexcept {
   // sines and cosines of the joint angles
@@ -915,4 +915,4 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   D_inv[0] = Scalar(1) / t485;
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_factor_6541333e6387
+}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_factor_881e4d541f36

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_0f0a7367288b {
+namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_c9d4b6e8c9bc {
 
 /// Derivatives of the inverse dynamics τ = M a + c + g (∂τ/∂a is M).
 ///
@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_0f0a7367288b {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1796  1548    0     0    12   10   3366
-/// schedule: scalar tree: 3366 arithmetic instructions, looped RNEA derivatives 4063 (cost 8102)
+/// schedule: scalar tree: 3366 arithmetic instructions, looped RNEA derivatives 4063 (cost 5679)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* dtau_dq, Scalar* dtau_dv) noexcept {
   // sines and cosines of the joint angles
@@ -1017,4 +1017,4 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   dtau_dv[43] = ((sin_joint3 * t829) + (cos_joint3 * t830)) + (Scalar(0.22) * ((cos_joint3 * t828) - (sin_joint3 * t823)));
 }
 
-}  // namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_0f0a7367288b
+}  // namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_c9d4b6e8c9bc

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::two_link::common::mass_matrix_56d6796d81c1 {
+namespace rbdc_gen::two_link::common::mass_matrix_5fc110d68453 {
 
 /// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).
 ///
@@ -19,7 +19,7 @@ namespace rbdc_gen::two_link::common::mass_matrix_56d6796d81c1 {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              15   13    0     0     0    0     28
-/// schedule: scalar tree: 28 arithmetic instructions, looped CRBA 349 (cost 683)
+/// schedule: scalar tree: 28 arithmetic instructions, looped CRBA 355 (cost 491)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   M[1] = Scalar(0);
@@ -34,4 +34,4 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   M[0] = (Scalar(0.6) * t2) + (Scalar(0.8) * ((Scalar(0.6) * t1) + (Scalar(0.8) * (Scalar(0.002698657540361287) + (Scalar(0.0007701511529340698) + (Scalar(0.22984884706593026) * t0))))));
 }
 
-}  // namespace rbdc_gen::two_link::common::mass_matrix_56d6796d81c1
+}  // namespace rbdc_gen::two_link::common::mass_matrix_5fc110d68453

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::gravity_derivatives_70882b2a89d7 {
+namespace rbdc_gen::arm7::common::gravity_derivatives_cf6816bbb5f8 {
 
 /// Derivative of the gravity terms g.
 ///
@@ -19,7 +19,7 @@ namespace rbdc_gen::arm7::common::gravity_derivatives_70882b2a89d7 {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             274  182    0     0    12    6    474
-/// schedule: scalar tree: 474 arithmetic instructions, looped RNEA derivatives 1942 (cost 3860)
+/// schedule: scalar tree: 474 arithmetic instructions, looped RNEA derivatives 1942 (cost 2709)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq) noexcept {
   // sines and cosines of the joint angles
@@ -232,4 +232,4 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   dg_dq[36] = ((sin_joint3 * t116) + (cos_joint3 * t117)) + (Scalar(0.22) * ((cos_joint3 * t115) - (sin_joint3 * t110)));
 }
 
-}  // namespace rbdc_gen::arm7::common::gravity_derivatives_70882b2a89d7
+}  // namespace rbdc_gen::arm7::common::gravity_derivatives_cf6816bbb5f8

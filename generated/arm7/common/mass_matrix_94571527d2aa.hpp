@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::mass_matrix_9d63e1bd05ba {
+namespace rbdc_gen::arm7::common::mass_matrix_94571527d2aa {
 
 /// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).
 ///
@@ -19,7 +19,7 @@ namespace rbdc_gen::arm7::common::mass_matrix_9d63e1bd05ba {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             192  164    0     0    12    2    370
-/// schedule: scalar tree: 370 arithmetic instructions, looped CRBA 1484 (cost 2944)
+/// schedule: scalar tree: 370 arithmetic instructions, looped CRBA 1484 (cost 2068)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   // sines and cosines of the joint angles
@@ -221,4 +221,4 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   M[7] = t125;
 }
 
-}  // namespace rbdc_gen::arm7::common::mass_matrix_9d63e1bd05ba
+}  // namespace rbdc_gen::arm7::common::mass_matrix_94571527d2aa

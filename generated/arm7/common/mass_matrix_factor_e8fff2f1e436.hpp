@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::mass_matrix_factor_c81f3c02acd9 {
+namespace rbdc_gen::arm7::common::mass_matrix_factor_e8fff2f1e436 {
 
 /// M = Lᵀ D L over the tree's dofs (CRBA + the sparse factorisation forward_dynamics uses).
 ///
@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::common::mass_matrix_factor_c81f3c02acd9 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             262  214    6     0    12    2    496
 /// schedule: scalar tree: 496 arithmetic instructions, looped factor 593 (cost 1150), looped CRBA
-///   1707 (cost 3724)
+///   1707 (cost 2848)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scalar* D, Scalar* D_inv) noexcept {
   // sines and cosines of the joint angles
@@ -276,4 +276,4 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   D_inv[0] = Scalar(1) / t162;
 }
 
-}  // namespace rbdc_gen::arm7::common::mass_matrix_factor_c81f3c02acd9
+}  // namespace rbdc_gen::arm7::common::mass_matrix_factor_e8fff2f1e436

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::mass_matrix_d824244cff6b {
+namespace rbdc_gen::mini_cheetah::common::mass_matrix_fb546e17f608 {
 
 /// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).
 ///
@@ -21,7 +21,7 @@ namespace rbdc_gen::mini_cheetah::common::mass_matrix_d824244cff6b {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             388  366    0     0    24   27    805
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 217 arithmetic
-///   instructions, scalar tree 781, looped CRBA 2252 (cost 4464)
+///   instructions, scalar tree 781, looped CRBA 2252 (cost 3137)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -293,4 +293,4 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   store_lanes(M + 320, make_lanes(Scalar(0), t153, t157, Scalar(0.000486144)));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_d824244cff6b
+}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_fb546e17f608

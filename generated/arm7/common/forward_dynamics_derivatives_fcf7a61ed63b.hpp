@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_827577d3d44e {
+namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_fcf7a61ed63b {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -1458,7 +1458,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 ///             3538  3058    6     0    14   15   6631
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4993 arithmetic
 ///   instructions (cost 6459), scalar tree 6236 (cost 10206), looped RNEA derivatives 6391
-///   (cost 10430), looped CRBA 8531 (cost 14588)
+///   (cost 8007), looped CRBA 8531 (cost 11288)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 24 right-hand sides and
 ///   the factor, ltdl_solve_columns solves them all at once, one SIMD row update per factor
 ///   entry (21)
@@ -1476,4 +1476,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_columns<Scalar, 7, 24>(solve_rhs, 21, 3, da_df);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_827577d3d44e
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_fcf7a61ed63b

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::gravity_derivatives_e679d132891f {
+namespace rbdc_gen::humanoid32::common::gravity_derivatives_833d62be67aa {
 
 /// Derivative of the gravity terms g.
 ///
@@ -20,7 +20,7 @@ namespace rbdc_gen::humanoid32::common::gravity_derivatives_e679d132891f {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             3276  1924    0     0    64   61   5325
 /// schedule: scalar tree: 5325 arithmetic instructions (cost 8020), looped RNEA derivatives 9856
-///   (cost 19594)
+///   (cost 13751)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq) noexcept {
   // sines and cosines of the joint angles
@@ -3193,4 +3193,4 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   dg_dq[80] = -t1482;
 }
 
-}  // namespace rbdc_gen::humanoid32::common::gravity_derivatives_e679d132891f
+}  // namespace rbdc_gen::humanoid32::common::gravity_derivatives_833d62be67aa

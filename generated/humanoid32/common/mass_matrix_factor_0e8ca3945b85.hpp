@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::mass_matrix_factor_0388288c2dd7 {
+namespace rbdc_gen::humanoid32::common::mass_matrix_factor_0e8ca3945b85 {
 
 /// M = Lᵀ D L over the tree's dofs (CRBA + the sparse factorisation forward_dynamics uses).
 ///
@@ -22,7 +22,7 @@ namespace rbdc_gen::humanoid32::common::mass_matrix_factor_0388288c2dd7 {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             4120  3259   33     0    64   18   7494
 /// schedule: scalar tree: 7494 arithmetic instructions (cost 13226), looped factor 7929 (cost
-///   18974), looped CRBA 12023 (cost 30360)
+///   18974), looped CRBA 12023 (cost 25773)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scalar* D, Scalar* D_inv) noexcept {
   // sines and cosines of the joint angles
@@ -3663,4 +3663,4 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   D_inv[0] = Scalar(1) / t2011;
 }
 
-}  // namespace rbdc_gen::humanoid32::common::mass_matrix_factor_0388288c2dd7
+}  // namespace rbdc_gen::humanoid32::common::mass_matrix_factor_0e8ca3945b85

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::bias_derivatives_d8405069baaa {
+namespace rbdc_gen::mini_cheetah::common::bias_derivatives_785d54d14fd2 {
 
 /// Derivatives of the bias c + g (inverse dynamics at a = 0).
 ///
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah::common::bias_derivatives_d8405069baaa {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             3432  3112    0     0    24   58   6626
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1805 arithmetic
-///   instructions, scalar tree 6675 (cost 11260), looped RNEA derivatives 7624 (cost 15192)
+///   instructions, scalar tree 6675 (cost 11260), looped RNEA derivatives 7624 (cost 10651)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, Scalar* dbias_dq, Scalar* dbias_dv) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -757,4 +757,4 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   store_lanes(dbias_dv + 52, make_lanes(t492[3], t494[3], Scalar(0), Scalar(0)));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::bias_derivatives_d8405069baaa
+}  // namespace rbdc_gen::mini_cheetah::common::bias_derivatives_785d54d14fd2
