@@ -131,17 +131,30 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_column_block(const DofTre
 /// were 10-15 % slower with either compiler, so 16 runs stay one block. With AVX2 (runs of 4)
 /// humanoid32's 32 runs split in two: its solve 8.8 → 6.5 µs (docs/performance.md).
 constexpr int LTDL_BLOCK_RUNS = 16;
+/// Nor more than a block's NV rows fit in this many bytes (the L1 data cache of an AMD EPYC, Zen 5):
+/// a 100-body chain's 300 columns (38 runs of 8, 100 rows) as blocks of 16 runs read L2 on every row
+/// update; as blocks of 7, its forward_dynamics_derivatives took 271 → 194 µs (clang 14, one driver;
+/// 5 to 8 runs within 4 %). Below about 48 dofs the 16 runs fit and nothing changes.
+constexpr int LTDL_BLOCK_BYTES = 48 * 1024;
+
+/// The runs of a block for NV rows of NC columns: at most LTDL_BLOCK_RUNS, and within LTDL_BLOCK_BYTES.
+template <class Scalar, int NV, int NC>
+constexpr int ltdl_block_runs() {
+  constexpr int fit = LTDL_BLOCK_BYTES / (NV * ColumnRun<Scalar, NC>::size * int(sizeof(Scalar)));
+  return fit < 1 ? 1 : fit < LTDL_BLOCK_RUNS ? fit : LTDL_BLOCK_RUNS;
+}
 
 /// Solves M X = B in place for the NC columns of B (row-major NV × NC), M = Lᵀ D L over the dof
 /// tree, L its factor entries in the packed layout of `tree`, D_inv the inverse pivots: in blocks
-/// of nearly equal width, at most LTDL_BLOCK_RUNS runs each (columns are independent).
+/// of nearly equal width, at most ltdl_block_runs() runs each (columns are independent).
 template <class Scalar, int NV, int NC, int NE, int Done = 0>
 RBDC_HOST_DEVICE inline void ltdl_solve_columns(const DofTree<NV, NE>& tree, const Scalar* L, const Scalar* D_inv,
                                                 Scalar* B) noexcept {
   constexpr int W = ColumnRun<Scalar, NC>::size;
   constexpr int left = NC / W - Done;
   if constexpr (left > 0) {
-    constexpr int blocks = (left + LTDL_BLOCK_RUNS - 1) / LTDL_BLOCK_RUNS;
+    constexpr int most = ltdl_block_runs<Scalar, NV, NC>();
+    constexpr int blocks = (left + most - 1) / most;
     constexpr int runs = (left + blocks - 1) / blocks;
     ltdl_solve_column_block<Scalar, NV, NC, NE, runs>(tree, L, D_inv, B, Done * W);
     ltdl_solve_columns<Scalar, NV, NC, NE, Done + runs>(tree, L, D_inv, B);
