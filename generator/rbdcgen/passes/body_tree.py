@@ -5,6 +5,7 @@ looped CRBA (looped_crba.py) and the looped RNEA derivatives (looped_rnea_deriva
 
 from __future__ import annotations
 
+from ..algorithms import aba
 from ..algorithms.crba import depth_first_order
 from ..graph.spatial import inertia_at_origin, snap_axis
 
@@ -58,10 +59,9 @@ def table_parents(robot):
 
 
 def applies(robot):
-    """A tree whose dynamics are its bodies' alone: no rotors, no couplings (both add terms the
-    loops do not model)."""
-    return (robot.nb > 1 and not robot.couplings
-            and not any(j.actuator is not None and j.actuator.rotor is not None for j in robot.joints))
+    """A tree whose dynamics are its bodies' alone (aba.applies: no rotors, no couplings, both of which
+    add terms the loops do not model), with at least one joint."""
+    return robot.nb > 1 and aba.applies(robot)
 
 
 def _upper(matrix):

@@ -101,8 +101,8 @@ class LoopedSolve:
                 f"ltdl_solve_columns<Scalar, {self.nv}, {self.columns}>(dof_tree, solve_L, solve_D_inv, {target});"]
 
     def loops(self):
-        """The C++ statements after the terms: the RNEA loop if any, solve, then copy each block into
-        its output."""
+        """The C++ statements after the terms: the looped CRBA and factor and the RNEA loop if any,
+        solve, then copy each block into its output."""
         body = [] if self.factor is None else self.factor.loops()
         body += [] if self.rnea is None else self.rnea.loops(with_table=self.factor is None)
         body += self._tree_solve("solve_rhs")
@@ -248,12 +248,13 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
                                    lambda_blocks=lambda_blocks, contact_rows=m, contact_columns=columns)
     else:
         blocks = tuple((arg.name, arg.cols) for arg in outputs if arg.cols)
-        columns = differentiate.padded(sum(width for _, width in blocks))
         from .looped_factor import LoopedFactor  # it imports this module's loops' header
-        solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs, rnea=looped_rnea_derivatives.subtracted_from(
-            robot, terms.outputs, "solve_rhs", columns) if rnea else None, factor=LoopedFactor(
-            parents=parents, terms=terms.outputs, crba=looped_crba.LoopedCrba(robot=robot, terms=terms.outputs, packed=True),
-            unpack=False) if factor else None)
+        columns = differentiate.padded(sum(width for _, width in blocks))
+        subtract = looped_rnea_derivatives.subtracted_from(robot, terms.outputs, "solve_rhs", columns)
+        packed = LoopedFactor(parents=parents, terms=terms.outputs, unpack=False,
+                              crba=looped_crba.LoopedCrba(robot=robot, terms=terms.outputs, packed=True))
+        solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs,
+                            rnea=subtract if rnea else None, factor=packed if factor else None)
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)
     assert terms.outputs[0].cols == solve.columns
     return solve

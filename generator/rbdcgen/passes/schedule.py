@@ -28,7 +28,7 @@ from ..algorithms import aba
 from ..algorithms.forward_dynamics import dof_parents
 from ..graph import expr as ex
 from ..views.limbs import LimbError, isomorphic_limbs
-from . import lane_functions, looped_crba, looped_factor, looped_rnea_derivatives, looped_solve, singular_mass
+from . import body_tree, lane_functions, looped_crba, looped_factor, looped_rnea_derivatives, looped_solve, singular_mass
 from .trace import signature, trace_function
 
 _LANE_SUM_INSTRUCTIONS = 2  # log2(LANES) horizontal additions
@@ -89,7 +89,7 @@ def _forms(robot, scene, name):
         forms["looped_crba"] = lambda: looped_factor.looped_function(robot, scene, name, crba=True)
     if looped_rnea_derivatives.has_looped_form(robot, name):
         forms["looped_rnea"] = lambda: looped_rnea_derivatives.looped_function(robot, scene, name)
-    if name in looped_solve.LOOP_TERMS and looped_rnea_derivatives.has_looped_form(robot, "inverse_dynamics_derivatives"):
+    if name in looped_solve.LOOP_TERMS and body_tree.applies(robot):
         forms["looped_rnea"] = lambda: looped_solve.looped_function(robot, scene, name, rnea=True)
         forms["looped_crba"] = lambda: looped_solve.looped_function(robot, scene, name, factor=True)
     return forms
