@@ -7,11 +7,11 @@
 // contact_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics is the same code:
-//   mini_cheetah/common/contact_dynamics_bfcedcd14451.hpp
+//   mini_cheetah/common/contact_dynamics_92d37a5cca0b.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_bfcedcd14451.hpp"
+#include "mini_cheetah/common/contact_dynamics_92d37a5cca0b.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::mini_cheetah::contact {
 ///             5727  4708   26     0    24   80  10565
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 5240 arithmetic
 ///   instructions (cost 7816), scalar tree 10140 (cost 19576)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_bfcedcd14451::contact_dynamics;
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_92d37a5cca0b::contact_dynamics;
 
 /// contact_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -18,7 +18,7 @@ from ..graph import expr as ex
 from ..graph import spatial as sp
 from . import forward_dynamics as fd
 from .jacobian import feet_jacobian
-from .kinematics import feet_bias_accelerations
+from .frames import feet_bias_accelerations
 
 # The runtime's kContactDampingRelative, kContactDampingFloor, kContactProximalSteps.
 DAMPING_RELATIVE = 1e-5

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from ..graph import spatial as sp
 from .jacobian import point_jacobian_columns
-from .kinematics import body_velocities, world_frames
+from .kinematics import body_accelerations, body_velocities, world_frames
 from .rnea import velocity_bias
 
 
@@ -85,16 +85,6 @@ def frame_jacobians(m):
     return local_rows, world_rows
 
 
-def bias_accelerations(m, velocities):
-    """a_i at a = 0: a_0 = (0, −ω_0 × v_0), a_i = X_λ(i)^i a_λ(i) + v_i × S_i q̇_i (Eq. 19)."""
-    accelerations = [velocity_bias(m)]
-    for i in range(1, m.robot.nb):
-        m.mark("outward pass, velocity-product accelerations", i)
-        a_i = m.X_up(i).motion(accelerations[m.robot.parent[i]])
-        accelerations.append(sp.vadd(a_i, sp.crm(velocities[i], sp.vscale(m.vi(i), m.motion_subspace(i)))))
-    return accelerations
-
-
 def _bias_at(a_i, v_i, r):
     """Body axes, at the point r: the spatial acceleration (ω̇, a_O + ω̇ × r) and the classical one
     (ω̇, that + ω × (v_O + ω × r)) (Featherstone RBDA Eq. 2.38)."""
@@ -109,7 +99,7 @@ def frame_bias_accelerations(m):
     """J̇v of each frame: spatial X_i^F a_i (local axes) and classical (ω̇; p̈) in world axes."""
     frames = world_frames(m)
     velocities = body_velocities(m)
-    accelerations = bias_accelerations(m, velocities)
+    accelerations = body_accelerations(m, velocities, velocity_bias(m))
     spatial, classical = [], []
     for frame in m.frames:
         m.mark("J̇v of frame " + frame.name)
@@ -125,7 +115,7 @@ def feet_bias_accelerations(m):
     """J̇v of each foot point: its classical acceleration at a = 0, world axes."""
     frames = world_frames(m)
     velocities = body_velocities(m)
-    accelerations = bias_accelerations(m, velocities)
+    accelerations = body_accelerations(m, velocities, velocity_bias(m))
     result = []
     for foot in m.feet:
         m.mark("J̇v of foot " + foot.name)

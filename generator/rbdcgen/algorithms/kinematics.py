@@ -1,5 +1,5 @@
-"""Kinematics (paper 000 Alg. 1, Eqs. 9-18): body velocities, world frames, feet positions and
-velocities."""
+"""Kinematics (paper 000 Alg. 1, Eqs. 9-19): body velocities and accelerations, world frames, feet
+positions and velocities."""
 
 from __future__ import annotations
 
@@ -69,27 +69,17 @@ def feet_angular_velocities(m):
     return result
 
 
-def feet_bias_accelerations(m):
-    """J̇v of each foot: its world classical acceleration at a = 0 (the runtime's
-    feet_bias_accelerations). The velocity-product accelerations of Eq. 19 from a₀ = (0, −ω₀ × v₀),
-    a_i = X_λ(i)^i a_λ(i) + v_i × S_i q̇_i, then at the foot point (X_i^fk, Eq. 16) the classical
-    acceleration lin(a) + ω × lin(v), rotated to the world."""
-    frames = world_frames(m)
-    velocities = body_velocities(m)
-    v0 = m.base_velocity()
-    accelerations = [sp.zeros(3) + sp.vneg(sp.cross(sp.ang(v0), sp.lin(v0)))]
+def body_accelerations(m, velocities, base, with_joint_accelerations=False):
+    """Each body's spatial acceleration in its coordinates from the trunk's `base` (Eq. 19):
+    a_i = X_λ(i)^i a_λ(i) + v_i × S_i q̇_i (+ S_i q̈_i with the joint accelerations)."""
+    accelerations = [base]
+    phase = "outward pass, " + ("accelerations" if with_joint_accelerations else "velocity-product accelerations")
     for i in range(1, m.robot.nb):
-        m.mark("outward pass, velocity-product accelerations", i)
+        m.mark(phase, i)
         S = m.motion_subspace(i)
-        accelerations.append(sp.vadd(m.X_up(i).motion(accelerations[m.robot.parent[i]]),
-                                     sp.crm(velocities[i], sp.vscale(m.vi(i), S))))
-    result = []
-    for foot in m.feet:
-        m.mark("bias acceleration of foot " + foot.name)
-        a, v = accelerations[foot.body], velocities[foot.body]
-        r = sp.vec(foot.offset)
-        a_foot = sp.vadd(sp.lin(a), sp.cross(sp.ang(a), r))    # lin(X_i^fk a_i)
-        v_foot = sp.vadd(sp.lin(v), sp.cross(sp.ang(v), r))    # lin(X_i^fk v_i)
-        classical = sp.vadd(a_foot, sp.cross(sp.ang(v), v_foot))
-        result.append(sp.matvec(frames[foot.body][0], classical))
-    return result
+        a_i = sp.vadd(m.X_up(i).motion(accelerations[m.robot.parent[i]]),
+                      sp.crm(velocities[i], sp.vscale(m.vi(i), S)))
+        if with_joint_accelerations:
+            a_i = sp.vadd(a_i, sp.vscale(m.ai(i), S))
+        accelerations.append(a_i)
+    return accelerations

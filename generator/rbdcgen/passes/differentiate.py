@@ -27,7 +27,7 @@ from ..graph import expr as ex
 from ..graph import spatial as sp
 from ..algorithms import forward_dynamics as fd
 from ..algorithms import contact_dynamics as cd
-from ..algorithms import aba, crba, feet_force_derivatives, jacobian, kinematics, rnea
+from ..algorithms import aba, crba, feet_force_derivatives, feet_motion_derivatives, jacobian, kinematics, rnea
 from ..algorithms.rnea_derivatives import has_rotors, rnea_derivatives
 from ..graph.manifold import configuration_seeds, q_direction, v_direction, velocity_seeds
 
@@ -147,7 +147,7 @@ def _trunk_acceleration(m):
     return m.a[0:6] if m.robot.floating_base else sp.zeros(6)
 
 
-def _column_major(rows):
+def column_major(rows):
     n = len(rows)
     return tuple(rows[r][c] for c in range(len(rows[0]) if rows else 0) for r in range(n))
 
@@ -159,7 +159,7 @@ def _rnea_q_and_v(m, base_acceleration, joint_accelerations, with_velocity, name
         tau = rnea.rnea(m, base_acceleration, joint_accelerations, with_velocity)
         return q_and_v(m, tau, *names)
     dq, dv = rnea_derivatives(m, base_acceleration, joint_accelerations, with_velocity)
-    return {name: _column_major(m.scatter_matrix(rows)) for name, rows in zip(names, (dq, dv))}
+    return {name: column_major(m.scatter_matrix(rows)) for name, rows in zip(names, (dq, dv))}
 
 
 def inverse_dynamics_derivatives(m):
@@ -178,12 +178,11 @@ def gravity_derivatives(m):
 
 
 def feet_velocity_derivatives(m):
-    pdot = [x for foot in kinematics.feet_velocities(m) for x in foot]
-    return {"dpdot_dq": jacobian_columns(pdot, configuration_seeds(m), _q_dirs(m))}
+    return {"dpdot_dq": column_major(feet_motion_derivatives.feet_velocity_derivatives(m))}
 
 
 def feet_force_term_derivatives(m):
-    return {"dtau_e_dq": _column_major(feet_force_derivatives.feet_force_term_derivatives(m))}
+    return {"dtau_e_dq": column_major(feet_force_derivatives.feet_force_term_derivatives(m))}
 
 
 def _solve_columns(m, columns):
@@ -333,19 +332,16 @@ CONTACT_COLUMNS = (("da_dq", "dlambda_dq"), ("da_dv", "dlambda_dv"), ("da_dtau",
 
 
 def _contact_right_hand_sides(m):
-    """The columns (r₁, r₂) of contact_dynamics_derivatives (contact_columns), r₂ the tangents of the
-    contact points' J a + J̇v at the placeholder a."""
+    """The columns (r₁, r₂) of contact_dynamics_derivatives (contact_columns), r₂ the derivatives of
+    the contact points' J a + J̇v at the placeholder a (feet_motion_derivatives)."""
     dq, dv = residual_derivatives(m)
-    pddot = [sp.dot(row, m.a) + bias for row, bias in zip(
-        cd.contact_rows(m, jacobian.feet_jacobian(m)),
-        cd.contact_rows(m, [x for foot in kinematics.feet_bias_accelerations(m) for x in foot]))]
-    r2 = q_and_v(m, pddot, "q", "v")
-    nc3 = len(pddot)
+    r2_q, r2_v = (_columns_of(rows, m.robot.nv) for rows in
+                  feet_motion_derivatives.feet_acceleration_derivatives(m, m.contacts))
+    return contact_columns(m.robot, dq, dv, r2_q, r2_v)
 
-    def split(flat):
-        return [[flat[c * nc3 + r] for r in range(nc3)] for c in range(m.robot.nv)]
 
-    return contact_columns(m.robot, dq, dv, split(r2["q"]), split(r2["v"]))
+def _columns_of(rows, n):
+    return [[row[c] for row in rows] for c in range(n)]
 
 
 def contact_columns(robot, dq, dv, r2_q, r2_v):

@@ -4,7 +4,7 @@ its looped form does not loop over) on the lane model, one contact foot per limb
 robot's layout; what the lanes change is where each term comes from:
 - r₁, the forward-dynamics residual's derivatives at placeholder a and f, is the analytic recursion on
   the lane model, as for forward_dynamics_derivatives_lanes (limb k's columns in lane k);
-- r₂, the tangents of the lane foot's J a + J̇v: the lane q and v seeded with lane k's own tangent, so
+- r₂, the derivatives of the lane foot's J a + J̇v (feet_motion_derivatives) on the lane model, so
   lane k holds contact k's derivative along limb k's coordinates (along another limb's it is zero);
 - J, A and the damped factor are LaneDelassus's, M⁻¹Jᵀ its lane columns' solutions
   (LaneDelassus.full_Minv_Jt), M's factor the lane factor's entries;
@@ -15,7 +15,7 @@ from __future__ import annotations
 from . import differentiate
 from ..algorithms import contact_dynamics as cd
 from ..algorithms import forward_dynamics as fd
-from ..algorithms.kinematics import feet_bias_accelerations
+from ..algorithms.feet_motion_derivatives import feet_acceleration_derivatives
 from ..graph import expr as ex
 from ..graph import spatial as sp
 from ..views.limb_lanes import contact_lanes
@@ -31,9 +31,8 @@ def contact_dynamics_derivative_terms(m):
 
     system = delassus(m)
     dq, dv = (m.scatter_matrix(rows) for rows in differentiate.residual_derivatives(m))
-    pddot = [sp.dot(row, m.tree_acceleration) + bias for row, bias in zip(system.J, feet_bias_accelerations(m)[0])]
-    tangents = differentiate.q_and_v(m, pddot, "q", "v")
-    r2_q, r2_v = (_contact_columns(m, lanes, tangents[name]) for name in ("q", "v"))
+    r2_q, r2_v = (_contact_columns(m, lanes, differentiate.column_major(rows))
+                  for rows in feet_acceleration_derivatives(m, m.feet[:1]))
     r1_columns, r2_columns = differentiate.contact_columns(full, dq, dv, r2_q, r2_v)
     L, inv_diag = fd.mass_matrix_factor(m)
     terms = differentiate.contact_terms(r1_columns, r2_columns, system, system.full_J(m), system.full_Minv_Jt(m),

@@ -27,12 +27,11 @@ from .differentiate import replace_symbols, residual_derivatives
 # A derivative of a v-vector along q or v tangents has both.
 _DERIVATIVES_IN_V = {"dtau_dq", "dtau_dv", "dbias_dq", "dbias_dv", "dg_dq", "dtau_e_dq"}
 _ROWS_IN_V = {"c", "g", "cg", "tau_e", "tau", "M"} | _DERIVATIVES_IN_V
-_COLS_IN_V = {"J", "M"} | _DERIVATIVES_IN_V
-# Derivatives come from the analytic recursions only: the tangent-propagated ones
-# (feet_velocity_derivatives, any derivative of a robot with rotors) seed the tree's coordinates,
-# which a coupled robot's expanded inputs are not.
+_COLS_IN_V = {"J", "M", "dpdot_dq"} | _DERIVATIVES_IN_V
+# Derivatives come from the analytic recursions only: the tangent-propagated ones (any derivative of
+# a robot with rotors) seed the tree's coordinates, which a coupled robot's expanded inputs are not.
 _ANALYTIC_DERIVATIVES = {"inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives",
-                         "feet_force_term_derivatives"}
+                         "feet_force_term_derivatives", "feet_velocity_derivatives"}
 _PROJECTED = {"feet_positions", "feet_velocities", "feet_jacobian", "quadratic_velocity_terms",
               "gravity_terms", "bias", "feet_force_terms", "inverse_dynamics",
               "mass_matrix"} | _ANALYTIC_DERIVATIVES

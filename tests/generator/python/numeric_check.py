@@ -83,5 +83,6 @@ def chain(links):
                     "nv": links, "lambda": [i - 1 for i in range(1, nb)],
                     "feet": [{"name": "tip", "body": links, "offset": [0, 0, 0.1]}],
                     "PRED": [i - 1 for i in range(1, nb)], "SUCC": list(range(1, nb)),
-                    "kappa": [[] for _ in range(nb)], "mu": [[] for _ in range(nb)],
-                    "nu": [[] for _ in range(nb)]})
+                    "kappa": [list(range(1, i + 1)) for i in range(nb)],
+                    "mu": [[i + 1] if i + 1 < nb else [] for i in range(nb)],
+                    "nu": [list(range(i, nb)) for i in range(nb)]})

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_bfcedcd14451 {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_92d37a5cca0b {
 
 /// Rigid-contact dynamics of the scene's contact feet: a and λ of M a − Jᵀλ = Sᵀτ − c − g, J a =
 /// −J̇v (Schur complement, damped proximal Delassus solve; docs/runtime.md).
@@ -734,7 +734,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t640 = t59 + ((cos_lanes_hip_joint * t638) - (sin_lanes_hip_joint * t639));
   // outward pass, velocity-product accelerations: body 3 LF_knee/RF_knee/LH_knee/RH_knee
   const Lane t641 = t64 - (t58 + ((cos_lanes_hip_joint * t639) + (sin_lanes_hip_joint * t638)));
-  // bias acceleration of foot LF_foot/RF_foot/LH_foot/RH_foot
+  // J̇v of foot LF_foot/RF_foot/LH_foot/RH_foot
   const Lane t642 = t47 - ((Scalar(0.195) * t49) + (lane_c[0] * t46));
   const Lane t643 = t44 + (Scalar(0.195) * t45);
   const Lane t644 = t48 - (lane_c[0] * t45);
@@ -1036,4 +1036,4 @@ RBDC_HOST_DEVICE inline void contact_dynamics(const Scalar* q, const Scalar* v, 
   a[17] = t929[3];
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_bfcedcd14451
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_92d37a5cca0b
