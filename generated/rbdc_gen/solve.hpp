@@ -83,7 +83,9 @@ using ColumnRun = Run<Scalar, NC % run_size<Scalar>() == 0 ? run_size<Scalar>() 
 /// factor entries L[k] for k in [first[i], first[i + 1]) are at its ancestors ancestor[k], nearest
 /// first (the packed layout of L); dof j's descendants are below_dof[e] for e in [below_first[j],
 /// below_first[j + 1]), deepest first, their entry at j being L[below_entry[e]]. NE ≥ 1 (a tree
-/// without ancestors has one unused entry).
+/// without ancestors has one unused entry). pair_with_parent[j]: the L⁻ᵀ pass solves rows j and its
+/// parent j − 1 together (j's descendants come last in the parent's, before j);
+/// pair_with_child[i]: the L⁻¹ pass solves rows i and its child i + 1 together.
 template <int NV, int NE>
 struct DofTree {
   int first[NV + 1];
@@ -91,46 +93,109 @@ struct DofTree {
   int below_first[NV + 1];
   int below_dof[NE];
   int below_entry[NE];
+  int pair_with_parent[NV];
+  int pair_with_child[NV];
 };
+
+/// Keeps a loaded run (a vector of doubles or floats) in a register: g++ 12 folds the load into each
+/// multiply-add that reads it, loading it twice for a pair's two rows, which the pairs are there to avoid.
+template <class T>
+RBDC_HOST_DEVICE inline void in_register(T& x) noexcept {
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__CUDACC__) && defined(__x86_64__)
+  asm("" : "+v"(x));
+#else
+  (void)x;
+#endif
+}
 
 /// ltdl_solve_columns on NR runs of B's columns from column c0: both passes, each row summed locally
 /// from rows already final (no aliasing with the rows it reads), in the order they became final: the
 /// row finished last comes last, so a row's sum runs while the rows before it finish instead of
-/// after (a walk up the parents, nearest first, waited on each).
+/// after (a walk up the parents, nearest first, waited on each). Where the tree pairs a dof with its
+/// parent or child, both rows are summed in one sweep that loads each row they share once: a chain's
+/// solve does half the loads (100 dofs, 304 columns: 97 → 62 µs with clang 14, 98 → 66 µs with g++
+/// 12; Talos 6.7 → 4.8 µs, one driver, AMD EPYC, bitwise the same).
 template <class Scalar, int NV, int NC, int NE, int NR>
 RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_column_block(const DofTree<NV, NE>& tree, const Scalar* L,
                                                                     const Scalar* D_inv, Scalar* B, int c0) noexcept {
   using R = ColumnRun<Scalar, NC>;
   constexpr int W = R::size;
-  typename R::type row[NR];
+  typename R::type row[NR], pair[NR];
   for (int j = NV - 1; j >= 0; --j) {  // B ← L⁻ᵀ B, leaves to root: row j from its descendants'
-    for (int c = 0; c < NR; ++c) row[c] = R::load(B + j * NC + c0 + c * W);
+    Scalar* row_j = B + j * NC + c0;
+    for (int c = 0; c < NR; ++c) row[c] = R::load(row_j + c * W);
+    if (tree.pair_with_parent[j]) {
+      Scalar* row_p = row_j - NC;
+      const int shared = tree.below_first[j + 1] - tree.below_first[j] + 1;  // j's descendants and j
+      for (int c = 0; c < NR; ++c) pair[c] = R::load(row_p + c * W);
+      for (int e = tree.below_first[j - 1]; e < tree.below_first[j] - shared; ++e) {  // the parent's others
+        const Scalar* row_i = B + tree.below_dof[e] * NC + c0;
+        const Scalar l = L[tree.below_entry[e]];
+        for (int c = 0; c < NR; ++c) pair[c] -= l * R::load(row_i + c * W);
+      }
+      for (int e = tree.below_first[j]; e < tree.below_first[j + 1]; ++e) {
+        const Scalar* row_i = B + tree.below_dof[e] * NC + c0;
+        const Scalar l = L[tree.below_entry[e]], l_parent = L[tree.below_entry[e] + 1];  // parent: next ancestor
+        for (int c = 0; c < NR; ++c) {
+          auto x = R::load(row_i + c * W);
+          if constexpr (W > 1) in_register(x);
+          row[c] -= l * x;
+          pair[c] -= l_parent * x;
+        }
+      }
+      const Scalar l = L[tree.below_entry[tree.below_first[j] - 1]];  // j's entry at its parent
+      for (int c = 0; c < NR; ++c) R::store(row_j + c * W, row[c]);
+      for (int c = 0; c < NR; ++c) R::store(row_p + c * W, pair[c] - l * row[c]);
+      --j;
+      continue;
+    }
     for (int e = tree.below_first[j]; e < tree.below_first[j + 1]; ++e) {
       const Scalar* row_i = B + tree.below_dof[e] * NC + c0;
       const Scalar l = L[tree.below_entry[e]];
       for (int c = 0; c < NR; ++c) row[c] -= l * R::load(row_i + c * W);
     }
-    for (int c = 0; c < NR; ++c) R::store(B + j * NC + c0 + c * W, row[c]);
+    for (int c = 0; c < NR; ++c) R::store(row_j + c * W, row[c]);
   }
   for (int i = 0; i < NV; ++i) {  // B ← L⁻¹ D⁻¹ B, root to leaves: row i from its ancestors', root first
+    Scalar* row_i = B + i * NC + c0;
     const Scalar d = D_inv[i];
-    for (int c = 0; c < NR; ++c) row[c] = R::load(B + i * NC + c0 + c * W) * d;
+    for (int c = 0; c < NR; ++c) row[c] = R::load(row_i + c * W) * d;
+    if (tree.pair_with_child[i]) {
+      Scalar* row_c = row_i + NC;
+      const int shift = tree.first[i + 1] + 1 - tree.first[i];  // the child's entry at i's ancestor k: k + shift
+      const Scalar d_child = D_inv[i + 1];
+      for (int c = 0; c < NR; ++c) pair[c] = R::load(row_c + c * W) * d_child;
+      for (int k = tree.first[i + 1] - 1; k >= tree.first[i]; --k) {
+        const Scalar* row_j = B + tree.ancestor[k] * NC + c0;
+        const Scalar l = L[k], l_child = L[k + shift];
+        for (int c = 0; c < NR; ++c) {
+          auto x = R::load(row_j + c * W);
+          if constexpr (W > 1) in_register(x);
+          row[c] -= l * x;
+          pair[c] -= l_child * x;
+        }
+      }
+      const Scalar l = L[tree.first[i + 1]];  // the child's entry at i
+      for (int c = 0; c < NR; ++c) R::store(row_i + c * W, row[c]);
+      for (int c = 0; c < NR; ++c) R::store(row_c + c * W, pair[c] - l * row[c]);
+      ++i;
+      continue;
+    }
     for (int k = tree.first[i + 1] - 1; k >= tree.first[i]; --k) {
       const Scalar* row_j = B + tree.ancestor[k] * NC + c0;
       const Scalar l = L[k];
       for (int c = 0; c < NR; ++c) row[c] -= l * R::load(row_j + c * W);
     }
-    for (int c = 0; c < NR; ++c) R::store(B + i * NC + c0 + c * W, row[c]);
+    for (int c = 0; c < NR; ++c) R::store(row_i + c * W, row[c]);
   }
 }
 
-/// At most this many runs of columns are solved together: with more, a block's sums no longer all
-/// stay in vector registers (32 with AVX-512) and its rows no longer fit in L1. Talos's 184 columns
-/// (23 runs of 8, 74 KB of rows) as blocks of 12 and 11 runs: 11.8 → 6.0 µs with g++ 12, 10.6 → 10.1
-/// µs with clang 14 (one driver, AMD EPYC, bitwise the same); humanoid32's 16 runs split in two
-/// were 10-15 % slower with either compiler, so 16 runs stay one block. With AVX2 (runs of 4)
-/// humanoid32's 32 runs split in two: its solve 8.8 → 6.5 µs (docs/performance.md).
-constexpr int LTDL_BLOCK_RUNS = 16;
+/// At most this many runs of columns are solved together: with more, a pair's two sums no longer
+/// stay in vector registers (32 with AVX-512) and a block's rows no longer fit in L1. Talos's 184
+/// columns (23 runs of 8) as blocks of 12 and 11 runs; humanoid32's 16 runs as two blocks of 8 (one
+/// block of 16 spilled the pairs' sums: its solve 2.3 → 4.3 µs with clang 14). Before the pairs
+/// the limit was 16 (Talos 11.8 → 6.0 µs with g++ 12 from one block; docs/performance.md).
+constexpr int LTDL_BLOCK_RUNS = 12;
 /// Nor more than a block's NV rows fit in this many bytes (the L1 data cache of an AMD EPYC, Zen 5):
 /// a 100-body chain's 300 columns (38 runs of 8, 100 rows) as blocks of 16 runs read L2 on every row
 /// update; as blocks of 7, its forward_dynamics_derivatives took 271 → 194 µs (clang 14, one driver;

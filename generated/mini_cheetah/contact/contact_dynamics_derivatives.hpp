@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_c1ec9d336a6f.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_578e3c21fcdf.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_c1ec9d336a6f.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_578e3c21fcdf.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -34,7 +34,7 @@ namespace rbdc_gen::mini_cheetah::contact {
 ///   lanes, the solve's right-hand sides in SIMD across columns): 34711 arithmetic
 ///   instructions (cost 42426), scalar tree 101209 (cost 238142), looped solve 49275 (cost
 ///   77380)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_c1ec9d336a6f::contact_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_578e3c21fcdf::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

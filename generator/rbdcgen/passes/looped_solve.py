@@ -196,8 +196,35 @@ def dof_tree(parents):
 
     tables = [table(first, n + 1), table([j for above in ancestors for j in above], entries),
               table(below_first, n + 1), table([i for column in below for i, _ in column], entries),
-              table([k for column in below for _, k in column], entries)]
+              table([k for column in below for _, k in column], entries),
+              table(_pairs_with_parent(parents, below), n), table(_pairs_with_child(parents), n)]
     return "const DofTree<%d, %d> dof_tree{%s};" % (n, entries, ", ".join(tables))
+
+
+def _pairs_with_parent(parents, below):
+    """1 where the L⁻ᵀ pass (leaves to root) solves row j together with its parent's row j − 1: the
+    parent's descendants are then its others, j's, and j last (depth-first numbering), so the pair
+    reads j's descendants once for both rows; greedily from the leaves, each row in one pair at most."""
+    flags = [0] * len(parents)
+    j = len(parents) - 1
+    while j >= 1:
+        others = len(below[j - 1]) - len(below[j]) - 1
+        joined = parents[j] == j - 1 and [i for i, _ in below[j - 1][others:]] == [i for i, _ in below[j]] + [j]
+        flags[j] = int(joined)
+        j -= 2 if joined else 1
+    return flags
+
+
+def _pairs_with_child(parents):
+    """1 where the L⁻¹ pass (root to leaves) solves row i together with its child's row i + 1, whose
+    ancestors are i's and i: the pair reads i's ancestors once for both rows."""
+    flags = [0] * len(parents)
+    i = 0
+    while i + 1 < len(parents):
+        joined = parents[i + 1] == i
+        flags[i] = int(joined)
+        i += 2 if joined else 1
+    return flags
 
 
 def row_sparsity(name, columns):

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_fcf7a61ed63b {
+namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_406469955bc4 {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -1468,7 +1468,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   alignas(64) Scalar solve_L[21];
   alignas(64) Scalar solve_D_inv[7];
   forward_dynamics_derivatives_terms(q, v, tau, f, solve_rhs, solve_L, solve_D_inv);
-  const DofTree<7, 21> dof_tree{{0, 0, 1, 3, 6, 10, 15, 21}, {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0, 5, 4, 3, 2, 1, 0}, {0, 6, 11, 15, 18, 20, 21, 21}, {6, 5, 4, 3, 2, 1, 6, 5, 4, 3, 2, 6, 5, 4, 3, 6, 5, 4, 6, 5, 6}, {20, 14, 9, 5, 2, 0, 19, 13, 8, 4, 1, 18, 12, 7, 3, 17, 11, 6, 16, 10, 15}};
+  const DofTree<7, 21> dof_tree{{0, 0, 1, 3, 6, 10, 15, 21}, {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0, 5, 4, 3, 2, 1, 0}, {0, 6, 11, 15, 18, 20, 21, 21}, {6, 5, 4, 3, 2, 1, 6, 5, 4, 3, 2, 6, 5, 4, 3, 6, 5, 4, 6, 5, 6}, {20, 14, 9, 5, 2, 0, 19, 13, 8, 4, 1, 18, 12, 7, 3, 17, 11, 6, 16, 10, 15}, {0, 0, 1, 0, 1, 0, 1}, {1, 0, 1, 0, 1, 0, 0}};
   ltdl_solve_columns<Scalar, 7, 24>(dof_tree, solve_L, solve_D_inv, solve_rhs);
   copy_columns<Scalar, 7, 24>(solve_rhs, 0, 7, da_dq);
   copy_columns<Scalar, 7, 24>(solve_rhs, 7, 7, da_dv);
@@ -1476,4 +1476,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_columns<Scalar, 7, 24>(solve_rhs, 21, 3, da_df);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_fcf7a61ed63b
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_406469955bc4
