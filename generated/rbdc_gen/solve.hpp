@@ -333,6 +333,19 @@ RBDC_HOST_DEVICE inline void proximal_step_sum(const Scalar* U, const Scalar* DL
   }
 }
 
+/// out[t] −= s·x[t] for t < n, out and x not overlapping, one vector run at a time and the rest one
+/// by one: ltdl_factor's rows lie in one array, and as a plain loop the update stayed scalar, or
+/// vectorised 32 wide with up to 31 entries left scalar (a 100-dof chain's factor, 166 650
+/// multiply-adds, about 40 µs of its ∂q̈ with clang 14).
+template <class Scalar>
+RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void subtract_scaled(Scalar* out, const Scalar* x, Scalar s, int n) noexcept {
+  using R = Run<Scalar, run_size<Scalar>()>;
+  int t = 0;
+  if constexpr (R::size > 1)
+    for (; t + R::size <= n; t += R::size) R::store(out + t, R::load(out + t) - s * R::load(x + t));
+  for (; t < n; ++t) out[t] -= s * x[t];
+}
+
 /// M = Lᵀ D L over the dof tree (Featherstone's LTDL), in place, for mass_matrix_factor's looped form:
 /// on entry L holds M's entries at each dof's ancestors (dof by dof, nearest ancestor first, the
 /// layout of ltdl_solve_columns) and D M's diagonal; on exit L the factor's entries, D the pivots and
@@ -356,9 +369,7 @@ RBDC_HOST_DEVICE inline void ltdl_factor(const int (&parent)[NV], Scalar* L, Sca
     for (int i = parent[k]; i != -1; i = parent[i], ++p) {
       const Scalar ratio = row_k[p] * inverse;
       D[i] -= ratio * row_k[p];
-      Scalar* row_i = L + first[i];
-      const Scalar* tail = row_k + p + 1;
-      for (int t = 0; t < depth[i]; ++t) row_i[t] -= ratio * tail[t];
+      subtract_scaled(L + first[i], row_k + p + 1, ratio, depth[i]);
       row_k[p] = ratio;
     }
   }
