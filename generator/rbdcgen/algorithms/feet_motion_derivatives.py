@@ -79,7 +79,7 @@ class _FootPoint:
             k = m.joint(j).v_index
             self.groups.append([(k, columns[k], m.vi(j), m.ai(j) if with_acceleration else None)])
         self.dV = _suffix_sums([_group_sum([_scale(v, S) for _, S, v, _ in group]) for group in self.groups])
-        self.V_b = self.dV[0]
+        self.V_b = self.dV[0] if self.dV else _zero()   # a foot on a fixed base does not move
         # V_λ of each group: the world's (zero) for the first, V_b − ΔV after
         self.V_parent = [_zero()] + [_sub(self.V_b, dV) for dV in self.dV[1:]]
         if with_acceleration:
@@ -90,7 +90,7 @@ class _FootPoint:
                     own += [_scale(v, _cross(self.V_parent[g], S)) for _, S, v, _ in group]
                 terms.append(_group_sum(own))
             self.dA = _suffix_sums(terms)
-            self.A_b = self.dA[0]
+            self.A_b = self.dA[0] if self.dA else _zero()
 
     def velocity_q(self, g, S):
         """∂ṗ/∂q along column S of group g: s_ω × Δu + ω_λ × s_v."""

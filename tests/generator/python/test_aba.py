@@ -4,7 +4,6 @@ on a floating base (its trunk solved by a 6 × 6 LDLᵀ); `auto` keeps the facto
 takes ABA for a long chain, and says so. The emitted code is checked against the runtime (armature
 included) by generator_verify_random_aba (tests/generator/CMakeLists.txt)."""
 
-import copy
 import os
 import unittest
 

@@ -2,6 +2,7 @@
 against an independent route, forward-mode tangents of the traced kinematics (ṗ and J a + J̇v), and
 their cost: O(depth) per foot, where the tangents' is O(depth²)."""
 
+import json
 import os
 import unittest
 
@@ -57,6 +58,17 @@ class FeetMotionDerivatives(unittest.TestCase):
     def test_equal_the_tangents_on_the_mini_cheetah(self):
         for base in ("floating", "fixed"):
             self.check(mini_cheetah.load(base))
+
+    def test_a_foot_on_a_fixed_root_has_zero_derivatives(self):
+        data = json.load(open(os.path.join(DATA, "tiny_fixed.json")))
+        data["feet"] = data["feet"] + [{"name": "on_root", "body": 0, "offset": [0.1, 0.0, 0.0]}]
+        robot = load_ir(data)
+        self.check(robot)
+        with ex.Graph():
+            m = TracedModel(robot, SCENE)
+            rows = feet_motion_derivatives.feet_velocity_derivatives(m)[-3:]
+            rows += sum(feet_motion_derivatives.feet_acceleration_derivatives(m, m.feet[-1:]), [])
+        self.assertTrue(all(x.is_const(0.0) for row in rows for x in row))
 
     def test_cost_grows_linearly_with_the_depth(self):
         """A chain twice as long: about twice the operations (the tangents' were four times)."""

@@ -16,7 +16,6 @@ from rbdcgen.graph import expr as ex
 from rbdcgen.graph import spatial as sp
 from rbdcgen.passes import looped_crba
 from rbdcgen.passes.schedule import scheduled_function
-from rbdcgen.passes.trace import trace_function
 from rbdcgen.views.scalar import TracedModel
 
 FLOATING = load_ir(os.path.join(DATA, "tiny_floating.json"))
