@@ -250,20 +250,16 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_row_block(int i, const Scal
     for (int c = 0; c < NC / W; ++c) R::store(C + (i + h) * NC + c * W, row[h][c]);
 }
 
-/// C ← A B + Sign·D over all M rows, as many at a time as keep at most 12 sums in vector registers
-/// beside B's runs. 48 columns are 6 runs with AVX-512 (two rows) but 12 with AVX2, whose 16
-/// registers cannot hold 24 sums: one row at a time made the contact derivatives' loops 12 % faster
-/// there (3.16 → 2.79 µs, clang 14, x86-64-v3 build). The proximal steps' 16 columns (2 runs) take six
-/// rows: each run of B loaded once for six rows (the contact derivatives 1 % faster with clang 14, 4 %
-/// with g++ 12, in a driver).
+/// C ← A B + Sign·D over all M rows: two at a time where both rows' sums fit in vector registers
+/// beside B's runs, else one. 48 columns are 6 runs with AVX-512 (12 sums: two rows) but 12 with
+/// AVX2, whose 16 registers cannot hold 24 sums: one row at a time made the contact derivatives'
+/// loops 12 % faster there (3.16 → 2.79 µs, clang 14, x86-64-v3 build).
 template <class Scalar, int M, int K, int NC, int Sign, int LDA>
 RBDC_HOST_DEVICE inline void multiply_rows(const Scalar* A, const Scalar* B, const Scalar* D, Scalar* C) noexcept {
-  constexpr int runs = NC / ColumnRun<Scalar, NC>::size;
-  constexpr int H = runs >= 12 ? 1 : 12 / runs < M ? 12 / runs : M;
+  constexpr int H = 2 * (NC / ColumnRun<Scalar, NC>::size) <= 12 ? 2 : 1;
   int i = 0;
   for (; i + H <= M; i += H) multiply_row_block<Scalar, K, NC, Sign, LDA, H>(i, A, B, D, C);
-  if constexpr (M % H != 0)
-    for (; i < M; ++i) multiply_row_block<Scalar, K, NC, Sign, LDA, 1>(i, A, B, D, C);
+  for (; i < M; ++i) multiply_row_block<Scalar, K, NC, Sign, LDA, 1>(i, A, B, D, C);
 }
 
 /// C ← A B.
