@@ -150,7 +150,7 @@ def feet_acceleration_derivatives(m, feet):
                 by_q[k] = point.acceleration_q(g, S)
                 if trunk:
                     beyond = point.dV[1] if len(point.dV) > 1 else _zero()   # V_b − V₀
-                    by_v[k] = sp.vsub(point.acceleration_v(S, beyond), _spin(m, frames, point, S, k))
+                    by_v[k] = sp.vsub(point.acceleration_v(S, beyond), _spin(m, frames[0][0], S, k))
                 else:
                     by_v[k] = point.acceleration_v(S, _sub(point.dV[g], point.V_parent[g]))
         dq.append(by_q)
@@ -158,10 +158,9 @@ def feet_acceleration_derivatives(m, feet):
     return _rows(m, dq), _rows(m, dv)
 
 
-def _spin(m, frames, point, S, k):
-    """∂(ω₀ × υ₀)/∂v₀ along trunk dof k in world axes: ω_S × υ₀ + ω₀ × υ_S (R₀ω₀ = ω of V₀)."""
-    R0 = frames[0][0]
-    unit = sp.vec([1.0 if r == k else 0.0 for r in range(6)])
-    w0 = _group_sum([_scale(v, S_k) for _, S_k, v, _ in point.groups[0]])[0]
-    return sp.vadd(sp.cross(S[0], sp.matvec(R0, sp.lin(m.base_velocity()))),
-                   sp.cross(w0, sp.matvec(R0, sp.lin(unit))))
+def _spin(m, R0, S, k):
+    """∂(ω₀ × υ₀)/∂v₀ along trunk dof k in world axes: ω_S × R₀υ₀, and R₀ω₀ × υ_S for a translation
+    (k ≥ 3, whose column's linear part S[1] is R₀'s axis)."""
+    v0 = m.base_velocity()
+    spin = sp.cross(S[0], sp.matvec(R0, sp.lin(v0)))
+    return spin if k < 3 else sp.vadd(spin, sp.cross(sp.matvec(R0, sp.ang(v0)), S[1]))
