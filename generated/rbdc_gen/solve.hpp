@@ -226,13 +226,32 @@ RBDC_HOST_DEVICE inline void ltdl_solve_columns(const DofTree<NV, NE>& tree, con
   }
 }
 
-/// C ← A B + Sign·D (Sign 0, −1 or 1) for row-major A (M × K, LDA entries per row), B (K × NC), D and
+/// Where a product finds A's entry (i, k): row-major with LDA entries per row, or at place[i·K + k]
+/// (a lane function's terms keep each lane value's entries side by side, looped_solve.py).
+template <int LDA>
+struct RowMajor {
+  RBDC_HOST_DEVICE int operator()(int i, int k) const noexcept { return i * LDA + k; }
+};
+
+template <int K>
+struct Placed {
+  const int* place;
+  RBDC_HOST_DEVICE int operator()(int i, int k) const noexcept { return place[i * K + k]; }
+};
+
+/// Which entries of a square A a product reads: all, or only its lower or upper triangle (the
+/// Delassus factor's halves D⁻¹L⁻¹ and L⁻ᵀ, whose other triangle is zero).
+enum class Triangle { none, lower, upper };
+
+/// C ← A B + Sign·D (Sign 0, −1 or 1) for A (M × K, its entries where `at` says), B (K × NC), D and
 /// C (M × NC; D may be C), rows i … i + H − 1 of C: each summed in a local array (no aliasing with B,
 /// so it stays in vector registers), one SIMD multiply-add per run of columns per entry of A; B's
 /// runs loaded once for the H rows (loads, not multiply-adds, bound a product with few runs a row).
-template <class Scalar, int K, int NC, int Sign, int LDA, int H>
-RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_row_block(int i, const Scalar* A, const Scalar* B, const Scalar* D,
-                                                               Scalar* C) noexcept {
+/// A triangular A's rows are read only over their triangle: the entries k all H rows have are summed
+/// together, the few of the corner where the rows differ row by row.
+template <class Scalar, int K, int NC, int Sign, int H, Triangle T, class At>
+RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_row_block(int i, const At& at, const Scalar* A, const Scalar* B,
+                                                               const Scalar* D, Scalar* C) noexcept {
   using R = ColumnRun<Scalar, NC>;
   constexpr int W = R::size;
   typename R::type row[H][NC / W];
@@ -241,10 +260,20 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_row_block(int i, const Scal
       const Scalar* d = D + (i + h) * NC + c * W;
       row[h][c] = Sign == 0 ? R::zero() : Sign < 0 ? -R::load(d) : R::load(d);
     }
-  for (int k = 0; k < K; ++k)
+  // Row i + h reads A's entries k in [i + h, K) (upper), [0, i + h + 1) (lower) or [0, K).
+  const int shared_begin = T == Triangle::upper ? i + H - 1 : 0;
+  const int shared_end = T == Triangle::lower ? i + 1 : K;
+  for (int k = shared_begin; k < shared_end; ++k)
     for (int c = 0; c < NC / W; ++c) {
       const typename R::type b = R::load(B + k * NC + c * W);
-      for (int h = 0; h < H; ++h) row[h][c] += A[(i + h) * LDA + k] * b;
+      for (int h = 0; h < H; ++h) row[h][c] += A[at(i + h, k)] * b;
+    }
+  if constexpr (T != Triangle::none)
+    for (int h = 0; h < H; ++h) {
+      const int begin = T == Triangle::upper ? i + h : shared_end;
+      const int end = T == Triangle::upper ? shared_begin : i + h + 1;
+      for (int k = begin; k < end; ++k)
+        for (int c = 0; c < NC / W; ++c) row[h][c] += A[at(i + h, k)] * R::load(B + k * NC + c * W);
     }
   for (int h = 0; h < H; ++h)
     for (int c = 0; c < NC / W; ++c) R::store(C + (i + h) * NC + c * W, row[h][c]);
@@ -254,38 +283,49 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_row_block(int i, const Scal
 /// beside B's runs, else one. 48 columns are 6 runs with AVX-512 (12 sums: two rows) but 12 with
 /// AVX2, whose 16 registers cannot hold 24 sums: one row at a time made the contact derivatives'
 /// loops 12 % faster there (3.16 → 2.79 µs, clang 14, x86-64-v3 build).
-template <class Scalar, int M, int K, int NC, int Sign, int LDA>
-RBDC_HOST_DEVICE inline void multiply_rows(const Scalar* A, const Scalar* B, const Scalar* D, Scalar* C) noexcept {
+template <class Scalar, int M, int K, int NC, int Sign, Triangle T = Triangle::none, class At>
+RBDC_HOST_DEVICE inline void multiply_rows(const At& at, const Scalar* A, const Scalar* B, const Scalar* D, Scalar* C) noexcept {
+  static_assert(T == Triangle::none || M == K, "a triangular A is square");
   constexpr int H = 2 * (NC / ColumnRun<Scalar, NC>::size) <= 12 ? 2 : 1;
   int i = 0;
-  for (; i + H <= M; i += H) multiply_row_block<Scalar, K, NC, Sign, LDA, H>(i, A, B, D, C);
-  for (; i < M; ++i) multiply_row_block<Scalar, K, NC, Sign, LDA, 1>(i, A, B, D, C);
+  for (; i + H <= M; i += H) multiply_row_block<Scalar, K, NC, Sign, H, T>(i, at, A, B, D, C);
+  for (; i < M; ++i) multiply_row_block<Scalar, K, NC, Sign, 1, T>(i, at, A, B, D, C);
 }
 
-/// C ← A B.
-template <class Scalar, int M, int K, int NC, int LDA = K>
+/// C ← A B (A's triangle T only).
+template <class Scalar, int M, int K, int NC, int LDA = K, Triangle T = Triangle::none>
 RBDC_HOST_DEVICE inline void multiply(const Scalar* A, const Scalar* B, Scalar* C) noexcept {
-  multiply_rows<Scalar, M, K, NC, 0, LDA>(A, B, C, C);
+  multiply_rows<Scalar, M, K, NC, 0, T>(RowMajor<LDA>{}, A, B, C, C);
 }
 
 /// C ← A B − C.
 template <class Scalar, int M, int K, int NC, int LDA = K>
 RBDC_HOST_DEVICE inline void multiply_minus(const Scalar* A, const Scalar* B, Scalar* C) noexcept {
-  multiply_rows<Scalar, M, K, NC, -1, LDA>(A, B, C, C);
+  multiply_rows<Scalar, M, K, NC, -1>(RowMajor<LDA>{}, A, B, C, C);
+}
+
+/// C ← A B − C, A's entry (i, k) at place[i·K + k].
+template <class Scalar, int M, int K, int NC>
+RBDC_HOST_DEVICE inline void multiply_minus_placed(const int (&place)[M * K], const Scalar* A, const Scalar* B,
+                                                   Scalar* C) noexcept {
+  multiply_rows<Scalar, M, K, NC, -1>(Placed<K>{place}, A, B, C, C);
 }
 
 /// C ← D + A B (C not B).
 template <class Scalar, int M, int K, int NC, int LDA = K>
 RBDC_HOST_DEVICE inline void multiply_add(const Scalar* A, const Scalar* B, const Scalar* D, Scalar* C) noexcept {
-  multiply_rows<Scalar, M, K, NC, 1, LDA>(A, B, D, C);
+  multiply_rows<Scalar, M, K, NC, 1>(RowMajor<LDA>{}, A, B, D, C);
 }
 
-/// The non-zeros of a row-major M × K matrix, a table the generator writes (looped_solve.py): row i's
-/// at columns column[e] for e in [first[i], first[i + 1]). NNZ ≥ 1 (one unused entry when none).
+/// The non-zeros of an M × K matrix, a table the generator writes (looped_solve.py): row i's at
+/// columns column[e], stored at entry[e] of the array, for e in [first[i], first[i + 1]) (row-major,
+/// or where a lane function's terms keep each lane value's entries side by side). NNZ ≥ 1 (one
+/// unused entry when none).
 template <int M, int NNZ>
 struct RowSparsity {
   int first[M + 1];
   int column[NNZ];
+  int entry[NNZ];
 };
 
 /// C ← A B − C as multiply_minus, reading only A's non-zeros (a contact row is zero off its foot's
@@ -300,7 +340,7 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_sparse_minus(const RowSpars
     for (int c = 0; c < NC / W; ++c) row[c] = -R::load(C + i * NC + c * W);
     for (int e = sparsity.first[i]; e < sparsity.first[i + 1]; ++e) {
       const int k = sparsity.column[e];
-      const Scalar a = A[i * K + k];
+      const Scalar a = A[sparsity.entry[e]];
       for (int c = 0; c < NC / W; ++c) row[c] += a * R::load(B + k * NC + c * W);
     }
     for (int c = 0; c < NC / W; ++c) R::store(C + i * NC + c * W, row[c]);
@@ -322,7 +362,7 @@ RBDC_HOST_DEVICE inline void proximal_step_sum(const Scalar* U, const Scalar* DL
   Scalar U_mu[N * P];
   for (int k = 0; k < N * P; ++k) U_mu[k] = mu * U[k];
   alignas(64) Scalar G[N * P];
-  multiply<Scalar, N, N, P, P>(U_mu, DL, G);  // μF⁻¹
+  multiply<Scalar, N, N, P, P, Triangle::upper>(U_mu, DL, G);  // μF⁻¹
   alignas(64) Scalar other[N * P];
   Scalar* next = (Steps - 1) % 2 == 0 ? other : V;  // the last product lands in V
   const Scalar* last = U;
@@ -402,6 +442,19 @@ RBDC_HOST_DEVICE inline void copy_columns(const Scalar* B, int first, int count,
 #pragma clang loop vectorize(disable)
 #endif
     for (int r = 0; r < NV; ++r) out[c * NV + r] = B[r * NC + first + c];
+}
+
+/// copy_columns for columns the loops keep elsewhere than in order: output column c from column[c].
+template <class Scalar, int NV, int NC, int N>
+RBDC_HOST_DEVICE inline void copy_column_list(const Scalar* B, const int (&column)[N], Scalar* out) noexcept {
+#if defined(__clang__)
+#pragma clang loop vectorize(disable)
+#endif
+  for (int c = 0; c < N; ++c)
+#if defined(__clang__)
+#pragma clang loop vectorize(disable)
+#endif
+    for (int r = 0; r < NV; ++r) out[c * NV + r] = B[r * NC + column[c]];
 }
 
 }  // namespace rbdc_gen

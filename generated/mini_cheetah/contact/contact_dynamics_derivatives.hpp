@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_578e3c21fcdf.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_142ec5030653.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_578e3c21fcdf.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_142ec5030653.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -29,12 +29,12 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param dlambda_dtau out 12x12: ∂λ/∂τ
 ///
 /// operations    mul    add  div  sqrt  trig   neg   total
-///             63880  61784   26     0    24  1625  127339
+///             59656  57560   26     0    24  1625  118891
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
-///   lanes, the solve's right-hand sides in SIMD across columns): 34711 arithmetic
-///   instructions (cost 42426), scalar tree 101209 (cost 238142), looped solve 49275 (cost
-///   77380)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_578e3c21fcdf::contact_dynamics_derivatives;
+///   lanes, the solve's right-hand sides in SIMD across columns): 32599 arithmetic
+///   instructions (cost 40314), scalar tree 101209 (cost 238142), looped solve 47163 (cost
+///   75268)
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_142ec5030653::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -20,7 +20,8 @@ A lane function (fn.lanes, views/limb_lanes.py) also declares `Lane = Lanes<Scal
 its lane inputs and constants as arrays `lane_v[…]`, `lane_c[…]` of make_lanes(…), loads the sin/cos
 of a lane angle from ex.LANES consecutive joint_trig entries, declares lane temporaries `const Lane`,
 reads lane k of a lane value as `t7[k]`, and writes each run of ex.LANES consecutive output entries
-with one vector store, `store_lanes(M + 8, make_lanes(…));`."""
+with one vector store, `store_lanes(M + 8, make_lanes(…));` (of the lane value itself where the run
+holds its lanes in order)."""
 
 from __future__ import annotations
 
@@ -213,6 +214,8 @@ def emit_body(fn, angle_names=None):
             arg_name, k, node = item[0]
             if len(item) == 1:
                 lines.append("%s[%d] = %s;" % (arg_name, k, text(node, False)))
+            elif _whole_lane_value(item):
+                lines.append("store_lanes(%s + %d, %s);" % (arg_name, k, text(node.args[0], False)))
             else:
                 lines.append("store_lanes(%s + %d, make_lanes(%s));"
                              % (arg_name, k, ", ".join(text(e[2], False) for e in item)))
@@ -226,6 +229,14 @@ def emit_body(fn, angle_names=None):
         lines.append("const %s %s = %s;" % ("Lane" if node.lane else "Scalar", name, text(node, False)))
         names[node.id] = name
     return lines
+
+
+def _whole_lane_value(entries):
+    """Whether a vector store's entries are lanes 0, 1, … of one lane value, in order: then it stores
+    that value itself."""
+    nodes = [node for _, _, node in entries]
+    return (all(n.op == "lane_get" and n.args[0] is nodes[0].args[0] for n in nodes)
+            and [n.value for n in nodes] == list(range(len(nodes))))
 
 
 def _store_units(fn):

@@ -344,6 +344,12 @@ def _columns_of(rows, n):
     return [[row[c] for row in rows] for c in range(n)]
 
 
+def contact_column_dofs(robot):
+    """Per block of contact_columns (q, v, τ) the dof of each column."""
+    joints = tuple(robot.joints[i].v_index for i in range(1, robot.nb))
+    return tuple(range(robot.nv)), tuple(range(robot.nv)), joints
+
+
 def contact_columns(robot, dq, dv, r2_q, r2_v):
     """The columns (r₁, r₂) of contact_dynamics_derivatives, q then v then τ (CONTACT_COLUMNS' order),
     from the forward-dynamics residual's derivatives dq, dv (rows) at placeholder a and f and r₂'s
@@ -409,14 +415,17 @@ def contact_dynamics_derivative_terms(m):
                                                 fd.packed_factor(L, parents), inv_diag))
 
 
-def contact_terms(r1_columns, r2_columns, damped, J, Minv_Jt, L, D_inv):
+def contact_terms(r1_columns, r2_columns, damped, J, Minv_Jt, L, D_inv, column_order=None):
     """The terms of contact_dynamics_derivatives' looped form, all row-major: `R1`, `R2`, the
     right-hand sides r₁ (nv rows) and r₂ (3nc rows) side by side, each row zero-padded to `padded`
     columns; `J`, the contact rows; `Minv_Jt`, M⁻¹Jᵀ (given as its columns); the damped Delassus
     matrix F = L D Lᵀ of `damped` (a DampedSolve) as F⁻¹'s two halves, `F_U` = L⁻ᵀ and `F_DL` =
     D⁻¹L⁻¹ (rows padded like R2's: the loop multiplies them), and `mu`, its damping (the loop forms
     the proximal steps' closed form from them; contact_dynamics' steps already trace L⁻¹); `L`,
-    `D_inv`, M's tree factor as in forward_dynamics_derivative_terms (L packed)."""
+    `D_inv`, M's tree factor as in forward_dynamics_derivative_terms (L packed). `column_order`: the
+    logical column at each place of R1 and R2 (limb_lanes.lane_column_order), else as given."""
+    if column_order is not None:
+        r1_columns, r2_columns = ([columns[c] for c in column_order] for columns in (r1_columns, r2_columns))
     nv = len(r1_columns[0])
     L_inv, D_inv_F = damped.lower_inverse, damped.factor[1]
     n = len(D_inv_F)

@@ -18,7 +18,8 @@ from ..algorithms import forward_dynamics as fd
 from ..algorithms.feet_motion_derivatives import feet_acceleration_derivatives
 from ..graph import expr as ex
 from ..graph import spatial as sp
-from ..views.limb_lanes import contact_lanes
+from ..views.limb_lanes import contact_lanes, lane_column_order
+from ..views.limbs import isomorphic_limbs
 
 
 def contact_dynamics_derivative_terms(m):
@@ -37,8 +38,13 @@ def contact_dynamics_derivative_terms(m):
     L, inv_diag = fd.mass_matrix_factor(m)
     terms = differentiate.contact_terms(r1_columns, r2_columns, system, system.full_J(m), system.full_Minv_Jt(m),
                                         fd.packed_factor(m.scatter_matrix(L), fd.dof_parents(full)),
-                                        m.scatter(inv_diag))
+                                        m.scatter(inv_diag), column_order(full))
     return differentiate.at_contact_solution(m, terms, delassus)
+
+
+def column_order(robot):
+    """The places of the terms' right-hand-side columns (limb_lanes.lane_column_order)."""
+    return lane_column_order(robot, isomorphic_limbs(robot), differentiate.contact_column_dofs(robot))
 
 
 def _contact_columns(m, lanes, tangents):

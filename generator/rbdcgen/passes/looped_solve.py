@@ -12,12 +12,13 @@ with the robot."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Optional, Tuple
 
 from ..algorithms.contact_dynamics import PROXIMAL_STEPS
+from ..graph import expr as ex
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
-from . import differentiate, looped_crba, looped_rnea_derivatives
+from . import differentiate, lane_contact_derivatives, looped_crba, looped_rnea_derivatives
 from .looped_rnea_derivatives import LoopedRneaDerivatives
 from .trace import Argument, with_loop
 
@@ -47,6 +48,23 @@ class LoopedSolve:
     terms: Tuple[Argument, ...]
     rnea: Optional[LoopedRneaDerivatives] = None
     factor: object = None
+    # per terms output whose entries a lane function keeps elsewhere than row-major (lane_places): where
+    # each row-major entry is (None: zero, not stored)
+    places: Tuple[Tuple[str, Tuple[Optional[int], ...]], ...] = ()
+
+    def placed(self, values):
+        """The terms' values {name: row-major entries} where `places` keeps them."""
+        placed = dict(values)
+        for name, place in self.places:
+            entries = [None] * len(values[name])
+            for logical, p in enumerate(place):
+                if p is not None:
+                    entries[p] = values[name][logical]
+            placed[name] = tuple(entries)
+        return placed
+
+    def _place(self, name, logical):
+        return dict(self.places)[name][logical] if name in dict(self.places) else logical
 
     def _parts(self):
         return [part for part in (self.factor, self.rnea) if part is not None]
@@ -128,21 +146,22 @@ class LoopedContactSolve(LoopedSolve):
     lambda_blocks: Tuple[Tuple[str, int], ...] = ()
     contact_rows: int = 0
     contact_columns: Tuple[Tuple[int, ...], ...] = ()  # per row of J, its non-zero columns
+    column_order: Tuple[int, ...] = ()  # the logical column at each place of R1 and R2 (empty: in order)
 
     def multiply_adds(self):
         n, m = self.nv, self.contact_rows
         nonzeros = sum(map(len, self.contact_columns))
-        return super().multiply_adds() + nonzeros + n * m + 2 * m * m
+        return super().multiply_adds() + nonzeros + n * m + _triangle(m) + m * m
 
     def _step_sum_columns(self):
         """V's rows are padded like the right-hand sides'."""
         return differentiate.padded(self.contact_rows)
 
     def _step_sum_multiply_adds(self):
-        """V, formed once per call: G = (μL⁻ᵀ)(D⁻¹L⁻¹), then PROXIMAL_STEPS − 1 products V ← L⁻ᵀ + G V,
-        all over V's padded columns."""
+        """V, formed once per call: G = (μL⁻ᵀ)(D⁻¹L⁻¹) over L⁻ᵀ's upper triangle, then PROXIMAL_STEPS − 1
+        products V ← L⁻ᵀ + G V, all over V's padded columns."""
         m, p = self.contact_rows, self._step_sum_columns()
-        return PROXIMAL_STEPS * m * m * p
+        return (_triangle(m) + (PROXIMAL_STEPS - 1) * m * m) * p
 
     def operations(self):
         """As the loops run them (checked by product/test_operation_counts.py): V's products start
@@ -161,20 +180,34 @@ class LoopedContactSolve(LoopedSolve):
     def loops(self):
         n, m, c, p = self.nv, self.contact_rows, self.columns, self._step_sum_columns()
         return (self._tree_solve("solve_R1")                                               # Y = M⁻¹R1
-                + [row_sparsity("J_sparsity", self.contact_columns),
+                + [row_sparsity("J_sparsity", self.contact_columns, lambda r, k: self._place("J", r * n + k)),
                    f"multiply_sparse_minus<Scalar, {m}, {n}, {c}>(J_sparsity, solve_J, solve_R1, solve_R2);",  # B = J Y − R2
                    f"alignas(64) Scalar solve_V[{m * p}];",
                    f"proximal_step_sum<Scalar, {m}, {p}, {PROXIMAL_STEPS}>(solve_F_U, solve_F_DL, solve_mu[0], solve_V);",
                    f"alignas(64) Scalar solve_DL_B[{m * c}];",
-                   f"multiply<Scalar, {m}, {m}, {c}, {p}>(solve_F_DL, solve_R2, solve_DL_B);",  # D⁻¹L⁻¹B
+                   f"multiply<Scalar, {m}, {m}, {c}, {p}, Triangle::lower>(solve_F_DL, solve_R2, solve_DL_B);",  # D⁻¹L⁻¹B
                    f"multiply<Scalar, {m}, {m}, {c}, {p}>(solve_V, solve_DL_B, solve_R2);",     # ∂λ in R2
-                   f"multiply_minus<Scalar, {n}, {m}, {c}>(solve_Minv_Jt, solve_R2, solve_R1);"]  # ∂a
-                + _copies(self.blocks, "solve_R1", n, c) + _copies(self.lambda_blocks, "solve_R2", m, c))
+                   self._minv_jt_product()]  # ∂a
+                + _copies(self.blocks, "solve_R1", n, c, self.column_order)
+                + _copies(self.lambda_blocks, "solve_R2", m, c, self.column_order))
+
+    def _minv_jt_product(self):
+        n, m, c = self.nv, self.contact_rows, self.columns
+        if "Minv_Jt" not in dict(self.places):
+            return f"multiply_minus<Scalar, {n}, {m}, {c}>(solve_Minv_Jt, solve_R2, solve_R1);"
+        places = ", ".join(str(self._place("Minv_Jt", e)) for e in range(n * m))
+        return f"multiply_minus_placed<Scalar, {n}, {m}, {c}>({{{places}}}, solve_Minv_Jt, solve_R2, solve_R1);"
 
     def emission(self, terms_name):
         return ("looped solve: %s writes the %d right-hand sides, the contact rows and the factors; loops "
                 "solve them all at once (M⁻¹, the Delassus system's proximal steps in closed form, M⁻¹Jᵀ), "
                 "one SIMD row update per entry" % (terms_name, self.width))
+
+
+def _triangle(m):
+    """The entries of an m × m triangle, diagonal included: a triangular factor's product reads only
+    those (rbdc_gen::Triangle)."""
+    return m * (m + 1) // 2
 
 
 def dof_tree(parents):
@@ -227,20 +260,55 @@ def _pairs_with_child(parents):
     return flags
 
 
-def row_sparsity(name, columns):
-    """The C++ declaration of the rbdc_gen::RowSparsity `name` of rows with non-zeros at `columns`."""
+def row_sparsity(name, columns, place):
+    """The C++ declaration of the rbdc_gen::RowSparsity `name` of rows with non-zeros at `columns`,
+    entry (r, k) stored at place(r, k)."""
     first = [0]
     for row in columns:
         first.append(first[-1] + len(row))
     flat = [k for row in columns for k in row] or [0]
-    return "const RowSparsity<%d, %d> %s{{%s}, {%s}};" % (
-        len(columns), len(flat), name, ", ".join(map(str, first)), ", ".join(map(str, flat)))
+    entries = [place(r, k) for r, row in enumerate(columns) for k in row] or [0]
+    return "const RowSparsity<%d, %d> %s{{%s}, {%s}, {%s}};" % (
+        len(columns), len(flat), name, ", ".join(map(str, first)), ", ".join(map(str, flat)),
+        ", ".join(map(str, entries)))
 
 
-def _copies(blocks, source, rows, columns):
+def lane_places(entries, stored=lambda e: True):
+    """Where a lane function's terms keep the `stored` entries of a matrix (row-major `entries`):
+    each lane value whose lanes all appear, lanes 0, 1, … side by side from a multiple of ex.LANES
+    (one vector store instead of a gather of lanes from several values: the Mini Cheetah's J and
+    M⁻¹Jᵀ were 71 such gathers, docs/performance.md), then the other entries in order. Returns per
+    entry its place, None where not stored."""
+    lanes = {}  # lane value id -> {lane: entry}
+    for index, e in enumerate(entries):
+        if e.op == "lane_get" and stored(e):
+            lanes.setdefault(e.args[0].id, {}).setdefault(e.value, index)
+    place = [None] * len(entries)
+    free = 0
+    for group in lanes.values():
+        if len(group) == ex.LANES:
+            for lane in range(ex.LANES):
+                place[group[lane]] = free + lane
+            free += ex.LANES
+    for index, e in enumerate(entries):
+        if place[index] is None and stored(e):
+            place[index] = free
+            free += 1
+    return tuple(place)
+
+
+def _copies(blocks, source, rows, columns, order=()):
+    """Each block's columns of the row-major `source` into its column-major output; with `order` (the
+    logical column at each place), from where the order put them."""
+    place = {logical: p for p, logical in enumerate(order)}
     body, first = [], 0
     for name, width in blocks:
-        body.append(f"copy_columns<Scalar, {rows}, {columns}>({source}, {first}, {width}, {name});")
+        places = [place.get(c, c) for c in range(first, first + width)]
+        if places == list(range(first, first + width)):
+            body.append(f"copy_columns<Scalar, {rows}, {columns}>({source}, {first}, {width}, {name});")
+        else:
+            body.append(f"copy_column_list<Scalar, {rows}, {columns}, {width}>({source}, "
+                        f"{{{', '.join(map(str, places))}}}, {name});")
         first += width
     return body
 
@@ -256,8 +324,9 @@ def looped_function(robot, scene, name, terms_name=None, rnea=False, factor=Fals
     function; with `rnea` LOOP_TERMS[name], with `factor` too TREE_TERMS[name]), with the loops as a
     LoopedSolve."""
     terms_name = TREE_TERMS[name] if factor else LOOP_TERMS[name] if rnea else terms_name or TERMS[name]
-    return with_loop(robot, scene, name, terms_name,
-                     lambda terms, outputs: _solve(robot, scene, name, terms, outputs, rnea or factor, factor))
+    function = with_loop(robot, scene, name, terms_name,
+                         lambda terms, outputs: _solve(robot, scene, name, terms, outputs, rnea or factor, factor))
+    return replace(function, values=function.solve.placed(function.values))
 
 
 def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
@@ -271,8 +340,13 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
         m = 3 * len(scene.contacts_for(robot))
         J = terms.values["J"]  # row-major
         columns = tuple(tuple(k for k in range(robot.nv) if not J[r * robot.nv + k].is_const(0.0)) for r in range(m))
+        lanes = terms.lanes is not None
+        order = lane_contact_derivatives.column_order(robot) if lanes else ()
+        places = ((("J", lane_places(J, lambda e: not e.is_const(0.0))),
+                   ("Minv_Jt", lane_places(terms.values["Minv_Jt"]))) if lanes else ())
         solve = LoopedContactSolve(parents=parents, blocks=blocks, terms=terms.outputs,
-                                   lambda_blocks=lambda_blocks, contact_rows=m, contact_columns=columns)
+                                   lambda_blocks=lambda_blocks, contact_rows=m, contact_columns=columns,
+                                   column_order=order, places=places)
     else:
         blocks = tuple((arg.name, arg.cols) for arg in outputs if arg.cols)
         from .looped_factor import LoopedFactor  # it imports this module's loops' header

@@ -266,6 +266,24 @@ class LaneModel(TracedModel):
         return full
 
 
+def lane_column_order(robot, limbs, column_dofs):
+    """Where the looped solve keeps right-hand-side columns (the logical column at each place) so
+    that lane function terms store whole lane values: `column_dofs` per block (q, v, τ, ...) the dof
+    of each column. Each block's limb columns come first, one limb dof at a time in lane order (limb
+    k's at k: a trunk row's derivatives along the four limbs are one lane value), every block's other
+    columns after them; the blocks' limb columns are multiples of ex.LANES, so every lane group starts
+    a vector run. Without it, the Mini Cheetah's contact terms gathered 114 of their 216 stores of r₁
+    from lanes of different values (docs/performance.md)."""
+    place = {robot.joints[body].v_index: (l, k) for k, limb in enumerate(limbs) for l, body in enumerate(limb)}
+    limb_part, other_part, first = [], [], 0
+    for dofs in column_dofs:
+        columns = range(first, first + len(dofs))
+        limb_part += sorted((c for c in columns if dofs[c - first] in place), key=lambda c: place[dofs[c - first]])
+        other_part += [c for c in columns if dofs[c - first] not in place]
+        first += len(dofs)
+    return tuple(limb_part + other_part)
+
+
 def feet_shape(robot_name, kept, limbs):
     """Per limb the indices of the kept feet on it, and the limb bodies they sit on (the same on
     every limb, else LimbError)."""
