@@ -429,32 +429,45 @@ RBDC_HOST_DEVICE inline void unpack_factor(const int (&parent)[NV], const Scalar
   }
 }
 
-/// Columns first … first + count − 1 of the row-major NV × NC matrix B, column-major into out. Scalar
-/// moves: clang 14 vectorised this transposing copy with AVX-512 gathers and scatters, twice as slow
-/// (48 columns of 18 rows: 272 against 136 ns on an AMD EPYC; g++ 12 keeps it scalar).
+/// The row-major NV × NC right-hand sides B into their column-major outputs: column p's NV rows go to
+/// out[p] (nullptr: a padding column). For double in vector runs two rows at a time: unpacking their
+/// runs puts each column's two entries side by side, one 16-byte store for both. One entry at a time,
+/// these copies were 12 % of the Mini Cheetah's contact derivatives (docs/performance.md); clang 14
+/// vectorised that plain loop with AVX-512 gathers and scatters, twice as slow again.
 template <class Scalar, int NV, int NC>
-RBDC_HOST_DEVICE inline void copy_columns(const Scalar* B, int first, int count, Scalar* out) noexcept {
-#if defined(__clang__)
-#pragma clang loop vectorize(disable)
+RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void copy_out_columns(const Scalar* B, Scalar* const (&out)[NC]) noexcept {
+  int r = 0;
+#if defined(__GNUC__) && !defined(__CUDACC__) && (defined(__clang__) || __GNUC__ >= 12)  // __builtin_shufflevector
+  using R = ColumnRun<Scalar, NC>;
+  constexpr int W = R::size;
+  if constexpr (sizeof(Scalar) == 8 && (W == 2 || W == 4 || W == 8)) {
+    Scalar unused[2];
+    for (; r + 2 <= NV; r += 2)
+      for (int c = 0; c < NC; c += W) {
+        const typename R::type x = R::load(B + r * NC + c), y = R::load(B + (r + 1) * NC + c);
+        typename R::type even, odd;  // (x, y) of columns c, c + 2, … and of c + 1, c + 3, …
+        if constexpr (W == 8) {
+          even = __builtin_shufflevector(x, y, 0, 8, 2, 10, 4, 12, 6, 14);
+          odd = __builtin_shufflevector(x, y, 1, 9, 3, 11, 5, 13, 7, 15);
+        } else if constexpr (W == 4) {
+          even = __builtin_shufflevector(x, y, 0, 4, 2, 6);
+          odd = __builtin_shufflevector(x, y, 1, 5, 3, 7);
+        } else {
+          even = __builtin_shufflevector(x, y, 0, 2);
+          odd = __builtin_shufflevector(x, y, 1, 3);
+        }
+        for (int k = 0; k < W / 2; ++k) {
+          Scalar* to_even = out[c + 2 * k] ? out[c + 2 * k] + r : unused;
+          Scalar* to_odd = out[c + 2 * k + 1] ? out[c + 2 * k + 1] + r : unused;
+          std::memcpy(to_even, reinterpret_cast<const Scalar*>(&even) + 2 * k, 2 * sizeof(Scalar));
+          std::memcpy(to_odd, reinterpret_cast<const Scalar*>(&odd) + 2 * k, 2 * sizeof(Scalar));
+        }
+      }
+  }
 #endif
-  for (int c = 0; c < count; ++c)
-#if defined(__clang__)
-#pragma clang loop vectorize(disable)
-#endif
-    for (int r = 0; r < NV; ++r) out[c * NV + r] = B[r * NC + first + c];
-}
-
-/// copy_columns for columns the loops keep elsewhere than in order: output column c from column[c].
-template <class Scalar, int NV, int NC, int N>
-RBDC_HOST_DEVICE inline void copy_column_list(const Scalar* B, const int (&column)[N], Scalar* out) noexcept {
-#if defined(__clang__)
-#pragma clang loop vectorize(disable)
-#endif
-  for (int c = 0; c < N; ++c)
-#if defined(__clang__)
-#pragma clang loop vectorize(disable)
-#endif
-    for (int r = 0; r < NV; ++r) out[c * NV + r] = B[r * NC + column[c]];
+  for (; r < NV; ++r)
+    for (int c = 0; c < NC; ++c)
+      if (out[c] != nullptr) out[c][r] = B[r * NC + c];
 }
 
 }  // namespace rbdc_gen

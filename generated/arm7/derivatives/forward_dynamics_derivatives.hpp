@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_406469955bc4.hpp
+//   arm7/common/forward_dynamics_derivatives_7eff0b275d4e.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_406469955bc4.hpp"
+#include "arm7/common/forward_dynamics_derivatives_7eff0b275d4e.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -32,7 +32,7 @@ namespace rbdc_gen::arm7::derivatives {
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4993 arithmetic
 ///   instructions (cost 6459), scalar tree 6236 (cost 10206), looped RNEA derivatives 6391
 ///   (cost 8007), looped CRBA 8531 (cost 11288)
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_406469955bc4::forward_dynamics_derivatives;
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_7eff0b275d4e::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

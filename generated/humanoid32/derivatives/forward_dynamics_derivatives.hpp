@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_2b63d9bfbc40.hpp
+//   humanoid32/common/forward_dynamics_derivatives_0071ecfd4d60.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_2b63d9bfbc40.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_0071ecfd4d60.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -32,7 +32,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
 ///   82092 arithmetic instructions (cost 108923), scalar tree 131228 (cost 310187), looped
 ///   solve 80616 (cost 126805), looped CRBA 92298 (cost 130478)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_2b63d9bfbc40::forward_dynamics_derivatives;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_0071ecfd4d60::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_142ec5030653.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_5deb6eaacf56.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_142ec5030653.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_5deb6eaacf56.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -34,7 +34,7 @@ namespace rbdc_gen::mini_cheetah::contact {
 ///   lanes, the solve's right-hand sides in SIMD across columns): 32599 arithmetic
 ///   instructions (cost 40314), scalar tree 101209 (cost 238142), looped solve 47163 (cost
 ///   75268)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_142ec5030653::contact_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_5deb6eaacf56::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

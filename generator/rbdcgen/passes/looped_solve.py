@@ -298,19 +298,19 @@ def lane_places(entries, stored=lambda e: True):
 
 
 def _copies(blocks, source, rows, columns, order=()):
-    """Each block's columns of the row-major `source` into its column-major output; with `order` (the
-    logical column at each place), from where the order put them."""
-    place = {logical: p for p, logical in enumerate(order)}
-    body, first = [], 0
+    """Each block's columns of the row-major `source` into its column-major output (copy_out_columns:
+    per column of `source` where its rows go); with `order` (the logical column at each place), from
+    where the order put them."""
+    logical = list(order) + list(range(len(order), columns))
+    destination = {}
+    first = 0
     for name, width in blocks:
-        places = [place.get(c, c) for c in range(first, first + width)]
-        if places == list(range(first, first + width)):
-            body.append(f"copy_columns<Scalar, {rows}, {columns}>({source}, {first}, {width}, {name});")
-        else:
-            body.append(f"copy_column_list<Scalar, {rows}, {columns}, {width}>({source}, "
-                        f"{{{', '.join(map(str, places))}}}, {name});")
+        for c in range(width):
+            destination[first + c] = f"{name} + {rows * c}"
         first += width
-    return body
+    table = f"{source}_out"
+    return [f"Scalar* const {table}[{columns}] = {{{', '.join(destination.get(c, 'nullptr') for c in logical)}}};",
+            f"copy_out_columns<Scalar, {rows}, {columns}>({source}, {table});"]
 
 
 def has_looped_form(robot, name):

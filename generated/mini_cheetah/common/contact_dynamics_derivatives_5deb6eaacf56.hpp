@@ -12,7 +12,7 @@
 #include "rbdc_gen/lanes.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_142ec5030653 {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_5deb6eaacf56 {
 
 /// The traced part of contact_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -2647,12 +2647,10 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives(const Scalar* q, const
   multiply<Scalar, 12, 12, 48, 16, Triangle::lower>(solve_F_DL, solve_R2, solve_DL_B);
   multiply<Scalar, 12, 12, 48, 16>(solve_V, solve_DL_B, solve_R2);
   multiply_minus_placed<Scalar, 18, 12, 48>({0, 4, 8, 1, 5, 9, 2, 6, 10, 3, 7, 11, 12, 16, 20, 13, 17, 21, 14, 18, 22, 15, 19, 23, 24, 28, 32, 25, 29, 33, 26, 30, 34, 27, 31, 35, 36, 40, 44, 37, 41, 45, 38, 42, 46, 39, 43, 47, 48, 52, 56, 49, 53, 57, 50, 54, 58, 51, 55, 59, 60, 64, 68, 61, 65, 69, 62, 66, 70, 63, 67, 71, 72, 76, 80, 84, 88, 92, 96, 100, 104, 108, 112, 116, 120, 124, 128, 132, 136, 140, 144, 148, 152, 156, 160, 164, 168, 172, 176, 180, 184, 188, 192, 196, 200, 204, 208, 212, 73, 77, 81, 85, 89, 93, 97, 101, 105, 109, 113, 117, 121, 125, 129, 133, 137, 141, 145, 149, 153, 157, 161, 165, 169, 173, 177, 181, 185, 189, 193, 197, 201, 205, 209, 213, 74, 78, 82, 86, 90, 94, 98, 102, 106, 110, 114, 118, 122, 126, 130, 134, 138, 142, 146, 150, 154, 158, 162, 166, 170, 174, 178, 182, 186, 190, 194, 198, 202, 206, 210, 214, 75, 79, 83, 87, 91, 95, 99, 103, 107, 111, 115, 119, 123, 127, 131, 135, 139, 143, 147, 151, 155, 159, 163, 167, 171, 175, 179, 183, 187, 191, 195, 199, 203, 207, 211, 215}, solve_Minv_Jt, solve_R2, solve_R1);
-  copy_column_list<Scalar, 18, 48, 18>(solve_R1, {36, 37, 38, 39, 40, 41, 0, 4, 8, 1, 5, 9, 2, 6, 10, 3, 7, 11}, da_dq);
-  copy_column_list<Scalar, 18, 48, 18>(solve_R1, {42, 43, 44, 45, 46, 47, 12, 16, 20, 13, 17, 21, 14, 18, 22, 15, 19, 23}, da_dv);
-  copy_column_list<Scalar, 18, 48, 12>(solve_R1, {24, 28, 32, 25, 29, 33, 26, 30, 34, 27, 31, 35}, da_dtau);
-  copy_column_list<Scalar, 12, 48, 18>(solve_R2, {36, 37, 38, 39, 40, 41, 0, 4, 8, 1, 5, 9, 2, 6, 10, 3, 7, 11}, dlambda_dq);
-  copy_column_list<Scalar, 12, 48, 18>(solve_R2, {42, 43, 44, 45, 46, 47, 12, 16, 20, 13, 17, 21, 14, 18, 22, 15, 19, 23}, dlambda_dv);
-  copy_column_list<Scalar, 12, 48, 12>(solve_R2, {24, 28, 32, 25, 29, 33, 26, 30, 34, 27, 31, 35}, dlambda_dtau);
+  Scalar* const solve_R1_out[48] = {da_dq + 108, da_dq + 162, da_dq + 216, da_dq + 270, da_dq + 126, da_dq + 180, da_dq + 234, da_dq + 288, da_dq + 144, da_dq + 198, da_dq + 252, da_dq + 306, da_dv + 108, da_dv + 162, da_dv + 216, da_dv + 270, da_dv + 126, da_dv + 180, da_dv + 234, da_dv + 288, da_dv + 144, da_dv + 198, da_dv + 252, da_dv + 306, da_dtau + 0, da_dtau + 54, da_dtau + 108, da_dtau + 162, da_dtau + 18, da_dtau + 72, da_dtau + 126, da_dtau + 180, da_dtau + 36, da_dtau + 90, da_dtau + 144, da_dtau + 198, da_dq + 0, da_dq + 18, da_dq + 36, da_dq + 54, da_dq + 72, da_dq + 90, da_dv + 0, da_dv + 18, da_dv + 36, da_dv + 54, da_dv + 72, da_dv + 90};
+  copy_out_columns<Scalar, 18, 48>(solve_R1, solve_R1_out);
+  Scalar* const solve_R2_out[48] = {dlambda_dq + 72, dlambda_dq + 108, dlambda_dq + 144, dlambda_dq + 180, dlambda_dq + 84, dlambda_dq + 120, dlambda_dq + 156, dlambda_dq + 192, dlambda_dq + 96, dlambda_dq + 132, dlambda_dq + 168, dlambda_dq + 204, dlambda_dv + 72, dlambda_dv + 108, dlambda_dv + 144, dlambda_dv + 180, dlambda_dv + 84, dlambda_dv + 120, dlambda_dv + 156, dlambda_dv + 192, dlambda_dv + 96, dlambda_dv + 132, dlambda_dv + 168, dlambda_dv + 204, dlambda_dtau + 0, dlambda_dtau + 36, dlambda_dtau + 72, dlambda_dtau + 108, dlambda_dtau + 12, dlambda_dtau + 48, dlambda_dtau + 84, dlambda_dtau + 120, dlambda_dtau + 24, dlambda_dtau + 60, dlambda_dtau + 96, dlambda_dtau + 132, dlambda_dq + 0, dlambda_dq + 12, dlambda_dq + 24, dlambda_dq + 36, dlambda_dq + 48, dlambda_dq + 60, dlambda_dv + 0, dlambda_dv + 12, dlambda_dv + 24, dlambda_dv + 36, dlambda_dv + 48, dlambda_dv + 60};
+  copy_out_columns<Scalar, 12, 48>(solve_R2, solve_R2_out);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_142ec5030653
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_5deb6eaacf56
