@@ -7,11 +7,11 @@
 // forward_dynamics for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   humanoid32/common/forward_dynamics_42e5b5deaf8b.hpp
+//   humanoid32/common/forward_dynamics_57013ecc5c90.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_42e5b5deaf8b.hpp"
+#include "humanoid32/common/forward_dynamics_57013ecc5c90.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -25,10 +25,10 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param a out 38x1: acceleration
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             6743  5167   33     0    64    1  12008
+///             6708  5167   33     0    64    1  11973
 /// schedule: articulated-body algorithm (O(n); the scalar tree is CRBA + the sparse LᵀDL factor):
-///   12008 arithmetic instructions (cost 24059), scalar tree 13701 (cost 28122)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_42e5b5deaf8b::forward_dynamics;
+///   11973 arithmetic instructions (cost 23975), scalar tree 13701 (cost 28122)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_57013ecc5c90::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

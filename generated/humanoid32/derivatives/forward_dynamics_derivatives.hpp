@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_0071ecfd4d60.hpp
+//   humanoid32/common/forward_dynamics_derivatives_1a81992aac9d.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_0071ecfd4d60.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_1a81992aac9d.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -31,8 +31,8 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///             132430  122994   33     0    64   52  255573
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
 ///   82092 arithmetic instructions (cost 108923), scalar tree 131228 (cost 310187), looped
-///   solve 80616 (cost 126805), looped CRBA 92298 (cost 130478)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_0071ecfd4d60::forward_dynamics_derivatives;
+///   solve 80616 (cost 126805), looped CRBA 92263 (cost 130394)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_1a81992aac9d::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // contact_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics is the same code:
-//   mini_cheetah/common/contact_dynamics_92d37a5cca0b.hpp
+//   mini_cheetah/common/contact_dynamics_af290cbdb1f0.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_92d37a5cca0b.hpp"
+#include "mini_cheetah/common/contact_dynamics_af290cbdb1f0.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -25,10 +25,10 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param lambda out 12x1: contact forces on the feet, world; rows 3k + r: contact k (the scene's contacts in the robot's foot order), world axis r
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             5727  4708   26     0    24   80  10565
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 5240 arithmetic
-///   instructions (cost 7816), scalar tree 10140 (cost 19576)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_92d37a5cca0b::contact_dynamics;
+///             5441  4708   26     0    24   80  10279
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4954 arithmetic
+///   instructions (cost 7130), scalar tree 9854 (cost 18890)
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_af290cbdb1f0::contact_dynamics;
 
 /// contact_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -38,20 +38,23 @@ def contact_rows(m, feet_rows):
 
 def dense_ldlt(A):
     """A = L D Lᵀ of a symmetric positive definite matrix (rows), L unit lower triangular: (L,
-    inverse pivots). Dense: the contact block has no tree sparsity to exploit."""
+    inverse pivots). Dense: the contact block has no tree sparsity to exploit. Each entry's sum reads
+    the other row's entries before their division by the pivot (LD = L·D): one multiplication per
+    term instead of two (the Mini Cheetah's 12 × 12: 286 fewer)."""
     n = len(A)
     L = [[None] * n for _ in range(n)]
-    d, inv_d = [None] * n, [None] * n
+    LD = [[None] * n for _ in range(n)]
+    inv_d = [None] * n
     for j in range(n):
         pivot = A[j][j]
         for k in range(j):
-            pivot = pivot - L[j][k] * L[j][k] * d[k]
-        d[j], inv_d[j] = pivot, ex.const(1.0) / pivot
+            pivot = pivot - L[j][k] * LD[j][k]
+        inv_d[j] = ex.const(1.0) / pivot
         for i in range(j + 1, n):
             x = A[i][j]
             for k in range(j):
-                x = x - L[i][k] * L[j][k] * d[k]
-            L[i][j] = x * inv_d[j]
+                x = x - L[i][k] * LD[j][k]
+            LD[i][j], L[i][j] = x, x * inv_d[j]
     return L, inv_d
 
 

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_d967a7f8dc13 {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_9fd3b84b7ee2 {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
 /// algorithm where that is cheaper: the schedule line says which).
@@ -25,8 +25,8 @@ namespace rbdc_gen::mini_cheetah::common::forward_dynamics_d967a7f8dc13 {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2272  1854   14     0    24   81   4245
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1425 arithmetic
-///   instructions, scalar tree 4123 (cost 5135), articulated-body algorithm 4511 (cost
-///   6066)
+///   instructions, scalar tree 4123 (cost 5135), articulated-body algorithm 4476 (cost
+///   5982)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -401,4 +401,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[17] = t305[3];
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_d967a7f8dc13
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_9fd3b84b7ee2

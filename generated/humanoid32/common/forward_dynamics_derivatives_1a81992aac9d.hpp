@@ -13,7 +13,7 @@
 #include "rbdc_gen/body_tree.hpp"
 #include "rbdc_gen/rnea_derivatives.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_0071ecfd4d60 {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_1a81992aac9d {
 
 /// Block 0 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
@@ -15941,7 +15941,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 ///             132430  122994   33     0    64   52  255573
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
 ///   82092 arithmetic instructions (cost 108923), scalar tree 131228 (cost 310187), looped
-///   solve 80616 (cost 126805), looped CRBA 92298 (cost 130478)
+///   solve 80616 (cost 126805), looped CRBA 92263 (cost 130394)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 123 right-hand sides and
 ///   the factor, rnea_derivatives_loop subtracts ∂τ/∂(q, v) over the table (the RNEA's
 ///   derivatives as a loop), ltdl_solve_columns solves them all at once, one SIMD row
@@ -15964,4 +15964,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 38, 128>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_0071ecfd4d60
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_1a81992aac9d
