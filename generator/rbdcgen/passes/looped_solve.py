@@ -16,8 +16,8 @@ from dataclasses import dataclass, replace
 from typing import Optional, Tuple
 
 from ..algorithms.contact_dynamics import PROXIMAL_STEPS
-from ..graph import expr as ex
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
+from ..graph import expr as ex
 from . import differentiate, lane_contact_derivatives, looped_crba, looped_rnea_derivatives
 from .looped_rnea_derivatives import LoopedRneaDerivatives
 from .trace import Argument, with_loop
@@ -64,7 +64,9 @@ class LoopedSolve:
         return placed
 
     def _place(self, name, logical):
-        return dict(self.places)[name][logical] if name in dict(self.places) else logical
+        """Where `places` keeps entry `logical` of terms output `name` (row-major if not listed)."""
+        place = dict(self.places).get(name)
+        return logical if place is None else place[logical]
 
     def _parts(self):
         return [part for part in (self.factor, self.rnea) if part is not None]

@@ -49,7 +49,6 @@ class LaneConstants(unittest.TestCase):
 LANE_FRAMES = ("RF_foot", "trunk", "LH_hip", "LF_foot", "RF_hip", "RH_foot", "LF_hip", "LH_foot", "RH_hip")
 
 
-@unittest.skipIf(mini_cheetah.skip_reason(), mini_cheetah.skip_reason())
 def _in_lane_column_order(robot, terms):
     """The scalar contact terms' right-hand sides R1, R2 (row-major) with their columns where the lane
     terms keep them (limb_lanes.lane_column_order)."""
@@ -63,6 +62,7 @@ def _in_lane_column_order(robot, terms):
     return placed
 
 
+@unittest.skipIf(mini_cheetah.skip_reason(), mini_cheetah.skip_reason())
 class MiniCheetahLanes(unittest.TestCase):
     def test_limbs(self):
         robot = mini_cheetah.load()
