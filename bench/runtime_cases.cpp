@@ -70,7 +70,8 @@ void provide() {
       const State& s = state(c, k);
       rbdc::forward_dynamics(c.model, c.data, s.q, s.v, s.tau, s.f);
     });
-    if (!loaded.model.floating_base) return;  // no trunk task
+    // No trunk task on a fixed base; the OSC recursions refuse mimic couplings.
+    if (!loaded.model.floating_base || !loaded.model.couplings.empty()) return;
     add("osc_open_chain", [](void* p, int k) {
       RuntimeContext& c = context(p);
       rbdc::osc_open_chain(c.model, c.data, state(c, k).q, state(c, k).v, state(c, k).f);

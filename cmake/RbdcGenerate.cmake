@@ -1,5 +1,5 @@
 # rbdc_generate(TARGET name URDF file [SCENE file] [TOPOLOGY file] [NAME robot]
-#               [FIXED_BASE | FLOATING_BASE] [LOCK_MIMIC])
+#               [FIXED_BASE | FLOATING_BASE] [LOCK_MIMIC | INDEPENDENT_MIMIC])
 #
 # Generates the robot's C++ headers at build time into ${CMAKE_CURRENT_BINARY_DIR}/rbdc/<name> and
 # creates the INTERFACE target `name` whose include root is that directory (portable code unless the
@@ -12,7 +12,7 @@
 # listed at configure time (rbdc generate --list-outputs); in-tree rbdc-model is not built yet at
 # configure time, so the generation runs after it and only the stamp file is a declared output.
 function(rbdc_generate)
-  cmake_parse_arguments(PARSE_ARGV 0 ARG "FIXED_BASE;FLOATING_BASE;LOCK_MIMIC" "TARGET;URDF;SCENE;TOPOLOGY;NAME" "")
+  cmake_parse_arguments(PARSE_ARGV 0 ARG "FIXED_BASE;FLOATING_BASE;LOCK_MIMIC;INDEPENDENT_MIMIC" "TARGET;URDF;SCENE;TOPOLOGY;NAME" "")
   if(NOT ARG_TARGET OR NOT ARG_URDF)
     message(FATAL_ERROR "rbdc_generate: TARGET and URDF are required")
   endif()
@@ -47,6 +47,8 @@ function(rbdc_generate)
   endif()
   if(ARG_LOCK_MIMIC)
     list(APPEND arguments --lock-mimic)
+  elseif(ARG_INDEPENDENT_MIMIC)
+    list(APPEND arguments --independent-mimic)
   endif()
 
   set(launcher "${RBDC_LAUNCHER}")

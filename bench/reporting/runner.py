@@ -29,12 +29,12 @@ def run(command, log=None, env=None, cwd=ROOT):
         sys.exit(f"bench/report: failed ({result.returncode}): {' '.join(str(c) for c in command)}")
 
 
-def build(build_dir, compiler, march, targets, jobs):
-    """Configures a Release build (tests off) and builds the targets."""
+def build(build_dir, compiler, march, targets, jobs, options=()):
+    """Configures a Release build (tests off, and the extra CMake `options`) and builds the targets."""
     c_compiler, cxx_compiler = COMPILERS[compiler]
     build_dir.mkdir(parents=True, exist_ok=True)
     options = [f"-DCMAKE_C_COMPILER={c_compiler}", f"-DCMAKE_CXX_COMPILER={cxx_compiler}",
-               "-DCMAKE_BUILD_TYPE=Release", "-DRBDC_BUILD_TESTS=OFF"]
+               "-DCMAKE_BUILD_TYPE=Release", "-DRBDC_BUILD_TESTS=OFF"] + list(options)
     options += ["-DRBDC_NATIVE=ON"] if march == "native" else \
         ["-DRBDC_NATIVE=OFF", f"-DCMAKE_CXX_FLAGS=-march={march}"]
     run(["cmake", "-S", ROOT, "-B", build_dir] + options, log=build_dir / "report-configure.log")
@@ -71,12 +71,14 @@ def bench_statistics(results, statistic):
 
 
 def flop_counts(build_dir, scene=None, robots=None):
-    """{robot: {function: {"generated": total, "generic": total}}} from `rbdc flops --json`."""
+    """{robot: {function: {"generated": total, "generic": total}}} from `rbdc flops --json`, for
+    `robots` ({name: (URDF path, base)}; default: the bundled robots)."""
     counts = {}
     env = dict(os.environ, RBDC_BUILD_DIR=str(build_dir))
-    for robot, base in ROBOTS.items():
-        urdf = ROOT / "robots" / f"{robot}.urdf"
-        if not urdf.exists() or (robots and robot not in robots):
+    if robots is None:
+        robots = {robot: (ROOT / "robots" / f"{robot}.urdf", base) for robot, base in ROBOTS.items()}
+    for robot, (urdf, base) in robots.items():
+        if not urdf.exists():
             continue
         scene_args = ["--scene", ROOT / "scenes" / f"{scene}.yaml"] if scene else []
         result = subprocess.run([ROOT / "rbdc", "flops", urdf, f"--{base}-base", "--json"] + scene_args,

@@ -45,6 +45,46 @@ struct SubtractedFromColumns {
   }
 };
 
+/// DenseDerivatives whose entries are summed into (after clear()): the target of a Projected writer,
+/// where several of the tree's entries meet in one.
+template <class Scalar, int NV>
+struct SummedDerivatives {
+  Scalar* dq;
+  Scalar* dv;
+  RBDC_HOST_DEVICE void clear() const noexcept { DenseDerivatives<Scalar, NV>{dq, dv}.clear(); }
+  RBDC_HOST_DEVICE void q(int row, int col, const Scalar& value) const noexcept {
+    dq[col * NV + row] = dq[col * NV + row] + value;
+  }
+  RBDC_HOST_DEVICE void v(int row, int col, const Scalar& value) const noexcept {
+    dv[col * NV + row] = dv[col * NV + row] + value;
+  }
+};
+
+/// A mimic-coupled robot's derivatives (docs/model.md, "Mimic joints"): the loop runs on its tree of NT
+/// dofs, and each entry (i, j) it writes goes to Out, which sums, at (column[i], column[j]) times
+/// weight[i]·weight[j]: Gᵀ X G, G having one entry per tree dof i, weight[i] at column[i].
+template <class Scalar, int NT, class Out>
+struct Projected {
+  const int* column;
+  const double* weight;
+  Out out;
+  RBDC_HOST_DEVICE void clear() const noexcept { out.clear(); }
+  RBDC_HOST_DEVICE void q(int row, int col, const Scalar& value) const noexcept {
+    out.q(column[row], column[col], Scalar(weight[row] * weight[col]) * value);
+  }
+  RBDC_HOST_DEVICE void v(int row, int col, const Scalar& value) const noexcept {
+    out.v(column[row], column[col], Scalar(weight[row] * weight[col]) * value);
+  }
+};
+
+/// A coupled robot's tree velocity or acceleration from its independent one: x_tree = G x, tree dof i
+/// weight[i] · x[column[i]].
+template <class Scalar, int NT>
+RBDC_HOST_DEVICE inline void expand_coordinates(const int (&column)[NT], const double (&weight)[NT], const Scalar* x,
+                                                Scalar* out) noexcept {
+  for (int i = 0; i < NT; ++i) out[i] = Scalar(weight[i]) * x[column[i]];
+}
+
 namespace rnea_derivatives_detail {
 
 /// İ = v ×* I − I v× of inertia c (about the coordinates' origin) moving with twist v = (ω, υ)

@@ -13,6 +13,7 @@ std::vector<BenchRobot> bench_robots(const std::string& source_dir) {
     const char* urdf;
     const char* topology;
     bool floating_base;
+    bool independent_mimic;
   };
   static const Entry entries[] = {
 #include "rbdc_bench/bundled_robots.inc"
@@ -20,7 +21,7 @@ std::vector<BenchRobot> bench_robots(const std::string& source_dir) {
   std::vector<BenchRobot> robots;
   for (const Entry& e : entries) {
     const std::string topology = *e.topology ? source_dir + "/" + e.topology : "";
-    robots.push_back({e.name, source_dir + "/" + e.urdf, topology, e.floating_base});
+    robots.push_back({e.name, source_dir + "/" + e.urdf, topology, e.floating_base, e.independent_mimic});
   }
   return robots;
 }
@@ -35,6 +36,7 @@ rbdc::Model load_bench_robot(const BenchRobot& robot) {
   rbdc::UrdfOptions options;
   options.floating_base = robot.floating_base;
   options.topology_file = robot.topology;
+  if (robot.independent_mimic) options.mimic = rbdc::MimicMode::Independent;
   return rbdc::load_urdf(robot.urdf, options);
 }
 

@@ -6,13 +6,17 @@ from __future__ import annotations
 
 from ..graph import expr as ex
 from ..graph import spatial as sp
+from ..views import coupled
 from .crba import mass_matrix
 from .rnea import bias, bias_minus_external
 
 
 def dof_parents(robot):
     """λ over degrees of freedom: the six trunk dofs form a chain (their block is dense), each joint
-    dof hangs from the last dof of its parent body."""
+    dof hangs from the last dof of its parent body; a coupled robot's over its independent dofs
+    (views/coupled.py)."""
+    if robot.couplings:
+        return coupled.dof_parents(robot, dof_parents(coupled.tree_view(robot)))
     parents = []
     if robot.floating_base:
         parents = [-1, 0, 1, 2, 3, 4]

@@ -260,7 +260,7 @@ def padded(columns):
     return -(-columns // ROW_ALIGNMENT) * ROW_ALIGNMENT
 
 
-def _rows(columns, rows):
+def right_hand_side_rows(columns, rows):
     """The first `rows` entries of each column, row-major, each row padded with zeros."""
     zero = ex.const(0.0)
     return [x for r in range(rows) for x in [col[r] for col in columns] + [zero] * (padded(len(columns)) - len(columns))]
@@ -317,13 +317,13 @@ def forward_dynamics_derivative_terms(m, looped_rnea=False, looped_factor=False)
     nv = m.robot.nv
     columns = _forward_dynamics_columns(m, looped_rnea)
     cols = [col for name in FORWARD_DYNAMICS_COLUMNS for col in columns[name]]
-    terms = {"rhs": _rows(cols, nv)}
+    terms = {"rhs": right_hand_side_rows(cols, nv)}
     if not looped_factor:
         parents = fd.dof_parents(m.robot)
         L, inv_diag = fd.ltdl(crba.mass_matrix(m), parents)
         terms.update(L=fd.packed_factor(L, parents), D_inv=inv_diag)
     if looped_rnea:
-        terms.update(_transforms_and_gravity(m), a=m.a)
+        terms.update(transforms_and_gravity(m), a=m.a)
     return replace_symbols(terms, m.a, aba.forward_dynamics_aba(m) if looped_factor else fd.forward_dynamics(m))
 
 
@@ -430,16 +430,16 @@ def contact_terms(r1_columns, r2_columns, damped, J, Minv_Jt, L, D_inv, column_o
     L_inv, D_inv_F = damped.lower_inverse, damped.factor[1]
     n = len(D_inv_F)
     zero = ex.const(0.0)
-    return {"R1": _rows(r1_columns, nv), "R2": _rows(r2_columns, n),
+    return {"R1": right_hand_side_rows(r1_columns, nv), "R2": right_hand_side_rows(r2_columns, n),
             "J": [x for row in J for x in row],
             "Minv_Jt": [column[r] for r in range(nv) for column in Minv_Jt],
-            "F_U": _rows([[L_inv[c][r] if r <= c else zero for r in range(n)] for c in range(n)], n),
-            "F_DL": _rows([[L_inv[r][c] * D_inv_F[r] if c <= r else zero for r in range(n)] for c in range(n)], n),
+            "F_U": right_hand_side_rows([[L_inv[c][r] if r <= c else zero for r in range(n)] for c in range(n)], n),
+            "F_DL": right_hand_side_rows([[L_inv[r][c] * D_inv_F[r] if c <= r else zero for r in range(n)] for c in range(n)], n),
             "mu": [damped.mu],
             "L": list(L), "D_inv": list(D_inv)}
 
 
-def _transforms_and_gravity(m):
+def transforms_and_gravity(m):
     """What the looped RNEA derivatives read: each body's transform and gravity in root coordinates."""
     return {"X": crba.body_transforms(m), "g": m.gravity_in_base()}
 
@@ -488,7 +488,7 @@ def spec(robot, nf, nc):
         **{name: ("The traced part of %s in its looped form (passes/looped_rnea_derivatives.py)." % quantity,
                   inputs, [("X", 12, robot.nb - 1, "each body's transform (the body_transforms function's X)"),
                            ("g", 3, 1, "gravity in the root's coordinates")],
-                  _transforms_and_gravity)
+                  transforms_and_gravity)
            for name, quantity, inputs in (
                ("inverse_dynamics_derivative_transforms", "inverse_dynamics_derivatives", ("q", "v", "a")),
                ("bias_derivative_transforms", "bias_derivatives", ("q", "v")),

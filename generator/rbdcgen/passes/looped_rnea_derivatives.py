@@ -9,13 +9,15 @@ and rnea_derivatives_loop (rbdc_gen/rnea_derivatives.hpp) runs the recursion in 
 coordinates with the tree in a table (body_tree.py): composites are plain sums and each entry one
 dot product, as in Pinocchio's world-frame computeRNEADerivatives. It folds nothing (the body
 coordinates' sparse axes and constant inertias), so it does more arithmetic than the unrolled
-recursion; what it saves is code."""
+recursion; what it saves is code. A mimic-coupled robot's loop runs on its tree (views/coupled.py):
+its velocity and acceleration expanded (G v, G a), each entry projected as it is written (Gᵀ X G)."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 from typing import ClassVar, Tuple
 
+from ..views.coupled import tree_view, velocity_columns
 from . import body_tree
 from .body_tree import (ACCUMULATE, APPLY, CROSS, SPATIAL_CROSS, STEP_OVERHEAD,
                         ancestor_steps)
@@ -55,7 +57,9 @@ class LoopedRneaDerivatives:
     the function's own v and the acceleration `acceleration_source` (`velocity`, `acceleration`:
     whether they enter), writing through `writer` (the declaration of its output `out`, one of the
     loop's writer types): the outputs themselves, or (`subtracting`) subtracted from a looped solve's
-    right-hand sides."""
+    right-hand sides. `robot` is the tree the loop runs on; `coupling`, for a coupled robot, G as per
+    tree dof (independent dof, multiplier): the writer then projects (Projected) and the loop reads
+    v and a expanded."""
     robot: object
     terms: Tuple[Argument, ...]
     writer: str
@@ -63,6 +67,7 @@ class LoopedRneaDerivatives:
     acceleration: bool
     acceleration_source: str = "a"
     subtracting: bool = False
+    coupling: Tuple[Tuple[int, float], ...] = ()
     headers: ClassVar[Tuple[str, ...]] = (body_tree.HEADER, HEADER)
 
     def _counts(self, vector_width=1):
@@ -96,6 +101,9 @@ class LoopedRneaDerivatives:
                            _times(CROSS, 6), (9, 0), _times(APPLY, 3), (0, 18)]
         if self.subtracting:
             pieces.append((0, self._writes()))
+        if self.coupling:  # the expanded inputs; a multiplication per entry projected, an addition summing it
+            pieces += [(robot.nv * (self.velocity + self.acceleration), 0),
+                       (self._writes(), 0 if self.subtracting else self._writes())]
         return sum(m for m, _ in pieces), sum(a for _, a in pieces)
 
     def _writes(self):
@@ -128,8 +136,18 @@ class LoopedRneaDerivatives:
         flags = ", ".join("true" if x else "false" for x in (robot.floating_base, self.velocity, self.acceleration))
         v = "v" if self.velocity else "nullptr"
         a = self.acceleration_source if self.acceleration else "nullptr"
-        return [body_tree.table(robot)] * with_table + [f"const {self.writer};",
-                f"rnea_derivatives_loop<Scalar, {robot.nb}, {robot.nv}, {flags}>(tree, solve_X, solve_g, {v}, {a}, out);"]
+        statements = [body_tree.table(robot)] * with_table
+        if self.coupling:
+            statements += [f"const int tree_column[{robot.nv}] = {{{', '.join(str(k) for k, _ in self.coupling)}}};",
+                           f"const double tree_weight[{robot.nv}] = {{{', '.join(repr(w) for _, w in self.coupling)}}};"]
+            for used, name in ((self.velocity, "v"), (self.acceleration, "a")):
+                if used:
+                    source = v if name == "v" else a
+                    statements += [f"Scalar {name}_tree[{robot.nv}];",
+                                   f"expand_coordinates<Scalar, {robot.nv}>(tree_column, tree_weight, {source}, {name}_tree);"]
+            v, a = ("v_tree" if self.velocity else v), ("a_tree" if self.acceleration else a)
+        return statements + [f"const {self.writer};",
+                             f"rnea_derivatives_loop<Scalar, {robot.nb}, {robot.nv}, {flags}>(tree, solve_X, solve_g, {v}, {a}, out);"]
 
     def emission(self, terms_name):
         return ("looped RNEA derivatives: %s writes the %d bodies' transforms and gravity, "
@@ -138,7 +156,18 @@ class LoopedRneaDerivatives:
 
 
 def has_looped_form(robot, name):
-    return name in TERMS and body_tree.applies(robot)
+    """On a tree of bodies alone, or a mimic-coupled one (the loop on its tree, projected)."""
+    return name in TERMS and body_tree.applies(tree_view(robot))
+
+
+def _writer(robot, target):
+    """The declaration of the loop's writer `out` around `target` (a writer type and its initialiser),
+    projected onto a coupled robot's coordinates; returns it and the coupling."""
+    if not robot.couplings:
+        return f"{target[0]} out{{{target[1]}}}", ()
+    coupling = tuple(velocity_columns(robot))
+    projected = f"Projected<Scalar, {tree_view(robot).nv}, {target[0]}>"
+    return f"{projected} out{{tree_column, tree_weight, {{{target[1]}}}}}", coupling
 
 
 def unrolled_too_large(robot):
@@ -150,9 +179,10 @@ def looped_function(robot, scene, name):
     def loop(terms, outputs):
         inputs = {arg.name for arg in terms.inputs}
         dv = outputs[1].name if len(outputs) > 1 else "nullptr"
-        return LoopedRneaDerivatives(robot=robot, terms=terms.outputs,
-                                     writer=f"DenseDerivatives<Scalar, {robot.nv}> out{{{outputs[0].name}, {dv}}}",
-                                     velocity="v" in inputs, acceleration="a" in inputs)
+        kind = "SummedDerivatives" if robot.couplings else "DenseDerivatives"
+        writer, coupling = _writer(robot, (f"{kind}<Scalar, {robot.nv}>", f"{outputs[0].name}, {dv}"))
+        return LoopedRneaDerivatives(robot=tree_view(robot), terms=terms.outputs, writer=writer,
+                                     velocity="v" in inputs, acceleration="a" in inputs, coupling=coupling)
     return with_loop(robot, scene, name, TERMS[name], loop)
 
 
@@ -160,6 +190,7 @@ def subtracted_from(robot, terms, rhs, columns):
     """The loop that subtracts ∂τ/∂q and ∂τ/∂v at the terms' acceleration `a` from the right-hand
     sides `rhs` (row-major, `columns` wide, ∂/∂q and ∂/∂v in its first 2 nv columns): a looped
     solve's (looped_solve.py)."""
-    return LoopedRneaDerivatives(robot=robot, terms=terms,
-                                 writer=f"SubtractedFromColumns<Scalar, {robot.nv}, {columns}> out{{{rhs}}}",
-                                 velocity=True, acceleration=True, acceleration_source="solve_a", subtracting=True)
+    writer, coupling = _writer(robot, (f"SubtractedFromColumns<Scalar, {robot.nv}, {columns}>", rhs))
+    return LoopedRneaDerivatives(robot=tree_view(robot), terms=terms, writer=writer, velocity=True,
+                                 acceleration=True, acceleration_source="solve_a", subtracting=True,
+                                 coupling=coupling)

@@ -316,9 +316,10 @@ def _copies(blocks, source, rows, columns, order=()):
 
 
 def has_looped_form(robot, name):
-    """Whether `name` has a looped form here: not for a coupled robot (it solves in G's coordinates).
-    (Contact dynamics always has contacts: a scene without any is refused.)"""
-    return name in TERMS and not robot.couplings
+    """Whether `name` has a looped form here; a coupled robot's forward_dynamics_derivatives solves
+    in its independent coordinates, over their dof tree (passes/project.py). (Contact dynamics always
+    has contacts: a scene without any is refused.)"""
+    return name in TERMS and (not robot.couplings or name == "forward_dynamics_derivatives")
 
 
 def looped_function(robot, scene, name, terms_name=None, rnea=False, factor=False):

@@ -14,13 +14,15 @@ from __future__ import annotations
 
 from ..graph import expr as ex
 from ..algorithms.crba import mass_matrix
+from ..algorithms.feet_force_derivatives import feet_force_term_derivatives
 from ..algorithms.jacobian import feet_jacobian
 from ..algorithms.rnea_derivatives import has_rotors
-from ..algorithms.forward_dynamics import factor_outputs, ltdl, ltdl_solve
+from ..algorithms.forward_dynamics import dof_parents, factor_outputs, ltdl, ltdl_solve, packed_factor
 from ..algorithms.rnea import bias_minus_external
 from ..errors import RbdcError
-from ..views.coupled import root_coordinates, tree_view
-from .differentiate import replace_symbols, residual_derivatives
+from ..views.coupled import tree_view, velocity_columns
+from .differentiate import (FORWARD_DYNAMICS_COLUMNS, replace_symbols, residual_derivatives, right_hand_side_rows,
+                             transforms_and_gravity)
 
 # Output names whose rows (resp. columns) are velocity coordinates: Gᵀ from the left (resp. G from
 # the right). Positions and velocities of points need nothing.
@@ -32,18 +34,13 @@ _COLS_IN_V = {"J", "M", "dpdot_dq"} | _DERIVATIVES_IN_V
 # a robot with rotors) seed the tree's coordinates, which a coupled robot's expanded inputs are not.
 _ANALYTIC_DERIVATIVES = {"inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives",
                          "feet_force_term_derivatives", "feet_velocity_derivatives"}
+# The looped RNEA derivatives' traced part (bodies' transforms and gravity: nothing in v) runs on the
+# tree as it is; their loop projects (passes/looped_rnea_derivatives.py).
+_TREE_TERMS = {"inverse_dynamics_derivative_transforms", "bias_derivative_transforms",
+               "gravity_derivative_transforms"}
 _PROJECTED = {"feet_positions", "feet_velocities", "feet_jacobian", "quadratic_velocity_terms",
               "gravity_terms", "bias", "feet_force_terms", "inverse_dynamics",
               "mass_matrix"} | _ANALYTIC_DERIVATIVES
-
-
-def _g_columns(robot):
-    """G as, per tree velocity row, (independent column, weight)."""
-    coupling = {c.follower: c.multiplier for c in robot.couplings}
-    _, v0 = root_coordinates(robot)
-    rows = [(k, 1.0) for k in range(v0)]
-    rows += [(robot.joints[i].v_index, coupling.get(i, 1.0)) for i in range(1, robot.nb)]
-    return rows
 
 
 def _project(values, rows, cols, project_rows, project_cols, g, n):
@@ -66,7 +63,7 @@ def _project(values, rows, cols, project_rows, project_cols, g, n):
 def traced_values(robot, name, m, build, output_specs):
     """The outputs of function `name` in independent coordinates: `build(m)` traces the tree
     algorithm (m's inputs already expanded), then each output is projected with G."""
-    if not robot.couplings:
+    if not robot.couplings or name in _TREE_TERMS:
         return build(m)
     if name == "forward_dynamics":
         return {"a": _forward_dynamics(robot, m)}
@@ -77,12 +74,16 @@ def traced_values(robot, name, m, build, output_specs):
                         % (robot.name, name))
     if name == "forward_dynamics_derivatives":
         return _forward_dynamics_derivatives(robot, m)
+    if name == "forward_dynamics_derivative_terms":
+        return _forward_dynamics_derivative_terms(robot, m)
+    if name == "forward_dynamics_derivative_loop_terms":
+        return _forward_dynamics_derivative_terms(robot, m, looped_rnea=True)
     if name not in _PROJECTED:
         raise RbdcError("robot '%s': %s is not supported with mimic couplings (%d coupled joints); "
                         "load the mimic joints locked (--lock-mimic) or independent (--independent-mimic)"
                         % (robot.name, name, len(robot.couplings)))
     tree = tree_view(robot)
-    g, values = _g_columns(robot), build(m)
+    g, values = velocity_columns(robot), build(m)
     for output, _, cols, _ in output_specs:
         rows_in_v, cols_in_v = output in _ROWS_IN_V, output in _COLS_IN_V
         if not (rows_in_v or cols_in_v):
@@ -97,7 +98,7 @@ def _projected_square(robot, rows):
     """Gᵀ X G of a tree nv × nv matrix given as rows, as rows."""
     nv, n = tree_view(robot).nv, robot.nv
     flat = tuple(rows[r][c] for c in range(nv) for r in range(nv))
-    projected = _project(flat, nv, nv, True, True, g=_g_columns(robot), n=n)
+    projected = _project(flat, nv, nv, True, True, g=velocity_columns(robot), n=n)
     return [[projected[c * n + r] for c in range(n)] for r in range(n)]
 
 
@@ -106,16 +107,10 @@ def _projected_mass_matrix(robot, m):
     return _projected_square(robot, mass_matrix(m))
 
 
-def _dense_chain(n):
-    """Each dof's parent is the previous one: couplings join branches, so M' has no tree
-    sparsity to exploit and is factorised densely."""
-    return list(range(-1, n - 1))
-
-
 def _mass_matrix_factor(robot, m):
-    """M' = Lᵀ D L, dense."""
-    chain = _dense_chain(robot.nv)
-    return factor_outputs(*ltdl(_projected_mass_matrix(robot, m), chain), chain)
+    """M' = Lᵀ D L over the independent dofs' tree (dof_parents: dense where couplings join branches)."""
+    parents = dof_parents(robot)
+    return factor_outputs(*ltdl(_projected_mass_matrix(robot, m), parents), parents)
 
 
 def _forward_dynamics(robot, m):
@@ -123,30 +118,62 @@ def _forward_dynamics(robot, m):
     tree = tree_view(robot)
     nv, n = tree.nv, robot.nv
     M_ind = _projected_mass_matrix(robot, m)
-    bias = _project(tuple(bias_minus_external(m)), nv, 1, True, False, _g_columns(robot), n)
+    bias = _project(tuple(bias_minus_external(m)), nv, 1, True, False, velocity_columns(robot), n)
     root = robot.root_dofs
     rhs = [-b for b in bias[:root]] + [m.tau[k - root] - bias[k] for k in range(root, n)]
-    chain = _dense_chain(n)
-    L, inv_diag = ltdl(M_ind, chain)
-    return tuple(ltdl_solve(L, inv_diag, chain, rhs))
+    parents = dof_parents(robot)
+    L, inv_diag = ltdl(M_ind, parents)
+    return tuple(ltdl_solve(L, inv_diag, parents, rhs))
 
 
-def _forward_dynamics_derivatives(robot, m):
-    """∂a'/∂(q', v', τ', f) = −M'⁻¹ Gᵀ ∂(RNEA − τ_e) G at a_tree = G a', M'⁻¹S'ᵀ, M'⁻¹(J G)ᵀ, with
-    the placeholders a' replaced by the forward dynamics afterwards (differentiate.py's method)."""
+def _forward_dynamics_derivative_columns(robot, m, looped_rnea=False):
+    """{output: columns} of forward_dynamics_derivatives before M'⁻¹: −Gᵀ ∂(RNEA − τ_e) G at
+    a_tree = G a' (a' the placeholder), S'ᵀ and (J G)ᵀ. With `looped_rnea` the ∂q and ∂v columns
+    leave out the RNEA's part (+Gᵀ ∂τ_e/∂q G and 0): the looped RNEA derivatives subtract it,
+    projected (passes/looped_rnea_derivatives.py)."""
     n, root = robot.nv, robot.root_dofs
-    dq, dv = (_projected_square(robot, x) for x in residual_derivatives(m))
-    columns = {"da_dq": [[-dq[r][c] for r in range(n)] for c in range(n)],
-               "da_dv": [[-dv[r][c] for r in range(n)] for c in range(n)],
-               "da_dtau": [[ex.const(1.0 if r == root + k else 0.0) for r in range(n)]
-                           for k in range(robot.n_joints)]}                          # S'ᵀ
+    if looped_rnea:
+        zero = ex.const(0.0)
+        external = (_projected_square(robot, feet_force_term_derivatives(m)) if m.feet
+                    else [[zero] * n for _ in range(n)])
+        columns = {"da_dq": [[external[r][c] for r in range(n)] for c in range(n)],
+                   "da_dv": [[zero] * n for _ in range(n)]}
+    else:
+        dq, dv = (_projected_square(robot, x) for x in residual_derivatives(m))
+        columns = {"da_dq": [[-dq[r][c] for r in range(n)] for c in range(n)],
+                   "da_dv": [[-dv[r][c] for r in range(n)] for c in range(n)]}
+    columns["da_dtau"] = [[ex.const(1.0 if r == root + k else 0.0) for r in range(n)]
+                          for k in range(robot.n_joints)]                            # S'ᵀ
     J = feet_jacobian(m) if m.feet else []
     tree_nv = tree_view(robot).nv
     JG = _project(tuple(J[r][c] for c in range(tree_nv) for r in range(len(J))), len(J), tree_nv,
-                  False, True, _g_columns(robot), n)
+                  False, True, velocity_columns(robot), n)
     columns["da_df"] = [[JG[c * len(J) + row] for c in range(n)] for row in range(len(J))]  # (J G)ᵀ
-    chain = _dense_chain(n)
-    L, inv_diag = ltdl(_projected_mass_matrix(robot, m), chain)
-    solved = {name: [x for col in cols for x in ltdl_solve(L, inv_diag, chain, col)]
-              for name, cols in columns.items()}
-    return replace_symbols(solved, m.input("a", n), _forward_dynamics(robot, m))
+    return columns
+
+
+def _forward_dynamics_derivatives(robot, m):
+    """∂a'/∂(q', v', τ', f) = M'⁻¹ applied to _forward_dynamics_derivative_columns, with the
+    placeholders a' replaced by the forward dynamics afterwards (differentiate.py's method)."""
+    parents = dof_parents(robot)
+    L, inv_diag = ltdl(_projected_mass_matrix(robot, m), parents)
+    solved = {name: [x for col in cols for x in ltdl_solve(L, inv_diag, parents, col)]
+              for name, cols in _forward_dynamics_derivative_columns(robot, m).items()}
+    return replace_symbols(solved, m.input("a", robot.nv), _forward_dynamics(robot, m))
+
+
+def _forward_dynamics_derivative_terms(robot, m, looped_rnea=False):
+    """What the looped form of forward_dynamics_derivatives solves (differentiate.
+    forward_dynamics_derivative_terms' outputs) in the independent coordinates: the columns
+    unsolved, M''s factor over dof_parents, its inverse pivots; with `looped_rnea` also what that
+    loop reads, the tree's transforms and gravity, and a'."""
+    columns = _forward_dynamics_derivative_columns(robot, m, looped_rnea)
+    parents = dof_parents(robot)
+    L, inv_diag = ltdl(_projected_mass_matrix(robot, m), parents)
+    a = m.input("a", robot.nv)
+    terms = {"rhs": right_hand_side_rows([col for name in FORWARD_DYNAMICS_COLUMNS for col in columns[name]],
+                                         robot.nv),
+             "L": packed_factor(L, parents), "D_inv": inv_diag}
+    if looped_rnea:
+        terms.update(transforms_and_gravity(m), a=a)
+    return replace_symbols(terms, a, _forward_dynamics(robot, m))

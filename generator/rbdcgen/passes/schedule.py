@@ -27,6 +27,7 @@ from dataclasses import replace
 from ..algorithms import aba
 from ..algorithms.forward_dynamics import dof_parents
 from ..graph import expr as ex
+from ..views.coupled import tree_view
 from ..views.limbs import LimbError, isomorphic_limbs
 from . import body_tree, lane_functions, looped_crba, looped_factor, looped_rnea_derivatives, looped_solve, singular_mass
 from .trace import signature, trace_function
@@ -89,8 +90,9 @@ def _forms(robot, scene, name):
         forms["looped_crba"] = lambda: looped_factor.looped_function(robot, scene, name, crba=True)
     if looped_rnea_derivatives.has_looped_form(robot, name):
         forms["looped_rnea"] = lambda: looped_rnea_derivatives.looped_function(robot, scene, name)
-    if name in looped_solve.LOOP_TERMS and body_tree.applies(robot):
+    if name in looped_solve.LOOP_TERMS and body_tree.applies(tree_view(robot)):  # coupled: projected
         forms["looped_rnea"] = lambda: looped_solve.looped_function(robot, scene, name, rnea=True)
+    if name in looped_solve.LOOP_TERMS and body_tree.applies(robot):
         forms["looped_crba"] = lambda: looped_solve.looped_function(robot, scene, name, factor=True)
     return forms
 

@@ -2,8 +2,8 @@
 a scene is compiled with a scalar type that counts every arithmetic operator, sin, cos and sqrt, and
 one call must match the header's table kind by kind. Run on the looped forms (passes/looped_crba.py,
 looped_factor.py, looped_solve.py, looped_rnea_derivatives.py: loops counted by trip count, the traced parts node by node) on a
-branched tree with revolute and prismatic joints and two feet in contact, floating and fixed, and on
-the Mini Cheetah's `full` scene (limb lanes: a lane operation counts four, a sum over the lanes three)."""
+branched tree with revolute and prismatic joints and two feet in contact, floating and fixed, on a
+mimic-coupled gripper's looped solve and RNEA derivatives, and on the Mini Cheetah's `full` scene (limb lanes: a lane operation counts four, a sum over the lanes three)."""
 import os
 import re
 import subprocess
@@ -11,7 +11,7 @@ import tempfile
 import unittest
 from pathlib import Path
 
-from rbdc_cli import MINI_CHEETAH, SCENES, run_rbdc
+from rbdc_cli import MINI_CHEETAH, ROOT, SCENES, run_rbdc
 
 # A branched tree: a trunk, two chains of revolute and prismatic joints with tilted placements.
 URDF = """<robot name="counted">
@@ -29,6 +29,10 @@ LOOPED_RNEA = ("name: counted\nderivatives: [inverse_dynamics_derivatives, bias_
                "forward_dynamics_derivatives]\nschedule: looped_rnea\n")
 LOOPED_SOLVE = ("name: counted\nquantities: [forward_dynamics, contact_dynamics, impulse_dynamics]\n"
                 "derivatives: [forward_dynamics_derivatives, contact_dynamics_derivatives]\nschedule: looped_solve\n")
+COUPLED_LOOPED_SOLVE = "name: counted\nderivatives: [forward_dynamics_derivatives]\nschedule: looped_solve\n"
+COUPLED_LOOPED_RNEA = ("name: counted\nderivatives: [inverse_dynamics_derivatives, bias_derivatives, gravity_derivatives, "
+                       "forward_dynamics_derivatives]\n"
+                       "schedule: looped_rnea\n")
 KINDS = ("mul", "add", "div", "sqrt", "trig", "neg")
 # The inputs by name (the rest of the arguments get scratch arrays); q's quaternion is set apart.
 INPUTS = {"q": "q", "v": "v", "a": "v", "tau": "tau", "f": "f"}
@@ -144,6 +148,15 @@ class OperationCountTest(unittest.TestCase):
 
     def test_looped_solves_of_forward_and_contact_dynamics(self):
         self.assertEqual(self.tree("floating", LOOPED_SOLVE).count("schedule: looped solve"), 2)
+
+    def test_looped_forms_of_a_coupled_robot(self):
+        """A gripper on an arm: ∂q̈'s solve over the independent dofs' tree (passes/project.py), ∂τ's
+        loop on the tree, expanded and projected (looped_rnea_derivatives.py)."""
+        fingers = ROOT / "tests" / "data" / "mimic_fingers.urdf"
+        self.assertEqual(self.check(fingers, "floating", COUPLED_LOOPED_SOLVE, "mimic_fingers", "counted")
+                         .count("schedule: looped solve"), 1)
+        self.assertEqual(self.check(fingers, "floating", COUPLED_LOOPED_RNEA, "mimic_fingers", "counted")
+                         .count("schedule: looped RNEA derivatives"), 4)
 
     def test_mini_cheetah_full_scene_in_limb_lanes(self):
         self.assertIn("limb lanes", self.check(MINI_CHEETAH, "floating", (SCENES / "full.yaml").read_text(),

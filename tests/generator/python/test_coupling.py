@@ -12,6 +12,8 @@ from mini_cheetah import ROOT, model_tool, skip_reason
 from numeric_check import evaluate as numeric_evaluate, random_state
 from test_derivatives import ALL, CASES, TOLERANCE, central_difference, relative_error
 from rbdcgen.graph import expr as ex
+from rbdcgen.algorithms.forward_dynamics import dof_parents
+from rbdcgen.passes.looped_rnea_derivatives import has_looped_form
 from rbdcgen.views.coupled import tree_view
 from rbdcgen.errors import RbdcError
 from rbdcgen.frontend.ir import load_ir
@@ -20,6 +22,8 @@ from rbdcgen.passes.trace import trace_function
 
 GRIPPER = os.path.join(ROOT, "tests", "data", "two_finger_gripper.urdf")
 MIMIC_CHAIN = os.path.join(ROOT, "tests", "data", "mimic_chain.urdf")
+MIMIC_FINGERS = os.path.join(ROOT, "tests", "data", "mimic_fingers.urdf")
+MIMIC_ACROSS_BRANCHES = os.path.join(ROOT, "tests", "data", "mimic_across_branches.urdf")
 
 
 def load(path, base="fixed"):
@@ -76,7 +80,8 @@ class TwoFingerGripper(unittest.TestCase):
 class CoupledDerivatives(unittest.TestCase):
     """∂τ' = Gᵀ ∂τ G, ∂ṗ' = ∂ṗ G and the forward-dynamics derivatives in independent coordinates equal central
     differences of the coupled robot's own inverse and forward dynamics (on the manifold for a
-    floating base): a chain of two mimics (one with offset and multiplier -3) and the gripper."""
+    floating base): a chain of two mimics (one with offset and multiplier -3), the gripper and fingers on
+    an arm."""
 
     def check(self, robot):
         state = random_state(robot, len(robot.feet), 5)
@@ -100,6 +105,31 @@ class CoupledDerivatives(unittest.TestCase):
     def test_gripper(self):
         for base in ("fixed", "floating"):
             self.check(load(GRIPPER, base))
+
+    def test_fingers_on_an_arm(self):
+        """Its M' factorises over a tree of the independent dofs (CoupledDofTree)."""
+        for base in ("fixed", "floating"):
+            self.check(load(MIMIC_FINGERS, base))
+
+
+@unittest.skipIf(skip_reason(), skip_reason())
+class CoupledDofTree(unittest.TestCase):
+    """The independent dofs' tree that M' = Gᵀ M G factorises over (views/coupled.py, dof_parents)."""
+
+    def test_fingers_that_move_together_keep_a_tree(self):
+        # shoulder, wrist, the fingers' one dof below the wrist, the other arm's joint at the root
+        self.assertEqual(dof_parents(load(MIMIC_FINGERS)), [-1, 0, 1, -1])
+        self.assertEqual(dof_parents(load(MIMIC_FINGERS, "floating")), [-1, 0, 1, 2, 3, 4, 5, 6, 7, 5])
+
+    def test_the_rnea_derivatives_loop_on_the_tree(self):
+        """passes/looped_rnea_derivatives.py: expanded inputs, entries projected as written."""
+        fingers = load(MIMIC_FINGERS)
+        self.assertTrue(all(has_looped_form(fingers, name) for name in
+                            ("inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives")))
+
+    def test_a_coupling_across_branches_factorises_densely(self):
+        # a2's dof also moves b2, below b1 (numbered after a2): no tree, every dof the previous one's child
+        self.assertEqual(dof_parents(load(MIMIC_ACROSS_BRANCHES)), [-1, 0, 1])
 
 
 if __name__ == "__main__":

@@ -8,7 +8,6 @@ product/test_operation_counts.py."""
 
 import os
 import unittest
-from dataclasses import replace
 
 from numeric_check import DATA, chain, evaluate, random_state
 
@@ -69,11 +68,10 @@ class LoopedRneaDerivatives(unittest.TestCase):
         self.assertIsNotNone(large.solve.rnea)
         self.assertIsNotNone(large.solve.factor)
 
-    def test_only_the_rnea_derivatives_of_an_uncoupled_tree(self):
+    def test_only_the_rnea_derivatives(self):
+        """(A mimic-coupled robot's run on its tree: test_coupling.py, product/test_coupled_forms.py.)"""
         self.assertTrue(all(looped.has_looped_form(FLOATING, name) for name in NAMES))
         self.assertFalse(looped.has_looped_form(FLOATING, "forward_dynamics_derivatives"))
-        coupled = replace(FLOATING, couplings=(object(),))
-        self.assertFalse(looped.has_looped_form(coupled, "inverse_dynamics_derivatives"))
 
 
 if __name__ == "__main__":

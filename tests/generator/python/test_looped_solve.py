@@ -2,8 +2,9 @@
 (passes/looped_solve.py): their traced terms, solved by an independent route (M and the damped
 Delassus matrix rebuilt from their factors, dense numpy solves, the proximal steps iterated), equal
 the scalar tree's outputs; the scene's schedule forces them, `auto` picks by cost and says so, a
-coupled robot never gets them. The emitted loop itself is checked against the runtime by `rbdc verify` (arm7 and
-humanoid32 `derivatives`, whose `auto` picks it) and compiled under nvcc."""
+coupled robot's solve is in its independent coordinates. The emitted loop itself is checked against
+the runtime by `rbdc verify` (arm7 and humanoid32 `derivatives`, whose `auto` picks it) and compiled
+under nvcc."""
 
 import os
 import unittest
@@ -11,7 +12,7 @@ import unittest
 import numpy as np
 from mini_cheetah import skip_reason
 from numeric_check import DATA, evaluate, random_state
-from test_coupling import GRIPPER, load as load_coupled
+from test_coupling import GRIPPER, MIMIC_ACROSS_BRANCHES, MIMIC_CHAIN, MIMIC_FINGERS, load as load_coupled
 
 from rbdcgen.frontend.ir import load_ir
 from rbdcgen.frontend.scene import scene_from_dict
@@ -110,11 +111,21 @@ class LoopedForwardDynamicsDerivatives(unittest.TestCase):
                                       r"(scalar tree|looped solve) \d+( \(cost \d+\))?, looped RNEA derivatives \d+")
 
     @unittest.skipIf(skip_reason(), skip_reason())
-    def test_a_coupled_robot_keeps_the_scalar_tree(self):
-        """Its solve is in the independent coordinates (passes/project.py), not over the dof tree."""
-        gripper = load_coupled(GRIPPER)
-        self.assertTrue(gripper.couplings)
-        self.assertIsNone(scheduled_function(gripper, scene("looped_solve"), NAME).solve)
+    def test_a_coupled_robot_solves_in_its_independent_coordinates(self):
+        """Its terms are the projected ones (passes/project.py), its factor over the independent dofs'
+        tree (views/coupled.py, dof_parents); solved, they equal its scalar tree."""
+        for path, base in ((GRIPPER, "floating"), (MIMIC_CHAIN, "floating"), (MIMIC_FINGERS, "floating"),
+                           (MIMIC_ACROSS_BRANCHES, "fixed")):
+            robot = load_coupled(path, base)
+            self.assertTrue(robot.couplings)
+            looped = scheduled_function(robot, scene("looped_solve"), NAME)
+            scalar = scheduled_function(robot, scene("scalar"), NAME)
+            self.assertIsNotNone(looped.solve)
+            self.assertEqual(looped.outputs, scalar.outputs)
+            for seed in (1, 2):
+                state = random_state(robot, len(robot.feet), seed)
+                self.assertLess(max_error(evaluate(scalar, state), solved_outputs(looped, state)), 1e-12,
+                                (robot.name, base, seed))
 
 
 def contact_scene(schedule):

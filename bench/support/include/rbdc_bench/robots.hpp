@@ -15,6 +15,7 @@ struct BenchRobot {
   std::string urdf;        ///< absolute path
   std::string topology;    ///< absolute path of the topology overlay (rotors, numbering), or empty
   bool floating_base;
+  bool independent_mimic;  ///< mimic joints loaded as ordinary joints (a big robot's, bench/big_robots.json)
 };
 
 /// The bundled robots (robots/bundled.json), with paths below `source_dir` (the project root).
