@@ -91,19 +91,26 @@ def max_error(want, got):
     return worst
 
 
+def assert_solved_equal(test, robot, scene_of, name, solved, tolerance=1e-12):
+    """`name`'s looped form (the scene `scene_of` makes forcing it) solved by `solved` equals its
+    scalar tree on two random states; returns both."""
+    looped = scheduled_function(robot, scene_of("looped_solve"), name)
+    scalar = scheduled_function(robot, scene_of("scalar"), name)
+    test.assertIsNotNone(looped.solve)
+    test.assertEqual(looped.outputs, scalar.outputs)
+    for seed in (1, 2):
+        state = random_state(robot, len(robot.feet), seed)
+        test.assertLess(max_error(evaluate(scalar, state), solved(looped, state)), tolerance,
+                        (robot.name, robot.floating_base, seed))
+    return looped, scalar
+
+
 class LoopedForwardDynamicsDerivatives(unittest.TestCase):
     def test_terms_solved_equal_the_scalar_tree(self):
         for robot in (FLOATING, FIXED):
-            looped = scheduled_function(robot, scene("looped_solve"), NAME)
-            scalar = scheduled_function(robot, scene("scalar"), NAME)
-            self.assertIsNotNone(looped.solve)
+            looped, scalar = assert_solved_equal(self, robot, scene, NAME, solved_outputs)
             self.assertIsNone(scalar.solve)
             self.assertEqual(looped.schedule, "looped solve, as the scene asks")
-            self.assertEqual(looped.outputs, scalar.outputs)
-            for seed in (1, 2):
-                state = random_state(robot, len(robot.feet), seed)
-                self.assertLess(max_error(evaluate(scalar, state), solved_outputs(looped, state)), 1e-12,
-                                (robot.name, seed))
 
     def test_auto_picks_by_cost_and_says_so(self):
         fn = scheduled_function(FLOATING, scene("auto"), NAME)
@@ -118,14 +125,7 @@ class LoopedForwardDynamicsDerivatives(unittest.TestCase):
                            (MIMIC_ACROSS_BRANCHES, "fixed")):
             robot = load_coupled(path, base)
             self.assertTrue(robot.couplings)
-            looped = scheduled_function(robot, scene("looped_solve"), NAME)
-            scalar = scheduled_function(robot, scene("scalar"), NAME)
-            self.assertIsNotNone(looped.solve)
-            self.assertEqual(looped.outputs, scalar.outputs)
-            for seed in (1, 2):
-                state = random_state(robot, len(robot.feet), seed)
-                self.assertLess(max_error(evaluate(scalar, state), solved_outputs(looped, state)), 1e-12,
-                                (robot.name, base, seed))
+            assert_solved_equal(self, robot, scene, NAME, solved_outputs)
 
 
 def contact_scene(schedule):
@@ -140,14 +140,7 @@ class LoopedContactDynamicsDerivatives(unittest.TestCase):
         # tiny_fixed's two point feet give 6 contact rows on 3 dofs: a redundant contact set, whose
         # least-norm solution amplifies round-off (docs/generated_api.md), hence its looser bound
         for robot, tolerance in ((FLOATING, 1e-12), (FIXED, 1e-8)):
-            looped = scheduled_function(robot, contact_scene("looped_solve"), CONTACT)
-            scalar = scheduled_function(robot, contact_scene("scalar"), CONTACT)
-            self.assertIsNotNone(looped.solve)
-            self.assertEqual(looped.outputs, scalar.outputs)
-            for seed in (1, 2):
-                state = random_state(robot, len(robot.feet), seed)
-                self.assertLess(max_error(evaluate(scalar, state), solved_contact_outputs(looped, state)),
-                                tolerance, (robot.name, seed))
+            assert_solved_equal(self, robot, contact_scene, CONTACT, solved_contact_outputs, tolerance)
 
 if __name__ == "__main__":
     unittest.main()
