@@ -19,6 +19,17 @@
 #error "rbdc_gen/batch.hpp needs the GCC/clang vector extensions (and no nvcc)"
 #endif
 
+// clang fuses a * b + c into one FMA only within one expression of built-in types unless told
+// otherwise (its default -ffp-contract=on); a Pack's products and sums are separate operator calls,
+// so without this each lane product was a multiplication and an addition (the Mini Cheetah's contact
+// derivatives: 2 631 vmulpd, almost no packed FMA). The pragma marks the operators' arithmetic as
+// contractible; after inlining the backend fuses it, as g++ does by default.
+#if defined(__clang__)
+#define RBDC_CONTRACT _Pragma("clang fp contract(fast)")
+#else
+#define RBDC_CONTRACT
+#endif
+
 namespace rbdc_gen {
 
 /// W lanes of T (double or float); arithmetic is element-wise. Implicit from any arithmetic value
@@ -41,9 +52,18 @@ struct Pack {
 
   T operator[](int lane) const noexcept { return v[lane]; }
 
-  friend Pack operator+(const Pack& a, const Pack& b) noexcept { return Pack(a.v + b.v); }
-  friend Pack operator-(const Pack& a, const Pack& b) noexcept { return Pack(a.v - b.v); }
-  friend Pack operator*(const Pack& a, const Pack& b) noexcept { return Pack(a.v * b.v); }
+  friend Pack operator+(const Pack& a, const Pack& b) noexcept {
+    RBDC_CONTRACT
+    return Pack(a.v + b.v);
+  }
+  friend Pack operator-(const Pack& a, const Pack& b) noexcept {
+    RBDC_CONTRACT
+    return Pack(a.v - b.v);
+  }
+  friend Pack operator*(const Pack& a, const Pack& b) noexcept {
+    RBDC_CONTRACT
+    return Pack(a.v * b.v);
+  }
   friend Pack operator/(const Pack& a, const Pack& b) noexcept { return Pack(a.v / b.v); }
   friend Pack operator-(const Pack& a) noexcept { return Pack(-a.v); }
   Pack& operator+=(const Pack& b) noexcept { return *this = *this + b; }
