@@ -140,12 +140,12 @@ class LoopedRneaDerivatives:
         if self.coupling:
             statements += [f"const int tree_column[{robot.nv}] = {{{', '.join(str(k) for k, _ in self.coupling)}}};",
                            f"const double tree_weight[{robot.nv}] = {{{', '.join(repr(w) for _, w in self.coupling)}}};"]
-            for used, name in ((self.velocity, "v"), (self.acceleration, "a")):
-                if used:
-                    source = v if name == "v" else a
-                    statements += [f"Scalar {name}_tree[{robot.nv}];",
-                                   f"expand_coordinates<Scalar, {robot.nv}>(tree_column, tree_weight, {source}, {name}_tree);"]
-            v, a = ("v_tree" if self.velocity else v), ("a_tree" if self.acceleration else a)
+            expanded = {}
+            for name, used, source in (("v", self.velocity, v), ("a", self.acceleration, a)):
+                expanded[name] = f"{name}_tree" if used else source
+                statements += [f"Scalar {name}_tree[{robot.nv}];",
+                               f"expand_coordinates<Scalar, {robot.nv}>(tree_column, tree_weight, {source}, {name}_tree);"] * used
+            v, a = expanded["v"], expanded["a"]
         return statements + [f"const {self.writer};",
                              f"rnea_derivatives_loop<Scalar, {robot.nb}, {robot.nv}, {flags}>(tree, solve_X, solve_g, {v}, {a}, out);"]
 

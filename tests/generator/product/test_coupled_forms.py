@@ -43,8 +43,8 @@ int main() {
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   for (int state = 0; state < 20; ++state) {
     double q[s::nq], v[nv], a[nv], tau[s::n_joints + 1], f[3 * s::n_feet + 1];
-    for (double* x : {q, v, a, tau, f})
-      for (int k = 0; k < (x == q ? s::nq : x == tau ? s::n_joints : x == f ? 3 * s::n_feet : nv); ++k) x[k] = uniform(random);
+    auto fill = [&](double* x, int n) { for (int k = 0; k < n; ++k) x[k] = uniform(random); };
+    fill(q, s::nq), fill(v, nv), fill(a, nv), fill(tau, s::n_joints), fill(f, 3 * s::n_feet);
     if (s::nq > nv) {  // the base quaternion, normalised
       const double n = std::sqrt(q[3] * q[3] + q[4] * q[4] + q[5] * q[5] + q[6] * q[6]);
       for (int k = 3; k < 7; ++k) q[k] /= n;
