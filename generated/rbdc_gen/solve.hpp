@@ -347,6 +347,35 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_sparse_minus(const RowSpars
   }
 }
 
+/// Adds ∂(Jᵀf)/∂q at fixed world foot forces (generator algorithms/feet_force_derivatives.py) to B,
+/// entry (y, x) at B[y · RowStride + x · ColumnStride] (the right-hand sides' first NV columns, or the
+/// column-major NV × NV derivative itself): entry (y, x) and (x, y) is
+/// ω_x · χ_y for each dof x above y in the dof tree, (y, y) ω_y · χ_y, for the dofs y in `rows`
+/// (those with a foot below them); the floating trunk's block (r, c) is ω_c · χ_r, c over its three
+/// rotations (its first Root dofs are one body). ω: each dof's world axis (zero for a translation),
+/// χ = Σ_k J_k × f_k, both NV × 3 row-major.
+template <class Scalar, int NV, int RowStride, int ColumnStride, int NE, int Root, int NR>
+RBDC_HOST_DEVICE inline void add_feet_force_term_derivatives(const DofTree<NV, NE>& tree, const int* rows,
+                                                             const Scalar* axis, const Scalar* moment,
+                                                             Scalar* B) noexcept {
+  const auto dot = [&](int x, int y) {
+    return axis[3 * x] * moment[3 * y] + axis[3 * x + 1] * moment[3 * y + 1] + axis[3 * x + 2] * moment[3 * y + 2];
+  };
+  const auto at = [&](int y, int x) -> Scalar& { return B[y * RowStride + x * ColumnStride]; };
+  for (int r = 0; r < Root; ++r)
+    for (int c = 0; c < 3; ++c) at(r, c) += dot(c, r);
+  for (int k = 0; k < NR; ++k) {
+    const int y = rows[k];
+    at(y, y) += dot(y, y);
+    for (int e = tree.first[y]; e < tree.first[y + 1]; ++e) {
+      const int x = tree.ancestor[e];
+      const Scalar entry = dot(x, y);
+      at(y, x) += entry;
+      at(x, y) += entry;
+    }
+  }
+}
+
 /// The proximal steps x ← F⁻¹(b + μx) from x = 0, Steps of them, give x = Q F⁻¹b with
 /// Q = Σ_{j<Steps} Gʲ, G = μF⁻¹ (eigenvalues μ/(aᵢ + μ) ∈ (0, 1]: Q stays bounded when contacts are
 /// redundant and F⁻¹ is not). F = L D Lᵀ comes as F⁻¹'s halves U = L⁻ᵀ and DL = D⁻¹L⁻¹ (both

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_7eff0b275d4e.hpp
+//   arm7/common/forward_dynamics_derivatives_bf5aa92aea57.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_7eff0b275d4e.hpp"
+#include "arm7/common/forward_dynamics_derivatives_bf5aa92aea57.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -30,9 +30,9 @@ namespace rbdc_gen::arm7::derivatives {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             3538  3058    6     0    14   15   6631
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4993 arithmetic
-///   instructions (cost 6459), scalar tree 6236 (cost 10206), looped RNEA derivatives 6391
-///   (cost 8007), looped CRBA 8531 (cost 11288)
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_7eff0b275d4e::forward_dynamics_derivatives;
+///   instructions (cost 6459), scalar tree 6236 (cost 10206), looped RNEA derivatives 6520
+///   (cost 8222), looped CRBA 8660 (cost 11504)
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_bf5aa92aea57::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

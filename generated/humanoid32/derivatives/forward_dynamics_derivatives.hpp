@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_1a81992aac9d.hpp
+//   humanoid32/common/forward_dynamics_derivatives_57038a2d31da.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_1a81992aac9d.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_57038a2d31da.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -28,11 +28,11 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param da_df out 38x15: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations     mul     add  div  sqrt  trig  neg   total
-///             132430  122994   33     0    64   52  255573
+///             132739  123886   33     0    64   52  256774
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
-///   82092 arithmetic instructions (cost 108923), scalar tree 131228 (cost 310187), looped
-///   solve 80616 (cost 126805), looped CRBA 92263 (cost 130394)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_1a81992aac9d::forward_dynamics_derivatives;
+///   83664 arithmetic instructions (cost 109778), scalar tree 131228 (cost 310187), looped
+///   solve 80616 (cost 126805), looped CRBA 93835 (cost 131249)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_57038a2d31da::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,7 +7,11 @@ subtree of x rigidly about its world axis ω_x (the trunk's δθ_c turns the who
 and for x ≺ y the foot itself moves by J_kx, ∂J_kx/∂q_y = ω_x × J_ky. Both give the same entry:
     ∂τ_e,y/∂q_x = ∂τ_e,x/∂q_y = Σ_k ω_x · (J_ky × f_k)    (x ≺ y; symmetric)
     ∂τ_e,y/∂q_y = Σ_k ω_y · (J_ky × f_k),   trunk block: ∂τ_e,r/∂q_c = Σ_k ω_c · (J_kr × f_k)
-where the trunk's six dofs are one body (r, c both trunk dofs)."""
+where the trunk's six dofs are one body (r, c both trunk dofs).
+
+An entry depends on the pair (x, y) only through ω_x and χ_y = Σ_k J_ky × f_k (J_ky is zero off foot
+k's path), so the looped form (passes/looped_feet_forces.py) traces those two per dof, O(n), and a
+loop over the dof tree's ancestor pairs forms the O(n·depth) entries."""
 
 from __future__ import annotations
 
@@ -59,3 +63,27 @@ def feet_force_term_derivatives(m):
                 add(y, x, axes[x], y)
                 add(x, y, axes[x], y)
     return out
+
+
+def axes_and_moments(m):
+    """What the looped form reads: per dof its world axis ω (zero for a translation) and
+    χ = Σ_k J_k × f_k, nv × 3 each, row-major."""
+    zero = ex.const(0.0)
+    J = feet_jacobian(m)
+    axes = dof_axes(m, world_frames(m))
+    moments = [sp.zeros(3)] * m.robot.nv
+    for k in range(len(m.feet)):
+        m.mark("derivatives: moments of the force of foot " + m.feet[k].name)
+        f = m.foot_force(k)
+        for y in range(m.robot.nv):
+            column = tuple(J[3 * k + r][y] for r in range(3))
+            if not all(x.is_const(0.0) for x in column):
+                moments[y] = sp.vadd(moments[y], sp.cross(column, f))
+    return {"feet_axes": tuple(x for axis in axes for x in (axis if axis is not None else (zero,) * 3)),
+            "feet_moments": tuple(x for moment in moments for x in moment)}
+
+
+def rows_with_feet(robot, feet):
+    """The dofs below the trunk with one of `feet` below them (χ ≠ 0), in order."""
+    below = sorted({robot.joints[j].v_index for foot in feet for j in robot.support[foot.body]})
+    return tuple(y for y in below if y >= robot.root_dofs)

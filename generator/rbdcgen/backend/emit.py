@@ -197,6 +197,8 @@ def emit_body(fn, angle_names=None):
         return "(%s)" % body if nested else body
 
     angle_names = dict(angle_names or {})
+    lines += ["for (int k = 0; k < %d; ++k) %s[k] = Scalar(0);" % (size, name)
+              for name, size in _zero_filled(fn).items()]
     if fn.lanes is not None:
         lines += _lane_block(fn, ex.reachable(fn.output_exprs()), names)
         angle_names.update(fn.lanes.angle_names)
@@ -239,6 +241,17 @@ def _whole_lane_value(entries):
             and [n.value for n in nodes] == list(range(len(nodes))))
 
 
+# An output with at least this many zero entries is cleared by a loop first and its zeros not stored
+# one by one: a 100-body chain's looped ∂q̈ wrote 30 000 zeros of its right-hand sides as statements.
+ZERO_FILL_MIN = 1024
+
+
+def _zero_filled(fn):
+    """{output name: entries} of the outputs cleared by a loop (ZERO_FILL_MIN)."""
+    return {arg.name: len(fn.values[arg.name]) for arg in fn.traced_arguments()
+            if sum(1 for node in fn.values[arg.name] if node is not None and node.is_const(0.0)) >= ZERO_FILL_MIN}
+
+
 def _store_units(fn):
     """The written output entries (argument name, index, node) grouped as they are stored: one by
     one; in a lane function, each run of consecutive written entries of an argument in vector
@@ -246,10 +259,11 @@ def _store_units(fn):
     were the bottleneck, 172 -> 110 ns with g++; docs/performance.md), the rest one by one."""
     width = ex.LANES if fn.lanes is not None else 1
     units = []
+    cleared = _zero_filled(fn)
     for arg in fn.traced_arguments():
         runs = []  # maximal runs of consecutive written entries
         for k, node in enumerate(fn.values[arg.name]):
-            if node is None:
+            if node is None or (arg.name in cleared and node.is_const(0.0)):
                 continue
             if not runs or runs[-1][-1][1] != k - 1:
                 runs.append([])

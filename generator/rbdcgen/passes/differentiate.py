@@ -272,16 +272,14 @@ FORWARD_DYNAMICS_COLUMNS = ("da_dq", "da_dv", "da_dtau", "da_df")
 
 def _forward_dynamics_columns(m, looped_rnea=False):
     """The right-hand sides whose M⁻¹-images are ∂a: −∂(RNEA − τ_e)/∂(q, v) at the placeholder a,
-    Sᵀ and Jᵀ, as {output name: list of nv-columns}. With `looped_rnea` the ∂q and ∂v columns leave
-    out the RNEA's part (+∂τ_e/∂q and 0): the looped RNEA derivatives subtract it
-    (passes/looped_rnea_derivatives.py)."""
+    Sᵀ and Jᵀ, as {output name: list of nv-columns}. With `looped_rnea` the ∂q and ∂v columns are
+    zero: the looped RNEA derivatives subtract the RNEA's part (passes/looped_rnea_derivatives.py),
+    and a loop adds ∂τ_e/∂q (looped_feet_forces.py)."""
     robot = m.robot
     nv = robot.nv
     if looped_rnea:
-        external = feet_force_derivatives.feet_force_term_derivatives(m) if m.feet else None
         zero = ex.const(0.0)
-        columns = {"da_dq": [[external[r][c] if external else zero for r in range(nv)] for c in range(nv)],
-                   "da_dv": [[zero] * nv for _ in range(nv)]}
+        columns = {"da_dq": [[zero] * nv for _ in range(nv)], "da_dv": [[zero] * nv for _ in range(nv)]}
     else:
         dq, dv = residual_derivatives(m)
         columns = {"da_dq": [[-dq[r][c] for r in range(nv)] for c in range(nv)],
@@ -324,7 +322,15 @@ def forward_dynamics_derivative_terms(m, looped_rnea=False, looped_factor=False)
         terms.update(L=fd.packed_factor(L, parents), D_inv=inv_diag)
     if looped_rnea:
         terms.update(transforms_and_gravity(m), a=m.a)
+        if m.feet:
+            terms.update(feet_force_derivatives.axes_and_moments(m))
     return replace_symbols(terms, m.a, aba.forward_dynamics_aba(m) if looped_factor else fd.forward_dynamics(m))
+
+
+def feet_forces_looped(robot, n_feet):
+    """Whether the looped RNEA derivatives' solve has the feet's force-term derivatives as a loop
+    (looped_feet_forces.py): a coupled robot's stay traced, projected (project.py)."""
+    return n_feet > 0 and not robot.couplings
 
 
 # The column blocks of contact_dynamics_derivatives: (∂a output, ∂λ output), in column order.
@@ -458,6 +464,8 @@ def spec(robot, nf, nc):
     column-major entries})."""
     nv, nj, m3 = robot.nv, robot.n_joints, 3 * nc
     on_q = "; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)"
+    looped_feet = [("feet_axes", 3, nv, "each dof's world axis (zero for a translation)"),
+                   ("feet_moments", 3, nv, "χ = Σ_k J_k × f_k per dof")] * feet_forces_looped(robot, nf)
     return {
         "inverse_dynamics_derivatives": (
             "Derivatives of the inverse dynamics τ = M a + c + g (∂τ/∂a is M).", ("q", "v", "a"),
@@ -501,7 +509,8 @@ def spec(robot, nf, nc):
              ("L", fd.factor_entries(robot), 1, "factor entries at each dof's ancestors"),
              ("D_inv", nv, 1, "inverse pivots"),
              ("X", 12, robot.nb - 1, "each body's transform (the body_transforms function's X)"),
-             ("g", 3, 1, "gravity in the root's coordinates"), ("a", nv, 1, "the forward dynamics' a")],
+             ("g", 3, 1, "gravity in the root's coordinates"), ("a", nv, 1, "the forward dynamics' a")]
+            + looped_feet,
             lambda m: forward_dynamics_derivative_terms(m, looped_rnea=True)),
         "forward_dynamics_derivative_tree_terms": (
             "The traced part of forward_dynamics_derivatives in its looped form with the looped CRBA, "
@@ -510,7 +519,7 @@ def spec(robot, nf, nc):
             [("rhs", nv, padded(2 * nv + nj + 3 * nf), "right-hand sides without the RNEA's part, row-major"),
              ("X", 12, robot.nb - 1, "each body's transform (the body_transforms function's X)"),
              ("g", 3, 1, "gravity in the root's coordinates"),
-             ("a", nv, 1, "the forward dynamics' a (articulated-body algorithm)")],
+             ("a", nv, 1, "the forward dynamics' a (articulated-body algorithm)")] + looped_feet,
             lambda m: forward_dynamics_derivative_terms(m, looped_rnea=True, looped_factor=True)),
         "feet_velocity_derivatives": (
             "Derivative of the world foot velocities at fixed v.", ("q", "v"),
@@ -519,6 +528,9 @@ def spec(robot, nf, nc):
         "feet_force_term_derivatives": (
             "Derivative of τ_e = Jᵀf at fixed world foot forces f.", ("q", "f"),
             [("dtau_e_dq", nv, nv, "∂(Jᵀf)/∂q" + on_q)], feet_force_term_derivatives),
+        "feet_force_term_derivative_moments": (
+            "The traced part of feet_force_term_derivatives in its looped form (passes/looped_feet_forces.py).",
+            ("q", "f"), looped_feet, feet_force_derivatives.axes_and_moments),
         "contact_dynamics_derivative_terms": (
             "The traced part of contact_dynamics_derivatives in its looped form (passes/looped_solve.py).",
             ("q", "v", "tau"),

@@ -16,9 +16,11 @@ from dataclasses import dataclass, replace
 from typing import Optional, Tuple
 
 from ..algorithms.contact_dynamics import PROXIMAL_STEPS
+from ..algorithms.feet_force_derivatives import rows_with_feet
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
 from ..graph import expr as ex
 from . import differentiate, lane_contact_derivatives, looped_crba, looped_rnea_derivatives
+from .looped_feet_forces import LoopedFeetForces
 from .looped_rnea_derivatives import LoopedRneaDerivatives
 from .trace import Argument, with_loop
 
@@ -41,13 +43,15 @@ class LoopedSolve:
     output blocks[k][0], blocks[k][1] columns wide, B's rows zero-padded to `columns`
     (differentiate.padded). `terms`: the local arrays the traced part writes (rhs, L, D_inv of
     differentiate.forward_dynamics_derivative_terms). `rnea`: the looped RNEA derivatives that
-    complete the right-hand sides first, if any; `factor`: the looped CRBA and factor (a
+    complete the right-hand sides first, if any, and `feet` the feet's force-term derivatives
+    (looped_feet_forces.py) with them; `factor`: the looped CRBA and factor (a
     looped_factor.LoopedFactor, packed) that write solve_L and solve_D_inv first, if the terms do not."""
     parents: Tuple[int, ...]
     blocks: Tuple[Tuple[str, int], ...]
     terms: Tuple[Argument, ...]
     rnea: Optional[LoopedRneaDerivatives] = None
     factor: object = None
+    feet: Optional[LoopedFeetForces] = None
     # per terms output whose entries a lane function keeps elsewhere than row-major (lane_places): where
     # each row-major entry is (None: zero, not stored)
     places: Tuple[Tuple[str, Tuple[Optional[int], ...]], ...] = ()
@@ -69,7 +73,7 @@ class LoopedSolve:
         return logical if place is None else place[logical]
 
     def _parts(self):
-        return [part for part in (self.factor, self.rnea) if part is not None]
+        return [part for part in (self.factor, self.rnea, self.feet) if part is not None]
 
     @property
     def headers(self):
@@ -117,7 +121,7 @@ class LoopedSolve:
         return self.instructions() + sum(part.cost() - part.instructions() for part in self._parts())
 
     def _tree_solve(self, target):
-        return [dof_tree(self.parents),
+        return [dof_tree(self.parents)] + ([] if self.feet is None else self.feet.loops()) + [
                 f"ltdl_solve_columns<Scalar, {self.nv}, {self.columns}>(dof_tree, solve_L, solve_D_inv, {target});"]
 
     def loops(self):
@@ -133,6 +137,8 @@ class LoopedSolve:
                   ", crba_loop and ltdl_factor M's factor over a table of the tree (the looped CRBA and factor)")
         rnea = ("" if self.rnea is None else ", rnea_derivatives_loop subtracts ∂τ/∂(q, v) over the table "
                 "(the RNEA's derivatives as a loop)")
+        rnea += ("" if self.feet is None else ", add_feet_force_term_derivatives adds ∂(Jᵀf)/∂q over the "
+                 "dof tree's ancestor pairs")
         return ("looped solve: %s writes the %d right-hand sides%s%s, ltdl_solve_columns "
                 "solves them all at once, one SIMD row update per factor entry (%d)"
                 % (terms_name, self.width, factor, rnea, self.factor_entries))
@@ -357,8 +363,11 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
         subtract = looped_rnea_derivatives.subtracted_from(robot, terms.outputs, "solve_rhs", columns)
         packed = LoopedFactor(parents=parents, terms=terms.outputs, unpack=False,
                               crba=looped_crba.LoopedCrba(robot=robot, terms=terms.outputs, packed=True))
+        feet = (LoopedFeetForces(parents=parents, root_dofs=robot.root_dofs, target="solve_rhs", stride=columns,
+                                 rows=rows_with_feet(robot, scene.feet_for(robot)))
+                if rnea and differentiate.feet_forces_looped(robot, len(scene.feet_for(robot))) else None)
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs,
-                            rnea=subtract if rnea else None, factor=packed if factor else None)
+                            rnea=subtract if rnea else None, factor=packed if factor else None, feet=feet)
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)
     assert terms.outputs[0].cols == solve.columns
     return solve

@@ -29,7 +29,8 @@ from ..algorithms.forward_dynamics import dof_parents
 from ..graph import expr as ex
 from ..views.coupled import tree_view
 from ..views.limbs import LimbError, isomorphic_limbs
-from . import body_tree, lane_functions, looped_crba, looped_factor, looped_rnea_derivatives, looped_solve, singular_mass
+from . import (body_tree, lane_functions, looped_crba, looped_factor, looped_feet_forces, looped_rnea_derivatives,
+               looped_solve, singular_mass)
 from .trace import signature, trace_function
 
 _LANE_SUM_INSTRUCTIONS = 2  # log2(LANES) horizontal additions
@@ -90,6 +91,8 @@ def _forms(robot, scene, name):
         forms["looped_crba"] = lambda: looped_factor.looped_function(robot, scene, name, crba=True)
     if looped_rnea_derivatives.has_looped_form(robot, name):
         forms["looped_rnea"] = lambda: looped_rnea_derivatives.looped_function(robot, scene, name)
+    if looped_feet_forces.has_looped_form(robot, name):
+        forms["looped_feet"] = lambda: looped_feet_forces.looped_function(robot, scene, name)
     if name in looped_solve.LOOP_TERMS and body_tree.applies(tree_view(robot)):  # coupled: projected
         forms["looped_rnea"] = lambda: looped_solve.looped_function(robot, scene, name, rnea=True)
     if name in looped_solve.LOOP_TERMS and body_tree.applies(robot):
@@ -128,13 +131,14 @@ _UNROLLED_PARTS = (
 
 
 # A forced schedule → the forms that satisfy it, in order of preference (limb lanes: the contact
-# derivatives' lane terms under their looped solve too).
-_FORCED = {"limb_lanes": ("limb_lanes", "lanes_looped_solve")}
+# derivatives' lane terms under their looped solve too; the looped RNEA derivatives: the feet's force
+# terms looped as well, as in ∂q̈'s looped solve).
+_FORCED = {"limb_lanes": ("limb_lanes", "lanes_looped_solve"), "looped_rnea": ("looped_rnea", "looped_feet")}
 
 _SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "looped_solve": "looped solve",
           "lanes_looped_solve": "limb lanes and a looped solve",
           "aba": "articulated-body algorithm", "looped_factor": "looped factor", "looped_crba": "looped CRBA",
-          "looped_rnea": "looped RNEA derivatives"}
+          "looped_rnea": "looped RNEA derivatives", "looped_feet": "looped feet force terms"}
 _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes, the trunk scalar)" % ex.LANES,
            "looped_solve": " (the solve's right-hand sides in SIMD across columns)",
            "lanes_looped_solve": " (the terms traced with the %d isomorphic limbs in SIMD lanes, the "
@@ -142,7 +146,8 @@ _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes,
            "aba": " (O(n); the scalar tree is CRBA + the sparse LᵀDL factor)",
            "looped_factor": " (the sparse LᵀDL factorisation a loop)",
            "looped_crba": " (a loop over the bodies, the tree's constants in a table)",
-           "looped_rnea": " (a loop over the bodies, the tree's constants in a table)"}
+           "looped_rnea": " (a loop over the bodies, the tree's constants in a table)",
+           "looped_feet": " (a loop over the dof tree's ancestor pairs)"}
 
 
 def scheduled_function(robot, scene, name):

@@ -1,7 +1,7 @@
 """The operation counts in a generated header are the operations its code executes: every function of
 a scene is compiled with a scalar type that counts every arithmetic operator, sin, cos and sqrt, and
 one call must match the header's table kind by kind. Run on the looped forms (passes/looped_crba.py,
-looped_factor.py, looped_solve.py, looped_rnea_derivatives.py: loops counted by trip count, the traced parts node by node) on a
+looped_factor.py, looped_solve.py, looped_rnea_derivatives.py, looped_feet_forces.py: loops counted by trip count, the traced parts node by node) on a
 branched tree with revolute and prismatic joints and two feet in contact, floating and fixed, on a
 mimic-coupled gripper's looped solve and RNEA derivatives, and on the Mini Cheetah's `full` scene (limb lanes: a lane operation counts four, a sum over the lanes three)."""
 import os
@@ -26,7 +26,7 @@ LINK = ('<link name="l{i}"><inertial><origin xyz="0.02 0.01 0.1"/><mass value="0
 LOOPED_CRBA = ("name: counted\nquantities: [mass_matrix, mass_matrix_factor]\nderivatives: [forward_dynamics_derivatives]\n"
                "schedule: looped_crba\n")
 LOOPED_RNEA = ("name: counted\nderivatives: [inverse_dynamics_derivatives, bias_derivatives, gravity_derivatives, "
-               "forward_dynamics_derivatives]\nschedule: looped_rnea\n")
+               "forward_dynamics_derivatives, feet_force_term_derivatives]\nschedule: looped_rnea\n")
 LOOPED_SOLVE = ("name: counted\nquantities: [forward_dynamics, contact_dynamics, impulse_dynamics]\n"
                 "derivatives: [forward_dynamics_derivatives, contact_dynamics_derivatives]\nschedule: looped_solve\n")
 COUPLED_LOOPED_SOLVE = "name: counted\nderivatives: [forward_dynamics_derivatives]\nschedule: looped_solve\n"

@@ -13,6 +13,7 @@ from numeric_check import evaluate as numeric_evaluate, random_state
 from test_derivatives import ALL, CASES, TOLERANCE, central_difference, relative_error
 from rbdcgen.graph import expr as ex
 from rbdcgen.algorithms.forward_dynamics import dof_parents
+from rbdcgen.passes import looped_feet_forces
 from rbdcgen.passes.looped_rnea_derivatives import has_looped_form
 from rbdcgen.views.coupled import tree_view
 from rbdcgen.errors import RbdcError
@@ -126,6 +127,8 @@ class CoupledDofTree(unittest.TestCase):
         fingers = load(MIMIC_FINGERS)
         self.assertTrue(all(has_looped_form(fingers, name) for name in
                             ("inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives")))
+        # the feet's force-term derivatives stay traced and projected (passes/looped_feet_forces.py)
+        self.assertFalse(looped_feet_forces.has_looped_form(fingers, "feet_force_term_derivatives"))
 
     def test_a_coupling_across_branches_factorises_densely(self):
         # a2's dof also moves b2, below b1 (numbered after a2): no tree, every dof the previous one's child

@@ -1,0 +1,87 @@
+"""The feet's force-term derivatives as a loop (passes/looped_feet_forces.py): the traced axes and
+moments rebuild ∂(Jᵀf)/∂q by the loop's rule (numpy here; the C++ loop against the runtime in
+generator_verify_random_looped_rnea, its operation count in product/test_operation_counts.py);
+`auto` keeps the unrolled term where it is cheaper and loops a long chain's; ∂q̈'s looped RNEA form
+takes the loop (a coupled robot's does not: test_coupling.py); outputs with many zeros are cleared by a loop."""
+
+import os
+import unittest
+
+import numpy as np
+from numeric_check import DATA, chain, evaluate, random_state
+
+from rbdcgen.algorithms.forward_dynamics import dof_ancestors, dof_parents
+from rbdcgen.backend.emit import ZERO_FILL_MIN, emit_body
+from rbdcgen.frontend.ir import load_ir
+from rbdcgen.frontend.scene import scene_from_dict
+from rbdcgen.passes.schedule import scheduled_function
+from rbdcgen.passes.trace import trace_function
+
+FLOATING = load_ir(os.path.join(DATA, "tiny_floating.json"))
+NAME = "feet_force_term_derivatives"
+
+
+def scene(schedule, name=NAME):
+    return scene_from_dict({"name": "x", "derivatives": [name], "schedule": schedule})
+
+
+def rebuilt(robot, axes, moments, rows):
+    """The loop's rule: (y, x) and (x, y) = ω_x · χ_y for x above y, (y, y) = ω_y · χ_y over `rows`,
+    the trunk's (r, c) = ω_c · χ_r over its rotations."""
+    w, chi = np.reshape(axes, (robot.nv, 3)), np.reshape(moments, (robot.nv, 3))
+    out = np.zeros((robot.nv, robot.nv))
+    for r in range(robot.root_dofs):
+        for c in range(3):
+            out[r, c] += w[c] @ chi[r]
+    parents = dof_parents(robot)
+    for y in rows:
+        out[y, y] += w[y] @ chi[y]
+        for x in dof_ancestors(parents, y):
+            out[y, x] += w[x] @ chi[y]
+            out[x, y] += w[x] @ chi[y]
+    return out
+
+
+class LoopedFeetForces(unittest.TestCase):
+    def test_axes_and_moments_rebuild_the_unrolled_term(self):
+        for robot in (FLOATING, chain(7)):
+            looped = scheduled_function(robot, scene("looped_feet"), NAME)
+            unrolled = trace_function(robot, scene("scalar"), NAME)
+            for seed in range(3):
+                state = random_state(robot, len(robot.feet), seed)
+                terms = evaluate(looped, state)
+                want = np.reshape(evaluate(unrolled, state)["dtau_e_dq"], (robot.nv, robot.nv), order="F")
+                got = rebuilt(robot, terms["feet_axes"], terms["feet_moments"], looped.solve.rows)
+                self.assertLess(np.max(np.abs(got - want)), 1e-12 * max(1.0, np.max(np.abs(want))))
+                self.assertGreater(np.max(np.abs(want)), 1.0)  # a term to get wrong
+
+    def test_auto_keeps_the_short_term_unrolled_and_loops_a_long_chain(self):
+        small = scheduled_function(FLOATING, scene("auto"), NAME)
+        self.assertTrue(small.schedule.startswith("scalar tree"), small.schedule)
+        self.assertIn("looped feet force terms", small.schedule)  # traced and counted, not taken
+        large = scheduled_function(chain(100), scene("auto"), NAME)
+        self.assertTrue(large.schedule.startswith("looped feet force terms"), large.schedule)
+
+    def test_the_looped_rnea_solve_adds_the_term_by_the_loop(self):
+        fn = scheduled_function(FLOATING, scene("looped_rnea", "forward_dynamics_derivatives"),
+                                "forward_dynamics_derivatives")
+        self.assertEqual(fn.solve.feet.rows, (6, 7, 8))
+        self.assertTrue(all(x.is_const(0.0) for x in fn.values["rhs"][:FLOATING.nv]))  # ∂q columns of row 0
+        statements = fn.solve.loops()
+        loop = next(i for i, s in enumerate(statements) if s.startswith("add_feet_force_term_derivatives"))
+        solve = next(i for i, s in enumerate(statements) if s.startswith("ltdl_solve_columns"))
+        self.assertLess(loop, solve)
+        self.assertIn("<Scalar, 9, 32, 1, 34, 6, 3>", statements[loop])  # row-major right-hand sides
+
+    def test_many_zeros_are_cleared_by_a_loop(self):
+        fn = scheduled_function(chain(40), scene("looped_crba", "forward_dynamics_derivatives"),
+                                "forward_dynamics_derivatives")
+        zeros = sum(1 for x in fn.values["rhs"] if x.is_const(0.0))
+        self.assertGreaterEqual(zeros, ZERO_FILL_MIN)
+        body = emit_body(fn)
+        self.assertEqual(body[0], "for (int k = 0; k < %d; ++k) rhs[k] = Scalar(0);" % len(fn.values["rhs"]))
+        self.assertFalse([s for s in body if s.startswith("rhs[") and s.endswith("= Scalar(0);")])
+
+
+if __name__ == "__main__":
+    unittest.main()
