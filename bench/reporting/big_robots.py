@@ -30,6 +30,12 @@ FLOP_FUNCTIONS = {"gravity_terms": "gravity_terms", "bias": "inverse_dynamics",
 COMPILE_FLAGS = ["-std=c++17", "-O3", "-march=native", "-DNDEBUG", "-I/usr/include/eigen3"]
 
 
+def loader_args(robot):
+    """The rbdc options that load `robot` as bench/big_robots.json says (its mimic joints)."""
+    entry = next(r for r in json.loads((ROOT / "bench" / "big_robots.json").read_text())["robots"] if r["name"] == robot)
+    return ["--independent-mimic"] if entry.get("mimic") == "independent" else []
+
+
 def configured_robots(build_dir):
     """{name: (URDF path, base)} of the big robots the configure step took (cmake/RbdcBigRobots.cmake
     says each on a status line; a corpus robot without its URDF is not there)."""
@@ -167,7 +173,8 @@ def report(build_root, compiler, args):
     for robot, (urdf, base) in robots.items():
         counts = {}
         for scene in ("full", "derivatives"):
-            for function, kinds in flop_counts(build_dir, scene, {robot: (urdf, base)}).get(robot, {}).items():
+            for function, kinds in flop_counts(build_dir, scene, {robot: (urdf, base)},
+                                               loader_args(robot)).get(robot, {}).items():
                 counts.setdefault(function, kinds)
         details["robots"][robot] = {"urdf": os.path.relpath(urdf, ROOT), "base": base,
                                     "times": robot_table(robot, cases, counts),

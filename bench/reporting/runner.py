@@ -70,9 +70,10 @@ def bench_statistics(results, statistic):
     return values
 
 
-def flop_counts(build_dir, scene=None, robots=None):
+def flop_counts(build_dir, scene=None, robots=None, loader_args=()):
     """{robot: {function: {"generated": total, "generic": total}}} from `rbdc flops --json`, for
-    `robots` ({name: (URDF path, base)}; default: the bundled robots)."""
+    `robots` ({name: (URDF path, base)}; default: the bundled robots), loaded with `loader_args`
+    (`--independent-mimic`: as the benchmarks load them)."""
     counts = {}
     env = dict(os.environ, RBDC_BUILD_DIR=str(build_dir))
     if robots is None:
@@ -81,7 +82,7 @@ def flop_counts(build_dir, scene=None, robots=None):
         if not urdf.exists():
             continue
         scene_args = ["--scene", ROOT / "scenes" / f"{scene}.yaml"] if scene else []
-        result = subprocess.run([ROOT / "rbdc", "flops", urdf, f"--{base}-base", "--json"] + scene_args,
+        result = subprocess.run([ROOT / "rbdc", "flops", urdf, f"--{base}-base", "--json", *loader_args] + scene_args,
                                 cwd=ROOT, env=env, capture_output=True, text=True)
         if result.returncode != 0:
             say(f"rbdc flops failed for {robot}: {result.stderr.strip()[-400:]}")
