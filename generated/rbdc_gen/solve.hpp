@@ -353,25 +353,32 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_sparse_minus(const RowSpars
 /// ω_x · χ_y for each dof x above y in the dof tree, (y, y) ω_y · χ_y, for the dofs y in `rows`
 /// (those with a foot below them); the floating trunk's block (r, c) is ω_c · χ_r, c over its three
 /// rotations (its first Root dofs are one body). ω: each dof's world axis (zero for a translation),
-/// χ = Σ_k J_k × f_k, both NV × 3 row-major.
-template <class Scalar, int NV, int RowStride, int ColumnStride, int NE, int Root, int NR>
+/// χ = Σ_k J_k × f_k, both NV × 3 row-major. Projected: the dofs are a mimic-coupled robot's tree
+/// dofs, entry (y, x) going to (column[y], column[x]) times weight[y] weight[x] (Gᵀ X G).
+template <class Scalar, int NV, int RowStride, int ColumnStride, int NE, int Root, int NR, bool Projected = false>
 RBDC_HOST_DEVICE inline void add_feet_force_term_derivatives(const DofTree<NV, NE>& tree, const int* rows,
-                                                             const Scalar* axis, const Scalar* moment,
-                                                             Scalar* B) noexcept {
+                                                             const Scalar* axis, const Scalar* moment, Scalar* B,
+                                                             const int* column = nullptr,
+                                                             const double* weight = nullptr) noexcept {
   const auto dot = [&](int x, int y) {
     return axis[3 * x] * moment[3 * y] + axis[3 * x + 1] * moment[3 * y + 1] + axis[3 * x + 2] * moment[3 * y + 2];
   };
-  const auto at = [&](int y, int x) -> Scalar& { return B[y * RowStride + x * ColumnStride]; };
+  const auto add = [&](int y, int x, const Scalar& entry) {
+    if constexpr (Projected)
+      B[column[y] * RowStride + column[x] * ColumnStride] += Scalar(weight[y] * weight[x]) * entry;
+    else
+      B[y * RowStride + x * ColumnStride] += entry;
+  };
   for (int r = 0; r < Root; ++r)
-    for (int c = 0; c < 3; ++c) at(r, c) += dot(c, r);
+    for (int c = 0; c < 3; ++c) add(r, c, dot(c, r));
   for (int k = 0; k < NR; ++k) {
     const int y = rows[k];
-    at(y, y) += dot(y, y);
+    add(y, y, dot(y, y));
     for (int e = tree.first[y]; e < tree.first[y + 1]; ++e) {
       const int x = tree.ancestor[e];
       const Scalar entry = dot(x, y);
-      at(y, x) += entry;
-      at(x, y) += entry;
+      add(y, x, entry);
+      add(x, y, entry);
     }
   }
 }

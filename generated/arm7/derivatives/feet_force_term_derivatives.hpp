@@ -7,11 +7,11 @@
 // feet_force_term_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_term_derivatives is the same code:
-//   arm7/common/feet_force_term_derivatives_e3d9489dfa58.hpp
+//   arm7/common/feet_force_term_derivatives_6c1b148fd26a.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/feet_force_term_derivatives_e3d9489dfa58.hpp"
+#include "arm7/common/feet_force_term_derivatives_6c1b148fd26a.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::arm7::derivatives {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             203  129    0     0    12    3    347
-/// schedule: scalar tree: 347 arithmetic instructions, looped feet force terms 477 (cost 564)
-using ::rbdc_gen::arm7::common::feet_force_term_derivatives_e3d9489dfa58::feet_force_term_derivatives;
+/// schedule: scalar tree: 347 arithmetic instructions, looped feet force terms 477 (cost 1020)
+using ::rbdc_gen::arm7::common::feet_force_term_derivatives_6c1b148fd26a::feet_force_term_derivatives;
 
 /// feet_force_term_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_bf5aa92aea57.hpp
+//   arm7/common/forward_dynamics_derivatives_9f47ba53fd2e.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_bf5aa92aea57.hpp"
+#include "arm7/common/forward_dynamics_derivatives_9f47ba53fd2e.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -31,8 +31,8 @@ namespace rbdc_gen::arm7::derivatives {
 ///             3538  3058    6     0    14   15   6631
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4993 arithmetic
 ///   instructions (cost 6459), scalar tree 6236 (cost 10206), looped RNEA derivatives 6520
-///   (cost 8222), looped CRBA 8660 (cost 11504)
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_bf5aa92aea57::forward_dynamics_derivatives;
+///   (cost 8678), looped CRBA 8660 (cost 11960)
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_9f47ba53fd2e::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

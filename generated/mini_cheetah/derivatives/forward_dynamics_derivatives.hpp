@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_b3edc88df055.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_49088c4d602c.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_b3edc88df055.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_49088c4d602c.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -31,8 +31,8 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///             14047  12483   14     0    24  227  26795
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 7721 arithmetic
 ///   instructions (cost 13770), scalar tree 25981 (cost 57594), looped solve 17388 (cost
-///   27698), looped RNEA derivatives 20081 (cost 25639), looped CRBA 23759 (cost 33495)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b3edc88df055::forward_dynamics_derivatives;
+///   27698), looped RNEA derivatives 20081 (cost 27491), looped CRBA 23759 (cost 35347)
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_49088c4d602c::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -30,6 +30,7 @@ from ..algorithms import contact_dynamics as cd
 from ..algorithms import aba, crba, feet_force_derivatives, feet_motion_derivatives, jacobian, kinematics, rnea
 from ..algorithms.rnea_derivatives import has_rotors, rnea_derivatives
 from ..graph.manifold import configuration_seeds, q_direction, v_direction, velocity_seeds
+from ..views.coupled import tree_view
 
 # The primal function each derivative is compared with in `rbdc flops` (the issue's targets are
 # ratios to one primal call). bias_derivatives differentiates inverse dynamics at a = 0.
@@ -327,11 +328,6 @@ def forward_dynamics_derivative_terms(m, looped_rnea=False, looped_factor=False)
     return replace_symbols(terms, m.a, aba.forward_dynamics_aba(m) if looped_factor else fd.forward_dynamics(m))
 
 
-def feet_forces_looped(robot, n_feet):
-    """Whether the looped RNEA derivatives' solve has the feet's force-term derivatives as a loop
-    (looped_feet_forces.py): a coupled robot's stay traced, projected (project.py)."""
-    return n_feet > 0 and not robot.couplings
-
 
 # The column blocks of contact_dynamics_derivatives: (∂a output, ∂λ output), in column order.
 CONTACT_COLUMNS = (("da_dq", "dlambda_dq"), ("da_dv", "dlambda_dv"), ("da_dtau", "dlambda_dtau"))
@@ -464,8 +460,9 @@ def spec(robot, nf, nc):
     column-major entries})."""
     nv, nj, m3 = robot.nv, robot.n_joints, 3 * nc
     on_q = "; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)"
-    looped_feet = [("feet_axes", 3, nv, "each dof's world axis (zero for a translation)"),
-                   ("feet_moments", 3, nv, "χ = Σ_k J_k × f_k per dof")] * feet_forces_looped(robot, nf)
+    tree_nv = tree_view(robot).nv  # the feet's force-term loop runs on a coupled robot's tree
+    looped_feet = [("feet_axes", 3, tree_nv, "each (tree) dof's world axis (zero for a translation)"),
+                   ("feet_moments", 3, tree_nv, "χ = Σ_k J_k × f_k per (tree) dof")] * (nf > 0)
     return {
         "inverse_dynamics_derivatives": (
             "Derivatives of the inverse dynamics τ = M a + c + g (∂τ/∂a is M).", ("q", "v", "a"),

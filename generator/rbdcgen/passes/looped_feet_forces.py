@@ -1,7 +1,7 @@
 """The feet's force-term derivatives ∂(Jᵀf)/∂q as a loop over the dof tree's ancestor pairs: the
 looped form of feet_force_term_derivatives, and part of forward_dynamics_derivatives' looped solves
-whose RNEA derivatives are a loop too (looped_solve.py). Not for a mimic-coupled robot (its term
-is traced and projected, project.py).
+whose RNEA derivatives are a loop too (looped_solve.py). A mimic-coupled robot's loop runs on its
+tree, each entry projected as it is written (Gᵀ X G, as the looped RNEA derivatives').
 
 Unrolled (algorithms/feet_force_derivatives.py), the term is one straight-line dot product per
 (dof, ancestor) pair of each foot's path: O(n·depth) statements, 54 553 for a 100-body chain with a
@@ -17,34 +17,47 @@ from typing import ClassVar, Tuple
 
 from ..algorithms.feet_force_derivatives import rows_with_feet
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents
+from ..views.coupled import tree_view, velocity_columns
 from . import body_tree
 from .trace import Argument, with_loop
 
 NAME = "feet_force_term_derivatives"
 TERMS = "feet_force_term_derivative_moments"  # the traced part: the dofs' axes and force moments
 DOT = (3, 2)
+# What one counted instruction of the loop weighs in passes/schedule.py's units, as measured (clang 14,
+# AMD EPYC Zen 4, one core): feet_force_term_derivatives unrolled against looped, in one driver:
+# a floating 100-body chain 8.4 against 11.2 µs (costs 65 032 and 44 834 instructions), TALOS as
+# shipped 1.27 against 2.2 µs (19 026 and 9 721 instructions, its entries projected). The unrolled
+# term folds the zero axes and writes each entry once; the loop reads and writes each entry twice.
+LOOP_WEIGHT = 3.5
 
 
 @dataclass(frozen=True)
 class LoopedFeetForces:
-    """add_feet_force_term_derivatives over `parents` (the dof tree), for the dofs `rows`, from the
-    terms' feet_axes and feet_moments into `target`: row-major right-hand sides `stride` wide, or
-    (`stride` 0) the column-major nv × nv output, cleared first, whose terms are `terms`."""
+    """add_feet_force_term_derivatives over `parents` (the tree's dof tree), for the dofs `rows`, from
+    the terms' feet_axes and feet_moments into `target`: row-major right-hand sides `stride` wide,
+    or (`stride` 0) the column-major `columns` × `columns` output, cleared first, whose terms are
+    `terms`. `coupling`, for a coupled robot, G as per tree dof (independent dof, multiplier): each
+    entry is then projected."""
     parents: Tuple[int, ...]
     root_dofs: int
     rows: Tuple[int, ...]
     target: str
+    columns: int
     stride: int = 0
     terms: Tuple[Argument, ...] = ()
+    coupling: Tuple[Tuple[int, float], ...] = ()
     headers: ClassVar[Tuple[str, ...]] = ("rbdc_gen/solve.hpp",)
 
     def _pairs(self):
         return sum(len(dof_ancestors(self.parents, y)) for y in self.rows)
 
     def operations(self):
-        """Per entry a dot product and an addition; an ancestor's entry is added twice, (y, x) and (x, y)."""
+        """Per entry a dot product and an addition; an ancestor's entry is added twice, (y, x) and (x, y);
+        projected, a multiplication per addition."""
         entries = 3 * self.root_dofs + len(self.rows) + self._pairs()
-        return {"mul": DOT[0] * entries, "add": (DOT[1] + 1) * entries + self._pairs()}
+        writes = entries + self._pairs()
+        return {"mul": DOT[0] * entries + (writes if self.coupling else 0), "add": DOT[1] * entries + writes}
 
     def instructions(self):
         """The arithmetic fused, and STEP_OVERHEAD per entry (its loads and stores)."""
@@ -53,19 +66,26 @@ class LoopedFeetForces:
         return max(ops["mul"], ops["add"]) + body_tree.STEP_OVERHEAD * entries
 
     def cost(self):
-        return body_tree.LOOP_WEIGHT * self.instructions()
+        return LOOP_WEIGHT * self.instructions()
 
     def loops(self):
-        """The C++ statements; in a solve, after its declaration of the dof tree's table `dof_tree`."""
+        """The C++ statements; in a solve of an uncoupled robot, after its declaration of the same dof
+        tree's table `dof_tree`."""
         from .looped_solve import dof_tree  # it imports this module
-        n, rows = len(self.parents), self.rows
-        strides = f"{self.stride}, 1" if self.stride else f"1, {n}"
-        own = [] if self.stride else [dof_tree(self.parents),
-                                      f"for (int k = 0; k < {n * n}; ++k) {self.target}[k] = Scalar(0);"]
-        return own + [f"const int feet_rows[{max(1, len(rows))}] = {{{', '.join(map(str, rows)) or '0'}}};",
-                      f"add_feet_force_term_derivatives<Scalar, {n}, {strides}, {_entries(self.parents)}, "
-                      f"{self.root_dofs}, {len(rows)}>(dof_tree, feet_rows, solve_feet_axes, solve_feet_moments, "
-                      f"{self.target});"]
+        n, rows, columns = len(self.parents), self.rows, self.columns
+        strides = f"{self.stride}, 1" if self.stride else f"1, {columns}"
+        table = "dof_tree" if self.stride and not self.coupling else "feet_dof_tree"
+        own = [] if table == "dof_tree" else [dof_tree(self.parents, table)]
+        own += [] if self.stride else [f"for (int k = 0; k < {columns * columns}; ++k) {self.target}[k] = Scalar(0);"]
+        own.append(f"const int feet_rows[{max(1, len(rows))}] = {{{', '.join(map(str, rows)) or '0'}}};")
+        projection = ""
+        if self.coupling:
+            own += [f"const int feet_column[{n}] = {{{', '.join(str(k) for k, _ in self.coupling)}}};",
+                    f"const double feet_weight[{n}] = {{{', '.join(repr(w) for _, w in self.coupling)}}};"]
+            projection = ", feet_column, feet_weight"
+        return own + [f"add_feet_force_term_derivatives<Scalar, {n}, {strides}, {_entries(self.parents)}, "
+                      f"{self.root_dofs}, {len(rows)}{', true' if self.coupling else ''}>({table}, feet_rows, "
+                      f"solve_feet_axes, solve_feet_moments, {self.target}{projection});"]
 
     def emission(self, terms_name):
         return ("looped feet force terms: %s writes each dof's world axis and force moment, "
@@ -74,16 +94,21 @@ class LoopedFeetForces:
 
 
 def has_looped_form(robot, name):
-    return name == NAME and not robot.couplings
+    return name == NAME
+
+
+def on_tree(robot, scene, target, **keys):
+    """The loop over `robot`'s tree (a coupled robot's projected) for the scene's feet, into `target`."""
+    tree = tree_view(robot)
+    return LoopedFeetForces(parents=tuple(dof_parents(tree)), root_dofs=robot.root_dofs,
+                            rows=rows_with_feet(tree, scene.feet_for(robot)), target=target, columns=robot.nv,
+                            coupling=tuple(velocity_columns(robot)) if robot.couplings else (), **keys)
 
 
 def looped_function(robot, scene, name):
     """feet_force_term_derivatives in its looped form: the traced axes and moments, then the loop."""
-    def loop(terms, outputs):
-        return LoopedFeetForces(parents=tuple(dof_parents(robot)), root_dofs=robot.root_dofs,
-                                rows=rows_with_feet(robot, scene.feet_for(robot)), target=outputs[0].name,
-                                terms=terms.outputs)
-    return with_loop(robot, scene, name, TERMS, loop)
+    return with_loop(robot, scene, name, TERMS,
+                     lambda terms, outputs: on_tree(robot, scene, outputs[0].name, terms=terms.outputs))
 
 
 def _entries(parents):

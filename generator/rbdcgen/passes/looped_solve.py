@@ -16,11 +16,9 @@ from dataclasses import dataclass, replace
 from typing import Optional, Tuple
 
 from ..algorithms.contact_dynamics import PROXIMAL_STEPS
-from ..algorithms.feet_force_derivatives import rows_with_feet
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
 from ..graph import expr as ex
-from . import differentiate, lane_contact_derivatives, looped_crba, looped_rnea_derivatives
-from .looped_feet_forces import LoopedFeetForces
+from . import differentiate, lane_contact_derivatives, looped_crba, looped_feet_forces, looped_rnea_derivatives
 from .looped_rnea_derivatives import LoopedRneaDerivatives
 from .trace import Argument, with_loop
 
@@ -51,7 +49,7 @@ class LoopedSolve:
     terms: Tuple[Argument, ...]
     rnea: Optional[LoopedRneaDerivatives] = None
     factor: object = None
-    feet: Optional[LoopedFeetForces] = None
+    feet: Optional[looped_feet_forces.LoopedFeetForces] = None
     # per terms output whose entries a lane function keeps elsewhere than row-major (lane_places): where
     # each row-major entry is (None: zero, not stored)
     places: Tuple[Tuple[str, Tuple[Optional[int], ...]], ...] = ()
@@ -218,8 +216,8 @@ def _triangle(m):
     return m * (m + 1) // 2
 
 
-def dof_tree(parents):
-    """The C++ declaration of the rbdc_gen::DofTree `dof_tree` of the dof parents."""
+def dof_tree(parents, name="dof_tree"):
+    """The C++ declaration of the rbdc_gen::DofTree `name` of the dof parents."""
     n = len(parents)
     ancestors = [dof_ancestors(parents, i) for i in range(n)]
     first = packed_starts(parents)
@@ -239,7 +237,7 @@ def dof_tree(parents):
               table(below_first, n + 1), table([i for column in below for i, _ in column], entries),
               table([k for column in below for _, k in column], entries),
               table(_pairs_with_parent(parents, below), n), table(_pairs_with_child(parents), n)]
-    return "const DofTree<%d, %d> dof_tree{%s};" % (n, entries, ", ".join(tables))
+    return "const DofTree<%d, %d> %s{%s};" % (n, entries, name, ", ".join(tables))
 
 
 def _pairs_with_parent(parents, below):
@@ -363,9 +361,7 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
         subtract = looped_rnea_derivatives.subtracted_from(robot, terms.outputs, "solve_rhs", columns)
         packed = LoopedFactor(parents=parents, terms=terms.outputs, unpack=False,
                               crba=looped_crba.LoopedCrba(robot=robot, terms=terms.outputs, packed=True))
-        feet = (LoopedFeetForces(parents=parents, root_dofs=robot.root_dofs, target="solve_rhs", stride=columns,
-                                 rows=rows_with_feet(robot, scene.feet_for(robot)))
-                if rnea and differentiate.feet_forces_looped(robot, len(scene.feet_for(robot))) else None)
+        feet = looped_feet_forces.on_tree(robot, scene, "solve_rhs", stride=columns) if rnea and scene.feet_for(robot) else None
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs,
                             rnea=subtract if rnea else None, factor=packed if factor else None, feet=feet)
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)

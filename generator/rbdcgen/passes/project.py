@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from ..graph import expr as ex
 from ..algorithms.crba import mass_matrix
-from ..algorithms.feet_force_derivatives import feet_force_term_derivatives
+from ..algorithms.feet_force_derivatives import axes_and_moments
 from ..algorithms.jacobian import feet_jacobian
 from ..algorithms.rnea_derivatives import has_rotors
 from ..algorithms.forward_dynamics import dof_parents, factor_outputs, ltdl, ltdl_solve, packed_factor
@@ -34,10 +34,12 @@ _COLS_IN_V = {"J", "M", "dpdot_dq"} | _DERIVATIVES_IN_V
 # a robot with rotors) seed the tree's coordinates, which a coupled robot's expanded inputs are not.
 _ANALYTIC_DERIVATIVES = {"inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives",
                          "feet_force_term_derivatives", "feet_velocity_derivatives"}
-# The looped RNEA derivatives' traced part (bodies' transforms and gravity: nothing in v) runs on the
-# tree as it is; their loop projects (passes/looped_rnea_derivatives.py).
+
+# The looped RNEA derivatives' traced part (bodies' transforms and gravity: nothing in v) and the feet
+# force-term loop's (axes and moments) run on the tree as it is; their loops project
+# (passes/looped_rnea_derivatives.py, looped_feet_forces.py).
 _TREE_TERMS = {"inverse_dynamics_derivative_transforms", "bias_derivative_transforms",
-               "gravity_derivative_transforms"}
+               "gravity_derivative_transforms", "feet_force_term_derivative_moments"}
 _PROJECTED = {"feet_positions", "feet_velocities", "feet_jacobian", "quadratic_velocity_terms",
               "gravity_terms", "bias", "feet_force_terms", "inverse_dynamics",
               "mass_matrix"} | _ANALYTIC_DERIVATIVES
@@ -129,15 +131,12 @@ def _forward_dynamics(robot, m):
 def _forward_dynamics_derivative_columns(robot, m, looped_rnea=False):
     """{output: columns} of forward_dynamics_derivatives before M'⁻¹: −Gᵀ ∂(RNEA − τ_e) G at
     a_tree = G a' (a' the placeholder), S'ᵀ and (J G)ᵀ. With `looped_rnea` the ∂q and ∂v columns
-    leave out the RNEA's part (+Gᵀ ∂τ_e/∂q G and 0): the looped RNEA derivatives subtract it,
-    projected (passes/looped_rnea_derivatives.py)."""
+    are zero: the looped RNEA derivatives subtract the RNEA's part and a loop adds ∂τ_e/∂q, both
+    projected (passes/looped_rnea_derivatives.py, looped_feet_forces.py)."""
     n, root = robot.nv, robot.root_dofs
     if looped_rnea:
         zero = ex.const(0.0)
-        external = (_projected_square(robot, feet_force_term_derivatives(m)) if m.feet
-                    else [[zero] * n for _ in range(n)])
-        columns = {"da_dq": [[external[r][c] for r in range(n)] for c in range(n)],
-                   "da_dv": [[zero] * n for _ in range(n)]}
+        columns = {"da_dq": [[zero] * n for _ in range(n)], "da_dv": [[zero] * n for _ in range(n)]}
     else:
         dq, dv = (_projected_square(robot, x) for x in residual_derivatives(m))
         columns = {"da_dq": [[-dq[r][c] for r in range(n)] for c in range(n)],
@@ -176,4 +175,6 @@ def _forward_dynamics_derivative_terms(robot, m, looped_rnea=False):
              "L": packed_factor(L, parents), "D_inv": inv_diag}
     if looped_rnea:
         terms.update(transforms_and_gravity(m), a=a)
+        if m.feet:
+            terms.update(axes_and_moments(m))
     return replace_symbols(terms, a, _forward_dynamics(robot, m))

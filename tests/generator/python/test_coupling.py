@@ -127,8 +127,10 @@ class CoupledDofTree(unittest.TestCase):
         fingers = load(MIMIC_FINGERS)
         self.assertTrue(all(has_looped_form(fingers, name) for name in
                             ("inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives")))
-        # the feet's force-term derivatives stay traced and projected (passes/looped_feet_forces.py)
-        self.assertFalse(looped_feet_forces.has_looped_form(fingers, "feet_force_term_derivatives"))
+        # the feet's force-term loop too (passes/looped_feet_forces.py): on the tree's 5 dofs, projected
+        feet = looped_feet_forces.on_tree(fingers, Scene(name="x"), "out")
+        self.assertEqual((len(feet.parents), feet.columns, len(feet.coupling)), (5, 4, 5))
+        self.assertIn(", true>(feet_dof_tree", feet.loops()[-1])
 
     def test_a_coupling_across_branches_factorises_densely(self):
         # a2's dof also moves b2, below b1 (numbered after a2): no tree, every dof the previous one's child

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::feet_force_term_derivatives_66e95127783d {
+namespace rbdc_gen::humanoid32::common::feet_force_term_derivatives_8a6a54943fc0 {
 
 /// Derivative of τ_e = Jᵀf at fixed world foot forces f.
 ///
@@ -20,7 +20,7 @@ namespace rbdc_gen::humanoid32::common::feet_force_term_derivatives_66e95127783d
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1812  1298    0     0    46    0   3156
-/// schedule: scalar tree: 3156 arithmetic instructions, looped feet force terms 4839 (cost 6006)
+/// schedule: scalar tree: 3156 arithmetic instructions, looped feet force terms 4839 (cost 12134)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void feet_force_term_derivatives(const Scalar* q, const Scalar* f, Scalar* dtau_e_dq) noexcept {
   for (int k = 0; k < 1444; ++k) dtau_e_dq[k] = Scalar(0);
@@ -1335,4 +1335,4 @@ RBDC_HOST_DEVICE inline void feet_force_term_derivatives(const Scalar* q, const 
   dtau_e_dq[1364] = t845;
 }
 
-}  // namespace rbdc_gen::humanoid32::common::feet_force_term_derivatives_66e95127783d
+}  // namespace rbdc_gen::humanoid32::common::feet_force_term_derivatives_8a6a54943fc0

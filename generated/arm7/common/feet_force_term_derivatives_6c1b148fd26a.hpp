@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::feet_force_term_derivatives_e3d9489dfa58 {
+namespace rbdc_gen::arm7::common::feet_force_term_derivatives_6c1b148fd26a {
 
 /// Derivative of τ_e = Jᵀf at fixed world foot forces f.
 ///
@@ -20,7 +20,7 @@ namespace rbdc_gen::arm7::common::feet_force_term_derivatives_e3d9489dfa58 {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             203  129    0     0    12    3    347
-/// schedule: scalar tree: 347 arithmetic instructions, looped feet force terms 477 (cost 564)
+/// schedule: scalar tree: 347 arithmetic instructions, looped feet force terms 477 (cost 1020)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void feet_force_term_derivatives(const Scalar* q, const Scalar* f, Scalar* dtau_e_dq) noexcept {
   // sines and cosines of the joint angles
@@ -213,4 +213,4 @@ RBDC_HOST_DEVICE inline void feet_force_term_derivatives(const Scalar* q, const 
   dtau_e_dq[47] = t113;
 }
 
-}  // namespace rbdc_gen::arm7::common::feet_force_term_derivatives_e3d9489dfa58
+}  // namespace rbdc_gen::arm7::common::feet_force_term_derivatives_6c1b148fd26a

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b3edc88df055 {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_49088c4d602c {
 
 /// Derivatives of the forward dynamics a = M⁻¹(Sᵀτ + Jᵀf − c − g): −M⁻¹ ∂(RNEA − τ_e) at (q, v, a),
 /// M⁻¹Sᵀ and M⁻¹Jᵀ, solved with the sparse LᵀDL factor of M.
@@ -29,7 +29,7 @@ namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b3edc88df
 ///             14047  12483   14     0    24  227  26795
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 7721 arithmetic
 ///   instructions (cost 13770), scalar tree 25981 (cost 57594), looped solve 17388 (cost
-///   27698), looped RNEA derivatives 20081 (cost 25639), looped CRBA 23759 (cost 33495)
+///   27698), looped RNEA derivatives 20081 (cost 27491), looped CRBA 23759 (cost 35347)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* da_df) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -2132,4 +2132,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   store_lanes(da_dq + 320, make_lanes(t1721[2], t1717[3], t1719[3], t1721[3]));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b3edc88df055
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_49088c4d602c

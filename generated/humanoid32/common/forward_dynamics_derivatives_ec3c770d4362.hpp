@@ -13,7 +13,7 @@
 #include "rbdc_gen/body_tree.hpp"
 #include "rbdc_gen/rnea_derivatives.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_57038a2d31da {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_ec3c770d4362 {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -5223,8 +5223,8 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 /// operations     mul     add  div  sqrt  trig  neg   total
 ///             132739  123886   33     0    64   52  256774
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
-///   83664 arithmetic instructions (cost 109778), scalar tree 131228 (cost 310187), looped
-///   solve 80616 (cost 126805), looped CRBA 93835 (cost 131249)
+///   83664 arithmetic instructions (cost 115906), scalar tree 131228 (cost 310187), looped
+///   solve 80616 (cost 126805), looped CRBA 93835 (cost 137377)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 123 right-hand sides and
 ///   the factor, rnea_derivatives_loop subtracts ∂τ/∂(q, v) over the table (the RNEA's
 ///   derivatives as a loop), add_feet_force_term_derivatives adds ∂(Jᵀf)/∂q over the dof
@@ -5252,4 +5252,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 38, 128>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_57038a2d31da
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_ec3c770d4362

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::feet_force_term_derivatives_5aeeac310867 {
+namespace rbdc_gen::mini_cheetah::common::feet_force_term_derivatives_1249c6e04c72 {
 
 /// Derivative of τ_e = Jᵀf at fixed world foot forces f.
 ///
@@ -20,7 +20,7 @@ namespace rbdc_gen::mini_cheetah::common::feet_force_term_derivatives_5aeeac3108
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             891  660    0     0    24    8   1583
-/// schedule: scalar tree: 1583 arithmetic instructions, looped feet force terms 1889 (cost 2242)
+/// schedule: scalar tree: 1583 arithmetic instructions, looped feet force terms 1889 (cost 4094)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void feet_force_term_derivatives(const Scalar* q, const Scalar* f, Scalar* dtau_e_dq) noexcept {
   // sines and cosines of the joint angles
@@ -805,4 +805,4 @@ RBDC_HOST_DEVICE inline void feet_force_term_derivatives(const Scalar* q, const 
   dtau_e_dq[308] = t402;
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::feet_force_term_derivatives_5aeeac310867
+}  // namespace rbdc_gen::mini_cheetah::common::feet_force_term_derivatives_1249c6e04c72
