@@ -354,8 +354,9 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_sparse_minus(const RowSpars
 /// (those with a foot below them); the floating trunk's block (r, c) is ω_c · χ_r, c over its three
 /// rotations (its first Root dofs are one body). ω: each dof's world axis (zero for a translation),
 /// χ = Σ_k J_k × f_k, both NV × 3 row-major. Projected: the dofs are a mimic-coupled robot's tree
-/// dofs, entry (y, x) going to (column[y], column[x]) times weight[y] weight[x] (Gᵀ X G).
-template <class Scalar, int NV, int RowStride, int ColumnStride, int NE, int Root, int NR, bool Projected = false>
+/// dofs, entry (y, x) going to (column[y], column[x]) times weight[y] weight[x] (Gᵀ X G). The table's
+/// sizes NV and NE are deduced from it.
+template <class Scalar, int RowStride, int ColumnStride, int Root, int NR, bool Projected = false, int NV, int NE>
 RBDC_HOST_DEVICE inline void add_feet_force_term_derivatives(const DofTree<NV, NE>& tree, const int* rows,
                                                              const Scalar* axis, const Scalar* moment, Scalar* B,
                                                              const int* column = nullptr,

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_ec3c770d4362.hpp
+//   humanoid32/common/forward_dynamics_derivatives_01a0284b08df.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_ec3c770d4362.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_01a0284b08df.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -32,7 +32,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
 ///   83664 arithmetic instructions (cost 115906), scalar tree 131228 (cost 310187), looped
 ///   solve 80616 (cost 126805), looped CRBA 93835 (cost 137377)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_ec3c770d4362::forward_dynamics_derivatives;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_01a0284b08df::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

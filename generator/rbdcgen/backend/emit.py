@@ -197,15 +197,15 @@ def emit_body(fn, angle_names=None):
         return "(%s)" % body if nested else body
 
     angle_names = dict(angle_names or {})
-    lines += ["for (int k = 0; k < %d; ++k) %s[k] = Scalar(0);" % (size, name)
-              for name, size in _zero_filled(fn).items()]
+    cleared = _zero_filled(fn)
+    lines += ["for (int k = 0; k < %d; ++k) %s[k] = Scalar(0);" % (size, name) for name, size in cleared.items()]
     if fn.lanes is not None:
         lines += _lane_block(fn, ex.reachable(fn.output_exprs()), names)
         angle_names.update(fn.lanes.angle_names)
     lines += _trig_block(trig, names, text, angle_names, fn.lanes)
     label = None
     index = 0
-    items = _early_stores(fn, temps)
+    items = _early_stores(fn, temps, cleared)
     tail = len(items)  # the trailing run of output stores gets the "// outputs" marker
     while tail > 0 and isinstance(items[tail - 1], list):
         tail -= 1
@@ -252,14 +252,14 @@ def _zero_filled(fn):
             if sum(1 for node in fn.values[arg.name] if node is not None and node.is_const(0.0)) >= ZERO_FILL_MIN}
 
 
-def _store_units(fn):
+def _store_units(fn, cleared):
     """The written output entries (argument name, index, node) grouped as they are stored: one by
     one; in a lane function, each run of consecutive written entries of an argument in vector
     stores of ex.LANES from the run's start (the Mini Cheetah's M in lanes: its 324 scalar stores
-    were the bottleneck, 172 -> 110 ns with g++; docs/performance.md), the rest one by one."""
+    were the bottleneck, 172 -> 110 ns with g++; docs/performance.md), the rest one by one. The zeros of
+    the outputs in `cleared` (_zero_filled) are not stored: a loop cleared them."""
     width = ex.LANES if fn.lanes is not None else 1
     units = []
-    cleared = _zero_filled(fn)
     for arg in fn.traced_arguments():
         runs = []  # maximal runs of consecutive written entries
         for k, node in enumerate(fn.values[arg.name]):
@@ -275,7 +275,7 @@ def _store_units(fn):
     return units
 
 
-def _early_stores(fn, temps):
+def _early_stores(fn, temps, cleared):
     """Creation order of the temporaries, each store unit (_store_units) right after the last
     temporary its entries need (the passes stay in order, each marker heads one pass)."""
     place = {n.id: i for i, n in enumerate(temps)}
@@ -294,7 +294,7 @@ def _early_stores(fn, temps):
         return best
 
     after = {}
-    for unit in _store_units(fn):
+    for unit in _store_units(fn, cleared):
         after.setdefault(max(finish(entry[2]) for entry in unit), []).append(unit)
     items = list(after.get(-1, []))
     for i, n in enumerate(temps):

@@ -52,18 +52,21 @@ class LoopedFeetForces:
     def _pairs(self):
         return sum(len(dof_ancestors(self.parents, y)) for y in self.rows)
 
+    def _entries(self):
+        """The entries computed: the trunk's block, each row's diagonal and its ancestor pairs."""
+        return 3 * self.root_dofs + len(self.rows) + self._pairs()
+
     def operations(self):
         """Per entry a dot product and an addition; an ancestor's entry is added twice, (y, x) and (x, y);
         projected, a multiplication per addition."""
-        entries = 3 * self.root_dofs + len(self.rows) + self._pairs()
+        entries = self._entries()
         writes = entries + self._pairs()
         return {"mul": DOT[0] * entries + (writes if self.coupling else 0), "add": DOT[1] * entries + writes}
 
     def instructions(self):
         """The arithmetic fused, and STEP_OVERHEAD per entry (its loads and stores)."""
         ops = self.operations()
-        entries = 3 * self.root_dofs + len(self.rows) + self._pairs()
-        return max(ops["mul"], ops["add"]) + body_tree.STEP_OVERHEAD * entries
+        return max(ops["mul"], ops["add"]) + body_tree.STEP_OVERHEAD * self._entries()
 
     def cost(self):
         return LOOP_WEIGHT * self.instructions()
@@ -83,7 +86,7 @@ class LoopedFeetForces:
             own += [f"const int feet_column[{n}] = {{{', '.join(str(k) for k, _ in self.coupling)}}};",
                     f"const double feet_weight[{n}] = {{{', '.join(repr(w) for _, w in self.coupling)}}};"]
             projection = ", feet_column, feet_weight"
-        return own + [f"add_feet_force_term_derivatives<Scalar, {n}, {strides}, {_entries(self.parents)}, "
+        return own + [f"add_feet_force_term_derivatives<Scalar, {strides}, "
                       f"{self.root_dofs}, {len(rows)}{', true' if self.coupling else ''}>({table}, feet_rows, "
                       f"solve_feet_axes, solve_feet_moments, {self.target}{projection});"]
 
@@ -109,8 +112,3 @@ def looped_function(robot, scene, name):
     """feet_force_term_derivatives in its looped form: the traced axes and moments, then the loop."""
     return with_loop(robot, scene, name, TERMS,
                      lambda terms, outputs: on_tree(robot, scene, outputs[0].name, terms=terms.outputs))
-
-
-def _entries(parents):
-    """The DofTree's entry count (looped_solve.dof_tree: one unused entry when none)."""
-    return max(1, sum(len(dof_ancestors(parents, i)) for i in range(len(parents))))

@@ -34,7 +34,6 @@ _COLS_IN_V = {"J", "M", "dpdot_dq"} | _DERIVATIVES_IN_V
 # a robot with rotors) seed the tree's coordinates, which a coupled robot's expanded inputs are not.
 _ANALYTIC_DERIVATIVES = {"inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives",
                          "feet_force_term_derivatives", "feet_velocity_derivatives"}
-
 # The looped RNEA derivatives' traced part (bodies' transforms and gravity: nothing in v) and the feet
 # force-term loop's (axes and moments) run on the tree as it is; their loops project
 # (passes/looped_rnea_derivatives.py, looped_feet_forces.py).
