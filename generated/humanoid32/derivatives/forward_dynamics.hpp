@@ -7,11 +7,11 @@
 // forward_dynamics for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   humanoid32/common/forward_dynamics_57013ecc5c90.hpp
+//   humanoid32/common/forward_dynamics_3987d225df61.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_57013ecc5c90.hpp"
+#include "humanoid32/common/forward_dynamics_3987d225df61.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -24,11 +24,13 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param f in  3x5: foot forces, world frame, one column per foot
 /// @param a out 38x1: acceleration
 ///
-/// operations   mul   add  div  sqrt  trig  neg  total
-///             6708  5167   33     0    64    1  11973
-/// schedule: articulated-body algorithm (O(n); the scalar tree is CRBA + the sparse LᵀDL factor):
-///   11973 arithmetic instructions (cost 23975), scalar tree 13701 (cost 28122)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_57013ecc5c90::forward_dynamics;
+/// operations    mul   add  div  sqrt  trig  neg  total
+///             13955  9886   55     0   116   50  24062
+/// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
+///   fewer than 4 repeated to fill the lanes); the rest scalar): 8558 arithmetic
+///   instructions (cost 15779), scalar tree 13701 (cost 28122), articulated-body algorithm
+///   11973 (cost 23975)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_3987d225df61::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

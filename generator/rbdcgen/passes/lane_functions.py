@@ -6,7 +6,7 @@ from __future__ import annotations
 from . import differentiate, lane_contact_derivatives, lane_derivatives
 from ..algorithms import centroidal, contact_dynamics, crba, forward_dynamics, osc, rnea
 from ..views.limb_lanes import LaneModel, contact_lanes, feet_shape, frame_shapes
-from ..views.limbs import isomorphic_limbs
+from ..views.limbs import isomorphic_limbs, limb_groups, quadruped_groups
 
 # derivative function → the trace of its lane function: its own on the lane model (the analytic RNEA
 # recursion: a limb's composites summed over the lanes where they join the trunk's), or for ∂a the
@@ -48,17 +48,30 @@ WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_derivatives_lanes", "os
              "contact_dynamics_derivative_terms_lanes")
 
 
+# functions whose lane form takes any groups of isomorphic limbs (views/limbs.limb_groups: a humanoid's
+# legs and arms in pairs, the spine scalar); the others need the quadruped's four limbs of the trunk
+ANY_GROUPS = ("bias", "inverse_dynamics", "mass_matrix", "mass_matrix_lower", "forward_dynamics",
+              "inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives")
+
+
 def model(robot, scene, zero_inputs, name):
-    """The traced model of lane function `name`: the trunk and one lane limb."""
-    return LaneModel(robot, scene, isomorphic_limbs(robot), zero_inputs, feet=name in WITH_FEET,
-                     frames=SCALAR[name] in FRAMES)
+    """The traced model of lane function `name`: the spine and one lane limb per group."""
+    groups = limb_groups(robot) if SCALAR[name] in ANY_GROUPS else quadruped_groups(robot)
+    return LaneModel(robot, scene, groups, zero_inputs, feet=name in WITH_FEET, frames=SCALAR[name] in FRAMES)
 
 
-def available(robot, scene, name, limbs):
-    """LimbError if the lane form of `name` does not apply to this scene: a frame function needs the
-    same frames on every limb (views/limb_lanes.frame_shapes), the contact functions one kept foot
-    and at most one contact per limb (contact_lanes), the feet's J̇v the same feet on every limb
-    (feet_shape)."""
+def available(robot, scene, name):
+    """LimbError if the lane form of `name` does not apply to this robot and scene: the functions
+    outside ANY_GROUPS need the quadruped's limbs (isomorphic_limbs), forward dynamics the same feet
+    on every limb of a group (feet_shape), a frame function the same frames on every limb
+    (views/limb_lanes.frame_shapes), the contact functions one kept foot and at most one contact per
+    limb (contact_lanes), the feet's J̇v the same feet on every limb (feet_shape)."""
+    if name in ANY_GROUPS:
+        for group in limb_groups(robot):
+            feet = [foot for foot in scene.feet_for(robot) if any(foot.body in limb for limb in group.limbs)]
+            feet_shape(robot.name, feet, group.limbs)
+        return
+    limbs = isomorphic_limbs(robot)
     if name in FRAMES:
         frame_shapes(scene.frames_for(robot), limbs)
     if name in CONTACT or name in CONTACT_TERMS:

@@ -28,7 +28,8 @@ from ..algorithms import aba
 from ..algorithms.forward_dynamics import dof_parents
 from ..graph import expr as ex
 from ..views.coupled import tree_view
-from ..views.limbs import LimbError, isomorphic_limbs
+from ..views import limbs
+from ..views.limbs import LimbError
 from . import (body_tree, lane_functions, looped_crba, looped_factor, looped_feet_forces, looped_rnea_derivatives,
                looped_solve, singular_mass)
 from .trace import signature, trace_function
@@ -104,7 +105,7 @@ def _lanes_apply(robot, scene, name):
     """Whether the lane function of `name` applies (lane_functions.available); a scene that forces
     limb lanes gets the reason when not."""
     try:
-        lane_functions.available(robot, scene, name, isomorphic_limbs(robot))
+        lane_functions.available(robot, scene, name)
         return True
     except LimbError:
         if scene.schedule == "limb_lanes":
@@ -139,7 +140,7 @@ _SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "looped_solve": "
           "lanes_looped_solve": "limb lanes and a looped solve",
           "aba": "articulated-body algorithm", "looped_factor": "looped factor", "looped_crba": "looped CRBA",
           "looped_rnea": "looped RNEA derivatives", "looped_feet": "looped feet force terms"}
-_DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes, the trunk scalar)" % ex.LANES,
+_DETAIL = {"scalar": "", "limb_lanes": " (%s)",
            "looped_solve": " (the solve's right-hand sides in SIMD across columns)",
            "lanes_looped_solve": " (the terms traced with the %d isomorphic limbs in SIMD lanes, the "
                                  "solve's right-hand sides in SIMD across columns)" % ex.LANES,
@@ -174,8 +175,9 @@ def scheduled_function(robot, scene, name):
     others = ", ".join(["%s %s" % (_SHORT[form], _figures(*figures[form])) for form in figures if form != best]
                        + untraced)
     count, weighted = figures[best]
+    detail = _DETAIL[best] % limbs.lanes_in_words(robot) if best == "limb_lanes" else _DETAIL[best]
     return replace(traced[best], doc=signature(robot, scene, name)[0], schedule="%s%s: %d arithmetic instructions%s, %s"
-                   % (_SHORT[best], _DETAIL[best], count, _cost(count, weighted), others))
+                   % (_SHORT[best], detail, count, _cost(count, weighted), others))
 
 
 def _figures(count, weighted):

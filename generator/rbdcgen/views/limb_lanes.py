@@ -1,15 +1,18 @@
-"""The robot traced in lanes (docs/performance.md, "One SIMD lane per leg"): the trunk and ONE limb
-whose joint variables and constants hold one value per isomorphic limb (views/limbs.py), so that
-the algorithms of this package, traced unchanged on this reduced tree, evaluate the four limbs'
-passes together as lane operations while the trunk stays scalar.
+"""The robot traced in lanes (docs/performance.md, "One SIMD lane per leg", "Limbs in pairs"): the
+spine and ONE limb per group of isomorphic limbs (views/limbs.py), the limb's joint variables and
+constants holding one value per limb of its group, so that the algorithms of this package, traced
+unchanged on this reduced tree, evaluate each group's passes together as lane operations while the
+spine stays scalar.
 
-Reduced tree: body 0 is the trunk, bodies 1 … n_limb the lane limb (limb k's l-th body in lane k of
-body l + 1). Its joint l has the lane inputs lane_q[l], lane_v[l], lane_a[l], lane_tau[l] (lane k =
-the full robot's coordinate of limb k's joint l), its feet the foot forces lane_f; a constant that
-differs between limbs is a lane constant (expr.lane_const). Where a limb's wrench or composite
-inertia joins the trunk's (into_parent), and where a limb dof updates a trunk dof in the LᵀDL
-factorisation and solve (into_dof), the lanes are summed. `scatter` and `scatter_matrix` map the
-reduced outputs back to the full robot's coordinates."""
+Reduced tree: the spine's bodies and each group's lane limb, in the full robot's order (a quadruped:
+body 0 the trunk, bodies 1 … n_limb the lane limb, limb k's l-th body in lane k of body l + 1). The
+lane limbs' joints, numbered n = 0, 1, … in that order, have the lane inputs lane_q[n], lane_v[n],
+lane_a[n], lane_tau[n] (lane k = the full robot's coordinate of the group's limb k, a pair's limbs
+repeated in lanes 2 and 3), their feet the foot forces lane_f; a constant that differs between limbs
+is a lane constant (expr.lane_const). Where a limb's wrench or composite inertia joins its spine
+body's (into_parent), and where a limb dof updates a spine dof in the LᵀDL factorisation and solve
+(into_dof), the group's lanes are summed (a pair's lanes 0 and 1). `scatter` and `scatter_matrix`
+map the reduced outputs back to the full robot's coordinates."""
 
 from __future__ import annotations
 
@@ -18,7 +21,7 @@ from dataclasses import dataclass, replace
 
 from ..graph import expr as ex
 from ..graph import spatial as sp
-from .limbs import LimbError
+from .limbs import LimbError, LimbGroup
 from ..algorithms import forward_dynamics as fd
 from .scalar import TracedModel
 
@@ -38,92 +41,138 @@ class LaneLayout:
 
 
 class LaneModel(TracedModel):
-    """TracedModel of the reduced tree: `robot` is the trunk and the lane limb, `full` the robot.
-    With `feet`, the scene's feet become lane feet (the same number on each limb, at the same
-    bodies of the limb) with the lane input lane_f; without, the traced function uses no feet."""
+    """TracedModel of the reduced tree: `robot` is the spine and the groups' lane limbs, `full` the
+    robot. With `feet`, the scene's feet on the limbs become lane feet (the same number on each limb
+    of a group, at the same bodies of the limb) with the lane input lane_f, those on the spine stay
+    scalar feet with their input f; without, the traced function uses no feet. Frames, contacts and
+    the solves of limb columns need the quadruped's one group of the trunk (limbs)."""
 
-    def __init__(self, robot, scene, limbs, zero_inputs=(), feet=False, frames=False):
+    def __init__(self, robot, scene, groups, zero_inputs=(), feet=False, frames=False):
         super().__init__(robot, scene, zero_inputs)
         self.full = self.robot
+        self.groups = groups
+        self.limbs = groups[0].lanes
         self.frame_places = ()
         if frames:
-            self.frames, self.frame_places = lane_frames(self.frames, limbs)
+            self.frames, self.frame_places = lane_frames(self.frames, self.limbs)
         else:
             self.frames = ()
-        self.limbs = limbs
         self.graph = ex.current_graph()  # holds the lane constants' values
-        self.robot = _reduced_tree(self.full, limbs)
-        # lane_x[l] in lane k is the full robot's input x[k-th limb's joint l]: (array, index) per lane.
+        # per reduced body: the full robot's body in each lane, and its group (None: the spine)
+        self._lanes_in, self._group = _reduced_bodies(self.full, groups)
+        self.robot = _reduced_tree(self.full, self._lanes_in, self._group, groups)
+        lane_bodies = [i for i in range(1, self.robot.nb) if self._group[i] is not None]
+        self._lane_number = {i: n for n, i in enumerate(lane_bodies)}
+        # lane_x[n] in lane k is the full robot's input x at the joint of lane body n's lane k: (array,
+        # index) per lane.
         self.lane_inputs = {
-            "lane_" + name: [tuple((name, index(self.full.joints[limb[l]])) for limb in limbs)
-                             for l in range(len(limbs[0]))]
+            "lane_" + name: [tuple((name, index(self.full.joints[b])) for b in self._lanes_in[i])
+                             for i in lane_bodies]
             for name, index in (("q", lambda j: j.q_index), ("v", lambda j: j.v_index),
                                 ("a", lambda j: j.v_index),
                                 ("tau", lambda j: j.v_index - self.full.root_dofs))}
         self.kept_feet = self.feet  # the full robot's
-        self.feet = self._lane_feet() if feet else ()
+        self.feet, self._foot_forces = self._lane_feet() if feet else ((), ())
 
     def layout(self):
         names = {}
-        for l in range(1, self.robot.nb):
-            name = _shared_name([self.full.joints[b].name for b in self._lanes_of(l)])
+        for i, n in self._lane_number.items():
+            name = _shared_name([self.full.joints[b].name for b in self._live_bodies(i)])
             if not name or "lanes_" + name in names.values():
-                name = "joint_%d" % l  # the limbs' joint names share nothing that tells them apart
-            names[("lane_q", l - 1)] = "lanes_" + name
+                name = "joint_%d" % i  # the limbs' joint names share nothing that tells them apart
+            names[("lane_q", n)] = "lanes_" + name
         return LaneLayout(tuple(self.graph.lane_constants), self.lane_inputs, names)
 
     # --- lane values --------------------------------------------------------------------------
     def _lane_feet(self):
-        """The scene's feet as lane feet of the reduced tree, and their lane input lane_f; per kept
-        foot its place (lane foot n, lane k) in foot_places."""
+        """The scene's feet on the reduced tree and where each one's force is (array, first entry): a
+        spine foot as it is (input f), a group's feet as lane feet (input lane_f); per kept foot its
+        place (traced foot n, lane k) in foot_places."""
         kept = list(self.feet)
-        per_limb, shape = feet_shape(self.full.name, kept, self.limbs)
-        self.foot_places = tuple((feet_k.index(f), k) for f in range(len(kept))
-                                 for k, feet_k in enumerate(per_limb) if f in feet_k)
-        feet = []
+        reduced = {lanes[0]: i for i, lanes in enumerate(self._lanes_in)}
+        feet, forces, places = [], [], {}
+        for f, foot in enumerate(kept):
+            if foot.body in reduced and self._group[reduced[foot.body]] is None:
+                places[f] = (len(feet), 0)
+                feet.append(replace(foot, body=reduced[foot.body]))
+                forces.append(("f", 3 * f))
         self.lane_inputs["lane_f"] = []
-        for n, body in enumerate(shape):
-            lanes = [kept[feet_k[n]] for feet_k in per_limb]
-            offset = tuple(ex.lane_const([foot.offset[c] for foot in lanes]) for c in range(3))
-            feet.append(replace(lanes[0], name="/".join(f.name for f in lanes), body=body + 1,
-                                offset=offset))
-            self.lane_inputs["lane_f"] += [tuple(("f", 3 * feet_k[n] + c) for feet_k in per_limb)
-                                           for c in range(3)]
-        return tuple(feet)
+        for group in self.groups:
+            in_group = [f for f, foot in enumerate(kept) if any(foot.body in limb for limb in group.limbs)]
+            if not in_group:
+                continue
+            per_limb, shape = feet_shape(self.full.name, [kept[f] for f in in_group], group.limbs)
+            per_lane = [[in_group[n] for n in per_limb[k % len(per_limb)]] for k in range(ex.LANES)]
+            for k in group.live:
+                for n, f in enumerate(per_lane[k]):
+                    places[f] = (len(feet) + n, k)
+            for n, l in enumerate(shape):
+                lanes = [kept[feet_k[n]] for feet_k in per_lane]
+                offset = tuple(ex.lane_const([foot.offset[c] for foot in lanes]) for c in range(3))
+                feet.append(replace(lanes[0], name="/".join(foot.name for foot in lanes[:len(group.limbs)]),
+                                    body=reduced[group.limbs[0][l]], offset=offset))
+                first = len(self.lane_inputs["lane_f"])
+                self.lane_inputs["lane_f"] += [tuple(("f", 3 * feet_k[n] + c) for feet_k in per_lane)
+                                               for c in range(3)]
+                forces.append(("lane_f", first))
+        self.foot_places = tuple(places[f] for f in range(len(kept)))
+        return tuple(feet), tuple(forces)
 
     @property
     def tau(self):
-        return tuple(self._lane_input("tau", i) for i in range(1, self.robot.nb))
+        return tuple(self._lane_input("tau", i) if self._group[i] is not None
+                     else self.input("tau", self.coupled.n_joints)[self._full_joint(i).v_index - self.full.root_dofs]
+                     for i in range(1, self.robot.nb))
 
     def foot_force(self, k):
         if "f" in self.zero_inputs:
             return sp.zeros(3)
-        return tuple(ex.symbol("lane_f", 3 * k + c) for c in range(3))
+        array, first = self._foot_forces[k]
+        if array == "f":
+            return tuple(self.input("f", 3 * len(self.kept_feet))[first:first + 3])
+        return tuple(ex.symbol(array, first + c) for c in range(3))
 
     def into_dof(self, k, i, value):
-        """A limb dof's term in a root dof's entry (LᵀDL factorisation and solve): summed over the
-        lanes."""
-        root = self.robot.root_dofs
-        return ex.lane_sum(value) if i < root <= k else value
+        """A limb dof's term in a spine dof's entry (LᵀDL factorisation and solve): summed over its
+        group's lanes."""
+        limb, spine = self._dof_group(k), self._dof_group(i)
+        return _sum_lanes(value, self.groups[limb]) if limb is not None and spine is None else value
 
     def into_root(self, term):
         return ex.lane_sum(term)
 
     def _lane_input(self, name, i):
-        if name in self.zero_inputs:
-            return ex.const(0.0)
-        return ex.symbol("lane_" + name, i - 1)
+        return ex.const(0.0) if name in self.zero_inputs else ex.symbol("lane_" + name, self._lane_number[i])
 
     def _lanes_of(self, i):
         """The full robot's bodies in the lanes of reduced body i ≥ 1."""
-        return [limb[i - 1] for limb in self.limbs]
+        return list(self._lanes_in[i])
+
+    def _live_bodies(self, i):
+        """The full robot's bodies of reduced body i's own lanes (a pair's two limbs, not repeated)."""
+        group = self._group[i]
+        return self._lanes_in[i][:1] if group is None else self._lanes_in[i][:len(self.groups[group].limbs)]
+
+    def _full_joint(self, i):
+        """The full robot's joint of spine body i."""
+        return self.full.joints[self._lanes_in[i][0]]
+
+    def _dof_group(self, x):
+        """The group of the reduced tree's dof x (None: a root or spine dof)."""
+        root = self.robot.root_dofs
+        return None if x < root else self._group[x - root + 1]
+
+    def _live(self, x):
+        """The lanes of dof x that hold the full robot's values (lane 0 alone for a spine dof)."""
+        group = self._dof_group(x)
+        return range(1) if group is None else self.groups[group].live
 
     # --- the reduced tree's joints and bodies ------------------------------------------------
     def qi(self, i):
-        return self._lane_input("q", i)
+        return self._lane_input("q", i) if self._group[i] is not None else self.q[self._full_joint(i).q_index]
 
     def vi(self, i):
-        return self._lane_input("v", i)
+        return self._lane_input("v", i) if self._group[i] is not None else self.v[self._full_joint(i).v_index]
 
     @property
     def tree_velocity(self):
@@ -134,10 +183,12 @@ class LaneModel(TracedModel):
         return tuple(self.a[:self.robot.root_dofs]) + tuple(self.ai(i) for i in range(1, self.robot.nb))
 
     def ai(self, i):
-        return self._lane_input("a", i)
+        return self._lane_input("a", i) if self._group[i] is not None else self.a[self._full_joint(i).v_index]
 
     def X_tree(self, i):
-        """X_T of the lane limb's joint i: each entry a lane constant."""
+        """X_T of joint i: a lane limb's with each entry a lane constant."""
+        if self._group[i] is None:
+            return super().X_tree(i)
         joints = [self.full.joints[b] for b in self._lanes_of(i)]
         rotations = [sp.snap_rotation(j.rotation) for j in joints]
         identity = all(r[a][b] == (1.0 if a == b else 0.0)
@@ -149,8 +200,8 @@ class LaneModel(TracedModel):
                             r_T if any(any(j.translation) for j in joints) else None)
 
     def inertia(self, i):
-        if i == 0:
-            return super().inertia(0)
+        if self._group[i] is None:
+            return super().inertia(i)
         key = ("inertia", i)
         if key not in self._cache:
             lanes = [sp.Inertia.from_body(self.full.bodies[b]) for b in self._lanes_of(i)]
@@ -162,22 +213,27 @@ class LaneModel(TracedModel):
         return self._cache[key]
 
     def rotor(self, i):
-        return None  # limbs.isomorphic_limbs refuses rotors
+        return None if self._group[i] is not None else super().rotor(i)  # limbs have no rotors
 
     def armature(self, i):
+        if self._group[i] is None:
+            return super().armature(i)
         values = [0.0 if j.actuator is None else j.actuator.armature
                   for j in (self.full.joints[b] for b in self._lanes_of(i))]
         return values[0] if all(v == values[0] for v in values) else ex.lane_const(values)
 
     def into_parent(self, i, value):
-        """A limb's wrench or composite inertia joins the trunk's as the sum of its lanes."""
-        return _sum_lanes(value) if self.robot.parent[i] == 0 else value
+        """A limb's wrench or composite inertia joins its spine body's as the sum of its group's lanes."""
+        group = self._group[i]
+        if group is None or self._group[self.robot.parent[i]] is not None:
+            return value
+        return _sum_lanes(value, self.groups[group])
 
     # --- outputs --------------------------------------------------------------------------------
     def full_index(self, x, lane):
         """The full robot's dof of the reduced tree's dof x in lane `lane` (root dofs are shared)."""
-        root = 6 if self.full.floating_base else 0
-        return x if x < root else self.full.joints[self.limbs[lane][x - root]].v_index
+        root = self.robot.root_dofs
+        return x if x < root else self.full.joints[self._lanes_in[x - root + 1][lane]].v_index
 
     def foot_force_index(self, row, lane):
         """The full robot's entry of f (column-major 3 × n_feet) in lane `lane` of lane_f[row]."""
@@ -212,7 +268,7 @@ class LaneModel(TracedModel):
         joint l goes to limb k's joint l."""
         full = [None] * self.full.nv
         for x, value in enumerate(reduced):
-            for k in range(ex.LANES):
+            for k in self._live(x):
                 full[self.full_index(x, k)] = ex.lane_get(value, k)
         return tuple(full)
 
@@ -261,9 +317,15 @@ class LaneModel(TracedModel):
         full = [[ex.const(0.0)] * self.full.nv for _ in range(self.full.nv)]
         for r, row in enumerate(reduced):
             for c, value in enumerate(row):
-                for k in range(ex.LANES):
+                for k in self._shared_lanes(r, c):
                     full[self.full_index(r, k)][self.full_index(c, k)] = ex.lane_get(value, k)
         return full
+
+    def _shared_lanes(self, r, c):
+        """The lanes whose entry (r, c) is the full robot's: none between two groups' limbs (they
+        share no motion), the live lanes of the group of r or c, lane 0 between spine dofs."""
+        groups = {self._dof_group(r), self._dof_group(c)} - {None}
+        return () if len(groups) > 1 else self._live(r if self._dof_group(r) is not None else c)
 
 
 def lane_column_order(robot, limbs, column_dofs):
@@ -352,38 +414,60 @@ def _lane_part(value, lane):
     return ex.lane_get(value, lane)
 
 
-def _sum_lanes(value):
-    """The sum over the lanes of a value, a vector or matrix (nested tuples) or a spatial inertia."""
+def _sum_lanes(value, group=LimbGroup(0, ((),) * ex.LANES)):
+    """The sum over a group's limbs of a value, a vector or matrix (nested tuples) or a spatial
+    inertia: all lanes, or those of a group of fewer limbs (a pair's lanes 0 and 1)."""
     if isinstance(value, sp.Inertia):
-        return sp.Inertia(ex.lane_sum(value.m), _sum_lanes(value.h),
-                          sp.symmetric(tuple(_sum_lanes(row) for row in value.Ibar)))
+        return sp.Inertia(_sum_lanes(value.m, group), _sum_lanes(value.h, group),
+                          sp.symmetric(tuple(_sum_lanes(row, group) for row in value.Ibar)))
     if isinstance(value, tuple):
-        return tuple(_sum_lanes(x) for x in value)
-    return ex.lane_sum(value)
+        return tuple(_sum_lanes(x, group) for x in value)
+    if len(group.limbs) == ex.LANES:
+        return ex.lane_sum(value)
+    total = ex.lane_get(value, 0)
+    for k in group.live[1:]:
+        total = total + ex.lane_get(value, k)
+    return total
 
 
-def _reduced_tree(robot, limbs):
-    """The trunk and limb 0, renumbered 1 … n (rbdc order kept); joints keep limb 0's types and
-    axes, their q and v indices count in the reduced tree; names join the lanes' names."""
-    limb = limbs[0]
-    number = {0: 0, **{body: k + 1 for k, body in enumerate(limb)}}
+def _reduced_bodies(robot, groups):
+    """Per body of the reduced tree, the full robot's bodies in its lanes (a spine body: itself in
+    every lane), and its group's index (None: the spine), in the full robot's order: the spine and
+    each group's limb 0."""
+    lanes_of = {}
+    for g, group in enumerate(groups):
+        for l, body in enumerate(group.limbs[0]):
+            lanes_of[body] = (tuple(limb[l] for limb in group.lanes), g)
+    in_limbs = {body for group in groups for limb in group.limbs for body in limb}
+    kept = [b for b in range(robot.nb) if b in lanes_of or b not in in_limbs]
+    return (tuple(lanes_of[b][0] if b in lanes_of else (b,) * ex.LANES for b in kept),
+            tuple(lanes_of[b][1] if b in lanes_of else None for b in kept))
+
+
+def _reduced_tree(robot, lanes_in, group, groups):
+    """The reduced bodies (lanes_in, group: _reduced_bodies) renumbered 0 … n (rbdc order kept);
+    joints keep their types and axes (a limb's: limb 0's), their q and v indices count in the
+    reduced tree; a limb body's name joins its group's limbs' names."""
+    first = [lanes[0] for lanes in lanes_in]
+    number = {body: i for i, body in enumerate(first)}
     root_q, root_v = (7, 6) if robot.floating_base else (0, 0)
-    parent = (-1,) + tuple(number[robot.parent[b]] for b in limb)
+    parent = (-1,) + tuple(number[robot.parent[b]] for b in first[1:])
     nb = len(parent)
     children = tuple(tuple(c for c in range(1, nb) if parent[c] == i) for i in range(nb))
     subtree = tuple(tuple(c for c in range(i, nb) if _is_ancestor(parent, i, c)) for i in range(nb))
     support = tuple(tuple(a for a in range(1, nb) if _is_ancestor(parent, a, i)) for i in range(nb))
 
-    def lane_name(items, l):
-        return "/".join(items[lb[l]].name for lb in limbs)
+    def name(items, i):
+        live = 1 if group[i] is None else len(groups[group[i]].limbs)
+        return "/".join(items[b].name for b in lanes_in[i][:live])
 
-    bodies = (robot.bodies[0],) + tuple(replace(robot.bodies[b], name=lane_name(robot.bodies, l))
-                                        for l, b in enumerate(limb))
+    bodies = (robot.bodies[0],) + tuple(replace(robot.bodies[b], name=name(robot.bodies, i))
+                                        for i, b in enumerate(first) if i > 0)
     joints = (robot.joints[0],) + tuple(
-        replace(robot.joints[b], name=lane_name(robot.joints, l), parent=parent[l + 1],
-                q_index=root_q + l, v_index=root_v + l)
-        for l, b in enumerate(limb))
-    return replace(robot, nb=nb, nq=root_q + len(limb), nv=root_v + len(limb),
+        replace(robot.joints[b], name=name(robot.joints, i), parent=parent[i],
+                q_index=root_q + i - 1, v_index=root_v + i - 1)
+        for i, b in enumerate(first) if i > 0)
+    return replace(robot, nb=nb, nq=root_q + nb - 1, nv=root_v + nb - 1,
                    pred=tuple(parent[1:]), succ=tuple(range(1, nb)), parent=parent,
                    support=support, children=children, subtree=subtree, bodies=bodies,
                    joints=joints, feet=(), couplings=())

@@ -1,12 +1,18 @@
-"""Isomorphic limbs: the trunk's subtrees that are one chain up to constants, so that their passes can
-run together, one limb per SIMD lane (docs/performance.md, "One SIMD lane per leg").
+"""Isomorphic limbs: subtrees hanging from one body that are one chain up to constants, so that
+their passes can run together, one limb per SIMD lane (docs/performance.md, "One SIMD lane per
+leg", "Limbs in pairs").
 
-Limbs are the subtrees of the trunk's children (body 0). They are isomorphic when their bodies, taken
-in rbdc order (λ(i) < i, so a parent comes before its child), have the same parent positions, joint
-types and joint axes; offsets, joint frames, masses and inertias may differ (they become lane
-constants). Rotors and mimic couplings are not supported in lanes."""
+Limbs are isomorphic when their bodies, taken in rbdc order (λ(i) < i, so a parent comes before its
+child), have the same parent positions, joint types and joint axes; offsets, joint frames, masses and
+inertias may differ (they become lane constants). A group is 4 such limbs of one body (a quadruped's
+legs: one limb per lane), or 2 or 3 (a humanoid's legs, its arms: the lanes past the limbs repeat
+them, so a pair costs what one limb does on a 2-wide vector); more limbs of one shape are split into
+groups of 4 and a last group of 2 or 3 (a hexapod's six legs: 4 + 2). The bodies in no group, the
+spine, stay scalar. Rotors and mimic couplings are not supported in lanes."""
 
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 from ..graph import expr as ex
 from ..graph import spatial as sp
@@ -17,8 +23,63 @@ class LimbError(RbdcError):
     """The robot has no set of isomorphic limbs that fills the lanes."""
 
 
+@dataclass(frozen=True)
+class LimbGroup:
+    """Isomorphic limbs of the spine body `parent`: per limb its bodies in rbdc order."""
+    parent: int
+    limbs: tuple
+
+    @property
+    def lanes(self):
+        """The limb in each of the ex.LANES lanes: limb k % n in lane k (a pair fills lanes 2 and 3 with
+        limbs 0 and 1 again)."""
+        return tuple(self.limbs[k % len(self.limbs)] for k in range(ex.LANES))
+
+    @property
+    def live(self):
+        """The lanes whose values are the limbs' own (the others repeat them)."""
+        return range(len(self.limbs))
+
+
+def limb_groups(robot):
+    """The robot's groups of isomorphic limbs (LimbGroup, by their bodies' order), or LimbError: from
+    the trunk outward, a body's children whose subtrees share one shape and carry no rotor form
+    groups of up to ex.LANES limbs, none of one (4 + 2 for six, 3 + 2 for five); every other child is
+    a spine body, searched in turn."""
+    if robot.couplings:
+        raise LimbError("robot '%s': mimic couplings are not supported in lanes" % robot.name)
+    groups = []
+
+    def search(body):
+        by_shape = {}
+        for child in robot.children[body]:
+            limb = tuple(sorted(robot.subtree[child]))
+            by_shape.setdefault(_shape(robot, limb), []).append(limb)
+        for limbs in by_shape.values():
+            if len(limbs) > 1 and not any(_has_rotor(robot, limb) for limb in limbs):
+                groups.extend(LimbGroup(body, chunk) for chunk in _chunks(tuple(limbs)))
+            else:
+                for limb in limbs:
+                    search(limb[0])
+
+    search(0)
+    if not groups:
+        raise LimbError("robot '%s': no body carries two or more isomorphic limbs without rotors" % robot.name)
+    return tuple(sorted(groups, key=lambda group: group.limbs[0][0]))
+
+
+def _chunks(limbs):
+    """Limbs in groups of ex.LANES, the last of at least 2 (five: 3 + 2)."""
+    if len(limbs) <= ex.LANES:
+        return [limbs]
+    first = ex.LANES if len(limbs) - ex.LANES >= 2 else ex.LANES - 1
+    return [limbs[:first]] + _chunks(limbs[first:])
+
+
 def isomorphic_limbs(robot):
-    """The limbs as a tuple of ex.LANES tuples of body indices (limb k's l-th body), or LimbError."""
+    """The limbs as a tuple of ex.LANES tuples of body indices (limb k's l-th body), when the trunk
+    carries exactly ex.LANES isomorphic limbs and nothing else (a quadruped: what the lane
+    derivatives, contacts, feet and frames need), or LimbError."""
     roots = robot.children[0]
     if robot.couplings:
         raise LimbError("robot '%s': mimic couplings are not supported in lanes" % robot.name)
@@ -32,17 +93,44 @@ def isomorphic_limbs(robot):
     if len(shapes) != 1:
         raise LimbError("robot '%s': the limbs differ in shape, joint types or axes" % robot.name)
     for limb in limbs:
-        for body in limb:
-            actuator = robot.joints[body].actuator
-            if actuator is not None and actuator.rotor is not None:
-                raise LimbError("robot '%s': joint '%s' has a rotor; rotors are not supported in "
-                                "lanes" % (robot.name, robot.joints[body].name))
+        if _has_rotor(robot, limb):
+            body = next(b for b in limb if _rotor(robot, b))
+            raise LimbError("robot '%s': joint '%s' has a rotor; rotors are not supported in "
+                            "lanes" % (robot.name, robot.joints[body].name))
     return limbs
+
+
+def quadruped_groups(robot):
+    """isomorphic_limbs as the one group of the trunk."""
+    return (LimbGroup(0, isomorphic_limbs(robot)),)
+
+
+def lanes_in_words(robot):
+    """What limb_groups puts in lanes, for the header's schedule line."""
+    groups = limb_groups(robot)
+    if len(groups) == 1 and groups[0].parent == 0 and len(groups[0].limbs) == ex.LANES:
+        try:
+            isomorphic_limbs(robot)
+            return "the %d isomorphic limbs in SIMD lanes, the trunk scalar" % ex.LANES
+        except LimbError:
+            pass
+    where = ", ".join("%d of %s" % (len(g.limbs), robot.bodies[g.parent].name) for g in groups)
+    return ("the isomorphic limbs in SIMD lanes: %s (a group of fewer than %d repeated to fill the lanes); "
+            "the rest scalar" % (where, ex.LANES))
+
+
+def _rotor(robot, body):
+    actuator = robot.joints[body].actuator
+    return actuator is not None and actuator.rotor is not None
+
+
+def _has_rotor(robot, limb):
+    return any(_rotor(robot, body) for body in limb)
 
 
 def _shape(robot, limb):
     """What must be equal between limbs: each body's parent (position in the limb, -1 for the
-    trunk), joint type and axis."""
+    spine body it hangs from), joint type and axis."""
     position = {body: k for k, body in enumerate(limb)}
     return tuple((position.get(robot.parent[body], -1), robot.joints[body].type,
                   sp.snap_axis(robot.joints[body].axis)) for body in limb)

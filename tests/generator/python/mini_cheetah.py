@@ -12,6 +12,7 @@ from rbdcgen.frontend.ir import load_ir
 
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 URDF = os.path.join(ROOT, "robots", "mini_cheetah.urdf")
+HUMANOID32 = os.path.join(ROOT, "robots", "humanoid32.urdf")
 SCENES = os.path.join(ROOT, "scenes")
 
 
@@ -31,9 +32,10 @@ def skip_reason():
 _cache = {}
 
 
-def load(base="floating"):
-    if base not in _cache:
-        result = subprocess.run([model_tool(), URDF, "--%s-base" % base], capture_output=True,
+def load(base="floating", urdf=URDF):
+    """A robot file (the Mini Cheetah unless `urdf`: another bundled robot) through rbdc-model."""
+    if (urdf, base) not in _cache:
+        result = subprocess.run([model_tool(), urdf, "--%s-base" % base], capture_output=True,
                                 text=True, check=True)
-        _cache[base] = load_ir(json.loads(result.stdout))
-    return _cache[base]
+        _cache[urdf, base] = load_ir(json.loads(result.stdout))
+    return _cache[urdf, base]

@@ -3,8 +3,10 @@ and every lane function equal to its scalar namesake on random states (expr.eval
 on the Mini Cheetah. The emitted C++ is checked against the runtime by `rbdc verify`."""
 
 import math
+import os
 import random
 import re
+import tempfile
 import unittest
 from dataclasses import replace
 
@@ -17,8 +19,8 @@ from rbdcgen.graph.flops import count_ops
 from rbdcgen.frontend.ir import Actuator
 from rbdcgen.passes.differentiate import padded
 from rbdcgen.passes.lane_contact_derivatives import column_order
-from rbdcgen.passes.lane_functions import SCALAR
-from rbdcgen.views.limbs import LimbError, isomorphic_limbs
+from rbdcgen.passes.lane_functions import ANY_GROUPS, LANE_NAME, SCALAR, available
+from rbdcgen.views.limbs import LimbError, isomorphic_limbs, limb_groups
 from rbdcgen.frontend.scene import default_scene
 from rbdcgen.passes.schedule import scheduled_function
 from rbdcgen.passes.trace import trace_function
@@ -209,6 +211,93 @@ class MiniCheetahLanes(unittest.TestCase):
         with self.assertRaises(LimbError):
             isomorphic_limbs(replace(robot, joints=tuple(joints)))
 
+
+
+@unittest.skipIf(mini_cheetah.skip_reason(), mini_cheetah.skip_reason())
+class HumanoidPairs(unittest.TestCase):
+    """humanoid32: its legs (of the pelvis) and arms (of the torso) are isomorphic pairs, each pair
+    in lanes 0-1 and again in 2-3; the torso and head stay scalar."""
+
+    def test_groups(self):
+        robot = mini_cheetah.load(urdf=mini_cheetah.HUMANOID32)
+        legs, arms = limb_groups(robot)
+        self.assertEqual((legs.parent, arms.parent), (0, 15))
+        self.assertEqual(legs.limbs, (tuple(range(1, 7)), tuple(range(7, 13))))
+        self.assertEqual(arms.limbs, (tuple(range(19, 26)), tuple(range(26, 33))))
+        self.assertEqual(arms.lanes, arms.limbs * 2)
+        with self.assertRaises(LimbError):  # three subtrees of the trunk: no quadruped
+            isomorphic_limbs(robot)
+
+    def test_lane_functions_equal_scalar(self):
+        """The feet of the default scene sit on both pairs (soles, hands) and on the spine (head):
+        forward dynamics takes all three kinds of foot force."""
+        robot = mini_cheetah.load(urdf=mini_cheetah.HUMANOID32)
+        for name in ANY_GROUPS:
+            lanes = trace_function(robot, default_scene(), LANE_NAME[name])
+            scalar = trace_function(robot, default_scene(), name)
+            for seed in (1, 2):
+                state = random_state(robot, len(robot.feet), seed)
+                got = evaluate(lanes, lanes.lanes.with_lanes(state))
+                want = evaluate(scalar, state)
+                for output in want:
+                    self.assertLess(max_relative_error(got[output], want[output]), 1e-12, (name, output, seed))
+
+    def test_auto_takes_the_pairs(self):
+        robot = mini_cheetah.load(urdf=mini_cheetah.HUMANOID32)
+        fn = scheduled_function(robot, default_scene(), "inverse_dynamics")
+        self.assertTrue(fn.schedule.startswith("limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 "
+                                               "of torso"), fn.schedule)
+
+    def test_quadruped_functions_refused(self):
+        """The lane forms that solve limb columns, or put frames and contacts in lanes, need the
+        quadruped's four limbs of the trunk."""
+        robot = mini_cheetah.load(urdf=mini_cheetah.HUMANOID32)
+        for name in ("forward_dynamics_derivatives", "contact_dynamics", "frame_jacobians", "osc_open_chain"):
+            with self.assertRaises(LimbError):
+                available(robot, default_scene(), name)
+
+
+def _hexapod_urdf():
+    """A floating trunk with six 3-joint legs of one shape (yaw, pitch, pitch) around it, each with
+    its own offsets and masses, and a foot at each leg's tip."""
+    links, joints = ['<link name="trunk"><inertial><mass value="4"/><inertia ixx="0.1" iyy="0.2" izz="0.25" '
+                     'ixy="0" ixz="0" iyz="0"/></inertial></link>'], []
+    for k in range(6):
+        angle = math.pi / 3 * k
+        parent, origin = "trunk", "%.3f %.3f 0" % (0.3 * math.cos(angle), 0.2 * math.sin(angle))
+        for j, axis in enumerate(("0 0 1", "0 1 0", "0 1 0")):
+            name = "leg%d_%d" % (k, j)
+            links.append('<link name="%s"><inertial><origin xyz="0.05 0 -0.02"/><mass value="%.2f"/><inertia '
+                         'ixx="0.01" iyy="0.012" izz="0.008" ixy="0.001" ixz="0" iyz="0"/></inertial></link>'
+                         % (name, 0.5 + 0.1 * k + 0.05 * j))
+            joints.append('<joint name="%s_joint" type="revolute"><parent link="%s"/><child link="%s"/>'
+                          '<origin xyz="%s"/><axis xyz="%s"/><limit lower="-3" upper="3" effort="50" '
+                          'velocity="10"/></joint>' % (name, parent, name, origin, axis))
+            parent, origin = name, "0.15 0 %.3f" % (-0.01 * k)
+        links.append('<link name="foot%d"/>' % k)
+        joints.append('<joint name="foot%d_fixed" type="fixed"><parent link="%s"/><child link="foot%d"/>'
+                      '<origin xyz="0.2 0 0"/></joint>' % (k, parent, k))
+    return '<robot name="hexapod">%s%s</robot>' % ("".join(links), "".join(joints))
+
+
+@unittest.skipIf(mini_cheetah.skip_reason(), mini_cheetah.skip_reason())
+class HexapodGroups(unittest.TestCase):
+    def test_six_legs_in_a_group_of_four_and_a_pair(self):
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "hexapod.urdf")
+            with open(path, "w", encoding="utf-8") as handle:
+                handle.write(_hexapod_urdf())
+            robot = mini_cheetah.load(urdf=path)
+        four, two = limb_groups(robot)
+        self.assertEqual((len(four.limbs), len(two.limbs)), (4, 2))
+        self.assertEqual(len(robot.feet), 6)
+        for name in ("inverse_dynamics", "mass_matrix", "forward_dynamics"):
+            lanes = trace_function(robot, default_scene(), LANE_NAME[name])
+            scalar = trace_function(robot, default_scene(), name)
+            state = random_state(robot, len(robot.feet), 3)
+            got, want = evaluate(lanes, lanes.lanes.with_lanes(state)), evaluate(scalar, state)
+            for output in want:
+                self.assertLess(max_relative_error(got[output], want[output]), 1e-12, (name, output))
 
 
 def _written_runs(fn):

@@ -2,23 +2,22 @@
 // input: robots/humanoid32.urdf (sha256 3b7b8aae52a9743535f111685d4fbda9d72c5154d25036bf0a7617b356f3ad5b)
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// inverse_dynamics_derivatives for humanoid32: straight-line code from rbdc's traced algorithm, constants
+// bias_derivatives for humanoid32: straight-line code from rbdc's traced algorithm, constants
 // folded, shared subexpressions computed once, only what reaches the outputs kept. The file is named
-// by a hash of its content: every scene whose inverse_dynamics_derivatives is this code includes this one file
-// and brings the function into its namespace (<scene>/inverse_dynamics_derivatives.hpp).
+// by a hash of its content: every scene whose bias_derivatives is this code includes this one file
+// and brings the function into its namespace (<scene>/bias_derivatives.hpp).
 #pragma once
 
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/body_tree.hpp"
 #include "rbdc_gen/rnea_derivatives.hpp"
 
-namespace rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_22bb1856dffc {
+namespace rbdc_gen::humanoid32::common::bias_derivatives_ca29588bc47c {
 
-/// The traced part of inverse_dynamics_derivatives: what the loop below solves.
+/// The traced part of bias_derivatives: what the loop below solves.
 template <class Scalar>
-RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives_terms(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* X, Scalar* g) noexcept {
+RBDC_HOST_DEVICE inline void bias_derivatives_terms(const Scalar* q, const Scalar* v, Scalar* X, Scalar* g) noexcept {
   static_cast<void>(v);
-  static_cast<void>(a);
   // sines and cosines of the joint angles
   const Scalar joint_angle[32] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18], q[19], q[20], q[21], q[22],
@@ -483,29 +482,29 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives_terms(const Scalar* q,
   g[1] = Scalar(-9.81) * ((q[5] * t2) + (q[3] * t0));
 }
 
-/// Derivatives of the inverse dynamics τ = M a + c + g (∂τ/∂a is M).
+/// Derivatives of the bias c + g (inverse dynamics at a = 0).
 ///
 /// @param q in  39x1: configuration (position, quaternion w x y z, joints)
 /// @param v in  38x1: velocity (trunk ω, v in trunk coordinates, joint rates)
-/// @param a in  38x1: acceleration (trunk ω̇, R_W^0 p̈, joint accelerations)
-/// @param dtau_dq out 38x38: ∂τ/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
-/// @param dtau_dv out 38x38: ∂τ/∂v
+/// @param dbias_dq out 38x38: ∂(c + g)/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
+/// @param dbias_dv out 38x38: ∂c/∂v
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
-///             32427  28524    0     0    64   30  61045
+///             32235  28332    0     0    64   30  60661
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
-///   21542 arithmetic instructions (cost 30112), scalar tree 25023 (cost 55295)
-/// emission: looped RNEA derivatives: inverse_dynamics_derivatives_terms writes the 32 bodies'
-///   transforms and gravity, rnea_derivatives_loop runs the recursion over a table of the
-///   tree (129 body-ancestor steps)
+///   21350 arithmetic instructions (cost 29843), scalar tree 24932 (cost 55077), limb lanes
+///   14556 (cost 30174)
+/// emission: looped RNEA derivatives: bias_derivatives_terms writes the 32 bodies' transforms and
+///   gravity, rnea_derivatives_loop runs the recursion over a table of the tree (129 body-
+///   ancestor steps)
 template <class Scalar>
-RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* dtau_dq, Scalar* dtau_dv) noexcept {
+RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, Scalar* dbias_dq, Scalar* dbias_dv) noexcept {
   alignas(64) Scalar solve_X[384];
   alignas(64) Scalar solve_g[3];
-  inverse_dynamics_derivatives_terms(q, v, a, solve_X, solve_g);
+  bias_derivatives_terms(q, v, solve_X, solve_g);
   const BodyTree<33> tree{{-1, 0, 1, 2, 3, 4, 5, 0, 7, 8, 9, 10, 11, 0, 13, 14, 15, 16, 17, 15, 19, 20, 21, 22, 23, 24, 15, 26, 27, 28, 29, 30, 31}, {33, 7, 7, 7, 7, 7, 7, 13, 13, 13, 13, 13, 13, 33, 33, 33, 19, 19, 19, 26, 26, 26, 26, 26, 26, 26, 33, 33, 33, 33, 33, 33, 33}, {-1, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 37}, {false, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true}, {{0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0}, {0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0}, {0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0}}, {8.0, 1.1, 1.3, 5.2, 3.1, 0.45, 1.0, 1.1, 1.3, 5.2, 3.1, 0.45, 1.0, 1.4, 1.2, 16.0, 0.3, 0.25, 3.2, 0.9, 0.8, 2.1, 1.2, 0.35, 0.3, 0.5, 0.9, 0.8, 2.1, 1.2, 0.35, 0.3, 0.5}, {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.03, 0.0, 0.0, 0.0, 0.0, 0.0, 0.03, 0.0, 0.0, 0.16, 0.0, 0.0, 0.064, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, {0.0, 0.0, 0.0, 0.052000000000000005, 0.0, 0.0, 0.0, 0.0, 0.0, -0.052000000000000005, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.018000000000000002, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -0.018000000000000002, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, {0.0, -0.033, -0.026000000000000002, -0.9359999999999999, -0.527, 0.0, -0.05, -0.033, -0.026000000000000002, -0.9359999999999999, -0.527, 0.0, -0.05, 0.027999999999999997, 0.012, 3.2, 0.003, 0.0, 0.32000000000000006, 0.0, -0.016, -0.273, -0.132, -0.0034999999999999996, 0.0, -0.035, 0.0, -0.016, -0.273, -0.132, -0.0034999999999999996, 0.0, -0.035}}, {{0.075, 0.001906666667, 0.0019066666700000001, 0.23590666670000002, 0.1251625, 0.0001875, 0.0034666666670000006, 0.001906666667, 0.0019066666700000001, 0.23590666670000002, 0.1251625, 0.0001875, 0.0034666666670000006, 0.00214666667, 0.0014800000000000002, 1.048, 0.000155, 0.000104166667, 0.052613333300000016, 0.001095, 0.000973333333, 0.05033000000000001, 0.021260000000000005, 0.000180833333, 0.000125, 0.0033875000000000003, 0.001095, 0.000973333333, 0.05033000000000001, 0.021260000000000005, 0.000180833333, 0.000125, 0.0033875000000000003}, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0015, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0015, 0.0, 0.0, -0.032, 0.0, 0.0, -0.006400000000000002, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, {0.0416666667, 0.001906666667, 0.00229666667, 0.2362966667, 0.1251625, 0.0001875, 0.0075666666700000005, 0.001906666667, 0.00229666667, 0.2362966667, 0.1251625, 0.0001875, 0.0075666666700000005, 0.00214666667, 0.0014800000000000002, 0.9413333330000002, 0.000155, 0.000104166667, 0.05685333330000001, 0.000735, 0.000973333333, 0.05033000000000001, 0.021260000000000005, 0.000180833333, 0.000125, 0.0031166666670000005, 0.000735, 0.000973333333, 0.05033000000000001, 0.021260000000000005, 0.000180833333, 0.000125, 0.0031166666670000005}, {0.0, 0.0, 0.0, 0.00936, 0.0, 0.0, 0.0, 0.0, 0.0, -0.00936, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, {0.0866666667, 0.00117333333, 0.00177666667, 0.010096666670000014, 0.004185, 0.0001875, 0.00576666667, 0.00117333333, 0.00177666667, 0.010096666670000014, 0.004185, 0.0001875, 0.00576666667, 0.00233333333, 0.002, 0.23893333300000005, 0.000125, 0.000104166667, 0.019653333299999996, 0.001095, 0.000653333333, 0.00224, 0.00098, 0.000145833333, 0.000125, 0.000404166667, 0.001095, 0.000653333333, 0.00224, 0.00098, 0.000145833333, 0.000125, 0.000404166667}}, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}};
-  const DenseDerivatives<Scalar, 38> out{dtau_dq, dtau_dv};
-  rnea_derivatives_loop<Scalar, 33, 38, true, true, true>(tree, solve_X, solve_g, v, a, out);
+  const DenseDerivatives<Scalar, 38> out{dbias_dq, dbias_dv};
+  rnea_derivatives_loop<Scalar, 33, 38, true, true, false>(tree, solve_X, solve_g, v, nullptr, out);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_22bb1856dffc
+}  // namespace rbdc_gen::humanoid32::common::bias_derivatives_ca29588bc47c
