@@ -2,7 +2,8 @@
 2008, Table 7.1), a second form of forward_dynamics: passes/schedule.py traces it beside CRBA + the
 sparse LᵀDL factor and keeps the one with fewer instructions. ABA is O(n) whatever the tree; the
 factor is O(n·d²) for depth d, so deep chains (a 100-body arm: d = n) take ABA and branched robots
-the factor. For trees without rotors or mimic couplings (`applies`).
+the factor. For trees without rotors or mimic couplings (`applies`); on the lane model too (a limb's
+articulated inertia and bias force join its spine body's through m.into_parent).
 
 In body coordinates, with a₀ = the base's fictitious gravity acceleration (rnea.base_acceleration):
     outward:  c_i = v_i × S_i q̇_i,  I^A_i = I_i,  p^A_i = v_i ×* I_i v_i − f_i^ext
@@ -75,8 +76,8 @@ def forward_dynamics_aba(m):
         m.mark("ABA: inward pass, articulated inertias", i)
         U[i] = _apply(IA[i], S[i])
         D = sp.dot(S[i], U[i])
-        if m.armature(i):
-            D = D + ex.const(m.armature(i))
+        if m.armature(i):  # a float, or a lane constant on the lane model where the limbs' differ
+            D = D + m.armature(i)
         inv_D[i] = ex.const(1.0) / D
         u[i] = m.tau[i - 1] - sp.dot(S[i], pA[i])
         j = robot.parent[i]
@@ -86,9 +87,9 @@ def forward_dynamics_aba(m):
         Ia = _symmetric(lambda r, c: IA[i][r][c] - U[i][r] * scaled[c])
         pa = sp.vadd(sp.vadd(pA[i], _apply(Ia, bias_acc[i])), sp.vscale(u[i], scaled))
         X = m.X_up(i)
-        carried = _congruence(X, Ia)
+        carried = m.into_parent(i, tuple(map(tuple, _congruence(X, Ia))))
         IA[j] = _symmetric(lambda r, c: IA[j][r][c] + carried[r][c])
-        pA[j] = sp.vadd(pA[j], X.force_T(pa))
+        pA[j] = sp.vadd(pA[j], m.into_parent(i, X.force_T(pa)))
     qdd = [None] * robot.nv
     if floating:
         m.mark("ABA: trunk acceleration")

@@ -4,7 +4,7 @@ outputs as their scalar namesakes, emitted only when a scene lists them (scene.L
 from __future__ import annotations
 
 from . import differentiate, lane_contact_derivatives, lane_derivatives
-from ..algorithms import centroidal, contact_dynamics, crba, forward_dynamics, osc, rnea
+from ..algorithms import aba, centroidal, contact_dynamics, crba, forward_dynamics, osc, rnea
 from ..views.limb_lanes import LaneModel, contact_lanes, feet_shape, frame_shapes
 from ..views.limbs import isomorphic_limbs, limb_groups, quadruped_groups
 
@@ -36,21 +36,22 @@ CONTACT_TERMS = {"contact_dynamics_derivative_terms": lane_contact_derivatives.c
 # lane function → the function it equals
 SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
           "mass_matrix_lanes": "mass_matrix", "mass_matrix_lower_lanes": "mass_matrix_lower",
-          "forward_dynamics_lanes": "forward_dynamics", "osc_open_chain_lanes": "osc_open_chain",
+          "forward_dynamics_lanes": "forward_dynamics", "forward_dynamics_aba_lanes": "forward_dynamics_aba",
+          "osc_open_chain_lanes": "osc_open_chain",
           **{name + "_lanes": name for name in DERIVATIVES}, **{name + "_lanes": name for name in CENTROIDAL},
           **{name + "_lanes": name for name in FRAMES + FEET}, **{name + "_lanes": name for name in CONTACT},
           **{name + "_lanes": name for name in CONTACT_TERMS}}
 # function → its lane function
 LANE_NAME = {scalar: lanes for lanes, scalar in SCALAR.items()}
 # lane functions with the foot forces as lane inputs
-WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_derivatives_lanes", "osc_open_chain_lanes",
+WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_aba_lanes", "forward_dynamics_derivatives_lanes", "osc_open_chain_lanes",
              "contact_dynamics_lanes", "impulse_dynamics_lanes", "feet_bias_accelerations_lanes",
              "contact_dynamics_derivative_terms_lanes")
 
 
 # functions whose lane form takes any groups of isomorphic limbs (views/limbs.limb_groups: a humanoid's
 # legs and arms in pairs, the spine scalar); the others need the quadruped's four limbs of the trunk
-ANY_GROUPS = ("bias", "inverse_dynamics", "mass_matrix", "mass_matrix_lower", "forward_dynamics",
+ANY_GROUPS = ("bias", "inverse_dynamics", "mass_matrix", "mass_matrix_lower", "forward_dynamics", "forward_dynamics_aba",
               "inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives")
 
 
@@ -121,6 +122,13 @@ def spec(robot, scalar_specs):
             ("q", "v", "tau", "f"),
             [("a", nv, 1, "acceleration")],
             lambda m: {"a": m.scatter(forward_dynamics.forward_dynamics(m))}),
+        "forward_dynamics_aba_lanes": (
+            "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (the articulated-body algorithm), the "
+            "isomorphic limbs' passes evaluated together in SIMD lanes, the rest scalar; equals "
+            "forward_dynamics_aba.",
+            ("q", "v", "tau", "f"),
+            [("a", nv, 1, "acceleration")],
+            lambda m: {"a": m.scatter(aba.forward_dynamics_aba(m))}),
         "osc_open_chain_lanes": (
             "Trunk operational-space Λ, J̄ᵀ, b with measured foot forces (paper 001 Table 1), the four "
             "isomorphic limbs' inward passes evaluated together in SIMD lanes, the trunk scalar; "

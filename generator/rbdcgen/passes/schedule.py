@@ -84,6 +84,8 @@ def _forms(robot, scene, name):
             forms["lanes_looped_solve"] = lambda: looped_solve.looped_function(robot, scene, name, lane_terms)
     if name == "forward_dynamics" and aba.applies(robot):
         forms["aba"] = lambda: _as(trace_function(robot, scene, "forward_dynamics_aba"), name)
+        if _lanes_apply(robot, scene, "forward_dynamics_aba"):
+            forms["aba_lanes"] = lambda: _as(trace_function(robot, scene, "forward_dynamics_aba_lanes"), name)
     if looped_factor.has_looped_form(robot, name):
         forms["looped_factor"] = lambda: looped_factor.looped_function(robot, scene, name)
     if looped_crba.has_looped_form(robot, name):
@@ -138,13 +140,14 @@ _FORCED = {"limb_lanes": ("limb_lanes", "lanes_looped_solve"), "looped_rnea": ("
 
 _SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "looped_solve": "looped solve",
           "lanes_looped_solve": "limb lanes and a looped solve",
-          "aba": "articulated-body algorithm", "looped_factor": "looped factor", "looped_crba": "looped CRBA",
+          "aba": "articulated-body algorithm", "aba_lanes": "articulated-body algorithm in limb lanes", "looped_factor": "looped factor", "looped_crba": "looped CRBA",
           "looped_rnea": "looped RNEA derivatives", "looped_feet": "looped feet force terms"}
 _DETAIL = {"scalar": "", "limb_lanes": " (%s)",
            "looped_solve": " (the solve's right-hand sides in SIMD across columns)",
            "lanes_looped_solve": " (the terms traced with the %d isomorphic limbs in SIMD lanes, the "
                                  "solve's right-hand sides in SIMD across columns)" % ex.LANES,
            "aba": " (O(n); the scalar tree is CRBA + the sparse LᵀDL factor)",
+           "aba_lanes": " (%s)",
            "looped_factor": " (the sparse LᵀDL factorisation a loop)",
            "looped_crba": " (a loop over the bodies, the tree's constants in a table)",
            "looped_rnea": " (a loop over the bodies, the tree's constants in a table)",
@@ -175,7 +178,7 @@ def scheduled_function(robot, scene, name):
     others = ", ".join(["%s %s" % (_SHORT[form], _figures(*figures[form])) for form in figures if form != best]
                        + untraced)
     count, weighted = figures[best]
-    detail = _DETAIL[best] % limbs.lanes_in_words(robot) if best == "limb_lanes" else _DETAIL[best]
+    detail = _DETAIL[best] % limbs.lanes_in_words(robot) if best in ("limb_lanes", "aba_lanes") else _DETAIL[best]
     return replace(traced[best], doc=signature(robot, scene, name)[0], schedule="%s%s: %d arithmetic instructions%s, %s"
                    % (_SHORT[best], detail, count, _cost(count, weighted), others))
 
