@@ -50,13 +50,13 @@ def feet_force_term_derivatives(m):
         path = [m.joint(j).v_index for j in sorted(robot.support[foot.body])]   # root → foot
         chi = {y: sp.cross(tuple(J[3 * k + r][y] for r in range(3)), f) for y in trunk + path}
 
-        def add(row, col, axis, y, into=lambda term: term):
-            if axis is not None:
-                out[row][col] = out[row][col] + into(sp.dot(axis, chi[y]))
+        def add(row, col, axis, y, k=k):
+            if axis is not None:  # a lane foot's term summed over its lanes between two spine dofs
+                out[row][col] = out[row][col] + m.into_spine(k, row, col, sp.dot(axis, chi[y]))
 
         for r in trunk:
-            for c in trunk:  # every foot's term (a lane foot's summed over the lanes)
-                add(r, c, axes[c], r, m.into_root)
+            for c in trunk:
+                add(r, c, axes[c], r)
         for n, y in enumerate(path):
             add(y, y, axes[y], y)
             for x in trunk + path[:n]:

@@ -50,3 +50,22 @@ def forward_dynamics_derivatives(m):
     order = ("da_dq", "da_dv", "da_dtau", "da_df")
     return differentiate.replace_symbols({name: [x for column in out[name] for x in column] for name in order},
                                        m.tree_acceleration, fd.forward_dynamics(m))
+
+
+def forward_dynamics_derivative_terms(m):
+    """differentiate.forward_dynamics_derivative_terms (rhs, L, D_inv: what the looped solve solves)
+    traced on the lane model m (feet=True), in the full robot's layout: the residual's derivatives
+    and M's factor by the lane recursions, scattered; Jᵀ's columns from the lane feet's rows; the
+    placeholder a through that factor (forward_dynamics, as the scalar terms)."""
+    full = m.full
+    nv = full.nv
+    dq, dv = (m.scatter_matrix(rows) for rows in differentiate.residual_derivatives(m))
+    selection = [[ex.const(1.0 if r == full.joints[i].v_index else 0.0) for r in range(nv)]
+                 for i in range(1, full.nb)]                                       # Sᵀ
+    J = m.place_rows(jacobian.feet_jacobian(m), m.foot_places, 3) if m.feet else []
+    columns = ([[-dq[r][c] for r in range(nv)] for c in range(nv)] + [[-dv[r][c] for r in range(nv)] for c in range(nv)]
+               + selection + [list(row) for row in J])                           # the order of FORWARD_DYNAMICS_COLUMNS
+    L, inv_diag = fd.ltdl(mass_matrix(m), fd.dof_parents(m.robot), m.into_dof)
+    terms = {"rhs": differentiate.right_hand_side_rows(columns, nv),
+             "L": fd.packed_factor(m.scatter_matrix(L), fd.dof_parents(full)), "D_inv": m.scatter(inv_diag)}
+    return differentiate.replace_symbols(terms, m.tree_acceleration, fd.forward_dynamics(m))

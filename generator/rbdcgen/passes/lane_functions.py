@@ -33,6 +33,8 @@ CONTACT = {
 # the traced terms of contact_dynamics_derivatives' looped form (looped_solve.py), one contact foot
 # per limb as CONTACT
 CONTACT_TERMS = {"contact_dynamics_derivative_terms": lane_contact_derivatives.contact_dynamics_derivative_terms}
+# the same for forward_dynamics_derivatives' looped solve: its right-hand sides and M's factor
+SOLVE_TERMS = {"forward_dynamics_derivative_terms": lane_derivatives.forward_dynamics_derivative_terms}
 # lane function → the function it equals
 SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
           "mass_matrix_lanes": "mass_matrix", "mass_matrix_lower_lanes": "mass_matrix_lower",
@@ -40,19 +42,19 @@ SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
           "osc_open_chain_lanes": "osc_open_chain",
           **{name + "_lanes": name for name in DERIVATIVES}, **{name + "_lanes": name for name in CENTROIDAL},
           **{name + "_lanes": name for name in FRAMES + FEET}, **{name + "_lanes": name for name in CONTACT},
-          **{name + "_lanes": name for name in CONTACT_TERMS}}
+          **{name + "_lanes": name for name in CONTACT_TERMS}, **{name + "_lanes": name for name in SOLVE_TERMS}}
 # function → its lane function
 LANE_NAME = {scalar: lanes for lanes, scalar in SCALAR.items()}
 # lane functions with the foot forces as lane inputs
 WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_aba_lanes", "forward_dynamics_derivatives_lanes", "osc_open_chain_lanes",
              "contact_dynamics_lanes", "impulse_dynamics_lanes", "feet_bias_accelerations_lanes",
-             "contact_dynamics_derivative_terms_lanes")
+             "contact_dynamics_derivative_terms_lanes", "forward_dynamics_derivative_terms_lanes")
 
 
 # functions whose lane form takes any groups of isomorphic limbs (views/limbs.limb_groups: a humanoid's
 # legs and arms in pairs, the spine scalar); the others need the quadruped's four limbs of the trunk
 ANY_GROUPS = ("bias", "inverse_dynamics", "mass_matrix", "mass_matrix_lower", "forward_dynamics", "forward_dynamics_aba",
-              "inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives")
+              "inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives", "forward_dynamics_derivative_terms")
 
 
 def model(robot, scene, zero_inputs, name):
@@ -91,6 +93,7 @@ def spec(robot, scalar_specs):
         **_in_lanes(scalar_specs, {name: scalar_specs[name][3] for name in FRAMES + FEET}),
         **_in_lanes(scalar_specs, CONTACT),
         **_in_lanes(scalar_specs, CONTACT_TERMS),
+        **_in_lanes(scalar_specs, SOLVE_TERMS),
         "bias_lanes": (
             "Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes "
             "evaluated together in SIMD lanes, the trunk scalar; equals bias.",

@@ -142,16 +142,21 @@ _SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "looped_solve": "
           "lanes_looped_solve": "limb lanes and a looped solve",
           "aba": "articulated-body algorithm", "aba_lanes": "articulated-body algorithm in limb lanes", "looped_factor": "looped factor", "looped_crba": "looped CRBA",
           "looped_rnea": "looped RNEA derivatives", "looped_feet": "looped feet force terms"}
-_DETAIL = {"scalar": "", "limb_lanes": " (%s)",
+_DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes, the trunk scalar)" % ex.LANES,
            "looped_solve": " (the solve's right-hand sides in SIMD across columns)",
            "lanes_looped_solve": " (the terms traced with the %d isomorphic limbs in SIMD lanes, the "
                                  "solve's right-hand sides in SIMD across columns)" % ex.LANES,
            "aba": " (O(n); the scalar tree is CRBA + the sparse LᵀDL factor)",
-           "aba_lanes": " (%s)",
+           "aba_lanes": " (the %d isomorphic limbs in SIMD lanes, the trunk scalar)" % ex.LANES,
            "looped_factor": " (the sparse LᵀDL factorisation a loop)",
            "looped_crba": " (a loop over the bodies, the tree's constants in a table)",
            "looped_rnea": " (a loop over the bodies, the tree's constants in a table)",
            "looped_feet": " (a loop over the dof tree's ancestor pairs)"}
+
+
+# The lane forms' words for a robot whose limbs in lanes are not the quadruped's (limbs.groups_in_words).
+_LANE_FORMS = {"limb_lanes": " (%s; the rest scalar)", "aba_lanes": " (%s; the rest scalar)",
+               "lanes_looped_solve": " (the terms traced with %s, the solve's right-hand sides in SIMD across columns)"}
 
 
 def scheduled_function(robot, scene, name):
@@ -178,9 +183,15 @@ def scheduled_function(robot, scene, name):
     others = ", ".join(["%s %s" % (_SHORT[form], _figures(*figures[form])) for form in figures if form != best]
                        + untraced)
     count, weighted = figures[best]
-    detail = _DETAIL[best] % limbs.lanes_in_words(robot) if best in ("limb_lanes", "aba_lanes") else _DETAIL[best]
+    detail = _detail(robot, best)
     return replace(traced[best], doc=signature(robot, scene, name)[0], schedule="%s%s: %d arithmetic instructions%s, %s"
                    % (_SHORT[best], detail, count, _cost(count, weighted), others))
+
+
+def _detail(robot, form):
+    """The schedule line's words on `form`: the lane forms say which limbs are in lanes."""
+    groups = limbs.groups_in_words(robot) if form in _LANE_FORMS else None
+    return _DETAIL[form] if groups is None else _LANE_FORMS[form] % groups
 
 
 def _figures(count, weighted):

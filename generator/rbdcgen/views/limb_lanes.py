@@ -90,14 +90,15 @@ class LaneModel(TracedModel):
         place (traced foot n, lane k) in foot_places."""
         kept = list(self.feet)
         reduced = {lanes[0]: i for i, lanes in enumerate(self._lanes_in)}
-        feet, forces, places = [], [], {}
+        feet, forces, places, self._foot_group = [], [], {}, []
         for f, foot in enumerate(kept):
             if foot.body in reduced and self._group[reduced[foot.body]] is None:
                 places[f] = (len(feet), 0)
                 feet.append(replace(foot, body=reduced[foot.body]))
                 forces.append(("f", 3 * f))
+                self._foot_group.append(None)
         self.lane_inputs["lane_f"] = []
-        for group in self.groups:
+        for g, group in enumerate(self.groups):
             in_group = [f for f, foot in enumerate(kept) if any(foot.body in limb for limb in group.limbs)]
             if not in_group:
                 continue
@@ -115,6 +116,7 @@ class LaneModel(TracedModel):
                 self.lane_inputs["lane_f"] += [tuple(("f", 3 * feet_k[n] + c) for feet_k in per_lane)
                                                for c in range(3)]
                 forces.append(("lane_f", first))
+                self._foot_group.append(g)
         self.foot_places = tuple(places[f] for f in range(len(kept)))
         return tuple(feet), tuple(forces)
 
@@ -137,6 +139,12 @@ class LaneModel(TracedModel):
         group's lanes."""
         limb, spine = self._dof_group(k), self._dof_group(i)
         return _sum_lanes(value, self.groups[limb]) if limb is not None and spine is None else value
+
+    def into_spine(self, k, row, col, term):
+        group = self._foot_group[k]
+        if group is None or self._dof_group(row) is not None or self._dof_group(col) is not None:
+            return term
+        return _sum_lanes(term, self.groups[group])
 
     def into_root(self, term):
         return ex.lane_sum(term)

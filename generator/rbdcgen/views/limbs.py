@@ -105,18 +105,17 @@ def quadruped_groups(robot):
     return (LimbGroup(0, isomorphic_limbs(robot)),)
 
 
-def lanes_in_words(robot):
-    """What limb_groups puts in lanes, for the header's schedule line."""
-    groups = limb_groups(robot)
-    if len(groups) == 1 and groups[0].parent == 0 and len(groups[0].limbs) == ex.LANES:
-        try:
-            isomorphic_limbs(robot)
-            return "the %d isomorphic limbs in SIMD lanes, the trunk scalar" % ex.LANES
-        except LimbError:
-            pass
-    where = ", ".join("%d of %s" % (len(g.limbs), robot.bodies[g.parent].name) for g in groups)
-    return ("the isomorphic limbs in SIMD lanes: %s (a group of fewer than %d repeated to fill the lanes); "
-            "the rest scalar" % (where, ex.LANES))
+def groups_in_words(robot):
+    """What limb_groups puts in lanes, for the header's schedule line; None for the quadruped's four
+    limbs of the trunk (isomorphic_limbs)."""
+    try:
+        isomorphic_limbs(robot)
+        return None
+    except LimbError:
+        pass
+    where = ", ".join("%d of %s" % (len(g.limbs), robot.bodies[g.parent].name) for g in limb_groups(robot))
+    return "the isomorphic limbs in SIMD lanes: %s (a group of fewer than %d repeated to fill the lanes)" % (
+        where, ex.LANES)
 
 
 def _rotor(robot, body):

@@ -176,6 +176,11 @@ class TracedModel:
         here; summed over the lanes where a lane limb meets the trunk (views/limb_lanes.LaneModel)."""
         return term
 
+    def into_spine(self, k, row, col, term):
+        """Foot k's term in the entry (row, col) of ∂(Jᵀf)/∂q: unchanged here; a lane foot's summed
+        over its lanes where both dofs are the spine's (views/limb_lanes.LaneModel)."""
+        return term
+
     def into_root(self, term):
         """A foot's term in an entry between two root dofs (the trunk block of ∂(Jᵀf)/∂q):
         unchanged here; summed over the lanes of a lane foot (views/limb_lanes.LaneModel)."""

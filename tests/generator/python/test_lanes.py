@@ -315,7 +315,8 @@ def _written_runs(fn):
     return runs
 
 def _rotation(rng):
-    """A random rotation matrix (Gram-Schmidt of a random 3×3)."""
+    """A random rotation matrix (Gram-Schmidt of a random 3×3, the last row turned to make it proper:
+    a reflection is no joint frame, and the articulated-body algorithm and the CRBA disagree on one)."""
     rows = []
     while len(rows) < 3:
         row = [rng.gauss(0, 1) for _ in range(3)]
@@ -325,6 +326,9 @@ def _rotation(rng):
         norm = math.sqrt(sum(a * a for a in row))
         if norm > 0.1:
             rows.append(tuple(a / norm for a in row))
+    x, y, z = rows
+    if sum(a * b for a, b in zip(z, (x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]))) < 0:
+        rows[2] = tuple(-a for a in z)
     return tuple(rows)
 
 
