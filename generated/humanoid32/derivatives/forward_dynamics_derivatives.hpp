@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_303cfd482fb8.hpp
+//   humanoid32/common/forward_dynamics_derivatives_4eaab7bd2a1e.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_303cfd482fb8.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_4eaab7bd2a1e.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -27,14 +27,14 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param da_dtau out 38x32: ∂a/∂τ = M⁻¹Sᵀ
 /// @param da_df out 38x15: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
-/// operations     mul     add  div  sqrt  trig   neg   total
-///             126712  114653   55     0   116  1071  242607
+/// operations     mul     add  div  sqrt  trig  neg   total
+///             126712  114921   55     0   116  417  242221
 /// schedule: limb lanes and a looped solve (the terms traced with the isomorphic limbs in SIMD
 ///   lanes: 2 of pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes),
-///   the solve's right-hand sides in SIMD across columns): 66858 arithmetic instructions
-///   (cost 93786), scalar tree 131228 (cost 310187), looped solve 80616 (cost 126805),
+///   the solve's right-hand sides in SIMD across columns): 66052 arithmetic instructions
+///   (cost 91851), scalar tree 131228 (cost 310187), looped solve 80616 (cost 126805),
 ///   looped RNEA derivatives 83664 (cost 115906), looped CRBA 93835 (cost 137377)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_303cfd482fb8::forward_dynamics_derivatives;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_4eaab7bd2a1e::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_4c16533c8475.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_ad320bf56a5f.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_4c16533c8475.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_ad320bf56a5f.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -28,13 +28,13 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param da_df out 18x12: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
-///             19403  17723   14     0    24  441  37605
+///             19403  17747   14     0    24  149  37337
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
-///   lanes, the solve's right-hand sides in SIMD across columns): 10128 arithmetic
-///   instructions (cost 10274), scalar tree 25981 (cost 57594), limb lanes 7721 (cost
-///   13770), looped solve 17388 (cost 27698), looped RNEA derivatives 20081 (cost 27491),
-///   looped CRBA 23759 (cost 35347)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_4c16533c8475::forward_dynamics_derivatives;
+///   lanes, the solve's right-hand sides in SIMD across columns): 9848 arithmetic
+///   instructions, scalar tree 25981 (cost 57594), limb lanes 7721 (cost 13770), looped
+///   solve 17388 (cost 27698), looped RNEA derivatives 20081 (cost 27491), looped CRBA
+///   23759 (cost 35347)
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_ad320bf56a5f::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from . import differentiate
 from ..graph import expr as ex
+from ..views.limb_lanes import lane_column_order
+from ..views.limbs import LimbError, isomorphic_limbs
 from ..algorithms import forward_dynamics as fd
 from ..algorithms import jacobian
 from ..algorithms.crba import mass_matrix
@@ -59,13 +61,27 @@ def forward_dynamics_derivative_terms(m):
     placeholder a through that factor (forward_dynamics, as the scalar terms)."""
     full = m.full
     nv = full.nv
-    dq, dv = (m.scatter_matrix(rows) for rows in differentiate.residual_derivatives(m))
+    # negated in the lanes, so that a whole lane value reaches its place in rhs (one vector store)
+    dq, dv = (m.scatter_matrix([[-x for x in row] for row in rows]) for rows in differentiate.residual_derivatives(m))
     selection = [[ex.const(1.0 if r == full.joints[i].v_index else 0.0) for r in range(nv)]
                  for i in range(1, full.nb)]                                       # Sᵀ
     J = m.place_rows(jacobian.feet_jacobian(m), m.foot_places, 3) if m.feet else []
-    columns = ([[-dq[r][c] for r in range(nv)] for c in range(nv)] + [[-dv[r][c] for r in range(nv)] for c in range(nv)]
+    columns = ([[dq[r][c] for r in range(nv)] for c in range(nv)] + [[dv[r][c] for r in range(nv)] for c in range(nv)]
                + selection + [list(row) for row in J])                           # the order of FORWARD_DYNAMICS_COLUMNS
+    columns = [columns[c] for c in column_order(full, len(J))]
     L, inv_diag = fd.ltdl(mass_matrix(m), fd.dof_parents(m.robot), m.into_dof)
     terms = {"rhs": differentiate.right_hand_side_rows(columns, nv),
              "L": fd.packed_factor(m.scatter_matrix(L), fd.dof_parents(full)), "D_inv": m.scatter(inv_diag)}
     return differentiate.replace_symbols(terms, m.tree_acceleration, fd.forward_dynamics(m))
+
+
+def column_order(robot, feet_rows):
+    """Where forward_dynamics_derivative_terms keeps its right-hand-side columns (the logical column at
+    each place): a quadruped's in lane order (limb_lanes.lane_column_order; the feet's columns with the
+    trunk's), so that the terms store whole lane values; any other robot's as they are."""
+    dofs = (tuple(range(robot.nv)), tuple(range(robot.nv)),
+            tuple(robot.joints[i].v_index for i in range(1, robot.nb)), (-1,) * feet_rows)
+    try:
+        return lane_column_order(robot, isomorphic_limbs(robot), dofs)
+    except LimbError:
+        return tuple(range(sum(map(len, dofs))))

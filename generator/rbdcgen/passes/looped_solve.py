@@ -18,7 +18,7 @@ from typing import Optional, Tuple
 from ..algorithms.contact_dynamics import PROXIMAL_STEPS
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
 from ..graph import expr as ex
-from . import differentiate, lane_contact_derivatives, looped_crba, looped_feet_forces, looped_rnea_derivatives
+from . import differentiate, lane_contact_derivatives, lane_derivatives, looped_crba, looped_feet_forces, looped_rnea_derivatives
 from .looped_rnea_derivatives import LoopedRneaDerivatives
 from .trace import Argument, with_loop
 
@@ -53,6 +53,7 @@ class LoopedSolve:
     # per terms output whose entries a lane function keeps elsewhere than row-major (lane_places): where
     # each row-major entry is (None: zero, not stored)
     places: Tuple[Tuple[str, Tuple[Optional[int], ...]], ...] = ()
+    column_order: Tuple[int, ...] = ()  # the logical column at each place of rhs (R1 and R2; empty: in order)
 
     def placed(self, values):
         """The terms' values {name: row-major entries} where `places` keeps them."""
@@ -128,7 +129,7 @@ class LoopedSolve:
         body = [] if self.factor is None else self.factor.loops()
         body += [] if self.rnea is None else self.rnea.loops(with_table=self.factor is None)
         body += self._tree_solve("solve_rhs")
-        return body + _copies(self.blocks, "solve_rhs", self.nv, self.columns)
+        return body + _copies(self.blocks, "solve_rhs", self.nv, self.columns, self.column_order)
 
     def emission(self, terms_name):
         factor = (" and the factor" if self.factor is None else
@@ -152,7 +153,6 @@ class LoopedContactSolve(LoopedSolve):
     lambda_blocks: Tuple[Tuple[str, int], ...] = ()
     contact_rows: int = 0
     contact_columns: Tuple[Tuple[int, ...], ...] = ()  # per row of J, its non-zero columns
-    column_order: Tuple[int, ...] = ()  # the logical column at each place of R1 and R2 (empty: in order)
 
     def multiply_adds(self):
         n, m = self.nv, self.contact_rows
@@ -362,8 +362,11 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
         packed = LoopedFactor(parents=parents, terms=terms.outputs, unpack=False,
                               crba=looped_crba.LoopedCrba(robot=robot, terms=terms.outputs, packed=True))
         feet = looped_feet_forces.on_tree(robot, scene, "solve_rhs", stride=columns) if rnea and scene.feet_for(robot) else None
+        order = (lane_derivatives.column_order(robot, 3 * len(scene.feet_for(robot)))
+                 if terms.lanes is not None else ())
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs,
-                            rnea=subtract if rnea else None, factor=packed if factor else None, feet=feet)
+                            rnea=subtract if rnea else None, factor=packed if factor else None, feet=feet,
+                            column_order=order)
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)
     assert terms.outputs[0].cols == solve.columns
     return solve

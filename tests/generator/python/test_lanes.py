@@ -17,6 +17,7 @@ from rbdcgen.graph import expr as ex
 from rbdcgen.backend.emit import emit_body
 from rbdcgen.graph.flops import count_ops
 from rbdcgen.frontend.ir import Actuator
+from rbdcgen.passes import lane_derivatives
 from rbdcgen.passes.differentiate import padded
 from rbdcgen.passes.lane_contact_derivatives import column_order
 from rbdcgen.passes.lane_functions import ANY_GROUPS, LANE_NAME, SCALAR, available
@@ -51,14 +52,13 @@ class LaneConstants(unittest.TestCase):
 LANE_FRAMES = ("RF_foot", "trunk", "LH_hip", "LF_foot", "RF_hip", "RH_foot", "LF_hip", "LH_foot", "RH_hip")
 
 
-def _in_lane_column_order(robot, terms):
-    """The scalar contact terms' right-hand sides R1, R2 (row-major) with their columns where the lane
-    terms keep them (limb_lanes.lane_column_order)."""
-    order = column_order(robot)
-    width = padded(2 * robot.nv + robot.n_joints)
+def _in_lane_column_order(robot, terms, order, names):
+    """The scalar terms' right-hand sides `names` (row-major) with their columns where the lane terms
+    keep them (`order`: limb_lanes.lane_column_order)."""
+    width = padded(len(order))
     source = list(order) + list(range(len(order), width))  # the padding stays
     placed = dict(terms)
-    for name in ("R1", "R2"):
+    for name in names:
         values = terms[name]
         placed[name] = [values[start + source[c]] for start in range(0, len(values), width) for c in range(width)]
     return placed
@@ -134,7 +134,10 @@ class MiniCheetahLanes(unittest.TestCase):
                 got = evaluate(lanes, lanes.lanes.with_lanes(state))
                 want = evaluate(scalar, state)
                 if name == "contact_dynamics_derivative_terms_lanes":
-                    want = _in_lane_column_order(robot, want)
+                    want = _in_lane_column_order(robot, want, column_order(robot), ("R1", "R2"))
+                if name == "forward_dynamics_derivative_terms_lanes":
+                    order = lane_derivatives.column_order(robot, 3 * len(scene.feet_for(robot)))
+                    want = _in_lane_column_order(robot, want, order, ("rhs",))
                 for output in want:
                     self.assertLess(max_relative_error(got[output], want[output]), 1e-12,
                                     (name, output, seed))
