@@ -94,6 +94,7 @@ def spec(robot, scalar_specs):
         **_in_lanes(scalar_specs, CONTACT),
         **_in_lanes(scalar_specs, CONTACT_TERMS),
         **_in_lanes(scalar_specs, SOLVE_TERMS),
+        **_in_lanes(scalar_specs, {"forward_dynamics_aba": lambda m: {"a": m.scatter(aba.forward_dynamics_aba(m))}}),
         "bias_lanes": (
             "Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes "
             "evaluated together in SIMD lanes, the trunk scalar; equals bias.",
@@ -125,13 +126,6 @@ def spec(robot, scalar_specs):
             ("q", "v", "tau", "f"),
             [("a", nv, 1, "acceleration")],
             lambda m: {"a": m.scatter(forward_dynamics.forward_dynamics(m))}),
-        "forward_dynamics_aba_lanes": (
-            "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (the articulated-body algorithm), the "
-            "isomorphic limbs' passes evaluated together in SIMD lanes, the rest scalar; equals "
-            "forward_dynamics_aba.",
-            ("q", "v", "tau", "f"),
-            [("a", nv, 1, "acceleration")],
-            lambda m: {"a": m.scatter(aba.forward_dynamics_aba(m))}),
         "osc_open_chain_lanes": (
             "Trunk operational-space Λ, J̄ᵀ, b with measured foot forces (paper 001 Table 1), the four "
             "isomorphic limbs' inward passes evaluated together in SIMD lanes, the trunk scalar; "

@@ -59,6 +59,12 @@ def straight_line_instructions(fn):
 # Measured on an AMD EPYC (Zen 5), clang 14, per counted instruction: 0.084 ns for arm7's ∂τ (3 366),
 # 0.165-0.185 ns for the Mini Cheetah's (6 806), humanoid32's (25 023) and Talos's (46 718).
 FRONT_END_LIMIT = 3400
+# A lane form whose straight-line part is longer is not emitted: lane code is not cut into blocks
+# (backend/blocks.py passes scalars only), and g++ 12 -O3's time on one long lane function grows
+# faster than its length: the ∂q̈ terms in lanes took 32 s for humanoid32 (21 828 instructions) and
+# 120 s, 1.45 GB for TALOS (39 500), against issue 20's 20 s; TALOS's forward dynamics in lanes
+# (14 332) 10.8 s.
+LANE_CODE_LIMIT = 15000
 FRONT_END_PENALTY = 1.4
 
 
@@ -178,6 +184,12 @@ def scheduled_function(robot, scene, name):
                 if forms.pop(form, None) is not None:
                     untraced.append("%s not traced (%s)" % (_SHORT[form], cost_of(robot)))
     traced = {form: trace() for form, trace in forms.items()}
+    for form in [f for f in traced if f in _LANE_FORMS and len(traced) > 1]:
+        lane_code = straight_line_instructions(traced[form])
+        if lane_code > LANE_CODE_LIMIT:
+            del traced[form]
+            untraced.append("%s not emitted (%d straight-line instructions in lanes, past %d)"
+                            % (_SHORT[form], lane_code, LANE_CODE_LIMIT))
     figures = {form: (instructions(fn), cost(fn)) for form, fn in traced.items()}
     best = min(figures, key=lambda form: figures[form][1])  # dicts keep order: the scalar tree wins a tie
     others = ", ".join(["%s %s" % (_SHORT[form], _figures(*figures[form])) for form in figures if form != best]

@@ -251,6 +251,14 @@ class HumanoidPairs(unittest.TestCase):
         self.assertTrue(fn.schedule.startswith("limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 "
                                                "of torso"), fn.schedule)
 
+    def test_long_lane_code_not_emitted(self):
+        """∂q̈'s terms in lanes are 21 828 straight-line instructions for humanoid32, past
+        schedule.LANE_CODE_LIMIT (lane code is not cut into blocks): auto keeps another form and says why."""
+        robot = mini_cheetah.load(urdf=mini_cheetah.HUMANOID32)
+        fn = scheduled_function(robot, default_scene(), "forward_dynamics_derivatives")
+        self.assertFalse(fn.schedule.startswith("limb lanes"), fn.schedule)
+        self.assertIn("limb lanes and a looped solve not emitted", fn.schedule)
+
     def test_quadruped_functions_refused(self):
         """The lane forms that solve limb columns, or put frames and contacts in lanes, need the
         quadruped's four limbs of the trunk."""
