@@ -65,14 +65,15 @@ def model(robot, scene, zero_inputs, name):
 
 def available(robot, scene, name):
     """LimbError if the lane form of `name` does not apply to this robot and scene: the functions
-    outside ANY_GROUPS need the quadruped's limbs (isomorphic_limbs), forward dynamics the same feet
-    on every limb of a group (feet_shape), a frame function the same frames on every limb
+    outside ANY_GROUPS need the quadruped's limbs (isomorphic_limbs), those with foot forces
+    (WITH_FEET) the same feet on every limb of a group (feet_shape), a frame function the same frames on every limb
     (views/limb_lanes.frame_shapes), the contact functions one kept foot and at most one contact per
     limb (contact_lanes), the feet's J̇v the same feet on every limb (feet_shape)."""
     if name in ANY_GROUPS:
         for group in limb_groups(robot):
-            feet = [foot for foot in scene.feet_for(robot) if any(foot.body in limb for limb in group.limbs)]
-            feet_shape(robot.name, feet, group.limbs)
+            if LANE_NAME[name] in WITH_FEET:
+                feet = [foot for foot in scene.feet_for(robot) if any(foot.body in limb for limb in group.limbs)]
+                feet_shape(robot.name, feet, group.limbs)
         return
     limbs = isomorphic_limbs(robot)
     if name in FRAMES:

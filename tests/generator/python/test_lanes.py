@@ -250,6 +250,9 @@ class HumanoidPairs(unittest.TestCase):
         fn = scheduled_function(robot, default_scene(), "inverse_dynamics")
         self.assertTrue(fn.schedule.startswith("limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 "
                                                "of torso"), fn.schedule)
+        one_foot = replace(default_scene(), feet=("l_foot",))  # not on both legs: no lane feet
+        self.assertTrue(scheduled_function(robot, one_foot, "inverse_dynamics").schedule.startswith("limb lanes"))
+        self.assertNotIn("in limb lanes", scheduled_function(robot, one_foot, "forward_dynamics").schedule)
 
     def test_long_lane_code_not_emitted(self):
         """∂q̈'s terms in lanes are 21 828 straight-line instructions for humanoid32, past
