@@ -21,7 +21,7 @@ from dataclasses import dataclass, replace
 
 from ..graph import expr as ex
 from ..graph import spatial as sp
-from .limbs import LimbError, LimbGroup
+from .limbs import LimbError
 from ..algorithms import forward_dynamics as fd
 from .scalar import TracedModel
 
@@ -422,7 +422,7 @@ def _lane_part(value, lane):
     return ex.lane_get(value, lane)
 
 
-def _sum_lanes(value, group=LimbGroup(0, ((),) * ex.LANES)):
+def _sum_lanes(value, group):
     """The sum over a group's limbs of a value, a vector or matrix (nested tuples) or a spatial
     inertia: all lanes, or those of a group of fewer limbs (a pair's lanes 0 and 1)."""
     if isinstance(value, sp.Inertia):

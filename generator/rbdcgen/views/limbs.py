@@ -80,23 +80,11 @@ def isomorphic_limbs(robot):
     """The limbs as a tuple of ex.LANES tuples of body indices (limb k's l-th body), when the trunk
     carries exactly ex.LANES isomorphic limbs and nothing else (a quadruped: what the lane
     derivatives, contacts, feet and frames need), or LimbError."""
-    roots = robot.children[0]
-    if robot.couplings:
-        raise LimbError("robot '%s': mimic couplings are not supported in lanes" % robot.name)
-    if len(roots) != ex.LANES:
-        raise LimbError("robot '%s': the trunk carries %d subtrees, lanes need %d isomorphic limbs"
-                        % (robot.name, len(roots), ex.LANES))
-    limbs = tuple(tuple(sorted(robot.subtree[root])) for root in roots)
-    if sum(len(limb) for limb in limbs) != robot.nb - 1:
-        raise LimbError("robot '%s': bodies outside the limbs" % robot.name)
-    shapes = {_shape(robot, limb) for limb in limbs}
-    if len(shapes) != 1:
-        raise LimbError("robot '%s': the limbs differ in shape, joint types or axes" % robot.name)
-    for limb in limbs:
-        if _has_rotor(robot, limb):
-            body = next(b for b in limb if _rotor(robot, b))
-            raise LimbError("robot '%s': joint '%s' has a rotor; rotors are not supported in "
-                            "lanes" % (robot.name, robot.joints[body].name))
+    groups = limb_groups(robot)
+    limbs = groups[0].limbs
+    if len(groups) > 1 or groups[0].parent != 0 or len(limbs) != ex.LANES or sum(map(len, limbs)) != robot.nb - 1:
+        raise LimbError("robot '%s': lanes for these functions need the trunk to carry %d isomorphic limbs "
+                        "and nothing else; it has %s" % (robot.name, ex.LANES, _in_words(robot, groups)))
     return limbs
 
 
@@ -113,18 +101,17 @@ def groups_in_words(robot):
         return None
     except LimbError:
         pass
-    where = ", ".join("%d of %s" % (len(g.limbs), robot.bodies[g.parent].name) for g in limb_groups(robot))
     return "the isomorphic limbs in SIMD lanes: %s (a group of fewer than %d repeated to fill the lanes)" % (
-        where, ex.LANES)
+        _in_words(robot, limb_groups(robot)), ex.LANES)
 
 
-def _rotor(robot, body):
-    actuator = robot.joints[body].actuator
-    return actuator is not None and actuator.rotor is not None
+def _in_words(robot, groups):
+    return ", ".join("%d of %s" % (len(g.limbs), robot.bodies[g.parent].name) for g in groups)
 
 
 def _has_rotor(robot, limb):
-    return any(_rotor(robot, body) for body in limb)
+    return any(robot.joints[body].actuator is not None and robot.joints[body].actuator.rotor is not None
+               for body in limb)
 
 
 def _shape(robot, limb):
