@@ -70,8 +70,9 @@ def available(robot, scene, name):
     (views/limb_lanes.frame_shapes), the contact functions one kept foot and at most one contact per
     limb (contact_lanes), the feet's J̇v the same feet on every limb (feet_shape)."""
     if name in ANY_GROUPS:
-        for group in limb_groups(robot):
-            if LANE_NAME[name] in WITH_FEET:
+        groups = limb_groups(robot)
+        if LANE_NAME[name] in WITH_FEET:
+            for group in groups:
                 feet = [foot for foot in scene.feet_for(robot) if any(foot.body in limb for limb in group.limbs)]
                 feet_shape(robot.name, feet, group.limbs)
         return
