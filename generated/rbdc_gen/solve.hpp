@@ -108,20 +108,24 @@ RBDC_HOST_DEVICE inline void in_register(T& x) noexcept {
 #endif
 }
 
-/// ltdl_solve_columns on NR runs of B's columns from column c0: both passes, each row summed locally
+/// Which passes of M⁻¹ = L⁻¹ D⁻¹ L⁻ᵀ a solve runs: both, or one half (contact_dynamics_derivatives
+/// meets the contact rows between them: J M⁻¹ = (D⁻¹Z)ᵀ L⁻ᵀ and M⁻¹Jᵀ = L⁻¹ D⁻¹ Z, Z = L⁻ᵀJᵀ sparse).
+enum class Passes { both, up, down };  // up: B ← L⁻ᵀB, leaves to root; down: B ← L⁻¹D⁻¹B, root to leaves
+
+/// ltdl_solve_columns on NR runs of B's columns from column c0: its passes, each row summed locally
 /// from rows already final (no aliasing with the rows it reads), in the order they became final: the
 /// row finished last comes last, so a row's sum runs while the rows before it finish instead of
 /// after (a walk up the parents, nearest first, waited on each). Where the tree pairs a dof with its
 /// parent or child, both rows are summed in one sweep that loads each row they share once: a chain's
 /// solve does half the loads (100 dofs, 304 columns: 97 → 62 µs with clang 14, 98 → 66 µs with g++
 /// 12; Talos 6.7 → 4.8 µs, one driver, AMD EPYC, bitwise the same).
-template <class Scalar, int NV, int NC, int NE, int NR>
+template <class Scalar, int NV, int NC, int NE, int NR, Passes P>
 RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_column_block(const DofTree<NV, NE>& tree, const Scalar* L,
                                                                     const Scalar* D_inv, Scalar* B, int c0) noexcept {
   using R = ColumnRun<Scalar, NC>;
   constexpr int W = R::size;
   typename R::type row[NR], pair[NR];
-  for (int j = NV - 1; j >= 0; --j) {  // B ← L⁻ᵀ B, leaves to root: row j from its descendants'
+  for (int j = P == Passes::down ? -1 : NV - 1; j >= 0; --j) {  // B ← L⁻ᵀ B, leaves to root: row j from its descendants'
     Scalar* row_j = B + j * NC + c0;
     for (int c = 0; c < NR; ++c) row[c] = R::load(row_j + c * W);
     if (tree.pair_with_parent[j]) {
@@ -156,7 +160,7 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_column_block(const DofTre
     }
     for (int c = 0; c < NR; ++c) R::store(row_j + c * W, row[c]);
   }
-  for (int i = 0; i < NV; ++i) {  // B ← L⁻¹ D⁻¹ B, root to leaves: row i from its ancestors', root first
+  for (int i = 0; i < (P == Passes::up ? 0 : NV); ++i) {  // B ← L⁻¹ D⁻¹ B, root to leaves: row i from its ancestors', root first
     Scalar* row_i = B + i * NC + c0;
     const Scalar d = D_inv[i];
     for (int c = 0; c < NR; ++c) row[c] = R::load(row_i + c * W) * d;
@@ -211,8 +215,9 @@ constexpr int ltdl_block_runs() {
 
 /// Solves M X = B in place for the NC columns of B (row-major NV × NC), M = Lᵀ D L over the dof
 /// tree, L its factor entries in the packed layout of `tree`, D_inv the inverse pivots: in blocks
-/// of nearly equal width, at most ltdl_block_runs() runs each (columns are independent).
-template <class Scalar, int NV, int NC, int NE, int Done = 0>
+/// of nearly equal width, at most ltdl_block_runs() runs each (columns are independent); P: only one
+/// half of the solve.
+template <class Scalar, int NV, int NC, Passes P = Passes::both, int NE, int Done = 0>
 RBDC_HOST_DEVICE inline void ltdl_solve_columns(const DofTree<NV, NE>& tree, const Scalar* L, const Scalar* D_inv,
                                                 Scalar* B) noexcept {
   constexpr int W = ColumnRun<Scalar, NC>::size;
@@ -221,22 +226,15 @@ RBDC_HOST_DEVICE inline void ltdl_solve_columns(const DofTree<NV, NE>& tree, con
     constexpr int most = ltdl_block_runs<Scalar, NV, NC>();
     constexpr int blocks = (left + most - 1) / most;
     constexpr int runs = (left + blocks - 1) / blocks;
-    ltdl_solve_column_block<Scalar, NV, NC, NE, runs>(tree, L, D_inv, B, Done * W);
-    ltdl_solve_columns<Scalar, NV, NC, NE, Done + runs>(tree, L, D_inv, B);
+    ltdl_solve_column_block<Scalar, NV, NC, NE, runs, P>(tree, L, D_inv, B, Done * W);
+    ltdl_solve_columns<Scalar, NV, NC, P, NE, Done + runs>(tree, L, D_inv, B);
   }
 }
 
-/// Where a product finds A's entry (i, k): row-major with LDA entries per row, or at place[i·K + k]
-/// (a lane function's terms keep each lane value's entries side by side, looped_solve.py).
+/// Where a product finds A's entry (i, k): row-major with LDA entries per row.
 template <int LDA>
 struct RowMajor {
   RBDC_HOST_DEVICE int operator()(int i, int k) const noexcept { return i * LDA + k; }
-};
-
-template <int K>
-struct Placed {
-  const int* place;
-  RBDC_HOST_DEVICE int operator()(int i, int k) const noexcept { return place[i * K + k]; }
 };
 
 /// Which entries of a square A a product reads: all, or only its lower or upper triangle (the
@@ -304,13 +302,6 @@ RBDC_HOST_DEVICE inline void multiply_minus(const Scalar* A, const Scalar* B, Sc
   multiply_rows<Scalar, M, K, NC, -1>(RowMajor<LDA>{}, A, B, C, C);
 }
 
-/// C ← A B − C, A's entry (i, k) at place[i·K + k].
-template <class Scalar, int M, int K, int NC>
-RBDC_HOST_DEVICE inline void multiply_minus_placed(const int (&place)[M * K], const Scalar* A, const Scalar* B,
-                                                   Scalar* C) noexcept {
-  multiply_rows<Scalar, M, K, NC, -1>(Placed<K>{place}, A, B, C, C);
-}
-
 /// C ← D + A B (C not B).
 template <class Scalar, int M, int K, int NC, int LDA = K>
 RBDC_HOST_DEVICE inline void multiply_add(const Scalar* A, const Scalar* B, const Scalar* D, Scalar* C) noexcept {
@@ -319,31 +310,54 @@ RBDC_HOST_DEVICE inline void multiply_add(const Scalar* A, const Scalar* B, cons
 
 /// The non-zeros of an M × K matrix, a table the generator writes (looped_solve.py): row i's at
 /// columns column[e], stored at entry[e] of the array, for e in [first[i], first[i + 1]) (row-major,
-/// or where a lane function's terms keep each lane value's entries side by side). NNZ ≥ 1 (one
-/// unused entry when none).
+/// or where a lane function's terms keep each lane value's entries side by side); together[i]: how
+/// many rows from i on (i included) have i's columns. NNZ ≥ 1 (one unused entry when none).
 template <int M, int NNZ>
 struct RowSparsity {
   int first[M + 1];
   int column[NNZ];
   int entry[NNZ];
+  int together[M];
 };
 
-/// C ← A B − C as multiply_minus, reading only A's non-zeros (a contact row is zero off its foot's
-/// path: half of the Mini Cheetah's).
-template <class Scalar, int M, int K, int NC, int NNZ>
-RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_sparse_minus(const RowSparsity<M, NNZ>& sparsity, const Scalar* A,
-                                                                  const Scalar* B, Scalar* C) noexcept {
+/// multiply_sparse_minus on the H rows from i, which have the same columns: B's runs loaded once for
+/// all H.
+template <class Scalar, int NC, int H, int M, int NNZ>
+RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void multiply_sparse_rows(int i, const RowSparsity<M, NNZ>& sparsity,
+                                                                 const Scalar* A, const Scalar* B, Scalar* C) noexcept {
   using R = ColumnRun<Scalar, NC>;
   constexpr int W = R::size;
-  for (int i = 0; i < M; ++i) {
-    typename R::type row[NC / W];
-    for (int c = 0; c < NC / W; ++c) row[c] = -R::load(C + i * NC + c * W);
-    for (int e = sparsity.first[i]; e < sparsity.first[i + 1]; ++e) {
-      const int k = sparsity.column[e];
-      const Scalar a = A[sparsity.entry[e]];
-      for (int c = 0; c < NC / W; ++c) row[c] += a * R::load(B + k * NC + c * W);
+  typename R::type row[H][NC / W];
+  int offset[H];  // row i + h's entry e is at sparsity.entry[e + offset[h]]
+  for (int h = 0; h < H; ++h) {
+    offset[h] = sparsity.first[i + h] - sparsity.first[i];
+    for (int c = 0; c < NC / W; ++c) row[h][c] = -R::load(C + (i + h) * NC + c * W);
+  }
+  for (int e = sparsity.first[i]; e < sparsity.first[i + 1]; ++e) {
+    const Scalar* b = B + sparsity.column[e] * NC;
+    for (int c = 0; c < NC / W; ++c) {
+      const typename R::type x = R::load(b + c * W);
+      for (int h = 0; h < H; ++h) row[h][c] += A[sparsity.entry[e + offset[h]]] * x;
     }
-    for (int c = 0; c < NC / W; ++c) R::store(C + i * NC + c * W, row[c]);
+  }
+  for (int h = 0; h < H; ++h)
+    for (int c = 0; c < NC / W; ++c) R::store(C + (i + h) * NC + c * W, row[h][c]);
+}
+
+/// C ← A B − C as multiply_minus, reading only A's non-zeros (a contact row is zero off its foot's
+/// path: half of the Mini Cheetah's), rows with the same columns up to three at a time where their
+/// sums fit in vector registers (AVX-512: 48 columns are 6 runs, 18 sums), else one by one.
+template <class Scalar, int M, int K, int NC, int NNZ>
+RBDC_HOST_DEVICE inline void multiply_sparse_minus(const RowSparsity<M, NNZ>& sparsity, const Scalar* A,
+                                                   const Scalar* B, Scalar* C) noexcept {
+  constexpr int runs = NC / ColumnRun<Scalar, NC>::size;
+  constexpr int most = 3 * runs <= 18 ? 3 : 2 * runs <= 12 ? 2 : 1;
+  for (int i = 0; i < M;) {
+    const int h = sparsity.together[i] < most ? sparsity.together[i] : most;
+    if (h == 3) multiply_sparse_rows<Scalar, NC, 3>(i, sparsity, A, B, C);
+    else if (h == 2) multiply_sparse_rows<Scalar, NC, 2>(i, sparsity, A, B, C);
+    else multiply_sparse_rows<Scalar, NC, 1>(i, sparsity, A, B, C);
+    i += h;
   }
 }
 

@@ -155,8 +155,13 @@ class Delassus(DampedSolve):
         self._L, inv_diag = fd.mass_matrix_factor(m)
         self.J = contact_rows(m, feet_jacobian(m))
         m.mark("contact: Delassus matrix J M⁻¹Jᵀ and its damped factor")
-        A, self._D_inv_Z = fd.half_solve_gram(self._L, inv_diag, parents, self.J, m.into_dof)
+        A, self._Z, self._D_inv_Z = fd.half_solve_gram(self._L, inv_diag, parents, self.J, m.into_dof)
         super().__init__(A)
+
+    def half_solves(self, m):
+        """(Z, D⁻¹Z) over the robot's dofs, one column per row of J: J M⁻¹ = (D⁻¹Z)ᵀ L⁻ᵀ and
+        M⁻¹Jᵀ = L⁻¹ D⁻¹Z, which contact_dynamics_derivatives' loops apply between M⁻¹'s halves."""
+        return self._Z, self._D_inv_Z
 
     def feet_rows(self, m, values):
         """A per-foot quantity's rows (3 per foot) aligned with J's."""
@@ -206,7 +211,7 @@ class LaneDelassus(DampedSolve):
         self._into_root = m.into_root
         self.J = feet_jacobian(m)
         m.mark("contact: Delassus matrix J M⁻¹Jᵀ and its damped factor")
-        Z = [fd.ltdl_forward(self._L, parents, row) for row in self.J]
+        self._Z = Z = [fd.ltdl_forward(self._L, parents, row) for row in self.J]
         self._D_inv_Z = [[z * d for z, d in zip(column, inv_diag)] for column in Z]
         trunk = range(self._root)
         # shifted[δ][r][s], lane k: Z_r's column of contact k against D⁻¹Z_s's of the contact δ lanes
@@ -249,16 +254,11 @@ class LaneDelassus(DampedSolve):
             in_lanes.append(x)
         return in_lanes
 
-    def full_J(self, m):
-        """J's rows over the full robot's dofs, in contact order: contact c's lane of the lane rows,
-        the other limbs' columns zero."""
-        return m.place_rows(self.J, [(0, k) for k in self._lanes], 3)
-
-    def full_Minv_Jt(self, m):
-        """M⁻¹Jᵀ over the full robot's dofs, one column per row of full_J: L⁻¹(D⁻¹Z) with contact k's
-        column in lane k (LaneModel.substitute_limb_columns)."""
-        per_axis = [m.substitute_limb_columns(self._L, self._parents, column) for column in self._D_inv_Z]
-        return [m.scatter(per_axis[r][k]) for k in self._lanes for r in range(3)]
+    def half_solves(self, m):
+        """Delassus.half_solves over the full robot's dofs, in contact order: contact k's column is
+        lane k of the lane columns (the other limbs' rows zero)."""
+        places = [(0, k) for k in self._lanes]
+        return m.place_rows(self._Z, places, 3), m.place_rows(self._D_inv_Z, places, 3)
 
     def apply_Minv_Jt(self, lam):
         """M⁻¹Jᵀ λ = L⁻¹ (D⁻¹Z λ): λ's rows back in the lanes, limb k's dofs take contact k's

@@ -185,7 +185,7 @@ def mass_matrix_inverse(m):
 
 
 def half_solve_gram(L, inv_diag, parents, columns, into=_as_is):
-    """(Bᵀ M⁻¹ B as symmetric rows, D⁻¹Z) for the columns of B, M = Lᵀ D L: with Z = L⁻ᵀB (a column
+    """(Bᵀ M⁻¹ B as symmetric rows, Z, D⁻¹Z) for the columns of B, M = Lᵀ D L: with Z = L⁻ᵀB (a column
     non-zero only on the tree ancestors of its non-zeros) entry (r, s) is Z_rᵀ D⁻¹ Z_s, a sum over
     their common ancestors independent of the other entries; M⁻¹B = L⁻¹ D⁻¹Z when it is needed."""
     Z = [ltdl_forward(L, parents, b, into) for b in columns]
@@ -195,4 +195,4 @@ def half_solve_gram(L, inv_diag, parents, columns, into=_as_is):
     for r in range(n):
         for s in range(r + 1):
             gram[r][s] = gram[s][r] = sp.dot(Z[r], D_inv_Z[s])
-    return gram, D_inv_Z
+    return gram, Z, D_inv_Z

@@ -413,14 +413,15 @@ def contact_dynamics_derivative_terms(m):
     delassus = cd.Delassus(m)
     parents = fd.dof_parents(m.robot)
     L, inv_diag = fd.mass_matrix_factor(m)
-    return at_contact_solution(m, contact_terms(r1_columns, r2_columns, delassus, delassus.J, delassus.Minv_Jt,
+    return at_contact_solution(m, contact_terms(r1_columns, r2_columns, delassus, *delassus.half_solves(m),
                                                 fd.packed_factor(L, parents), inv_diag))
 
 
-def contact_terms(r1_columns, r2_columns, damped, J, Minv_Jt, L, D_inv, column_order=None):
+def contact_terms(r1_columns, r2_columns, damped, Z, D_inv_Z, L, D_inv, column_order=None):
     """The terms of contact_dynamics_derivatives' looped form, all row-major: `R1`, `R2`, the
     right-hand sides r₁ (nv rows) and r₂ (3nc rows) side by side, each row zero-padded to `padded`
-    columns; `J`, the contact rows; `Minv_Jt`, M⁻¹Jᵀ (given as its columns); the damped Delassus
+    columns; `Zt_D`, (D⁻¹Z)ᵀ, and `Z`, Z = L⁻ᵀJᵀ (Delassus.half_solves, given as columns: one per
+    contact row), with which the loops apply J M⁻¹ and M⁻¹Jᵀ between M⁻¹'s halves; the damped Delassus
     matrix F = L D Lᵀ of `damped` (a DampedSolve) as F⁻¹'s two halves, `F_U` = L⁻ᵀ and `F_DL` =
     D⁻¹L⁻¹ (rows padded like R2's: the loop multiplies them), and `mu`, its damping (the loop forms
     the proximal steps' closed form from them; contact_dynamics' steps already trace L⁻¹); `L`,
@@ -433,8 +434,8 @@ def contact_terms(r1_columns, r2_columns, damped, J, Minv_Jt, L, D_inv, column_o
     n = len(D_inv_F)
     zero = ex.const(0.0)
     return {"R1": right_hand_side_rows(r1_columns, nv), "R2": right_hand_side_rows(r2_columns, n),
-            "J": [x for row in J for x in row],
-            "Minv_Jt": [column[r] for r in range(nv) for column in Minv_Jt],
+            "Zt_D": [x for column in D_inv_Z for x in column],
+            "Z": [column[r] for r in range(nv) for column in Z],
             "F_U": right_hand_side_rows([[L_inv[c][r] if r <= c else zero for r in range(n)] for c in range(n)], n),
             "F_DL": right_hand_side_rows([[L_inv[r][c] * D_inv_F[r] if c <= r else zero for r in range(n)] for c in range(n)], n),
             "mu": [damped.mu],
@@ -533,7 +534,7 @@ def spec(robot, nf, nc):
             ("q", "v", "tau"),
             [("R1", nv, padded(2 * nv + nj), "r₁ columns, row-major, zero-padded"),
              ("R2", m3, padded(2 * nv + nj), "r₂ columns, row-major, zero-padded"),
-             ("J", m3, nv, "contact rows, row-major"), ("Minv_Jt", nv, m3, "M⁻¹Jᵀ, row-major"),
+             ("Zt_D", m3, nv, "(D⁻¹Z)ᵀ, Z = L⁻ᵀJᵀ, row-major"), ("Z", nv, m3, "Z, row-major"),
              ("F_U", m3, padded(m3), "L⁻ᵀ of the damped Delassus factor L D Lᵀ, row-major, zero-padded"),
              ("F_DL", m3, padded(m3), "D⁻¹L⁻¹, row-major, zero-padded"),
              ("mu", 1, 1, "its damping μ"),

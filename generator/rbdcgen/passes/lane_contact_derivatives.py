@@ -6,8 +6,8 @@ robot's layout; what the lanes change is where each term comes from:
   the lane model, as for forward_dynamics_derivatives_lanes (limb k's columns in lane k);
 - r₂, the derivatives of the lane foot's J a + J̇v (feet_motion_derivatives) on the lane model, so
   lane k holds contact k's derivative along limb k's coordinates (along another limb's it is zero);
-- J, A and the damped factor are LaneDelassus's, M⁻¹Jᵀ its lane columns' solutions
-  (LaneDelassus.full_Minv_Jt), M's factor the lane factor's entries;
+- Z = L⁻ᵀJᵀ, D⁻¹Z, A and the damped factor are LaneDelassus's (Z and D⁻¹Z: contact k's column is
+  lane k of the lane columns, LaneDelassus.half_solves), M's factor the lane factor's entries;
 - the placeholders take the lane contact_dynamics' a and λ (λ in the lanes: the lane foot's force)."""
 
 from __future__ import annotations
@@ -36,7 +36,7 @@ def contact_dynamics_derivative_terms(m):
                   for rows in feet_acceleration_derivatives(m, m.feet[:1]))
     r1_columns, r2_columns = differentiate.contact_columns(full, dq, dv, r2_q, r2_v)
     L, inv_diag = fd.mass_matrix_factor(m)
-    terms = differentiate.contact_terms(r1_columns, r2_columns, system, system.full_J(m), system.full_Minv_Jt(m),
+    terms = differentiate.contact_terms(r1_columns, r2_columns, system, *system.half_solves(m),
                                         fd.packed_factor(m.scatter_matrix(L), fd.dof_parents(full)),
                                         m.scatter(inv_diag), column_order(full))
     return differentiate.at_contact_solution(m, terms, delassus)

@@ -119,16 +119,17 @@ class LoopedSolve:
         as each weighs them."""
         return self.instructions() + sum(part.cost() - part.instructions() for part in self._parts())
 
-    def _tree_solve(self, target):
-        return [dof_tree(self.parents)] + ([] if self.feet is None else self.feet.loops()) + [
-                f"ltdl_solve_columns<Scalar, {self.nv}, {self.columns}>(dof_tree, solve_L, solve_D_inv, {target});"]
+    def _tree_solve(self, target, passes=None):
+        """M⁻¹ on `target`, or one half of it (`passes`: rbdc_gen::Passes' up or down)."""
+        which = "" if passes is None else f", Passes::{passes}"
+        return [f"ltdl_solve_columns<Scalar, {self.nv}, {self.columns}{which}>(dof_tree, solve_L, solve_D_inv, {target});"]
 
     def loops(self):
         """The C++ statements after the terms: the looped CRBA and factor and the RNEA loop if any,
         solve, then copy each block into its output."""
         body = [] if self.factor is None else self.factor.loops()
         body += [] if self.rnea is None else self.rnea.loops(with_table=self.factor is None)
-        body += self._tree_solve("solve_rhs")
+        body += [dof_tree(self.parents)] + ([] if self.feet is None else self.feet.loops()) + self._tree_solve("solve_rhs")
         return body + _copies(self.blocks, "solve_rhs", self.nv, self.columns, self.column_order)
 
     def emission(self, terms_name):
@@ -145,19 +146,23 @@ class LoopedSolve:
 
 @dataclass(frozen=True)
 class LoopedContactSolve(LoopedSolve):
-    """contact_dynamics_derivatives' columns (differentiate.contact_dynamics_derivative_terms): Y = M⁻¹R1,
-    B = J Y − R2, ∂λ = Q F⁻¹B = V (D⁻¹L⁻¹B) with Q = Σ_{j<PROXIMAL_STEPS} (μF⁻¹)ʲ (the proximal steps in
-    closed form, DampedSolve.step_sum) and V = Q L⁻ᵀ formed once by loops (proximal_step_sum),
-    ∂a = M⁻¹Jᵀ∂λ − Y, each a loop over all columns. `blocks` are the ∂a outputs, `lambda_blocks`
-    the ∂λ ones (same widths), `contact_rows` = 3·nc."""
+    """contact_dynamics_derivatives' columns (differentiate.contact_dynamics_derivative_terms) through
+    M⁻¹'s halves (M = Lᵀ D L, Z = L⁻ᵀJᵀ: J M⁻¹ = (D⁻¹Z)ᵀ L⁻ᵀ, M⁻¹Jᵀ = L⁻¹ D⁻¹Z): Y = L⁻ᵀR1,
+    B = (D⁻¹Z)ᵀ Y − R2 (= J M⁻¹R1 − R2), ∂λ = Q F⁻¹B = V (D⁻¹L⁻¹B) with Q = Σ_{j<PROXIMAL_STEPS} (μF⁻¹)ʲ
+    (the proximal steps in closed form, DampedSolve.step_sum) and V = Q L⁻ᵀ formed once by loops
+    (proximal_step_sum), ∂a = L⁻¹D⁻¹(Z∂λ − Y) (= M⁻¹Jᵀ∂λ − M⁻¹R1), each a loop over all columns. Z and
+    D⁻¹Z are as sparse as J (a column is non-zero on its foot's path only) where M⁻¹Jᵀ is dense: the
+    Mini Cheetah's products read 216 entries instead of 324. `blocks` are the ∂a outputs,
+    `lambda_blocks` the ∂λ ones (same widths), `contact_rows` = 3·nc."""
     lambda_blocks: Tuple[Tuple[str, int], ...] = ()
     contact_rows: int = 0
-    contact_columns: Tuple[Tuple[int, ...], ...] = ()  # per row of J, its non-zero columns
+    contact_columns: Tuple[Tuple[int, ...], ...] = ()  # per row of (D⁻¹Z)ᵀ, its non-zero columns
+    dof_columns: Tuple[Tuple[int, ...], ...] = ()  # per row of Z (a dof), its non-zero columns
 
     def multiply_adds(self):
-        n, m = self.nv, self.contact_rows
-        nonzeros = sum(map(len, self.contact_columns))
-        return super().multiply_adds() + nonzeros + n * m + _triangle(m) + m * m
+        m = self.contact_rows
+        nonzeros = sum(map(len, self.contact_columns)) + sum(map(len, self.dof_columns))
+        return super().multiply_adds() + nonzeros + _triangle(m) + m * m
 
     def _step_sum_columns(self):
         """V's rows are padded like the right-hand sides'."""
@@ -185,29 +190,24 @@ class LoopedContactSolve(LoopedSolve):
 
     def loops(self):
         n, m, c, p = self.nv, self.contact_rows, self.columns, self._step_sum_columns()
-        return (self._tree_solve("solve_R1")                                               # Y = M⁻¹R1
-                + [row_sparsity("J_sparsity", self.contact_columns, lambda r, k: self._place("J", r * n + k)),
-                   f"multiply_sparse_minus<Scalar, {m}, {n}, {c}>(J_sparsity, solve_J, solve_R1, solve_R2);",  # B = J Y − R2
+        return ([dof_tree(self.parents)] + self._tree_solve("solve_R1", "up")                # Y = L⁻ᵀR1
+                + [row_sparsity("Zt_D_sparsity", self.contact_columns, lambda r, k: self._place("Zt_D", r * n + k)),
+                   f"multiply_sparse_minus<Scalar, {m}, {n}, {c}>(Zt_D_sparsity, solve_Zt_D, solve_R1, solve_R2);",  # B
                    f"alignas(64) Scalar solve_V[{m * p}];",
                    f"proximal_step_sum<Scalar, {m}, {p}, {PROXIMAL_STEPS}>(solve_F_U, solve_F_DL, solve_mu[0], solve_V);",
                    f"alignas(64) Scalar solve_DL_B[{m * c}];",
                    f"multiply<Scalar, {m}, {m}, {c}, {p}, Triangle::lower>(solve_F_DL, solve_R2, solve_DL_B);",  # D⁻¹L⁻¹B
                    f"multiply<Scalar, {m}, {m}, {c}, {p}>(solve_V, solve_DL_B, solve_R2);",     # ∂λ in R2
-                   self._minv_jt_product()]  # ∂a
+                   row_sparsity("Z_sparsity", self.dof_columns, lambda i, r: self._place("Z", i * m + r)),
+                   f"multiply_sparse_minus<Scalar, {n}, {m}, {c}>(Z_sparsity, solve_Z, solve_R2, solve_R1);"]  # Z∂λ − Y
+                + self._tree_solve("solve_R1", "down")                                         # ∂a
                 + _copies(self.blocks, "solve_R1", n, c, self.column_order)
                 + _copies(self.lambda_blocks, "solve_R2", m, c, self.column_order))
 
-    def _minv_jt_product(self):
-        n, m, c = self.nv, self.contact_rows, self.columns
-        if "Minv_Jt" not in dict(self.places):
-            return f"multiply_minus<Scalar, {n}, {m}, {c}>(solve_Minv_Jt, solve_R2, solve_R1);"
-        places = ", ".join(str(self._place("Minv_Jt", e)) for e in range(n * m))
-        return f"multiply_minus_placed<Scalar, {n}, {m}, {c}>({{{places}}}, solve_Minv_Jt, solve_R2, solve_R1);"
-
     def emission(self, terms_name):
-        return ("looped solve: %s writes the %d right-hand sides, the contact rows and the factors; loops "
-                "solve them all at once (M⁻¹, the Delassus system's proximal steps in closed form, M⁻¹Jᵀ), "
-                "one SIMD row update per entry" % (terms_name, self.width))
+        return ("looped solve: %s writes the %d right-hand sides, Z = L⁻ᵀJᵀ and the factors; loops "
+                "solve them all at once (M⁻¹'s halves with J M⁻¹ and M⁻¹Jᵀ between them, the Delassus "
+                "system's proximal steps in closed form), one SIMD row update per entry" % (terms_name, self.width))
 
 
 def _triangle(m):
@@ -268,15 +268,20 @@ def _pairs_with_child(parents):
 
 def row_sparsity(name, columns, place):
     """The C++ declaration of the rbdc_gen::RowSparsity `name` of rows with non-zeros at `columns`,
-    entry (r, k) stored at place(r, k)."""
+    entry (r, k) stored at place(r, k), each row with the number of rows from it on that have its
+    columns (the product sums those together)."""
     first = [0]
     for row in columns:
         first.append(first[-1] + len(row))
     flat = [k for row in columns for k in row] or [0]
     entries = [place(r, k) for r, row in enumerate(columns) for k in row] or [0]
-    return "const RowSparsity<%d, %d> %s{{%s}, {%s}, {%s}};" % (
-        len(columns), len(flat), name, ", ".join(map(str, first)), ", ".join(map(str, flat)),
-        ", ".join(map(str, entries)))
+    together = [1] * len(columns)  # the rows from r on with r's columns
+    for r in range(len(columns) - 2, -1, -1):
+        if columns[r] == columns[r + 1]:
+            together[r] = together[r + 1] + 1
+    return "const RowSparsity<%d, %d> %s{%s};" % (
+        len(columns), len(flat), name, ", ".join("{%s}" % ", ".join(map(str, table))
+                                                  for table in (first, flat, entries, together)))
 
 
 def lane_places(entries, stored=lambda e: True):
@@ -345,15 +350,14 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
         blocks = tuple((a, widths[a]) for a, _ in differentiate.CONTACT_COLUMNS)
         lambda_blocks = tuple((l, widths[l]) for _, l in differentiate.CONTACT_COLUMNS)
         m = 3 * len(scene.contacts_for(robot))
-        J = terms.values["J"]  # row-major
-        columns = tuple(tuple(k for k in range(robot.nv) if not J[r * robot.nv + k].is_const(0.0)) for r in range(m))
+        Zt_D, Z = terms.values["Zt_D"], terms.values["Z"]  # row-major
         lanes = terms.lanes is not None
         order = lane_contact_derivatives.column_order(robot) if lanes else ()
-        places = ((("J", lane_places(J, lambda e: not e.is_const(0.0))),
-                   ("Minv_Jt", lane_places(terms.values["Minv_Jt"]))) if lanes else ())
+        places = tuple((name, lane_places(terms.values[name], _non_zero)) for name in ("Zt_D", "Z")) if lanes else ()
         solve = LoopedContactSolve(parents=parents, blocks=blocks, terms=terms.outputs,
-                                   lambda_blocks=lambda_blocks, contact_rows=m, contact_columns=columns,
-                                   column_order=order, places=places)
+                                   lambda_blocks=lambda_blocks, contact_rows=m,
+                                   contact_columns=_non_zero_columns(Zt_D, robot.nv),
+                                   dof_columns=_non_zero_columns(Z, m), column_order=order, places=places)
     else:
         blocks = tuple((arg.name, arg.cols) for arg in outputs if arg.cols)
         from .looped_factor import LoopedFactor  # it imports this module's loops' header
@@ -370,3 +374,13 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)
     assert terms.outputs[0].cols == solve.columns
     return solve
+
+
+def _non_zero(entry):
+    return not entry.is_const(0.0)
+
+
+def _non_zero_columns(entries, width):
+    """Per row of a row-major matrix `width` columns wide, the columns of its non-zero entries."""
+    return tuple(tuple(k for k in range(width) if _non_zero(entries[r * width + k]))
+                 for r in range(len(entries) // width))

@@ -36,13 +36,19 @@ def terms_of(fn, state):
             for arg in fn.solve.terms}
 
 
-def mass_matrix(solve, terms):
-    """M = Lᵀ D L rebuilt from the packed tree factor."""
-    factor = np.eye(solve.nv)  # unit lower triangular, entries at each dof's ancestors
+def tree_factor(solve, terms):
+    """M's unit lower triangular factor L (M = Lᵀ D L) rebuilt from its packed entries."""
+    factor = np.eye(solve.nv)  # entries at each dof's ancestors
     packed = iter(terms["L"])
     for i in range(solve.nv):
         for j in dof_ancestors(solve.parents, i):
             factor[i, j] = next(packed)
+    return factor
+
+
+def mass_matrix(solve, terms):
+    """M = Lᵀ D L rebuilt from the packed tree factor."""
+    factor = tree_factor(solve, terms)
     return factor.T @ np.diag(1.0 / np.array(terms["D_inv"])) @ factor
 
 
@@ -63,14 +69,18 @@ def solved_outputs(fn, state):
 
 
 def solved_contact_outputs(fn, state):
-    """The same for contact_dynamics_derivatives: ∂λ from five proximal steps on the damped
-    Delassus matrix F = L D Lᵀ (rebuilt from L⁻ᵀ and D⁻¹L⁻¹) and A = F − μ1, ∂a = M⁻¹(Jᵀ∂λ − r₁)."""
+    """The same for contact_dynamics_derivatives: J = Zᵀ L from Z = L⁻ᵀJᵀ (and (D⁻¹Z)ᵀ checked against
+    Z), ∂λ from five proximal steps on the damped Delassus matrix F = L D Lᵀ (rebuilt from L⁻ᵀ and
+    D⁻¹L⁻¹) and A = F − μ1, ∂a = M⁻¹(Jᵀ∂λ − r₁)."""
     solve = fn.solve
     terms = terms_of(fn, state)
     n, m, c = solve.nv, solve.contact_rows, solve.columns
     mass = mass_matrix(solve, terms)
     R1, R2 = (np.array(terms[k]).reshape(rows, c) for k, rows in (("R1", n), ("R2", m)))
-    J = np.array(terms["J"]).reshape(m, n)
+    Z = np.array(terms["Z"]).reshape(n, m)
+    np.testing.assert_allclose(np.array(terms["Zt_D"]).reshape(m, n),
+                               (np.diag(terms["D_inv"]) @ Z).T, rtol=1e-14, atol=1e-300)
+    J = Z.T @ tree_factor(solve, terms)
     lower = np.linalg.inv(np.array(terms["F_U"]).reshape(m, -1)[:, :m].T)
     pivots = 1.0 / np.diag(np.array(terms["F_DL"]).reshape(m, -1)[:, :m])
     F = lower @ np.diag(pivots) @ lower.T
