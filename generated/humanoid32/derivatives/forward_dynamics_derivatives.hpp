@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_d476e1cce29f.hpp
+//   humanoid32/common/forward_dynamics_derivatives_7e2b1b2d9eb3.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_d476e1cce29f.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_7e2b1b2d9eb3.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -28,12 +28,13 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param da_df out 38x15: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations     mul     add  div  sqrt  trig  neg   total
-///             132739  123886   33     0    64   52  256774
-/// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
-///   83664 arithmetic instructions (cost 115906), scalar tree 131228 (cost 310187), looped
-///   solve 80616 (cost 126805), looped CRBA 93835 (cost 137377), limb lanes and a looped
-///   solve not emitted (21828 straight-line instructions in lanes, past 15000)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_d476e1cce29f::forward_dynamics_derivatives;
+///             126712  114921   55     0   116  417  242221
+/// schedule: limb lanes and a looped solve (the terms traced with the isomorphic limbs in SIMD
+///   lanes: 2 of pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes),
+///   the solve's right-hand sides in SIMD across columns): 66052 arithmetic instructions
+///   (cost 91851), scalar tree 131228 (cost 310187), looped solve 80616 (cost 126805),
+///   looped RNEA derivatives 83664 (cost 115906), looped CRBA 93835 (cost 137377)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_7e2b1b2d9eb3::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,13 +8,17 @@ function with the function's own parameters plus a scratch array; the function c
 A value defined in one block and used in a later one passes through a scratch slot, stored once
 after its definition and loaded once at the top of each block that reads it; a slot is reused once
 its last reader has run. Compile time then grows with the number of blocks; the statements and
-their order are the same."""
+their order are the same. A lane function's lane values pass the same way, ex.LANES slots each
+(store_lanes, load_lanes), and its lane inputs and constants (the arrays its body starts with, cheap
+to build and folded by the compiler) are declared again in each block that reads them."""
 
 from __future__ import annotations
 
 import heapq
 import re
 from dataclasses import dataclass
+
+from ..graph import expr as ex
 
 # Bodies up to SPLIT_ABOVE statements stay one function (the Mini Cheetah's ∂q̈ scalar, 6 000
 # statements, compiles in seconds; blocks would only add scratch traffic, and clang 14 ran
@@ -26,7 +30,8 @@ from dataclasses import dataclass
 SPLIT_ABOVE = 6500
 MAX_STATEMENTS = 250
 SCRATCH = "rbdc_scratch"
-_DEFINITION = re.compile(r"^const (Scalar|auto) (\w+)(\[\d+\])? = ")
+LANE_TYPE = "using Lane = Lanes<Scalar>;"  # a lane function's first statement
+_DEFINITION = re.compile(r"^const (Scalar|Lane|auto) (\w+)(\[\d+\])? = ")
 _IDENTIFIER = re.compile(r"\b[A-Za-z_]\w*\b")
 
 
@@ -46,6 +51,7 @@ def split(body, parameters, function_name, max_statements=MAX_STATEMENTS):
     function. `parameters`: the function's parameter names, in order."""
     if len(body) <= SPLIT_ABOVE:
         return None
+    body, repeated = _lane_setup(body)
     first = _after_joint_trig(body)
     cuts = [0] + list(range(max(first, max_statements), len(body), max_statements)) + [len(body)]
     cuts = sorted(set(cuts))
@@ -53,35 +59,76 @@ def split(body, parameters, function_name, max_statements=MAX_STATEMENTS):
     for b in range(len(cuts) - 1):
         for i in range(cuts[b], cuts[b + 1]):
             block_of[i] = b
-    defined = {}  # scalar name -> (block, statement index)
+    defined = {}  # passable name -> (type, block)
     for i, statement in enumerate(body):
         match = _DEFINITION.match(statement)
-        if match and match.group(1) == "Scalar" and not match.group(3):
-            defined[match.group(2)] = block_of[i]
+        if match and match.group(1) != "auto" and not match.group(3):
+            defined[match.group(2)] = (match.group(1), block_of[i])
     readers = {}  # name defined in an earlier block -> blocks reading it
     for i, statement in enumerate(body):
         for name in _references(statement):
-            if name in defined and defined[name] != block_of[i]:
+            if name in defined and defined[name][1] != block_of[i]:
                 readers.setdefault(name, set()).add(block_of[i])
-    slots, size = _allocate(readers, defined)
+    place, size = _places(readers, defined)
     parts = []
     for b in range(len(cuts) - 1):
         statements = body[cuts[b]:cuts[b + 1]]
-        loads = ["const Scalar %s = %s[%d];" % (name, SCRATCH, slots[name])
-                 for name in sorted(readers, key=lambda n: slots[n]) if b in readers[name]]
+        loads = [_load(name, defined[name][0], place[name])
+                 for name in sorted(readers, key=lambda n: place[n]) if b in readers[name]]
         stored = []
         for statement in statements:
             stored.append(statement)
             match = _DEFINITION.match(statement)
             if match and match.group(2) in readers:
-                stored.append("%s[%d] = %s;" % (SCRATCH, slots[match.group(2)], match.group(2)))
+                stored.append(_store(match.group(2), defined[match.group(2)][0], place[match.group(2)]))
         used = set().union(*(_references(s) for s in loads + stored))
+        setup = ([LANE_TYPE] if repeated else []) + [
+            statement for name, statement in repeated if name in used]
         unused = ["static_cast<void>(%s);" % p for p in [*parameters, SCRATCH] if p not in used]
-        parts.append(unused + loads + stored)
+        parts.append(setup + unused + loads + stored)
     arguments = ", ".join(list(parameters) + [SCRATCH])
     main = ["Scalar %s[%d];" % (SCRATCH, max(size, 1))]
     main += ["%s_part%d(%s);" % (function_name, b, arguments) for b in range(len(parts))]
     return Blocks(parts=parts, main=main, scratch_size=size)
+
+
+def _lane_setup(body):
+    """A lane function's body without its setup, and the setup's lane arrays as (name, statement):
+    every block that reads one declares it again. A scalar function's body as it is."""
+    if LANE_TYPE not in body:
+        return body, []
+    rest, repeated = [], []
+    for statement in body:
+        match = _DEFINITION.match(statement)
+        if statement == LANE_TYPE:
+            continue
+        if match and match.group(1) == "Lane" and match.group(3):
+            repeated.append((match.group(2), statement))
+        else:
+            rest.append(statement)
+    return rest, repeated
+
+
+def _places(readers, defined):
+    """Each passed value's first scratch entry: scalars one slot each, lane values ex.LANES
+    consecutive ones after them; and the scratch's size."""
+    scalars, scalar_size = _allocate({n: r for n, r in readers.items() if defined[n][0] == "Scalar"}, defined)
+    lanes, lane_size = _allocate({n: r for n, r in readers.items() if defined[n][0] == "Lane"}, defined)
+    place = dict(scalars)
+    place.update({name: scalar_size + ex.LANES * slot for name, slot in lanes.items()})
+    return place, scalar_size + ex.LANES * lane_size
+
+
+def _load(name, kind, place):
+    if kind == "Lane":
+        return "const Lane %s = load_lanes(%s + %d);" % (name, SCRATCH, place)
+    return "const Scalar %s = %s[%d];" % (name, SCRATCH, place)
+
+
+def _store(name, kind, place):
+    if kind == "Lane":
+        return "store_lanes(%s + %d, %s);" % (SCRATCH, place, name)
+    return "%s[%d] = %s;" % (SCRATCH, place, name)
 
 
 def _after_joint_trig(body):
@@ -97,8 +144,8 @@ def _allocate(readers, defined):
     """Scratch slot per passed value, a slot reused after the last block that reads its value (the
     lowest free slot first; heaps, since a long body passes thousands of values)."""
     free, busy, slots, size = [], [], {}, 0
-    for name in sorted(readers, key=lambda n: (defined[n], n)):
-        start = defined[name]
+    for name in sorted(readers, key=lambda n: (defined[n][1], n)):
+        start = defined[name][1]
         while busy and busy[0][0] < start:
             heapq.heappush(free, heapq.heappop(busy)[1])
         if free:

@@ -127,7 +127,7 @@ def _straight_line(function, arguments: list[dict], robot) -> dict:
     # An input the scene made irrelevant is still part of the signature; say so to the compiler.
     body = [f"static_cast<void>({name});" for name in _unused_inputs(arguments, body)] + body
     code = {"body": body}
-    blocks = None if function.lanes is not None else split(body, [a["name"] for a in arguments], function.name)
+    blocks = split(body, [a["name"] for a in arguments], function.name)
     if blocks is not None:
         code.update(body=blocks.main, parts=blocks.parts, emission=(
             "%d blocks of at most %d statements (%d values passed in scratch), each a function of its own: "

@@ -59,12 +59,14 @@ def straight_line_instructions(fn):
 # Measured on an AMD EPYC (Zen 5), clang 14, per counted instruction: 0.084 ns for arm7's ∂τ (3 366),
 # 0.165-0.185 ns for the Mini Cheetah's (6 806), humanoid32's (25 023) and Talos's (46 718).
 FRONT_END_LIMIT = 3400
-# A lane form whose straight-line part is longer is not emitted: lane code is not cut into blocks
-# (backend/blocks.py passes scalars only), and g++ 12 -O3's time on one long lane function grows
-# faster than its length: the ∂q̈ terms in lanes took 32 s for humanoid32 (21 828 instructions) and
-# 120 s, 1.45 GB for TALOS (39 500), against issue 20's 20 s; TALOS's forward dynamics in lanes
-# (14 332) 10.8 s.
-LANE_CODE_LIMIT = 15000
+# A lane form whose straight-line part is longer is not emitted, for its compile time. Long lane code
+# is cut into blocks as scalar code is (backend/blocks.py), and then g++ 12 -O3 takes about 0.45 ms
+# per straight-line lane instruction: humanoid32's ∂q̈ terms (21 828) 9.2 s in 30 blocks (32 s as one
+# function), TALOS's (39 500) 18.2 s in 49 (120 s): at this limit a header stays near 15 s, a
+# quarter below issue 20's 20 s, and TALOS's ∂q̈ keeps the looped RNEA form (its lane terms measured
+# 2.6 % faster, but its full + derivatives headers in one TU took 54.7 s against 46.8 s and the 60 s
+# limit).
+LANE_CODE_LIMIT = 32000
 FRONT_END_PENALTY = 1.4
 
 

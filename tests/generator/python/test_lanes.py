@@ -9,6 +9,7 @@ import re
 import tempfile
 import unittest
 from dataclasses import replace
+from unittest import mock
 
 import mini_cheetah
 from numeric_check import evaluate, max_relative_error, random_state
@@ -17,7 +18,7 @@ from rbdcgen.graph import expr as ex
 from rbdcgen.backend.emit import emit_body
 from rbdcgen.graph.flops import count_ops
 from rbdcgen.frontend.ir import Actuator
-from rbdcgen.passes import lane_derivatives
+from rbdcgen.passes import lane_derivatives, schedule
 from rbdcgen.passes.differentiate import padded
 from rbdcgen.passes.lane_contact_derivatives import column_order
 from rbdcgen.passes.lane_functions import ANY_GROUPS, LANE_NAME, SCALAR, available
@@ -254,11 +255,15 @@ class HumanoidPairs(unittest.TestCase):
         self.assertTrue(scheduled_function(robot, one_foot, "inverse_dynamics").schedule.startswith("limb lanes"))
         self.assertNotIn("in limb lanes", scheduled_function(robot, one_foot, "forward_dynamics").schedule)
 
-    def test_long_lane_code_not_emitted(self):
-        """∂q̈'s terms in lanes are 21 828 straight-line instructions for humanoid32, past
-        schedule.LANE_CODE_LIMIT (lane code is not cut into blocks): auto keeps another form and says why."""
+    def test_long_lane_code_in_blocks_up_to_the_limit(self):
+        """∂q̈'s terms in lanes are 21 828 straight-line instructions for humanoid32: emitted (cut into
+        blocks, test_blocks.py), under schedule.LANE_CODE_LIMIT; past the limit auto keeps another
+        form and says why."""
         robot = mini_cheetah.load(urdf=mini_cheetah.HUMANOID32)
         fn = scheduled_function(robot, default_scene(), "forward_dynamics_derivatives")
+        self.assertTrue(fn.schedule.startswith("limb lanes and a looped solve"), fn.schedule)
+        with mock.patch.object(schedule, "LANE_CODE_LIMIT", 20000):
+            fn = scheduled_function(robot, default_scene(), "forward_dynamics_derivatives")
         self.assertFalse(fn.schedule.startswith("limb lanes"), fn.schedule)
         self.assertIn("limb lanes and a looped solve not emitted", fn.schedule)
 
