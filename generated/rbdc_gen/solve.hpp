@@ -69,8 +69,18 @@ template <>
 constexpr int run_size<float>() { return RBDC_RUN_BYTES / 4; }
 #endif
 
+// A row whose length is not a multiple of the run takes the widest narrower run of at least 16 bytes
+// that divides it (the proximal steps' 12 columns: AVX runs of four doubles on an AVX-512 machine),
+// else single columns.
 template <class Scalar, int NC>
-using ColumnRun = Run<Scalar, NC % run_size<Scalar>() == 0 ? run_size<Scalar>() : 1>;
+constexpr int column_run_size() {
+  for (int w = run_size<Scalar>(); w >= 2; w /= 2)
+    if (NC % w == 0 && w * int(sizeof(Scalar)) >= 16) return w;
+  return 1;
+}
+
+template <class Scalar, int NC>
+using ColumnRun = Run<Scalar, column_run_size<Scalar, NC>()>;
 
 // clang keeps a 512-bit vector type in one register only in a function that asks for that width.
 #if defined(__clang__) && !defined(__CUDACC__) && defined(__AVX512F__)

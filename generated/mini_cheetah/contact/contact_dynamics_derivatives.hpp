@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_a4af9c6d4e17.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_6d8a67ef96cf.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_a4af9c6d4e17.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_6d8a67ef96cf.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -29,12 +29,12 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param dlambda_dtau out 12x12: ∂λ/∂τ
 ///
 /// operations    mul    add  div  sqrt  trig   neg   total
-///             52854  51188   26     0    24  1625  105717
+///             50190  48572   26     0    24  1625  100437
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
-///   lanes, the solve's right-hand sides in SIMD across columns): 29091 arithmetic
-///   instructions (cost 35524), scalar tree 100802 (cost 237165), looped solve 41981 (cost
-///   66460)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_a4af9c6d4e17::contact_dynamics_derivatives;
+///   lanes, the solve's right-hand sides in SIMD across columns): 27687 arithmetic
+///   instructions (cost 34120), scalar tree 100802 (cost 237165), looped solve 40577 (cost
+///   65056)
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_6d8a67ef96cf::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

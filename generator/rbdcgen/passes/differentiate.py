@@ -256,15 +256,28 @@ def _mirror_joint_block(robot, dtau):
 ROW_ALIGNMENT = 8
 
 
-def padded(columns):
-    """The row length of `columns` right-hand sides: zero columns up to a multiple of ROW_ALIGNMENT."""
-    return -(-columns // ROW_ALIGNMENT) * ROW_ALIGNMENT
+# The Delassus factor's halves and the proximal steps' sum (3·nc columns, contact_terms) are padded
+# to a multiple of this only: the Mini Cheetah's 12 columns are then three AVX runs of four where 16
+# were two AVX-512 runs of eight, a quarter fewer multiply-adds (rbdc_gen::ColumnRun takes half runs).
+STEP_SUM_ALIGNMENT = 4
 
 
-def right_hand_side_rows(columns, rows):
-    """The first `rows` entries of each column, row-major, each row padded with zeros."""
+def padded(columns, alignment=ROW_ALIGNMENT):
+    """The row length of `columns` right-hand sides: zero columns up to a multiple of `alignment`."""
+    return -(-columns // alignment) * alignment
+
+
+def step_sum_columns(contact_rows):
+    """The row length of the Delassus factor's halves and of the proximal steps' sum."""
+    return padded(contact_rows, STEP_SUM_ALIGNMENT)
+
+
+def right_hand_side_rows(columns, rows, width=None):
+    """The first `rows` entries of each column, row-major, each row padded with zeros to `width`
+    (default: padded)."""
     zero = ex.const(0.0)
-    return [x for r in range(rows) for x in [col[r] for col in columns] + [zero] * (padded(len(columns)) - len(columns))]
+    pad = (width or padded(len(columns))) - len(columns)
+    return [x for r in range(rows) for x in [col[r] for col in columns] + [zero] * pad]
 
 
 # The right-hand sides of forward_dynamics_derivatives, in their output order.
@@ -436,8 +449,10 @@ def contact_terms(r1_columns, r2_columns, damped, Z, D_inv_Z, L, D_inv, column_o
     return {"R1": right_hand_side_rows(r1_columns, nv), "R2": right_hand_side_rows(r2_columns, n),
             "Zt_D": [x for column in D_inv_Z for x in column],
             "Z": [column[r] for r in range(nv) for column in Z],
-            "F_U": right_hand_side_rows([[L_inv[c][r] if r <= c else zero for r in range(n)] for c in range(n)], n),
-            "F_DL": right_hand_side_rows([[L_inv[r][c] * D_inv_F[r] if c <= r else zero for r in range(n)] for c in range(n)], n),
+            "F_U": right_hand_side_rows([[L_inv[c][r] if r <= c else zero for r in range(n)] for c in range(n)], n,
+                                        step_sum_columns(n)),
+            "F_DL": right_hand_side_rows([[L_inv[r][c] * D_inv_F[r] if c <= r else zero for r in range(n)]
+                                          for c in range(n)], n, step_sum_columns(n)),
             "mu": [damped.mu],
             "L": list(L), "D_inv": list(D_inv)}
 
@@ -535,8 +550,8 @@ def spec(robot, nf, nc):
             [("R1", nv, padded(2 * nv + nj), "r₁ columns, row-major, zero-padded"),
              ("R2", m3, padded(2 * nv + nj), "r₂ columns, row-major, zero-padded"),
              ("Zt_D", m3, nv, "(D⁻¹Z)ᵀ, Z = L⁻ᵀJᵀ, row-major"), ("Z", nv, m3, "Z, row-major"),
-             ("F_U", m3, padded(m3), "L⁻ᵀ of the damped Delassus factor L D Lᵀ, row-major, zero-padded"),
-             ("F_DL", m3, padded(m3), "D⁻¹L⁻¹, row-major, zero-padded"),
+             ("F_U", m3, step_sum_columns(m3), "L⁻ᵀ of the damped Delassus factor L D Lᵀ, row-major, zero-padded"),
+             ("F_DL", m3, step_sum_columns(m3), "D⁻¹L⁻¹, row-major, zero-padded"),
              ("mu", 1, 1, "its damping μ"),
              ("L", fd.factor_entries(robot), 1, "M's factor entries at each dof's ancestors"),
              ("D_inv", nv, 1, "M's inverse pivots")],

@@ -165,8 +165,8 @@ class LoopedContactSolve(LoopedSolve):
         return super().multiply_adds() + nonzeros + _triangle(m) + m * m
 
     def _step_sum_columns(self):
-        """V's rows are padded like the right-hand sides'."""
-        return differentiate.padded(self.contact_rows)
+        """V's rows are padded like the Delassus factor's halves'."""
+        return differentiate.step_sum_columns(self.contact_rows)
 
     def _step_sum_multiply_adds(self):
         """V, formed once per call: G = (μL⁻ᵀ)(D⁻¹L⁻¹) over L⁻ᵀ's upper triangle, then PROXIMAL_STEPS − 1

@@ -12,7 +12,7 @@
 #include "rbdc_gen/lanes.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_a4af9c6d4e17 {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_6d8a67ef96cf {
 
 /// The traced part of contact_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -165,57 +165,33 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
   store_lanes(R2 + 552, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(R2 + 556, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(R2 + 560, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 12, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 28, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 44, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 48, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(1)));
+  store_lanes(F_U + 36, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(1)));
+  store_lanes(F_U + 48, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(F_U + 60, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 64, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 76, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 80, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 92, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(F_U + 72, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(F_U + 84, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(F_U + 88, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(1)));
   store_lanes(F_U + 96, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(F_U + 100, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(F_U + 108, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(F_U + 112, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 116, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(1)));
+  store_lanes(F_U + 120, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(F_U + 124, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 128, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(F_U + 132, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 140, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 144, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 148, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 156, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 160, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 164, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 172, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 176, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 180, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_U + 184, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(1)));
-  store_lanes(F_U + 188, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(F_U + 136, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(F_U + 140, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(1)));
   store_lanes(F_DL + 4, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(F_DL + 8, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 12, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(F_DL + 16, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(F_DL + 20, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 24, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(F_DL + 28, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 36, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(F_DL + 32, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(F_DL + 40, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(F_DL + 44, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 52, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(F_DL + 56, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 60, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 72, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 76, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 88, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(F_DL + 68, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(F_DL + 80, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(F_DL + 92, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 104, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 108, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 120, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 124, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 140, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 156, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 172, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(F_DL + 188, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   D_inv[17] = Scalar(2057.0036861506055);
   // inward pass, composite inertias (CRBA): body 3 LF_knee/RF_knee/LH_knee/RH_knee
   const Lane t0 = Scalar(0.003904) * sin_lanes_knee_joint;
@@ -717,7 +693,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t399 = t383 * t389;
   const Scalar t400 = t385 * t389;
   const Scalar t401 = Scalar(1) / ((t366 + t388) - (t365 * t390));
-  store_lanes(F_DL + 16, make_lanes(-(t390 * t401), t401, Scalar(0), Scalar(0)));
+  store_lanes(F_DL + 12, make_lanes(-(t390 * t401), t401, Scalar(0), Scalar(0)));
   const Scalar t402 = t307[0] - (t365 * t391);
   const Scalar t403 = t401 * t402;
   const Scalar t404 = t331[0] - (t365 * t392);
@@ -741,7 +717,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t422 = Scalar(1) / (((t368 + t388) - (t367 * t391)) - (t402 * t403));
   const Scalar t423 = (t334[0] - (t367 * t392)) - (t402 * t405);
   const Scalar t424 = t422 * t423;
-  store_lanes(F_U + 32, make_lanes(Scalar(0), Scalar(0), Scalar(1), -t424));
+  store_lanes(F_U + 24, make_lanes(Scalar(0), Scalar(0), Scalar(1), -t424));
   const Scalar t425 = (t335[0] - (t367 * t393)) - (t402 * t407);
   const Scalar t426 = t422 * t425;
   const Scalar t427 = (t336[0] - (t367 * t394)) - (t402 * t409);
@@ -776,7 +752,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t456 = ((t361[3] - (t369 * t400)) - (t404 * t421)) - (t423 * t440);
   const Scalar t457 = t441 * t456;
   const Scalar t458 = Scalar(1) / (((((t372 + t388) - (t371 * t393)) - (t406 * t407)) - (t425 * t426)) - (t442 * t443));
-  store_lanes(F_DL + 68, make_lanes(t458, Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(F_DL + 52, make_lanes(t458, Scalar(0), Scalar(0), Scalar(0)));
   const Scalar t459 = (((t307[1] - (t371 * t394)) - (t406 * t409)) - (t425 * t428)) - (t442 * t445);
   const Scalar t460 = t458 * t459;
   const Scalar t461 = (((t331[1] - (t371 * t395)) - (t406 * t411)) - (t425 * t430)) - (t442 * t447);
@@ -792,7 +768,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t471 = (((t362[3] - (t371 * t400)) - (t406 * t421)) - (t425 * t440)) - (t442 * t457);
   const Scalar t472 = t458 * t471;
   const Scalar t473 = Scalar(1) / ((((((t374 + t388) - (t373 * t394)) - (t408 * t409)) - (t427 * t428)) - (t444 * t445)) - (t459 * t460));
-  store_lanes(F_DL + 84, make_lanes(-(t460 * t473), t473, Scalar(0), Scalar(0)));
+  store_lanes(F_DL + 64, make_lanes(-(t460 * t473), t473, Scalar(0), Scalar(0)));
   const Scalar t474 = ((((t334[1] - (t373 * t395)) - (t408 * t411)) - (t427 * t430)) - (t444 * t447)) - (t459 * t462);
   const Scalar t475 = t473 * t474;
   const Scalar t476 = ((((t335[1] - (t373 * t396)) - (t408 * t413)) - (t427 * t432)) - (t444 * t449)) - (t459 * t464);
@@ -810,7 +786,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t488 = ((((t301[2] - (t375 * t396)) - (t410 * t413)) - (t429 * t432)) - (t446 * t449)) - (t461 * t464);
   const Scalar t489 = t488 - (t474 * t477);
   const Scalar t490 = t487 * t489;
-  store_lanes(F_U + 100, make_lanes(Scalar(0), Scalar(0), Scalar(1), -t490));
+  store_lanes(F_U + 76, make_lanes(Scalar(0), Scalar(0), Scalar(1), -t490));
   const Scalar t491 = ((((t305[2] - (t375 * t397)) - (t410 * t415)) - (t429 * t434)) - (t446 * t451)) - (t461 * t466);
   const Scalar t492 = t491 - (t474 * t479);
   const Scalar t493 = t487 * t492;
@@ -839,7 +815,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t516 = t504 * t515;
   const Scalar t517 = (((((t380 + t388) - (t379 * t397)) - (t414 * t415)) - (t433 * t434)) - (t450 * t451)) - (t465 * t466);
   const Scalar t518 = Scalar(1) / (((t517 - (t478 * t479)) - (t492 * t493)) - (t506 * t507));
-  store_lanes(F_DL + 136, make_lanes(t518, Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(F_DL + 104, make_lanes(t518, Scalar(0), Scalar(0), Scalar(0)));
   const Scalar t519 = ((((t334[2] - (t379 * t398)) - (t414 * t417)) - (t433 * t436)) - (t450 * t453)) - (t465 * t468);
   const Scalar t520 = ((t519 - (t478 * t481)) - (t492 * t496)) - (t506 * t510);
   const Scalar t521 = t518 * t520;
@@ -851,7 +827,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t527 = t518 * t526;
   const Scalar t528 = (((((t382 + t388) - (t381 * t398)) - (t416 * t417)) - (t435 * t436)) - (t452 * t453)) - (t467 * t468);
   const Scalar t529 = Scalar(1) / ((((t528 - (t480 * t481)) - (t495 * t496)) - (t509 * t510)) - (t520 * t521));
-  store_lanes(F_DL + 152, make_lanes(-(t521 * t529), t529, Scalar(0), Scalar(0)));
+  store_lanes(F_DL + 116, make_lanes(-(t521 * t529), t529, Scalar(0), Scalar(0)));
   const Scalar t530 = ((((t301[3] - (t381 * t399)) - (t416 * t419)) - (t435 * t438)) - (t452 * t455)) - (t467 * t470);
   const Scalar t531 = (((t530 - (t480 * t483)) - (t495 * t499)) - (t509 * t513)) - (t520 * t524);
   const Scalar t532 = t529 * t531;
@@ -863,7 +839,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t538 = ((((t307[3] - (t383 * t400)) - (t418 * t421)) - (t437 * t440)) - (t454 * t457)) - (t469 * t472);
   const Scalar t539 = ((((t538 - (t482 * t485)) - (t498 * t502)) - (t512 * t516)) - (t523 * t527)) - (t531 * t535);
   const Scalar t540 = t537 * t539;
-  store_lanes(F_U + 168, make_lanes(Scalar(0), Scalar(0), Scalar(1), -t540));
+  store_lanes(F_U + 128, make_lanes(Scalar(0), Scalar(0), Scalar(1), -t540));
   const Scalar t541 = (((((t386 + t388) - (t385 * t400)) - (t420 * t421)) - (t439 * t440)) - (t456 * t457)) - (t471 * t472);
   const Scalar t542 = (((((t541 - (t484 * t485)) - (t501 * t502)) - (t515 * t516)) - (t526 * t527)) - (t534 * t535)) - (t539 * t540);
   const Scalar t543 = Scalar(1) / t542;
@@ -1614,7 +1590,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
   store_lanes(R2 + 548, make_lanes(Scalar(0), Scalar(0), Scalar(0), t1127[3]));
   // factorisation M = LᵀDL
   const Scalar t1128 = (t390 * t403) - t391;
-  store_lanes(F_DL + 32, make_lanes(t422 * t1128, -(t403 * t422), t422, Scalar(0)));
+  store_lanes(F_DL + 24, make_lanes(t422 * t1128, -(t403 * t422), t422, Scalar(0)));
   const Scalar t1129 = ((t390 * t405) - t392) - (t424 * t1128);
   store_lanes(F_U + 0, make_lanes(Scalar(1), -t390, t1128, t1129));
   const Scalar t1130 = (((t390 * t407) - t393) - (t426 * t1128)) - (t443 * t1129);
@@ -1632,13 +1608,13 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t1141 = (((t1140 - (t516 * t1133)) - (t527 * t1135)) - (t535 * t1137)) - (t540 * t1139);
   store_lanes(F_U + 8, make_lanes(t1135, t1137, t1139, t1141));
   const Scalar t1142 = (t403 * t424) - t405;
-  store_lanes(F_U + 16, make_lanes(Scalar(0), Scalar(1), -t403, t1142));
-  store_lanes(F_DL + 48, make_lanes(t441 * t1129, t441 * t1142, -(t424 * t441), t441));
+  store_lanes(F_U + 12, make_lanes(Scalar(0), Scalar(1), -t403, t1142));
+  store_lanes(F_DL + 36, make_lanes(t441 * t1129, t441 * t1142, -(t424 * t441), t441));
   const Scalar t1143 = ((t403 * t426) - t407) - (t443 * t1142);
   const Scalar t1144 = (((t403 * t428) - t409) - (t445 * t1142)) - (t460 * t1143);
   const Scalar t1145 = ((((t403 * t430) - t411) - (t447 * t1142)) - (t462 * t1143)) - (t475 * t1144);
   const Scalar t1146 = (((((t403 * t432) - t413) - (t449 * t1142)) - (t464 * t1143)) - (t477 * t1144)) - (t490 * t1145);
-  store_lanes(F_U + 20, make_lanes(t1143, t1144, t1145, t1146));
+  store_lanes(F_U + 16, make_lanes(t1143, t1144, t1145, t1146));
   const Scalar t1147 = ((((((t403 * t434) - t415) - (t451 * t1142)) - (t466 * t1143)) - (t479 * t1144)) - (t493 * t1145)) - (t507 * t1146);
   const Scalar t1148 = ((((((t403 * t436) - t417) - (t453 * t1142)) - (t468 * t1143)) - (t481 * t1144)) - (t496 * t1145)) - (t510 * t1146);
   const Scalar t1149 = t1148 - (t521 * t1147);
@@ -1646,74 +1622,74 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t1151 = (t1150 - (t524 * t1147)) - (t532 * t1149);
   const Scalar t1152 = ((((((t403 * t440) - t421) - (t457 * t1142)) - (t472 * t1143)) - (t485 * t1144)) - (t502 * t1145)) - (t516 * t1146);
   const Scalar t1153 = ((t1152 - (t527 * t1147)) - (t535 * t1149)) - (t540 * t1151);
-  store_lanes(F_U + 24, make_lanes(t1147, t1149, t1151, t1153));
+  store_lanes(F_U + 20, make_lanes(t1147, t1149, t1151, t1153));
   const Scalar t1154 = (t424 * t443) - t426;
-  store_lanes(F_DL + 64, make_lanes(t458 * t1130, t458 * t1143, t458 * t1154, -(t443 * t458)));
+  store_lanes(F_DL + 48, make_lanes(t458 * t1130, t458 * t1143, t458 * t1154, -(t443 * t458)));
   const Scalar t1155 = ((t424 * t445) - t428) - (t460 * t1154);
   const Scalar t1156 = (((t424 * t447) - t430) - (t462 * t1154)) - (t475 * t1155);
   const Scalar t1157 = ((((t424 * t449) - t432) - (t464 * t1154)) - (t477 * t1155)) - (t490 * t1156);
-  store_lanes(F_U + 36, make_lanes(t1154, t1155, t1156, t1157));
+  store_lanes(F_U + 28, make_lanes(t1154, t1155, t1156, t1157));
   const Scalar t1158 = (((((t424 * t451) - t434) - (t466 * t1154)) - (t479 * t1155)) - (t493 * t1156)) - (t507 * t1157);
   const Scalar t1159 = ((((((t424 * t453) - t436) - (t468 * t1154)) - (t481 * t1155)) - (t496 * t1156)) - (t510 * t1157)) - (t521 * t1158);
   const Scalar t1160 = ((((((t424 * t455) - t438) - (t470 * t1154)) - (t483 * t1155)) - (t499 * t1156)) - (t513 * t1157)) - (t524 * t1158);
   const Scalar t1161 = t1160 - (t532 * t1159);
   const Scalar t1162 = ((((((t424 * t457) - t440) - (t472 * t1154)) - (t485 * t1155)) - (t502 * t1156)) - (t516 * t1157)) - (t527 * t1158);
   const Scalar t1163 = (t1162 - (t535 * t1159)) - (t540 * t1161);
-  store_lanes(F_U + 40, make_lanes(t1158, t1159, t1161, t1163));
+  store_lanes(F_U + 32, make_lanes(t1158, t1159, t1161, t1163));
   const Scalar t1164 = (t443 * t460) - t445;
-  store_lanes(F_DL + 80, make_lanes(t473 * t1131, t473 * t1144, t473 * t1155, t473 * t1164));
+  store_lanes(F_DL + 60, make_lanes(t473 * t1131, t473 * t1144, t473 * t1155, t473 * t1164));
   const Scalar t1165 = ((t443 * t462) - t447) - (t475 * t1164);
-  store_lanes(F_DL + 96, make_lanes(t487 * t1132, t487 * t1145, t487 * t1156, t487 * t1165));
+  store_lanes(F_DL + 72, make_lanes(t487 * t1132, t487 * t1145, t487 * t1156, t487 * t1165));
   const Scalar t1166 = (((t443 * t464) - t449) - (t477 * t1164)) - (t490 * t1165);
-  store_lanes(F_U + 52, make_lanes(-t443, t1164, t1165, t1166));
-  store_lanes(F_DL + 112, make_lanes(t504 * t1133, t504 * t1146, t504 * t1157, t504 * t1166));
+  store_lanes(F_U + 40, make_lanes(-t443, t1164, t1165, t1166));
+  store_lanes(F_DL + 84, make_lanes(t504 * t1133, t504 * t1146, t504 * t1157, t504 * t1166));
   const Scalar t1167 = ((((t443 * t466) - t451) - (t479 * t1164)) - (t493 * t1165)) - (t507 * t1166);
-  store_lanes(F_DL + 128, make_lanes(t518 * t1135, t518 * t1147, t518 * t1158, t518 * t1167));
+  store_lanes(F_DL + 96, make_lanes(t518 * t1135, t518 * t1147, t518 * t1158, t518 * t1167));
   const Scalar t1168 = (((((t443 * t468) - t453) - (t481 * t1164)) - (t496 * t1165)) - (t510 * t1166)) - (t521 * t1167);
-  store_lanes(F_DL + 144, make_lanes(t529 * t1137, t529 * t1149, t529 * t1159, t529 * t1168));
+  store_lanes(F_DL + 108, make_lanes(t529 * t1137, t529 * t1149, t529 * t1159, t529 * t1168));
   const Scalar t1169 = ((((((t443 * t470) - t455) - (t483 * t1164)) - (t499 * t1165)) - (t513 * t1166)) - (t524 * t1167)) - (t532 * t1168);
-  store_lanes(F_DL + 160, make_lanes(t537 * t1139, t537 * t1151, t537 * t1161, t537 * t1169));
+  store_lanes(F_DL + 120, make_lanes(t537 * t1139, t537 * t1151, t537 * t1161, t537 * t1169));
   const Scalar t1170 = ((((((t443 * t472) - t457) - (t485 * t1164)) - (t502 * t1165)) - (t516 * t1166)) - (t527 * t1167)) - (t535 * t1168);
   const Scalar t1171 = t1170 - (t540 * t1169);
-  store_lanes(F_U + 56, make_lanes(t1167, t1168, t1169, t1171));
-  store_lanes(F_DL + 176, make_lanes(t543 * t1141, t543 * t1153, t543 * t1163, t543 * t1171));
+  store_lanes(F_U + 44, make_lanes(t1167, t1168, t1169, t1171));
+  store_lanes(F_DL + 132, make_lanes(t543 * t1141, t543 * t1153, t543 * t1163, t543 * t1171));
   const Scalar t1172 = (t460 * t475) - t462;
-  store_lanes(F_DL + 100, make_lanes(t487 * t1172, -(t475 * t487), t487, Scalar(0)));
+  store_lanes(F_DL + 76, make_lanes(t487 * t1172, -(t475 * t487), t487, Scalar(0)));
   const Scalar t1173 = ((t460 * t477) - t464) - (t490 * t1172);
-  store_lanes(F_U + 68, make_lanes(Scalar(1), -t460, t1172, t1173));
+  store_lanes(F_U + 52, make_lanes(Scalar(1), -t460, t1172, t1173));
   const Scalar t1174 = (((t460 * t479) - t466) - (t493 * t1172)) - (t507 * t1173);
   const Scalar t1175 = ((((t460 * t481) - t468) - (t496 * t1172)) - (t510 * t1173)) - (t521 * t1174);
   const Scalar t1176 = (((((t460 * t483) - t470) - (t499 * t1172)) - (t513 * t1173)) - (t524 * t1174)) - (t532 * t1175);
   const Scalar t1177 = ((((((t460 * t485) - t472) - (t502 * t1172)) - (t516 * t1173)) - (t527 * t1174)) - (t535 * t1175)) - (t540 * t1176);
-  store_lanes(F_U + 72, make_lanes(t1174, t1175, t1176, t1177));
+  store_lanes(F_U + 56, make_lanes(t1174, t1175, t1176, t1177));
   const Scalar t1178 = (t475 * t490) - t477;
-  store_lanes(F_U + 84, make_lanes(Scalar(0), Scalar(1), -t475, t1178));
-  store_lanes(F_DL + 116, make_lanes(t504 * t1173, t504 * t1178, -(t490 * t504), t504));
+  store_lanes(F_U + 64, make_lanes(Scalar(0), Scalar(1), -t475, t1178));
+  store_lanes(F_DL + 88, make_lanes(t504 * t1173, t504 * t1178, -(t490 * t504), t504));
   const Scalar t1179 = ((t475 * t493) - t479) - (t507 * t1178);
   const Scalar t1180 = (((t475 * t496) - t481) - (t510 * t1178)) - (t521 * t1179);
   const Scalar t1181 = ((((t475 * t499) - t483) - (t513 * t1178)) - (t524 * t1179)) - (t532 * t1180);
   const Scalar t1182 = (((((t475 * t502) - t485) - (t516 * t1178)) - (t527 * t1179)) - (t535 * t1180)) - (t540 * t1181);
-  store_lanes(F_U + 88, make_lanes(t1179, t1180, t1181, t1182));
+  store_lanes(F_U + 68, make_lanes(t1179, t1180, t1181, t1182));
   const Scalar t1183 = (t490 * t507) - t493;
-  store_lanes(F_DL + 132, make_lanes(t518 * t1174, t518 * t1179, t518 * t1183, -(t507 * t518)));
+  store_lanes(F_DL + 100, make_lanes(t518 * t1174, t518 * t1179, t518 * t1183, -(t507 * t518)));
   const Scalar t1184 = ((t490 * t510) - t496) - (t521 * t1183);
   const Scalar t1185 = (((t490 * t513) - t499) - (t524 * t1183)) - (t532 * t1184);
   const Scalar t1186 = ((((t490 * t516) - t502) - (t527 * t1183)) - (t535 * t1184)) - (t540 * t1185);
-  store_lanes(F_U + 104, make_lanes(t1183, t1184, t1185, t1186));
+  store_lanes(F_U + 80, make_lanes(t1183, t1184, t1185, t1186));
   const Scalar t1187 = (t507 * t521) - t510;
-  store_lanes(F_DL + 148, make_lanes(t529 * t1175, t529 * t1180, t529 * t1184, t529 * t1187));
+  store_lanes(F_DL + 112, make_lanes(t529 * t1175, t529 * t1180, t529 * t1184, t529 * t1187));
   const Scalar t1188 = ((t507 * t524) - t513) - (t532 * t1187);
-  store_lanes(F_DL + 164, make_lanes(t537 * t1176, t537 * t1181, t537 * t1185, t537 * t1188));
+  store_lanes(F_DL + 124, make_lanes(t537 * t1176, t537 * t1181, t537 * t1185, t537 * t1188));
   const Scalar t1189 = (((t507 * t527) - t516) - (t535 * t1187)) - (t540 * t1188);
-  store_lanes(F_U + 120, make_lanes(-t507, t1187, t1188, t1189));
-  store_lanes(F_DL + 180, make_lanes(t543 * t1177, t543 * t1182, t543 * t1186, t543 * t1189));
+  store_lanes(F_U + 92, make_lanes(-t507, t1187, t1188, t1189));
+  store_lanes(F_DL + 136, make_lanes(t543 * t1177, t543 * t1182, t543 * t1186, t543 * t1189));
   const Scalar t1190 = (t521 * t532) - t524;
-  store_lanes(F_DL + 168, make_lanes(t537 * t1190, -(t532 * t537), t537, Scalar(0)));
+  store_lanes(F_DL + 128, make_lanes(t537 * t1190, -(t532 * t537), t537, Scalar(0)));
   const Scalar t1191 = ((t521 * t535) - t527) - (t540 * t1190);
-  store_lanes(F_U + 136, make_lanes(Scalar(1), -t521, t1190, t1191));
+  store_lanes(F_U + 104, make_lanes(Scalar(1), -t521, t1190, t1191));
   const Scalar t1192 = (t532 * t540) - t535;
-  store_lanes(F_U + 152, make_lanes(Scalar(0), Scalar(1), -t532, t1192));
-  store_lanes(F_DL + 184, make_lanes(t543 * t1191, t543 * t1192, -(t540 * t543), t543));
+  store_lanes(F_U + 116, make_lanes(Scalar(0), Scalar(1), -t532, t1192));
+  store_lanes(F_DL + 140, make_lanes(t543 * t1191, t543 * t1192, -(t540 * t543), t543));
   // contact: Delassus matrix J M⁻¹Jᵀ and its damped factor
   const Scalar t1193 = t544 + t547;
   const Scalar t1194 = t545 + t548;
@@ -2457,11 +2433,11 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
 /// @param dlambda_dtau out 12x12: ∂λ/∂τ
 ///
 /// operations    mul    add  div  sqrt  trig   neg   total
-///             52854  51188   26     0    24  1625  105717
+///             50190  48572   26     0    24  1625  100437
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
-///   lanes, the solve's right-hand sides in SIMD across columns): 29091 arithmetic
-///   instructions (cost 35524), scalar tree 100802 (cost 237165), looped solve 41981 (cost
-///   66460)
+///   lanes, the solve's right-hand sides in SIMD across columns): 27687 arithmetic
+///   instructions (cost 34120), scalar tree 100802 (cost 237165), looped solve 40577 (cost
+///   65056)
 /// emission: looped solve: contact_dynamics_derivatives_terms writes the 48 right-hand sides, Z =
 ///   L⁻ᵀJᵀ and the factors; loops solve them all at once (M⁻¹'s halves with J M⁻¹ and M⁻¹Jᵀ
 ///   between them, the Delassus system's proximal steps in closed form), one SIMD row
@@ -2472,8 +2448,8 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives(const Scalar* q, const
   alignas(64) Scalar solve_R2[576];
   alignas(64) Scalar solve_Zt_D[216];
   alignas(64) Scalar solve_Z[216];
-  alignas(64) Scalar solve_F_U[192];
-  alignas(64) Scalar solve_F_DL[192];
+  alignas(64) Scalar solve_F_U[144];
+  alignas(64) Scalar solve_F_DL[144];
   alignas(64) Scalar solve_mu[1];
   alignas(64) Scalar solve_L[99];
   alignas(64) Scalar solve_D_inv[18];
@@ -2482,11 +2458,11 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives(const Scalar* q, const
   ltdl_solve_columns<Scalar, 18, 48, Passes::up>(dof_tree, solve_L, solve_D_inv, solve_R1);
   const RowSparsity<12, 108> Zt_D_sparsity{{0, 9, 18, 27, 36, 45, 54, 63, 72, 81, 90, 99, 108}, {0, 1, 2, 3, 4, 5, 6, 7, 8, 0, 1, 2, 3, 4, 5, 6, 7, 8, 0, 1, 2, 3, 4, 5, 6, 7, 8, 0, 1, 2, 3, 4, 5, 9, 10, 11, 0, 1, 2, 3, 4, 5, 9, 10, 11, 0, 1, 2, 3, 4, 5, 9, 10, 11, 0, 1, 2, 3, 4, 5, 12, 13, 14, 0, 1, 2, 3, 4, 5, 12, 13, 14, 0, 1, 2, 3, 4, 5, 12, 13, 14, 0, 1, 2, 3, 4, 5, 15, 16, 17, 0, 1, 2, 3, 4, 5, 15, 16, 17, 0, 1, 2, 3, 4, 5, 15, 16, 17}, {0, 4, 8, 12, 16, 20, 24, 28, 32, 36, 40, 44, 48, 52, 56, 60, 64, 68, 72, 76, 80, 84, 88, 92, 96, 100, 104, 1, 5, 9, 13, 17, 21, 25, 29, 33, 37, 41, 45, 49, 53, 57, 61, 65, 69, 73, 77, 81, 85, 89, 93, 97, 101, 105, 2, 6, 10, 14, 18, 22, 26, 30, 34, 38, 42, 46, 50, 54, 58, 62, 66, 70, 74, 78, 82, 86, 90, 94, 98, 102, 106, 3, 7, 11, 15, 19, 23, 27, 31, 35, 39, 43, 47, 51, 55, 59, 63, 67, 71, 75, 79, 83, 87, 91, 95, 99, 103, 107}, {3, 2, 1, 3, 2, 1, 3, 2, 1, 3, 2, 1}};
   multiply_sparse_minus<Scalar, 12, 18, 48>(Zt_D_sparsity, solve_Zt_D, solve_R1, solve_R2);
-  alignas(64) Scalar solve_V[192];
-  proximal_step_sum<Scalar, 12, 16, 5>(solve_F_U, solve_F_DL, solve_mu[0], solve_V);
+  alignas(64) Scalar solve_V[144];
+  proximal_step_sum<Scalar, 12, 12, 5>(solve_F_U, solve_F_DL, solve_mu[0], solve_V);
   alignas(64) Scalar solve_DL_B[576];
-  multiply<Scalar, 12, 12, 48, 16, Triangle::lower>(solve_F_DL, solve_R2, solve_DL_B);
-  multiply<Scalar, 12, 12, 48, 16>(solve_V, solve_DL_B, solve_R2);
+  multiply<Scalar, 12, 12, 48, 12, Triangle::lower>(solve_F_DL, solve_R2, solve_DL_B);
+  multiply<Scalar, 12, 12, 48, 12>(solve_V, solve_DL_B, solve_R2);
   const RowSparsity<18, 108> Z_sparsity{{0, 12, 24, 36, 48, 60, 72, 75, 78, 81, 84, 87, 90, 93, 96, 99, 102, 105, 108}, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 0, 1, 2, 0, 1, 2, 0, 1, 2, 3, 4, 5, 3, 4, 5, 3, 4, 5, 6, 7, 8, 6, 7, 8, 6, 7, 8, 9, 10, 11, 9, 10, 11, 9, 10, 11}, {0, 4, 8, 1, 5, 9, 2, 6, 10, 3, 7, 11, 12, 16, 20, 13, 17, 21, 14, 18, 22, 15, 19, 23, 24, 28, 32, 25, 29, 33, 26, 30, 34, 27, 31, 35, 36, 40, 44, 37, 41, 45, 38, 42, 46, 39, 43, 47, 48, 52, 56, 49, 53, 57, 50, 54, 58, 51, 55, 59, 60, 64, 68, 61, 65, 69, 62, 66, 70, 63, 67, 71, 72, 76, 80, 84, 88, 92, 96, 100, 104, 73, 77, 81, 85, 89, 93, 97, 101, 105, 74, 78, 82, 86, 90, 94, 98, 102, 106, 75, 79, 83, 87, 91, 95, 99, 103, 107}, {6, 5, 4, 3, 2, 1, 3, 2, 1, 3, 2, 1, 3, 2, 1, 3, 2, 1}};
   multiply_sparse_minus<Scalar, 18, 12, 48>(Z_sparsity, solve_Z, solve_R2, solve_R1);
   ltdl_solve_columns<Scalar, 18, 48, Passes::down>(dof_tree, solve_L, solve_D_inv, solve_R1);
@@ -2496,4 +2472,4 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 12, 48>(solve_R2, solve_R2_out);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_a4af9c6d4e17
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_6d8a67ef96cf
