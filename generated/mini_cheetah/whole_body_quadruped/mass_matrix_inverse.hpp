@@ -7,11 +7,11 @@
 // mass_matrix_inverse for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_inverse is the same code:
-//   mini_cheetah/common/mass_matrix_inverse_902bc175e443.hpp
+//   mini_cheetah/common/mass_matrix_inverse_d87d58debc6e.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/mass_matrix_inverse_902bc175e443.hpp"
+#include "mini_cheetah/common/mass_matrix_inverse_d87d58debc6e.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -21,8 +21,10 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// @param M_inv out 18x18: inverse mass matrix, full symmetric
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             1920  1650   14     0    24    2   3610
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_inverse_902bc175e443::mass_matrix_inverse;
+///             2140  1838   14     0    24   80   4096
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1390 arithmetic
+///   instructions, scalar tree 3610 (cost 3904)
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_inverse_d87d58debc6e::mass_matrix_inverse;
 
 /// mass_matrix_inverse on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -213,23 +213,14 @@ class LaneDelassus(DampedSolve):
         m.mark("contact: Delassus matrix J M⁻¹Jᵀ and its damped factor")
         self._Z = Z = [fd.ltdl_forward(self._L, parents, row) for row in self.J]
         self._D_inv_Z = [[z * d for z, d in zip(column, inv_diag)] for column in Z]
-        trunk = range(self._root)
-        # shifted[δ][r][s], lane k: Z_r's column of contact k against D⁻¹Z_s's of the contact δ lanes
-        # on (its lanes rotated); δ = 0 sums over all dofs (a diagonal block), δ ≠ 0 over the trunk's.
-        # A is symmetric: δ ≤ LANES/2 covers every pair of lanes.
-        shifted = [[[sp.dot(Z[r], self._D_inv_Z[s]) for s in range(3)] for r in range(3)]]
-        for delta in range(1, ex.LANES // 2 + 1):
-            shifted.append([[sp.dot([Z[r][t] for t in trunk],
-                                    [ex.lane_rotate(self._D_inv_Z[s][t], delta) for t in trunk])
-                             for s in range(3)] for r in range(3)])
+        # contact k's rows are lane k of the lane foot's (fd.lane_gram: a diagonal block sums over all
+        # dofs, two contacts on different limbs over the trunk's)
+        gram = fd.lane_gram(Z, self._D_inv_Z, range(self._root))
         rows = [(c, r) for c in range(len(contact_lanes)) for r in range(3)]
         A = [[None] * len(rows) for _ in rows]
         for i, (c, r) in enumerate(rows):
             for j, (d, s) in enumerate(rows[:i + 1]):
-                k, l = contact_lanes[c], contact_lanes[d]
-                delta = (l - k) % ex.LANES
-                A[i][j] = A[j][i] = (ex.lane_get(shifted[delta][r][s], k) if delta < len(shifted) else
-                                     ex.lane_get(shifted[ex.LANES - delta][s][r], l))
+                A[i][j] = A[j][i] = fd.lane_gram_entry(gram, r, contact_lanes[c], s, contact_lanes[d])
         super().__init__(A)
 
     def feet_rows(self, m, values):

@@ -184,6 +184,56 @@ def mass_matrix_inverse(m):
     return half_solve_gram(L, inv_diag, dof_parents(m.robot), identity, m.into_dof)[0]
 
 
+def lane_mass_matrix_inverse(m):
+    """M⁻¹ (the full robot's rows) on the quadruped's lane model (views/limb_lanes.py), as
+    mass_matrix_inverse: Zᵀ D⁻¹ Z, Z = L⁻ᵀ of the unit columns. A trunk column's Z is scalar and non-zero
+    on the trunk only; a limb column's is a lane value (lane k: that column of limb k), non-zero on its
+    limb and the trunk, kept apart per lane (no lane sum). So a trunk-limb entry is a lane dot product
+    over the trunk (four entries at once), and two limb columns meet as in lane_gram."""
+    parents = dof_parents(m.robot)
+    L, inv_diag = mass_matrix_factor(m)
+    n, root = m.robot.nv, m.robot.root_dofs
+    zero, one = ex.const(0.0), ex.const(1.0)
+    m.mark("M⁻¹ through half of M's solve, the limbs' columns in lanes")
+    Z = [ltdl_forward(L, parents, [one if i == j else zero for i in range(n)]) for j in range(n)]
+    D_inv_Z = [[z * d for z, d in zip(column, inv_diag)] for column in Z]
+    trunk, limb = range(root), range(root, n)
+    full = [[None] * m.full.nv for _ in range(m.full.nv)]
+    for r in trunk:
+        for s in trunk:
+            full[r][s] = sp.dot(Z[r][:root], D_inv_Z[s][:root])
+        for s in limb:
+            entries = sp.dot(Z[r][:root], D_inv_Z[s][:root])
+            for k in range(ex.LANES):
+                full[r][m.full_index(s, k)] = full[m.full_index(s, k)][r] = ex.lane_get(entries, k)
+    gram = lane_gram([Z[j] for j in limb], [D_inv_Z[j] for j in limb], trunk)
+    for a, r in enumerate(limb):
+        for b, s in enumerate(limb):
+            for k in range(ex.LANES):
+                for l in range(ex.LANES):
+                    full[m.full_index(r, k)][m.full_index(s, l)] = lane_gram_entry(gram, a, k, b, l)
+    return full
+
+
+def lane_gram(Z, D_inv_Z, trunk):
+    """The Gram entries Z_rᵀ D⁻¹ Z_s of lane columns (lane k: a column of limb k, non-zero on limb k and
+    the trunk): gram[δ][r][s], lane k, is column r of limb k against column s of limb k + δ. δ = 0 sums
+    over all dofs; δ ≠ 0 over the trunk's only (two limbs meet there), the second operand's lanes
+    rotated. Symmetric: δ ≤ LANES/2 covers every pair of lanes (lane_gram_entry)."""
+    gram = [[[sp.dot(z, d) for d in D_inv_Z] for z in Z]]
+    for delta in range(1, ex.LANES // 2 + 1):
+        gram.append([[sp.dot([z[t] for t in trunk], [ex.lane_rotate(d[t], delta) for t in trunk])
+                      for d in D_inv_Z] for z in Z])
+    return gram
+
+
+def lane_gram_entry(gram, r, k, s, l):
+    """Column r of limb k against column s of limb l, from lane_gram."""
+    delta = (l - k) % ex.LANES
+    return (ex.lane_get(gram[delta][r][s], k) if delta < len(gram) else
+            ex.lane_get(gram[ex.LANES - delta][s][r], l))
+
+
 def half_solve_gram(L, inv_diag, parents, columns, into=_as_is):
     """(Bᵀ M⁻¹ B as symmetric rows, Z, D⁻¹Z) for the columns of B, M = Lᵀ D L: with Z = L⁻ᵀB (a column
     non-zero only on the tree ancestors of its non-zeros) entry (r, s) is Z_rᵀ D⁻¹ Z_s, a sum over

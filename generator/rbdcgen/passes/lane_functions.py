@@ -30,6 +30,8 @@ FEET = ("feet_bias_accelerations",)
 CONTACT = {
     "contact_dynamics": lambda m: _contact_outputs(m, ("a", "lambda"), contact_dynamics.contact_dynamics),
     "impulse_dynamics": lambda m: _contact_outputs(m, ("v_plus", "impulse"), contact_dynamics.impulse_dynamics)}
+# M⁻¹ with the limbs' columns in lanes (forward_dynamics.lane_mass_matrix_inverse)
+INVERSE = {"mass_matrix_inverse": lambda m: {"M_inv": _columns(forward_dynamics.lane_mass_matrix_inverse(m))}}
 # the traced terms of contact_dynamics_derivatives' looped form (looped_solve.py), one contact foot
 # per limb as CONTACT
 CONTACT_TERMS = {"contact_dynamics_derivative_terms": lane_contact_derivatives.contact_dynamics_derivative_terms}
@@ -42,6 +44,7 @@ SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
           "osc_open_chain_lanes": "osc_open_chain",
           **{name + "_lanes": name for name in DERIVATIVES}, **{name + "_lanes": name for name in CENTROIDAL},
           **{name + "_lanes": name for name in FRAMES + FEET}, **{name + "_lanes": name for name in CONTACT},
+          **{name + "_lanes": name for name in INVERSE},
           **{name + "_lanes": name for name in CONTACT_TERMS}, **{name + "_lanes": name for name in SOLVE_TERMS}}
 # function → its lane function
 LANE_NAME = {scalar: lanes for lanes, scalar in SCALAR.items()}
@@ -94,6 +97,7 @@ def spec(robot, scalar_specs):
         **_in_lanes(centroidal.specs(nv), CENTROIDAL),
         **_in_lanes(scalar_specs, {name: scalar_specs[name][3] for name in FRAMES + FEET}),
         **_in_lanes(scalar_specs, CONTACT),
+        **_in_lanes(scalar_specs, INVERSE),
         **_in_lanes(scalar_specs, CONTACT_TERMS),
         **_in_lanes(scalar_specs, SOLVE_TERMS),
         **_in_lanes(scalar_specs, {"forward_dynamics_aba": lambda m: {"a": m.scatter(aba.forward_dynamics_aba(m))}}),
