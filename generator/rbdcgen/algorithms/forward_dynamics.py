@@ -200,8 +200,8 @@ def lane_mass_matrix_inverse(m):
     trunk, limb = range(root), range(root, n)
     full = [[None] * m.full.nv for _ in range(m.full.nv)]
     for r in trunk:
-        for s in trunk:
-            full[r][s] = sp.dot(Z[r][:root], D_inv_Z[s][:root])
+        for s in range(r + 1):  # symmetric: each entry once
+            full[r][s] = full[s][r] = sp.dot(Z[r][:root], D_inv_Z[s][:root])
         for s in limb:
             entries = sp.dot(Z[r][:root], D_inv_Z[s][:root])
             for k in range(ex.LANES):
@@ -218,9 +218,15 @@ def lane_mass_matrix_inverse(m):
 def lane_gram(Z, D_inv_Z, trunk):
     """The Gram entries Z_rᵀ D⁻¹ Z_s of lane columns (lane k: a column of limb k, non-zero on limb k and
     the trunk): gram[δ][r][s], lane k, is column r of limb k against column s of limb k + δ. δ = 0 sums
-    over all dofs; δ ≠ 0 over the trunk's only (two limbs meet there), the second operand's lanes
-    rotated. Symmetric: δ ≤ LANES/2 covers every pair of lanes (lane_gram_entry)."""
-    gram = [[[sp.dot(z, d) for d in D_inv_Z] for z in Z]]
+    over all dofs (symmetric in r and s: each entry once); δ ≠ 0 over the trunk's only (two limbs meet
+    there), the second operand's lanes rotated. δ ≤ LANES/2 covers every pair of lanes
+    (lane_gram_entry)."""
+    n = len(Z)
+    same = [[None] * n for _ in range(n)]
+    for r in range(n):
+        for s in range(r + 1):
+            same[r][s] = same[s][r] = sp.dot(Z[r], D_inv_Z[s])
+    gram = [same]
     for delta in range(1, ex.LANES // 2 + 1):
         gram.append([[sp.dot([z[t] for t in trunk], [ex.lane_rotate(d[t], delta) for t in trunk])
                       for d in D_inv_Z] for z in Z])

@@ -58,7 +58,8 @@ def forward_dynamics_derivative_terms(m):
     """differentiate.forward_dynamics_derivative_terms (rhs, L, D_inv: what the looped solve solves)
     traced on the lane model m (feet=True), in the full robot's layout: the residual's derivatives
     and M's factor by the lane recursions, scattered; Jᵀ's columns from the lane feet's rows; the
-    placeholder a through that factor (forward_dynamics, as the scalar terms)."""
+    placeholder a solved with that factor (forward_dynamics, as the scalar terms), which the terms
+    trace anyway (the articulated-body algorithm would add a pass of its own)."""
     full = m.full
     nv = full.nv
     # negated in the lanes, so that a whole lane value reaches its place in rhs (one vector store)
