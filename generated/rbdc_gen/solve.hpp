@@ -122,6 +122,21 @@ RBDC_HOST_DEVICE inline void in_register(T& x) noexcept {
 /// meets the contact rows between them: J M⁻¹ = (D⁻¹Z)ᵀ L⁻ᵀ and M⁻¹Jᵀ = L⁻¹ D⁻¹ Z, Z = L⁻ᵀJᵀ sparse).
 enum class Passes { both, up, down };  // up: B ← L⁻ᵀB, leaves to root; down: B ← L⁻¹D⁻¹B, root to leaves
 
+/// The first of the descendants below_dof[from, to) (deepest first, so in decreasing order) under
+/// `rows`: a binary search, as the ones skipped are zero rows.
+template <int NV, int NE>
+RBDC_HOST_DEVICE inline int below_rows(const DofTree<NV, NE>& tree, int from, int to, int rows) noexcept {
+  if (rows >= NV) return from;
+  while (from < to) {
+    const int middle = (from + to) / 2;
+    if (tree.below_dof[middle] >= rows)
+      from = middle + 1;
+    else
+      to = middle;
+  }
+  return from;
+}
+
 /// ltdl_solve_columns on NR runs of B's columns from column c0: its passes, each row summed locally
 /// from rows already final (no aliasing with the rows it reads), in the order they became final: the
 /// row finished last comes last, so a row's sum runs while the rows before it finish instead of
@@ -131,23 +146,26 @@ enum class Passes { both, up, down };  // up: B ← L⁻ᵀB, leaves to root; do
 /// 12; Talos 6.7 → 4.8 µs, one driver, AMD EPYC, bitwise the same).
 template <class Scalar, int NV, int NC, int NE, int NR, Passes P>
 RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_column_block(const DofTree<NV, NE>& tree, const Scalar* L,
-                                                                    const Scalar* D_inv, Scalar* B, int c0) noexcept {
+                                                                    const Scalar* D_inv, Scalar* B, int c0,
+                                                                    int rows = NV) noexcept {
   using R = ColumnRun<Scalar, NC>;
   constexpr int W = R::size;
   typename R::type row[NR], pair[NR];
-  for (int j = P == Passes::down ? -1 : NV - 1; j >= 0; --j) {  // B ← L⁻ᵀ B, leaves to root: row j from its descendants'
+  // rows: the block's rows from `rows` on are zero, and L⁻ᵀ keeps them so (it sums into ancestors only)
+  for (int j = P == Passes::down ? -1 : rows - 1; j >= 0; --j) {  // B ← L⁻ᵀ B, leaves to root: row j from its descendants'
     Scalar* row_j = B + j * NC + c0;
     for (int c = 0; c < NR; ++c) row[c] = R::load(row_j + c * W);
     if (tree.pair_with_parent[j]) {
       Scalar* row_p = row_j - NC;
       const int shared = tree.below_first[j + 1] - tree.below_first[j] + 1;  // j's descendants and j
       for (int c = 0; c < NR; ++c) pair[c] = R::load(row_p + c * W);
-      for (int e = tree.below_first[j - 1]; e < tree.below_first[j] - shared; ++e) {  // the parent's others
+      for (int e = below_rows(tree, tree.below_first[j - 1], tree.below_first[j] - shared, rows);
+           e < tree.below_first[j] - shared; ++e) {  // the parent's others
         const Scalar* row_i = B + tree.below_dof[e] * NC + c0;
         const Scalar l = L[tree.below_entry[e]];
         for (int c = 0; c < NR; ++c) pair[c] -= l * R::load(row_i + c * W);
       }
-      for (int e = tree.below_first[j]; e < tree.below_first[j + 1]; ++e) {
+      for (int e = below_rows(tree, tree.below_first[j], tree.below_first[j + 1], rows); e < tree.below_first[j + 1]; ++e) {
         const Scalar* row_i = B + tree.below_dof[e] * NC + c0;
         const Scalar l = L[tree.below_entry[e]], l_parent = L[tree.below_entry[e] + 1];  // parent: next ancestor
         for (int c = 0; c < NR; ++c) {
@@ -163,7 +181,7 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_column_block(const DofTre
       --j;
       continue;
     }
-    for (int e = tree.below_first[j]; e < tree.below_first[j + 1]; ++e) {
+    for (int e = below_rows(tree, tree.below_first[j], tree.below_first[j + 1], rows); e < tree.below_first[j + 1]; ++e) {
       const Scalar* row_i = B + tree.below_dof[e] * NC + c0;
       const Scalar l = L[tree.below_entry[e]];
       for (int c = 0; c < NR; ++c) row[c] -= l * R::load(row_i + c * W);
@@ -227,17 +245,96 @@ constexpr int ltdl_block_runs() {
 /// tree, L its factor entries in the packed layout of `tree`, D_inv the inverse pivots: in blocks
 /// of nearly equal width, at most ltdl_block_runs() runs each (columns are independent); P: only one
 /// half of the solve.
-template <class Scalar, int NV, int NC, Passes P = Passes::both, int NE, int Done = 0>
+template <class Scalar, int NV, int NC, Passes P = Passes::both, int NE, int Done = 0, int End = NC / ColumnRun<Scalar, NC>::size>
 RBDC_HOST_DEVICE inline void ltdl_solve_columns(const DofTree<NV, NE>& tree, const Scalar* L, const Scalar* D_inv,
-                                                Scalar* B) noexcept {
+                                                Scalar* B, int rows = NV) noexcept {
   constexpr int W = ColumnRun<Scalar, NC>::size;
-  constexpr int left = NC / W - Done;
+  constexpr int left = End - Done;
   if constexpr (left > 0) {
     constexpr int most = ltdl_block_runs<Scalar, NV, NC>();
     constexpr int blocks = (left + most - 1) / most;
     constexpr int runs = (left + blocks - 1) / blocks;
-    ltdl_solve_column_block<Scalar, NV, NC, NE, runs, P>(tree, L, D_inv, B, Done * W);
-    ltdl_solve_columns<Scalar, NV, NC, P, NE, Done + runs>(tree, L, D_inv, B);
+    ltdl_solve_column_block<Scalar, NV, NC, NE, runs, P>(tree, L, D_inv, B, Done * W, rows);
+    ltdl_solve_columns<Scalar, NV, NC, P, NE, Done + runs, End>(tree, L, D_inv, B, rows);
+  }
+}
+
+/// The columns of M⁻¹ = L⁻¹ D⁻¹ L⁻ᵀ (M = Lᵀ D L) are solved together this many at a time by
+/// ltdl_inverse: the fewer, the more zero rows its L⁻ᵀ pass skips (a column's rows below its dof are
+/// zero), the more, the more columns share each load of a factor entry. A multiple of every run.
+constexpr int LTDL_INVERSE_COLUMNS = 16;
+
+/// ltdl_inverse's Z = L⁻ᵀ, block by block: each over its rows before the block's end only.
+template <class Scalar, int NV, int NC, int NE, int C0 = 0>
+RBDC_HOST_DEVICE inline void ltdl_inverse_up(const DofTree<NV, NE>& tree, const Scalar* L, const Scalar* D_inv,
+                                             Scalar* Z) noexcept {
+  constexpr int W = ColumnRun<Scalar, NC>::size, C1 = C0 + LTDL_INVERSE_COLUMNS;
+  static_assert(LTDL_INVERSE_COLUMNS % W == 0, "a block is whole runs");
+  ltdl_solve_columns<Scalar, NV, NC, Passes::up, NE, C0 / W, C1 / W>(tree, L, D_inv, Z, C1 < NV ? C1 : NV);
+  if constexpr (C1 < NC) ltdl_inverse_up<Scalar, NV, NC, NE, C1>(tree, L, D_inv, Z);
+}
+
+/// ltdl_inverse's M⁻¹ over Z in place, last block first (a block's sums read Z(k, a) for a before it,
+/// still Z there): M⁻¹'s rows before the block's end over its columns, last row first (row a's sum
+/// reads its ancestors' rows, before it).
+template <class Scalar, int NV, int NC, int NE, int C0 = NC - LTDL_INVERSE_COLUMNS>
+RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_inverse_products(const DofTree<NV, NE>& tree, const Scalar* D_inv,
+                                                                  Scalar* Z) noexcept {
+  using R = ColumnRun<Scalar, NC>;
+  constexpr int W = R::size, C1 = C0 + LTDL_INVERSE_COLUMNS, NR = LTDL_INVERSE_COLUMNS / W;
+  for (int a = (C1 < NV ? C1 : NV) - 1; a >= 0; --a) {  // M⁻¹(a, ·) = Σ_k Z(k, a) D⁻¹(k) Z(k, ·), k = a and a's ancestors
+    // two sums (a and every other ancestor; the others): twice the multiply-adds in flight
+    typename R::type even[NR], odd[NR];
+    const int from = tree.first[a], to = tree.first[a + 1];
+    const Scalar s = Z[a * NC + a] * D_inv[a];
+    for (int c = 0; c < NR; ++c) even[c] = s * R::load(Z + a * NC + C0 + c * W);
+    if (to > from) {
+      const int k = tree.ancestor[from];
+      const Scalar t = Z[k * NC + a] * D_inv[k];
+      for (int c = 0; c < NR; ++c) odd[c] = t * R::load(Z + k * NC + C0 + c * W);
+    }
+    int e = from + 1;
+    for (; e + 1 < to; e += 2) {
+      const int k = tree.ancestor[e], l = tree.ancestor[e + 1];
+      const Scalar t = Z[k * NC + a] * D_inv[k], u = Z[l * NC + a] * D_inv[l];
+      for (int c = 0; c < NR; ++c) {
+        even[c] += t * R::load(Z + k * NC + C0 + c * W);
+        odd[c] += u * R::load(Z + l * NC + C0 + c * W);
+      }
+    }
+    if (e < to) {
+      const int k = tree.ancestor[e];
+      const Scalar t = Z[k * NC + a] * D_inv[k];
+      for (int c = 0; c < NR; ++c) even[c] += t * R::load(Z + k * NC + C0 + c * W);
+    }
+    for (int c = 0; c < NR; ++c) R::store(Z + a * NC + C0 + c * W, to > from ? even[c] + odd[c] : even[c]);
+  }
+  if constexpr (C0 > 0) ltdl_inverse_products<Scalar, NV, NC, NE, C0 - LTDL_INVERSE_COLUMNS>(tree, D_inv, Z);
+}
+
+/// M⁻¹ = Zᵀ D⁻¹ Z with Z = L⁻ᵀ (M = Lᵀ D L over the dof tree, in ltdl_solve_columns' layout), its rows
+/// `First` … NV − 1 into out, row d at out + (d − First)·NV (by symmetry M⁻¹'s columns: ∂a/∂τ = M⁻¹Sᵀ
+/// when Sᵀ selects dofs First …): forward_dynamics_derivatives' ∂a/∂τ where that is cheaper than
+/// solving Sᵀ's columns (docs/performance.md, "∂a/∂τ as Zᵀ D⁻¹ Z"). Z's column c is non-zero only at
+/// c and its ancestors, all before c, and M⁻¹(a, b) = Σ_k Z(k, a) D⁻¹(k) Z(k, b) over a's ancestors k
+/// and a itself. In blocks of LTDL_INVERSE_COLUMNS columns [c0, c1): Z's block by the L⁻ᵀ pass over
+/// rows before c1 only, then M⁻¹'s rows before c1 in place, last row first (row a's sum reads the rows
+/// of its ancestors, before it); the rest of each column by symmetry.
+template <class Scalar, int NV, int First, int NE>
+RBDC_HOST_DEVICE inline void ltdl_inverse(const DofTree<NV, NE>& tree, const Scalar* L, const Scalar* D_inv,
+                                          Scalar* out) noexcept {
+  constexpr int G = LTDL_INVERSE_COLUMNS;
+  constexpr int NC = (NV + G - 1) / G * G;
+  alignas(64) Scalar Z[NV * NC];
+  for (int k = 0; k < NV * NC; ++k) Z[k] = Scalar(0);
+  for (int d = 0; d < NV; ++d) Z[d * NC + d] = Scalar(1);
+  ltdl_inverse_up<Scalar, NV, NC, NE>(tree, L, D_inv, Z);
+  ltdl_inverse_products<Scalar, NV, NC, NE>(tree, D_inv, Z);
+  for (int d = First; d < NV; ++d) {  // computed where d is before the end of b's block (b from d's block on), else mirrored
+    Scalar* column = out + (d - First) * NV;
+    const int block = d / G * G;
+    for (int b = 0; b < block; ++b) column[b] = Z[b * NC + d];
+    for (int b = block; b < NV; ++b) column[b] = Z[d * NC + b];
   }
 }
 
@@ -439,9 +536,10 @@ template <class Scalar, int W, int B>
 RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void subtract_scaled_run(Scalar* out, const Scalar* const (&x)[B],
                                                                 const Scalar (&s)[B], int t) noexcept {
   using R = Run<Scalar, W>;
-  typename R::type sum = s[0] * R::load(x[0] + t);
-  for (int b = 1; b < B; ++b) sum += s[b] * R::load(x[b] + t);
-  R::store(out + t, R::load(out + t) - sum);
+  typename R::type sum[2] = {s[0] * R::load(x[0] + t), R::zero()};  // two chains of multiply-adds, not one
+  if constexpr (B > 1) sum[1] = s[1] * R::load(x[1] + t);
+  for (int b = 2; b < B; ++b) sum[b % 2] += s[b] * R::load(x[b] + t);
+  R::store(out + t, R::load(out + t) - (B > 1 ? sum[0] + sum[1] : sum[0]));
 }
 
 /// out[t] −= Σ_{b<B} s[b]·x[b][t] for t < n, out not overlapping any x: ltdl_factor's update of an
@@ -490,11 +588,13 @@ RBDC_HOST_DEVICE inline void ltdl_update_ancestors(const int (&parent)[NV], cons
   for (int i = parent[panel[B - 1]]; i != -1; i = parent[i], ++p) {
     Scalar ratio[B];
     const Scalar* tail[B];
+    Scalar pivot = D[i];  // in a register: D may alias the rows as far as the compiler knows
     for (int b = 0; b < B; ++b) {
       ratio[b] = rows[b][p] * inverse[b];
-      D[i] -= ratio[b] * rows[b][p];
+      pivot -= ratio[b] * rows[b][p];
       tail[b] = rows[b] + p + 1;  // the pivot's entries at i's ancestors
     }
+    D[i] = pivot;
     subtract_scaled(L + first[i], tail, ratio, depth[i]);
     for (int b = 0; b < B; ++b) rows[b][p] = ratio[b];
   }

@@ -31,6 +31,7 @@ from ..algorithms import aba, crba, feet_force_derivatives, feet_motion_derivati
 from ..algorithms.rnea_derivatives import has_rotors, rnea_derivatives
 from ..graph.manifold import configuration_seeds, q_direction, v_direction, velocity_seeds
 from ..views.coupled import tree_view
+from .looped_inverse import tau_by_inverse
 
 # The primal function each derivative is compared with in `rbdc flops` (the issue's targets are
 # ratios to one primal call). bias_derivatives differentiates inverse dynamics at a = 0.
@@ -321,14 +322,17 @@ def forward_dynamics_derivatives(m):
 def forward_dynamics_derivative_terms(m, looped_rnea=False, looped_factor=False):
     """What forward_dynamics_derivatives solves, unsolved (passes/looped_solve.py solves it in a
     loop): `rhs`, the right-hand sides side by side, row-major (nv × columns, in the order of
-    FORWARD_DYNAMICS_COLUMNS, each row zero-padded to `padded` columns); `L`, the factor's entries
+    FORWARD_DYNAMICS_COLUMNS, each row zero-padded to `padded` columns; without Sᵀ where ∂a/∂τ is
+    M⁻¹'s rows, passes/looped_inverse.py); `L`, the factor's entries
     at each dof's tree ancestors (dof by dof, nearest ancestor first); `D_inv`, its inverse pivots.
     With `looped_rnea`, the RNEA's part of rhs left to its loop, which reads the bodies' transforms
     `X`, gravity `g` and the acceleration `a`; with `looped_factor` also M's factor (the looped CRBA
     and factor), and a by the articulated-body algorithm (O(n))."""
     nv = m.robot.nv
     columns = _forward_dynamics_columns(m, looped_rnea)
-    cols = [col for name in FORWARD_DYNAMICS_COLUMNS for col in columns[name]]
+    solved = [name for name in FORWARD_DYNAMICS_COLUMNS
+              if not (name == "da_dtau" and tau_by_inverse(m.robot, len(columns["da_df"]), padded))]
+    cols = [col for name in solved for col in columns[name]]
     terms = {"rhs": right_hand_side_rows(cols, nv)}
     if not looped_factor:
         parents = fd.dof_parents(m.robot)
@@ -475,6 +479,7 @@ def spec(robot, nf, nc):
     name → (doc, input names, [(output name, rows, cols, doc)], trace(m) → {output name:
     column-major entries})."""
     nv, nj, m3 = robot.nv, robot.n_joints, 3 * nc
+    solved = 2 * nv + 3 * nf + (0 if tau_by_inverse(robot, 3 * nf, padded) else nj)  # the looped forms' columns
     on_q = "; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)"
     tree_nv = tree_view(robot).nv  # the feet's force-term loop runs on a coupled robot's tree
     looped_feet = [("feet_axes", 3, tree_nv, "each (tree) dof's world axis (zero for a translation)"),
@@ -502,7 +507,7 @@ def spec(robot, nf, nc):
         "forward_dynamics_derivative_terms": (
             "The traced part of forward_dynamics_derivatives in its looped form (passes/looped_solve.py).",
             ("q", "v", "tau", "f"),
-            [("rhs", nv, padded(2 * nv + nj + 3 * nf), "right-hand sides, row-major, zero-padded"),
+            [("rhs", nv, padded(solved), "right-hand sides, row-major, zero-padded"),
              ("L", fd.factor_entries(robot), 1, "factor entries at each dof's ancestors"),
              ("D_inv", nv, 1, "inverse pivots")],
             forward_dynamics_derivative_terms),
@@ -518,7 +523,7 @@ def spec(robot, nf, nc):
             "The traced part of forward_dynamics_derivatives in its looped form with the looped RNEA "
             "derivatives (passes/looped_solve.py, looped_rnea_derivatives.py).",
             ("q", "v", "tau", "f"),
-            [("rhs", nv, padded(2 * nv + nj + 3 * nf), "right-hand sides without the RNEA's part, row-major"),
+            [("rhs", nv, padded(solved), "right-hand sides without the RNEA's part, row-major"),
              ("L", fd.factor_entries(robot), 1, "factor entries at each dof's ancestors"),
              ("D_inv", nv, 1, "inverse pivots"),
              ("X", 12, robot.nb - 1, "each body's transform (the body_transforms function's X)"),
@@ -529,7 +534,7 @@ def spec(robot, nf, nc):
             "The traced part of forward_dynamics_derivatives in its looped form with the looped CRBA, "
             "factor and RNEA derivatives (passes/looped_solve.py).",
             ("q", "v", "tau", "f"),
-            [("rhs", nv, padded(2 * nv + nj + 3 * nf), "right-hand sides without the RNEA's part, row-major"),
+            [("rhs", nv, padded(solved), "right-hand sides without the RNEA's part, row-major"),
              ("X", 12, robot.nb - 1, "each body's transform (the body_transforms function's X)"),
              ("g", 3, 1, "gravity in the root's coordinates"),
              ("a", nv, 1, "the forward dynamics' a (articulated-body algorithm)")] + looped_feet,

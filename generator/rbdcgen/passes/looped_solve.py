@@ -19,6 +19,7 @@ from ..algorithms.contact_dynamics import PROXIMAL_STEPS
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
 from ..graph import expr as ex
 from . import differentiate, lane_contact_derivatives, lane_derivatives, looped_crba, looped_feet_forces, looped_rnea_derivatives
+from .looped_inverse import LoopedInverse, tau_by_inverse
 from .looped_rnea_derivatives import LoopedRneaDerivatives
 from .trace import Argument, with_loop
 
@@ -43,13 +44,15 @@ class LoopedSolve:
     differentiate.forward_dynamics_derivative_terms). `rnea`: the looped RNEA derivatives that
     complete the right-hand sides first, if any, and `feet` the feet's force-term derivatives
     (looped_feet_forces.py) with them; `factor`: the looped CRBA and factor (a
-    looped_factor.LoopedFactor, packed) that write solve_L and solve_D_inv first, if the terms do not."""
+    looped_factor.LoopedFactor, packed) that write solve_L and solve_D_inv first, if the terms do not;
+    `inverse`: ∂a/∂τ as M⁻¹'s rows (looped_inverse.py) where B leaves Sᵀ out."""
     parents: Tuple[int, ...]
     blocks: Tuple[Tuple[str, int], ...]
     terms: Tuple[Argument, ...]
     rnea: Optional[LoopedRneaDerivatives] = None
     factor: object = None
     feet: Optional[looped_feet_forces.LoopedFeetForces] = None
+    inverse: Optional[LoopedInverse] = None
     # per terms output whose entries a lane function keeps elsewhere than row-major (lane_places): where
     # each row-major entry is (None: zero, not stored)
     places: Tuple[Tuple[str, Tuple[Optional[int], ...]], ...] = ()
@@ -72,7 +75,7 @@ class LoopedSolve:
         return logical if place is None else place[logical]
 
     def _parts(self):
-        return [part for part in (self.factor, self.rnea, self.feet) if part is not None]
+        return [part for part in (self.factor, self.rnea, self.feet, self.inverse) if part is not None]
 
     @property
     def headers(self):
@@ -130,6 +133,7 @@ class LoopedSolve:
         body = [] if self.factor is None else self.factor.loops()
         body += [] if self.rnea is None else self.rnea.loops(with_table=self.factor is None)
         body += [dof_tree(self.parents)] + ([] if self.feet is None else self.feet.loops()) + self._tree_solve("solve_rhs")
+        body += [] if self.inverse is None else self.inverse.loops()
         return body + _copies(self.blocks, "solve_rhs", self.nv, self.columns, self.column_order)
 
     def emission(self, terms_name):
@@ -139,6 +143,8 @@ class LoopedSolve:
                 "(the RNEA's derivatives as a loop)")
         rnea += ("" if self.feet is None else ", add_feet_force_term_derivatives adds ∂(Jᵀf)/∂q over the "
                  "dof tree's ancestor pairs")
+        rnea += ("" if self.inverse is None else ", ltdl_inverse writes ∂a/∂τ as M⁻¹'s rows Zᵀ D⁻¹ Z (%d "
+                 "multiply-adds where solving Sᵀ's columns would take %d)" % self.inverse.comparison)
         return ("looped solve: %s writes the %d right-hand sides%s%s, ltdl_solve_columns "
                 "solves them all at once, one SIMD row update per factor entry (%d)"
                 % (terms_name, self.width, factor, rnea, self.factor_entries))
@@ -359,18 +365,20 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
                                    contact_columns=_non_zero_columns(Zt_D, robot.nv),
                                    dof_columns=_non_zero_columns(Z, m), column_order=order, places=places)
     else:
-        blocks = tuple((arg.name, arg.cols) for arg in outputs if arg.cols)
+        feet_rows = 3 * len(scene.feet_for(robot))
+        inverse = None if terms.lanes is not None else tau_by_inverse(robot, feet_rows, differentiate.padded)
+        blocks = tuple((arg.name, arg.cols) for arg in outputs
+                       if arg.cols and not (inverse is not None and arg.name == inverse.output))
         from .looped_factor import LoopedFactor  # it imports this module's loops' header
         columns = differentiate.padded(sum(width for _, width in blocks))
         subtract = looped_rnea_derivatives.subtracted_from(robot, terms.outputs, "solve_rhs", columns)
         packed = LoopedFactor(parents=parents, terms=terms.outputs, unpack=False,
                               crba=looped_crba.LoopedCrba(robot=robot, terms=terms.outputs, packed=True))
         feet = looped_feet_forces.on_tree(robot, scene, "solve_rhs", stride=columns) if rnea and scene.feet_for(robot) else None
-        order = (lane_derivatives.column_order(robot, 3 * len(scene.feet_for(robot)))
-                 if terms.lanes is not None else ())
+        order = lane_derivatives.column_order(robot, feet_rows) if terms.lanes is not None else ()
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs,
                             rnea=subtract if rnea else None, factor=packed if factor else None, feet=feet,
-                            column_order=order)
+                            inverse=inverse, column_order=order)
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)
     assert terms.outputs[0].cols == solve.columns
     return solve

@@ -1,12 +1,14 @@
 """The operation counts in a generated header are the operations its code executes: every function of
 a scene is compiled with a scalar type that counts every arithmetic operator, sin, cos and sqrt, and
 one call must match the header's table kind by kind. Run on the looped forms (passes/looped_crba.py,
-looped_factor.py, looped_solve.py, looped_rnea_derivatives.py, looped_feet_forces.py: loops counted by trip count, the traced parts node by node) on a
+looped_factor.py, looped_solve.py, looped_rnea_derivatives.py, looped_feet_forces.py, looped_inverse.py: loops counted by trip count, the traced parts node by node) on a
 branched tree with revolute and prismatic joints and two feet in contact, floating and fixed, on a
-mimic-coupled gripper's looped solve and RNEA derivatives, and on the Mini Cheetah's `full` scene (limb lanes: a lane operation counts four, a sum over the lanes three)."""
+mimic-coupled gripper's looped solve and RNEA derivatives, on a 32-link chain's ∂a/∂τ as M⁻¹'s rows,
+and on the Mini Cheetah's `full` scene (limb lanes: a lane operation counts four, a sum over the lanes three)."""
 import os
 import re
 import subprocess
+import sys
 import tempfile
 import unittest
 from pathlib import Path
@@ -30,6 +32,7 @@ LOOPED_RNEA = ("name: counted\nderivatives: [inverse_dynamics_derivatives, bias_
 LOOPED_SOLVE = ("name: counted\nquantities: [forward_dynamics, contact_dynamics, impulse_dynamics]\n"
                 "derivatives: [forward_dynamics_derivatives, contact_dynamics_derivatives]\nschedule: looped_solve\n")
 COUPLED_LOOPED_SOLVE = "name: counted\nderivatives: [forward_dynamics_derivatives]\nschedule: looped_solve\n"
+CHAIN_INVERSE = "name: counted\nderivatives: [forward_dynamics_derivatives]\nschedule: looped_rnea\n"
 COUPLED_LOOPED_RNEA = ("name: counted\nderivatives: [inverse_dynamics_derivatives, bias_derivatives, gravity_derivatives, "
                        "forward_dynamics_derivatives]\n"
                        "schedule: looped_rnea\n")
@@ -157,6 +160,15 @@ class OperationCountTest(unittest.TestCase):
                          .count("schedule: looped solve"), 1)
         self.assertEqual(self.check(fingers, "floating", COUPLED_LOOPED_RNEA, "mimic_fingers", "counted")
                          .count("schedule: looped RNEA derivatives"), 4)
+
+    def test_tau_columns_as_rows_of_the_inverse_on_a_chain(self):
+        """A 32-link chain: ∂a/∂τ as M⁻¹'s rows Zᵀ D⁻¹ Z (passes/looped_inverse.py), counted by its
+        blocks' trip counts."""
+        with tempfile.TemporaryDirectory() as tmp:
+            urdf = Path(tmp) / "chain32.urdf"
+            subprocess.run([sys.executable, str(ROOT / "tools" / "make_chain.py"), "32", str(urdf)], check=True)
+            text = self.check(urdf, "fixed", CHAIN_INVERSE, "chain32", "counted")
+        self.assertIn("ltdl_inverse<Scalar, 32, 0>", text)
 
     def test_mini_cheetah_full_scene_in_limb_lanes(self):
         self.assertIn("limb lanes", self.check(MINI_CHEETAH, "floating", (SCENES / "full.yaml").read_text(),

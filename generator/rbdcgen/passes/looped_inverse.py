@@ -1,0 +1,87 @@
+"""∂a/∂τ = M⁻¹Sᵀ in forward_dynamics_derivatives' looped form as rows of M⁻¹ = Zᵀ D⁻¹ Z, Z = L⁻ᵀ
+(rbdc_gen::ltdl_inverse), where that takes fewer multiply-adds than solving Sᵀ's columns with the
+others (docs/performance.md, "∂a/∂τ as Zᵀ D⁻¹ Z"): on a deep chain, where every column's solve is
+two passes over all nv² / 2 factor entries, while Z's column c is zero below row c and M⁻¹ is
+symmetric. The right-hand sides then leave Sᵀ out (differentiate.forward_dynamics_derivative_terms)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Optional, Tuple
+
+from ..algorithms.forward_dynamics import dof_ancestors, dof_parents
+
+# rbdc_gen::LTDL_INVERSE_COLUMNS: the columns each of ltdl_inverse's blocks takes at once.
+BLOCK_COLUMNS = 16
+# ltdl_inverse is taken when its multiply-adds are at most this share of the solve's it replaces: its
+# blocks carry two vector runs where the solve's carry up to twelve (on chain100, AMD EPYC Zen 4: 64 %
+# of the machine's multiply-add peak against 92 %).
+PAYS_BELOW = 2 / 3
+
+
+@dataclass(frozen=True)
+class LoopedInverse:
+    """ltdl_inverse writing M⁻¹'s rows first … nv − 1 into `output` (column-major nv × (nv − first):
+    M⁻¹Sᵀ when Sᵀ selects those dofs)."""
+    parents: Tuple[int, ...]
+    first: int
+    comparison: Tuple[int, int] = (0, 0)  # (its multiply-adds, the solve's for Sᵀ's columns), for the banner
+    simd_doubles: int = 4  # columns per vector instruction the cost model assumes (looped_solve.SIMD_DOUBLES)
+    output: str = "da_dtau"
+    headers = ()  # rbdc_gen/solve.hpp, the looped solve's
+
+    def _blocks(self):
+        """Per block of BLOCK_COLUMNS columns: the rows before its end (the rows its passes run over)."""
+        n = len(self.parents)
+        return [min(c0 + BLOCK_COLUMNS, n) for c0 in range(0, n, BLOCK_COLUMNS)]
+
+    def _counts(self):
+        """(multiply-adds of Z's L⁻ᵀ pass, multiply-adds of the products, coefficients) as the loops
+        run them: per block, each row before its end takes its descendants before the end (one
+        multiply-add per column), and M⁻¹'s row a one coefficient Z(k, a) D⁻¹(k) and one product per
+        column for a and each of a's ancestors k."""
+        before = [0]  # before[r]: the (dof, ancestor) pairs among the first r dofs
+        for i in range(len(self.parents)):
+            before.append(before[-1] + len(dof_ancestors(self.parents, i)))
+        up = sum(before[rows] for rows in self._blocks())  # (i, ancestor) pairs both before the block's end
+        products = coefficients = sum(before[rows] + rows for rows in self._blocks())
+        return up * BLOCK_COLUMNS, products * BLOCK_COLUMNS, coefficients
+
+    def multiply_adds(self):
+        up, products, _ = self._counts()
+        return up + products
+
+    def operations(self):
+        """The first product of each of M⁻¹'s rows (and of the second sum, for a row with ancestors)
+        is a multiplication only; the two sums meet in one addition."""
+        up, products, coefficients = self._counts()
+        rows = sum(self._blocks())
+        return {"mul": up + products + coefficients, "add": up + products - rows * BLOCK_COLUMNS}
+
+    def instructions(self):
+        """A load and a multiply-add per simd_doubles columns, as the looped solve's row updates."""
+        return 2 * self.multiply_adds() // self.simd_doubles
+
+    def cost(self):
+        return self.instructions()
+
+    def loops(self, L="solve_L", D_inv="solve_D_inv"):
+        return [f"ltdl_inverse<Scalar, {len(self.parents)}, {self.first}>(dof_tree, {L}, {D_inv}, {self.output});"]
+
+
+def _solve_multiply_adds(parents, columns):
+    return columns * 2 * sum(len(dof_ancestors(parents, i)) for i in range(len(parents)))
+
+
+def tau_by_inverse(robot, feet_rows, padded) -> Optional[LoopedInverse]:
+    """The LoopedInverse for `robot`'s ∂a/∂τ where it pays (else None): Sᵀ must select the last dofs
+    in order, one per joint (no couplings), and its multiply-adds be at most PAYS_BELOW of the solve's
+    for Sᵀ's columns (`padded`: the right-hand sides' row length for a count of columns)."""
+    nv, nj = robot.nv, robot.n_joints
+    first = nv - nj
+    if robot.couplings or nj == 0 or [robot.joints[i].v_index for i in range(1, robot.nb)] != list(range(first, nv)):
+        return None
+    parents = tuple(dof_parents(robot))
+    own = LoopedInverse(parents=parents, first=first).multiply_adds()
+    saved = _solve_multiply_adds(parents, padded(2 * nv + nj + feet_rows) - padded(2 * nv + feet_rows))
+    return LoopedInverse(parents=parents, first=first, comparison=(own, saved)) if own <= PAYS_BELOW * saved else None
