@@ -11,6 +11,8 @@
 // a loop").
 #pragma once
 
+#include <type_traits>
+
 #include "rbdc_gen/support.hpp"
 
 namespace rbdc_gen {
@@ -274,40 +276,70 @@ RBDC_HOST_DEVICE inline void ltdl_inverse_up(const DofTree<NV, NE>& tree, const 
   if constexpr (C1 < NC) ltdl_inverse_up<Scalar, NV, NC, NE, C1>(tree, L, D_inv, Z);
 }
 
-/// ltdl_inverse's M⁻¹ over Z in place, last block first (a block's sums read Z(k, a) for a before it,
-/// still Z there): M⁻¹'s rows before the block's end over its columns, last row first (row a's sum
-/// reads its ancestors' rows, before it).
-template <class Scalar, int NV, int NC, int NE, int C0 = NC - LTDL_INVERSE_COLUMNS>
-RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_inverse_products(const DofTree<NV, NE>& tree, const Scalar* D_inv,
-                                                                  Scalar* Z) noexcept {
+/// Calls f(std::integral_constant<int, B>{}) with B = size, 1 to 4: the size of a panel of pivots
+/// or of a tile of rows along a path as a template argument.
+template <class F>
+RBDC_HOST_DEVICE inline void with_path_size(int size, F&& f) noexcept {
+  switch (size) {
+    case 1: f(std::integral_constant<int, 1>{}); break;
+    case 2: f(std::integral_constant<int, 2>{}); break;
+    case 3: f(std::integral_constant<int, 3>{}); break;
+    default: f(std::integral_constant<int, 4>{}); break;
+  }
+}
+
+/// At most this many dofs, k, k − 1, …, each the parent of the one before, form a path for
+/// ltdl_factor's panels and ltdl_inverse's tiles of rows (with_path_size dispatches 1 to 4).
+constexpr int LTDL_PATH = 4;
+
+/// How many of the dofs k, k − 1, … down to dof 0 form a path (each the parent of the one before),
+/// at most LTDL_PATH; `parent_of(i)`: dof i's parent.
+template <class ParentOf>
+RBDC_HOST_DEVICE inline int path_size(int k, ParentOf parent_of) noexcept {
+  int size = 1;
+  while (size < LTDL_PATH && k - size >= 0 && parent_of(k - size + 1) == k - size) ++size;
+  return size;
+}
+
+/// ltdl_inverse's rows a, a − 1, …, a − T + 1 of M⁻¹ (a path) over the block from C0: one sweep over
+/// a and its ancestors k, each row's sum Σ_k Z(k, r) D⁻¹(k) Z(k, ·) (Z(k, r) is zero for the k after
+/// r), T rows of sums in registers that share each load of Z's row k.
+template <class Scalar, int NV, int NC, int NE, int C0, int T>
+RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_inverse_rows(const DofTree<NV, NE>& tree, const Scalar* D_inv,
+                                                              Scalar* Z, int a) noexcept {
   using R = ColumnRun<Scalar, NC>;
-  constexpr int W = R::size, C1 = C0 + LTDL_INVERSE_COLUMNS, NR = LTDL_INVERSE_COLUMNS / W;
-  for (int a = (C1 < NV ? C1 : NV) - 1; a >= 0; --a) {  // M⁻¹(a, ·) = Σ_k Z(k, a) D⁻¹(k) Z(k, ·), k = a and a's ancestors
-    // two sums (a and every other ancestor; the others): twice the multiply-adds in flight
-    typename R::type even[NR], odd[NR];
-    const int from = tree.first[a], to = tree.first[a + 1];
-    const Scalar s = Z[a * NC + a] * D_inv[a];
-    for (int c = 0; c < NR; ++c) even[c] = s * R::load(Z + a * NC + C0 + c * W);
-    if (to > from) {
-      const int k = tree.ancestor[from];
-      const Scalar t = Z[k * NC + a] * D_inv[k];
-      for (int c = 0; c < NR; ++c) odd[c] = t * R::load(Z + k * NC + C0 + c * W);
+  constexpr int W = R::size, NR = LTDL_INVERSE_COLUMNS / W;
+  typename R::type sum[T][NR];
+  Scalar s[T];
+  for (int r = 0; r < T; ++r) s[r] = Z[a * NC + a - r] * D_inv[a];
+  for (int c = 0; c < NR; ++c) {
+    const auto x = R::load(Z + a * NC + C0 + c * W);
+    for (int r = 0; r < T; ++r) sum[r][c] = s[r] * x;
+  }
+  for (int e = tree.first[a]; e < tree.first[a + 1]; ++e) {
+    const Scalar* z = Z + tree.ancestor[e] * NC;
+    for (int r = 0; r < T; ++r) s[r] = z[a - r] * D_inv[tree.ancestor[e]];
+    for (int c = 0; c < NR; ++c) {
+      const auto x = R::load(z + C0 + c * W);
+      for (int r = 0; r < T; ++r) sum[r][c] += s[r] * x;
     }
-    int e = from + 1;
-    for (; e + 1 < to; e += 2) {
-      const int k = tree.ancestor[e], l = tree.ancestor[e + 1];
-      const Scalar t = Z[k * NC + a] * D_inv[k], u = Z[l * NC + a] * D_inv[l];
-      for (int c = 0; c < NR; ++c) {
-        even[c] += t * R::load(Z + k * NC + C0 + c * W);
-        odd[c] += u * R::load(Z + l * NC + C0 + c * W);
-      }
-    }
-    if (e < to) {
-      const int k = tree.ancestor[e];
-      const Scalar t = Z[k * NC + a] * D_inv[k];
-      for (int c = 0; c < NR; ++c) even[c] += t * R::load(Z + k * NC + C0 + c * W);
-    }
-    for (int c = 0; c < NR; ++c) R::store(Z + a * NC + C0 + c * W, to > from ? even[c] + odd[c] : even[c]);
+  }
+  for (int r = 0; r < T; ++r)
+    for (int c = 0; c < NR; ++c) R::store(Z + (a - r) * NC + C0 + c * W, sum[r][c]);
+}
+
+/// ltdl_inverse's M⁻¹ over Z in place, last block first (a block's sums read Z(k, a) for a before it,
+/// still Z there): M⁻¹'s rows before the block's end over its columns, last rows first, in tiles of
+/// up to LTDL_PATH rows along a path (a row's sum reads its ancestors' rows, before the tile).
+template <class Scalar, int NV, int NC, int NE, int C0 = NC - LTDL_INVERSE_COLUMNS>
+RBDC_HOST_DEVICE inline void ltdl_inverse_products(const DofTree<NV, NE>& tree, const Scalar* D_inv,
+                                                   Scalar* Z) noexcept {
+  constexpr int C1 = C0 + LTDL_INVERSE_COLUMNS;
+  const auto parent_of = [&](int i) { return tree.first[i] < tree.first[i + 1] ? tree.ancestor[tree.first[i]] : -1; };
+  for (int a = (C1 < NV ? C1 : NV) - 1; a >= 0;) {
+    const int size = path_size(a, parent_of);
+    with_path_size(size, [&](auto T) { ltdl_inverse_rows<Scalar, NV, NC, NE, C0, decltype(T)::value>(tree, D_inv, Z, a); });
+    a -= size;
   }
   if constexpr (C0 > 0) ltdl_inverse_products<Scalar, NV, NC, NE, C0 - LTDL_INVERSE_COLUMNS>(tree, D_inv, Z);
 }
@@ -568,12 +600,10 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void subtract_scaled(Scalar* out, const S
   }
 }
 
-/// At most this many pivots of ltdl_factor update their common ancestors' rows together (a panel:
-/// dofs k, k − 1, …, each the parent of the one before). One pivot at a time, every update loaded and
-/// stored a whole ancestor row: a 100-dof chain's factor took 33 µs (clang 14) for its 166 650
-/// multiply-adds; in panels of 4, 20 µs (g++ 12: 32 → 17 µs); panels of 6 or 8 were no faster.
-constexpr int LTDL_PANEL = 4;
-static_assert(LTDL_PANEL == 4, "ltdl_factor dispatches panels of 1 to 4 pivots");
+// ltdl_factor's pivots update their common ancestors' rows in panels of up to LTDL_PATH. One pivot at
+// a time, every update loaded and stored a whole ancestor row: a 100-dof chain's factor took 33 µs
+// (clang 14) for its 166 650 multiply-adds; in panels of 4, 20 µs (g++ 12: 32 → 17 µs); panels of 6
+// or 8 were no faster.
 
 /// ltdl_factor's update by the B pivots `panel` (each the parent of the one before, the rows of all
 /// final and their own updates within the panel done; inverse their inverse pivots): each ancestor i
@@ -604,7 +634,7 @@ RBDC_HOST_DEVICE inline void ltdl_update_ancestors(const int (&parent)[NV], cons
 /// on entry L holds M's entries at each dof's ancestors (dof by dof, nearest ancestor first, the
 /// layout of ltdl_solve_columns) and D M's diagonal; on exit L the factor's entries, D the pivots and
 /// D_inv their inverses. Row i's entries are the tail of row k's after ancestor i, so each update of
-/// an ancestor's row is one contiguous multiply-add. Leaves first, in panels of up to LTDL_PANEL
+/// an ancestor's row is one contiguous multiply-add. Leaves first, in panels of up to LTDL_PATH
 /// pivots along a path: each pivot first updates the panel's rows above it, then the panel updates
 /// the ancestors above it together (ltdl_update_ancestors).
 template <class Scalar, int NV>
@@ -618,13 +648,10 @@ RBDC_HOST_DEVICE inline void ltdl_factor(const int (&parent)[NV], Scalar* L, Sca
     entries += depth[i];
   }
   for (int k = NV - 1; k >= 0;) {  // dof k's pivot is final once its descendants (all after it) are done
-    int panel[LTDL_PANEL] = {k};
-    int size = 1;
-    while (size < LTDL_PANEL && panel[size - 1] > 0 && parent[panel[size - 1]] == panel[size - 1] - 1) {
-      panel[size] = panel[size - 1] - 1;
-      ++size;
-    }
-    Scalar inverse[LTDL_PANEL];
+    const int size = path_size(k, [&](int i) { return parent[i]; });
+    int panel[LTDL_PATH];
+    for (int b = 0; b < size; ++b) panel[b] = k - b;
+    Scalar inverse[LTDL_PATH];
     for (int b = 0; b < size; ++b) {
       inverse[b] = Scalar(1) / D[panel[b]];
       D_inv[panel[b]] = inverse[b];
@@ -638,12 +665,9 @@ RBDC_HOST_DEVICE inline void ltdl_factor(const int (&parent)[NV], Scalar* L, Sca
         row[p] = ratio[0];
       }
     }
-    switch (size) {
-      case 1: ltdl_update_ancestors<Scalar, 1>(parent, first, depth, panel, inverse, L, D); break;
-      case 2: ltdl_update_ancestors<Scalar, 2>(parent, first, depth, panel, inverse, L, D); break;
-      case 3: ltdl_update_ancestors<Scalar, 3>(parent, first, depth, panel, inverse, L, D); break;
-      default: ltdl_update_ancestors<Scalar, LTDL_PANEL>(parent, first, depth, panel, inverse, L, D); break;
-    }
+    with_path_size(size, [&](auto B) {
+      ltdl_update_ancestors<Scalar, decltype(B)::value>(parent, first, depth, panel, inverse, L, D);
+    });
     k -= size;
   }
 }

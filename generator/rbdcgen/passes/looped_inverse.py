@@ -13,10 +13,13 @@ from ..algorithms.forward_dynamics import dof_ancestors, dof_parents
 
 # rbdc_gen::LTDL_INVERSE_COLUMNS: the columns each of ltdl_inverse's blocks takes at once.
 BLOCK_COLUMNS = 16
+# rbdc_gen::LTDL_PATH: the most rows of M⁻¹ one sweep sums (rows along a path).
+PATH = 4
 # ltdl_inverse is taken when its multiply-adds are at most this share of the solve's it replaces: its
-# blocks carry two vector runs where the solve's carry up to twelve (on chain100, AMD EPYC Zen 4: 64 %
-# of the machine's multiply-add peak against 92 %).
-PAYS_BELOW = 2 / 3
+# blocks carry two vector runs where the solve's carry up to twelve, so each of its multiply-adds costs
+# more (chain100's M⁻¹, AMD EPYC Zen 4, clang 14: 543 200 in 28.2 µs, the solve of the identity's
+# 1 029 600 in 38.8 µs; break-even at 0.73).
+PAYS_BELOW = 0.7
 
 
 @dataclass(frozen=True)
@@ -35,28 +38,39 @@ class LoopedInverse:
         n = len(self.parents)
         return [min(c0 + BLOCK_COLUMNS, n) for c0 in range(0, n, BLOCK_COLUMNS)]
 
+    def _tiles(self, rows):
+        """M⁻¹'s rows before `rows` as ltdl_inverse sums them, last first: (top row, size), each tile
+        up to PATH rows along a path (rbdc_gen::path_size)."""
+        a = rows - 1
+        while a >= 0:
+            size = 1
+            while size < PATH and a - size >= 0 and self.parents[a - size + 1] == a - size:
+                size += 1
+            yield a, size
+            a -= size
+
     def _counts(self):
-        """(multiply-adds of Z's L⁻ᵀ pass, multiply-adds of the products, coefficients) as the loops
-        run them: per block, each row before its end takes its descendants before the end (one
-        multiply-add per column), and M⁻¹'s row a one coefficient Z(k, a) D⁻¹(k) and one product per
-        column for a and each of a's ancestors k."""
-        before = [0]  # before[r]: the (dof, ancestor) pairs among the first r dofs
-        for i in range(len(self.parents)):
-            before.append(before[-1] + len(dof_ancestors(self.parents, i)))
-        up = sum(before[rows] for rows in self._blocks())  # (i, ancestor) pairs both before the block's end
-        products = coefficients = sum(before[rows] + rows for rows in self._blocks())
-        return up * BLOCK_COLUMNS, products * BLOCK_COLUMNS, coefficients
+        """(multiply-adds of Z's L⁻ᵀ pass, multiply-adds of the products, coefficients, products that
+        start a sum) as the loops run them: per block, each row before its end takes its descendants
+        before the end (one multiply-add per column); a tile of rows one coefficient Z(k, r) D⁻¹(k)
+        per row and one product per row and column for its top row and each of the top's ancestors k."""
+        ancestors = [len(dof_ancestors(self.parents, i)) for i in range(len(self.parents))]
+        up = products = starts = 0
+        for rows in self._blocks():
+            up += sum(ancestors[:rows])  # (i, ancestor) pairs both before the block's end
+            for top, size in self._tiles(rows):
+                products += size * (ancestors[top] + 1)
+                starts += size
+        return up * BLOCK_COLUMNS, products * BLOCK_COLUMNS, products, starts * BLOCK_COLUMNS
 
     def multiply_adds(self):
-        up, products, _ = self._counts()
+        up, products, _, _ = self._counts()
         return up + products
 
     def operations(self):
-        """The first product of each of M⁻¹'s rows (and of the second sum, for a row with ancestors)
-        is a multiplication only; the two sums meet in one addition."""
-        up, products, coefficients = self._counts()
-        rows = sum(self._blocks())
-        return {"mul": up + products + coefficients, "add": up + products - rows * BLOCK_COLUMNS}
+        """A sum's first product is a multiplication only."""
+        up, products, coefficients, starts = self._counts()
+        return {"mul": up + products + coefficients, "add": up + products - starts}
 
     def instructions(self):
         """A load and a multiply-add per simd_doubles columns, as the looped solve's row updates."""

@@ -12,7 +12,7 @@ from numeric_check import DATA, chain
 from rbdcgen.frontend.ir import load_ir
 from rbdcgen.frontend.scene import scene_from_dict
 from rbdcgen.passes import differentiate, looped_solve
-from rbdcgen.passes.looped_inverse import BLOCK_COLUMNS, PAYS_BELOW, LoopedInverse, tau_by_inverse
+from rbdcgen.passes.looped_inverse import PAYS_BELOW, LoopedInverse, tau_by_inverse
 
 FIXED = load_ir(os.path.join(DATA, "tiny_fixed.json"))
 SCENE = scene_from_dict({"name": "x", "derivatives": ["forward_dynamics_derivatives"]})
@@ -27,13 +27,13 @@ class LoopedInverseTest(unittest.TestCase):
         self.assertIsNone(tau_by_inverse(chain(12), 3, differentiate.padded))
         self.assertIsNone(tau_by_inverse(FIXED, 3 * len(FIXED.feet), differentiate.padded))
 
-    def test_multiply_adds_on_a_chain_in_closed_form(self):
-        """Per block ending at r: the L⁻ᵀ pass r(r − 1)/2 entries, the products r(r + 1)/2 terms, each
-        over the block's columns."""
-        n = 40
-        inverse = LoopedInverse(parents=tuple(range(-1, n - 1)), first=0)
-        ends = [min(c0 + BLOCK_COLUMNS, n) for c0 in range(0, n, BLOCK_COLUMNS)]
-        self.assertEqual(inverse.multiply_adds(), BLOCK_COLUMNS * sum(r * r for r in ends))
+    def test_rows_are_summed_in_tiles_along_paths(self):
+        """rbdc_gen::path_size: up to four rows, each the parent of the one before; a branch ends a tile."""
+        chain_tiles = list(LoopedInverse(parents=tuple(range(-1, 9)), first=0)._tiles(10))
+        self.assertEqual(chain_tiles, [(9, 4), (5, 4), (1, 2)])
+        branched = LoopedInverse(parents=(-1, 0, 1, 0, 3, 4), first=0)  # dofs 1-2 and 3-5 below dof 0
+        self.assertEqual(list(branched._tiles(6)), [(5, 3), (2, 3)])
+        self.assertEqual(list(branched._tiles(3)), [(2, 3)])
 
     def test_the_looped_form_solves_without_the_selection(self):
         robot = chain(32)
