@@ -125,17 +125,20 @@ RBDC_HOST_DEVICE inline void in_register(T& x) noexcept {
 enum class Passes { both, up, down };  // up: B ← L⁻ᵀB, leaves to root; down: B ← L⁻¹D⁻¹B, root to leaves
 
 /// The first of the descendants below_dof[from, to) (deepest first, so in decreasing order) under
-/// `rows`: a binary search, as the ones skipped are zero rows.
-template <int NV, int NE>
-RBDC_HOST_DEVICE inline int below_rows(const DofTree<NV, NE>& tree, int from, int to, int rows) noexcept {
-  if (rows >= NV) return from;
-  while (from < to) {
-    const int middle = (from + to) / 2;
-    if (tree.below_dof[middle] >= rows)
-      from = middle + 1;
-    else
-      to = middle;
+/// Rows: a binary search, as the ones skipped are zero rows.
+template <int Rows, int NV, int NE>
+RBDC_HOST_DEVICE inline int below_rows(const DofTree<NV, NE>& tree, int from, int to) noexcept {
+  if constexpr (Rows < NV) {
+    while (from < to) {
+      const int middle = (from + to) / 2;
+      if (tree.below_dof[middle] >= Rows)
+        from = middle + 1;
+      else
+        to = middle;
+    }
   }
+  (void)tree;
+  (void)to;
   return from;
 }
 
@@ -146,28 +149,27 @@ RBDC_HOST_DEVICE inline int below_rows(const DofTree<NV, NE>& tree, int from, in
 /// parent or child, both rows are summed in one sweep that loads each row they share once: a chain's
 /// solve does half the loads (100 dofs, 304 columns: 97 → 62 µs with clang 14, 98 → 66 µs with g++
 /// 12; Talos 6.7 → 4.8 µs, one driver, AMD EPYC, bitwise the same).
-template <class Scalar, int NV, int NC, int NE, int NR, Passes P>
+template <class Scalar, int NV, int NC, int NE, int NR, Passes P, int Rows = NV>
 RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_column_block(const DofTree<NV, NE>& tree, const Scalar* L,
-                                                                    const Scalar* D_inv, Scalar* B, int c0,
-                                                                    int rows = NV) noexcept {
+                                                                    const Scalar* D_inv, Scalar* B, int c0) noexcept {
   using R = ColumnRun<Scalar, NC>;
   constexpr int W = R::size;
   typename R::type row[NR], pair[NR];
-  // rows: the block's rows from `rows` on are zero, and L⁻ᵀ keeps them so (it sums into ancestors only)
-  for (int j = P == Passes::down ? -1 : rows - 1; j >= 0; --j) {  // B ← L⁻ᵀ B, leaves to root: row j from its descendants'
+  // Rows: the block's rows from Rows on are zero, and L⁻ᵀ keeps them so (it sums into ancestors only)
+  for (int j = P == Passes::down ? -1 : Rows - 1; j >= 0; --j) {  // B ← L⁻ᵀ B, leaves to root: row j from its descendants'
     Scalar* row_j = B + j * NC + c0;
     for (int c = 0; c < NR; ++c) row[c] = R::load(row_j + c * W);
     if (tree.pair_with_parent[j]) {
       Scalar* row_p = row_j - NC;
       const int shared = tree.below_first[j + 1] - tree.below_first[j] + 1;  // j's descendants and j
       for (int c = 0; c < NR; ++c) pair[c] = R::load(row_p + c * W);
-      for (int e = below_rows(tree, tree.below_first[j - 1], tree.below_first[j] - shared, rows);
+      for (int e = below_rows<Rows>(tree, tree.below_first[j - 1], tree.below_first[j] - shared);
            e < tree.below_first[j] - shared; ++e) {  // the parent's others
         const Scalar* row_i = B + tree.below_dof[e] * NC + c0;
         const Scalar l = L[tree.below_entry[e]];
         for (int c = 0; c < NR; ++c) pair[c] -= l * R::load(row_i + c * W);
       }
-      for (int e = below_rows(tree, tree.below_first[j], tree.below_first[j + 1], rows); e < tree.below_first[j + 1]; ++e) {
+      for (int e = below_rows<Rows>(tree, tree.below_first[j], tree.below_first[j + 1]); e < tree.below_first[j + 1]; ++e) {
         const Scalar* row_i = B + tree.below_dof[e] * NC + c0;
         const Scalar l = L[tree.below_entry[e]], l_parent = L[tree.below_entry[e] + 1];  // parent: next ancestor
         for (int c = 0; c < NR; ++c) {
@@ -183,7 +185,7 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_column_block(const DofTre
       --j;
       continue;
     }
-    for (int e = below_rows(tree, tree.below_first[j], tree.below_first[j + 1], rows); e < tree.below_first[j + 1]; ++e) {
+    for (int e = below_rows<Rows>(tree, tree.below_first[j], tree.below_first[j + 1]); e < tree.below_first[j + 1]; ++e) {
       const Scalar* row_i = B + tree.below_dof[e] * NC + c0;
       const Scalar l = L[tree.below_entry[e]];
       for (int c = 0; c < NR; ++c) row[c] -= l * R::load(row_i + c * W);
@@ -247,17 +249,18 @@ constexpr int ltdl_block_runs() {
 /// tree, L its factor entries in the packed layout of `tree`, D_inv the inverse pivots: in blocks
 /// of nearly equal width, at most ltdl_block_runs() runs each (columns are independent); P: only one
 /// half of the solve.
-template <class Scalar, int NV, int NC, Passes P = Passes::both, int NE, int Done = 0, int End = NC / ColumnRun<Scalar, NC>::size>
+template <class Scalar, int NV, int NC, Passes P = Passes::both, int NE, int Done = 0,
+          int End = NC / ColumnRun<Scalar, NC>::size, int Rows = NV>
 RBDC_HOST_DEVICE inline void ltdl_solve_columns(const DofTree<NV, NE>& tree, const Scalar* L, const Scalar* D_inv,
-                                                Scalar* B, int rows = NV) noexcept {
+                                                Scalar* B) noexcept {
   constexpr int W = ColumnRun<Scalar, NC>::size;
   constexpr int left = End - Done;
   if constexpr (left > 0) {
     constexpr int most = ltdl_block_runs<Scalar, NV, NC>();
     constexpr int blocks = (left + most - 1) / most;
     constexpr int runs = (left + blocks - 1) / blocks;
-    ltdl_solve_column_block<Scalar, NV, NC, NE, runs, P>(tree, L, D_inv, B, Done * W, rows);
-    ltdl_solve_columns<Scalar, NV, NC, P, NE, Done + runs, End>(tree, L, D_inv, B, rows);
+    ltdl_solve_column_block<Scalar, NV, NC, NE, runs, P, Rows>(tree, L, D_inv, B, Done * W);
+    ltdl_solve_columns<Scalar, NV, NC, P, NE, Done + runs, End, Rows>(tree, L, D_inv, B);
   }
 }
 
@@ -272,7 +275,7 @@ RBDC_HOST_DEVICE inline void ltdl_inverse_up(const DofTree<NV, NE>& tree, const 
                                              Scalar* Z) noexcept {
   constexpr int W = ColumnRun<Scalar, NC>::size, C1 = C0 + LTDL_INVERSE_COLUMNS;
   static_assert(LTDL_INVERSE_COLUMNS % W == 0, "a block is whole runs");
-  ltdl_solve_columns<Scalar, NV, NC, Passes::up, NE, C0 / W, C1 / W>(tree, L, D_inv, Z, C1 < NV ? C1 : NV);
+  ltdl_solve_columns<Scalar, NV, NC, Passes::up, NE, C0 / W, C1 / W, (C1 < NV ? C1 : NV)>(tree, L, D_inv, Z);
   if constexpr (C1 < NC) ltdl_inverse_up<Scalar, NV, NC, NE, C1>(tree, L, D_inv, Z);
 }
 
