@@ -87,10 +87,10 @@ def _solve_multiply_adds(parents, columns):
     return columns * 2 * sum(len(dof_ancestors(parents, i)) for i in range(len(parents)))
 
 
-def tau_by_inverse(robot, feet_rows, padded) -> Optional[LoopedInverse]:
-    """The LoopedInverse for `robot`'s ∂a/∂τ where it pays (else None): Sᵀ must select the last dofs
-    in order, one per joint (no couplings), and its multiply-adds be at most PAYS_BELOW of the solve's
-    for Sᵀ's columns (`padded`: the right-hand sides' row length for a count of columns)."""
+def compared(robot, feet_rows, padded) -> Optional[LoopedInverse]:
+    """`robot`'s ∂a/∂τ as M⁻¹'s rows with its `comparison`, where it is possible (else None): Sᵀ must
+    select the last dofs in order, one per joint (no couplings). `padded`: the right-hand sides' row
+    length for a count of columns."""
     nv, nj = robot.nv, robot.n_joints
     first = nv - nj
     if robot.couplings or nj == 0 or [robot.joints[i].v_index for i in range(1, robot.nb)] != list(range(first, nv)):
@@ -98,4 +98,14 @@ def tau_by_inverse(robot, feet_rows, padded) -> Optional[LoopedInverse]:
     parents = tuple(dof_parents(robot))
     own = LoopedInverse(parents=parents, first=first).multiply_adds()
     saved = _solve_multiply_adds(parents, padded(2 * nv + nj + feet_rows) - padded(2 * nv + feet_rows))
-    return LoopedInverse(parents=parents, first=first, comparison=(own, saved)) if own <= PAYS_BELOW * saved else None
+    return LoopedInverse(parents=parents, first=first, comparison=(own, saved))
+
+
+def tau_by_inverse(robot, feet_rows, padded) -> Optional[LoopedInverse]:
+    """compared's LoopedInverse where it pays: its multiply-adds at most PAYS_BELOW of the solve's for
+    Sᵀ's columns."""
+    inverse = compared(robot, feet_rows, padded)
+    if inverse is None:
+        return None
+    own, saved = inverse.comparison
+    return inverse if own <= PAYS_BELOW * saved else None

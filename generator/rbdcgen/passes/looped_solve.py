@@ -18,8 +18,9 @@ from typing import Optional, Tuple
 from ..algorithms.contact_dynamics import PROXIMAL_STEPS
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
 from ..graph import expr as ex
-from . import differentiate, lane_contact_derivatives, lane_derivatives, looped_crba, looped_feet_forces, looped_rnea_derivatives
-from .looped_inverse import LoopedInverse, tau_by_inverse
+from . import (differentiate, lane_contact_derivatives, lane_derivatives, looped_crba, looped_feet_forces, looped_inverse,
+               looped_rnea_derivatives)
+from .looped_inverse import LoopedInverse
 from .looped_rnea_derivatives import LoopedRneaDerivatives
 from .trace import Argument, with_loop
 
@@ -53,6 +54,7 @@ class LoopedSolve:
     factor: object = None
     feet: Optional[looped_feet_forces.LoopedFeetForces] = None
     inverse: Optional[LoopedInverse] = None
+    inverse_considered: Tuple[int, ...] = ()  # where ∂a/∂τ could be M⁻¹'s rows: (their multiply-adds, the solve's)
     # per terms output whose entries a lane function keeps elsewhere than row-major (lane_places): where
     # each row-major entry is (None: zero, not stored)
     places: Tuple[Tuple[str, Tuple[Optional[int], ...]], ...] = ()
@@ -143,8 +145,12 @@ class LoopedSolve:
                 "(the RNEA's derivatives as a loop)")
         rnea += ("" if self.feet is None else ", add_feet_force_term_derivatives adds ∂(Jᵀf)/∂q over the "
                  "dof tree's ancestor pairs")
-        rnea += ("" if self.inverse is None else ", ltdl_inverse writes ∂a/∂τ as M⁻¹'s rows Zᵀ D⁻¹ Z (%d "
-                 "multiply-adds where solving Sᵀ's columns would take %d)" % self.inverse.comparison)
+        if self.inverse is not None:
+            rnea += (", ltdl_inverse writes ∂a/∂τ as M⁻¹'s rows Zᵀ D⁻¹ Z (%d multiply-adds where solving "
+                     "Sᵀ's columns would take %d)" % self.inverse.comparison)
+        elif self.inverse_considered:
+            rnea += (", ∂a/∂τ solved with the rest (as M⁻¹'s rows Zᵀ D⁻¹ Z, %d multiply-adds against the "
+                     "solve's %d for Sᵀ's columns)" % self.inverse_considered)
         return ("looped solve: %s writes the %d right-hand sides%s%s, ltdl_solve_columns "
                 "solves them all at once, one SIMD row update per factor entry (%d)"
                 % (terms_name, self.width, factor, rnea, self.factor_entries))
@@ -366,7 +372,8 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
                                    dof_columns=_non_zero_columns(Z, m), column_order=order, places=places)
     else:
         feet_rows = 3 * len(scene.feet_for(robot))
-        inverse = None if terms.lanes is not None else tau_by_inverse(robot, feet_rows, differentiate.padded)
+        considered = None if terms.lanes is not None else looped_inverse.compared(robot, feet_rows, differentiate.padded)
+        inverse = None if terms.lanes is not None else looped_inverse.tau_by_inverse(robot, feet_rows, differentiate.padded)
         blocks = tuple((arg.name, arg.cols) for arg in outputs
                        if arg.cols and not (inverse is not None and arg.name == inverse.output))
         from .looped_factor import LoopedFactor  # it imports this module's loops' header
@@ -378,7 +385,8 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
         order = lane_derivatives.column_order(robot, feet_rows) if terms.lanes is not None else ()
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs,
                             rnea=subtract if rnea else None, factor=packed if factor else None, feet=feet,
-                            inverse=inverse, column_order=order)
+                            inverse=inverse, inverse_considered=considered and considered.comparison,
+                            column_order=order)
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)
     assert terms.outputs[0].cols == solve.columns
     return solve

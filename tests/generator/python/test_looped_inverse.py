@@ -1,8 +1,9 @@
 """∂a/∂τ as M⁻¹'s rows Zᵀ D⁻¹ Z (passes/looped_inverse.py): taken on a long chain, where it halves the
 multiply-adds of Sᵀ's columns, and not on a short chain or a small tree; when taken, the looped
 forward_dynamics_derivatives' right-hand sides leave Sᵀ out and its loops write da_dtau by
-ltdl_inverse. Its operation count against the C++ loops: product/test_operation_counts.py; its values
-against the runtime: generator_verify_chain_inverse (tests/generator/CMakeLists.txt)."""
+ltdl_inverse; when not, the banner gives both counts. Its operation count against the C++ loops:
+product/test_operation_counts.py; its values against the runtime: generator_verify_chain_inverse
+(tests/generator/CMakeLists.txt)."""
 
 import os
 import unittest
@@ -43,6 +44,14 @@ class LoopedInverseTest(unittest.TestCase):
         self.assertNotIn("da_dtau", dict(function.solve.blocks))
         self.assertIn("ltdl_inverse<Scalar, 32, 0>(dof_tree, solve_L, solve_D_inv, da_dtau);", function.solve.loops())
         self.assertIn("ltdl_inverse", function.solve.emission("terms"))
+
+    def test_the_banner_says_the_comparison_where_the_solve_is_kept(self):
+        function = looped_solve.looped_function(chain(12), SCENE, "forward_dynamics_derivatives")
+        self.assertIsNone(function.solve.inverse)
+        own, solve = function.solve.inverse_considered
+        self.assertGreater(own, PAYS_BELOW * solve)
+        self.assertIn("∂a/∂τ solved with the rest (as M⁻¹'s rows Zᵀ D⁻¹ Z, %d multiply-adds" % own,
+                      function.solve.emission("terms"))
 
 
 if __name__ == "__main__":

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_9f47ba53fd2e {
+namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_449c60eec1b0 {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -1460,8 +1460,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 ///   instructions (cost 6459), scalar tree 6236 (cost 10206), looped RNEA derivatives 6520
 ///   (cost 8678), looped CRBA 8660 (cost 11960)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 24 right-hand sides and
-///   the factor, ltdl_solve_columns solves them all at once, one SIMD row update per factor
-///   entry (21)
+///   the factor, ∂a/∂τ solved with the rest (as M⁻¹'s rows Zᵀ D⁻¹ Z, 928 multiply-adds
+///   against the solve's 0 for Sᵀ's columns), ltdl_solve_columns solves them all at once,
+///   one SIMD row update per factor entry (21)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* da_df) noexcept {
   alignas(64) Scalar solve_rhs[168];
@@ -1474,4 +1475,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 7, 24>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_9f47ba53fd2e
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_449c60eec1b0
