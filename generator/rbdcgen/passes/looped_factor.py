@@ -4,7 +4,7 @@ The sparse LᵀDL factorisation of M costs Σ_k Σ_{i ⊂ ancestors(k)} (depth(i
 a few hundred on a legged robot, where its unrolled code folds and schedules well, but O(n³) on a
 chain (a 100-body chain: 9.6 MB of straight-line code, and most of the generator's time and memory).
 In the looped form the traced part writes only M's entries at each dof's ancestors and its diagonal
-(the CRBA, O(n²) on a chain) into local arrays and ltdl_factor (rbdc_gen/solve.hpp) factorises them
+(the CRBA, O(n²) on a chain) into local arrays and ltdl_factor (rbdc_gen/factor.hpp) factorises them
 in place: one multiply-add per entry of the ancestor row it updates, contiguous in the packed
 layout, so the inner loop is a SIMD axpy. Its code does not grow with the robot. In the looped-CRBA
 form (where the unrolled CRBA is past looped_crba.UNROLL_LIMIT, or a scene asks) the packed entries
@@ -17,6 +17,7 @@ from typing import Optional, Tuple
 
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents
 from . import looped_crba
+from .looped_inverse import FACTOR_HEADER
 from .looped_solve import HEADER, SIMD_DOUBLES
 from .trace import Argument, with_loop
 
@@ -52,7 +53,7 @@ class LoopedFactor:
 
     @property
     def headers(self):
-        return (HEADER,) + (() if self.crba is None else self.crba.headers)
+        return (HEADER, FACTOR_HEADER) + (() if self.crba is None else self.crba.headers)
 
     @property
     def nv(self):

@@ -11,6 +11,8 @@ from typing import Optional, Tuple
 
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents
 
+# ltdl_factor and ltdl_inverse (it includes the looped solve's rbdc_gen/solve.hpp).
+FACTOR_HEADER = "rbdc_gen/factor.hpp"
 # rbdc_gen::LTDL_INVERSE_COLUMNS: the columns each of ltdl_inverse's blocks takes at once.
 BLOCK_COLUMNS = 16
 # rbdc_gen::LTDL_PATH: the most rows of M⁻¹ one sweep sums (rows along a path).
@@ -31,7 +33,7 @@ class LoopedInverse:
     comparison: Tuple[int, int] = (0, 0)  # (its multiply-adds, the solve's for Sᵀ's columns), for the banner
     simd_doubles: int = 4  # columns per vector instruction the cost model assumes (looped_solve.SIMD_DOUBLES)
     output: str = "da_dtau"
-    headers = ()  # rbdc_gen/solve.hpp, the looped solve's
+    headers = (FACTOR_HEADER,)
 
     def _blocks(self):
         """Per block of BLOCK_COLUMNS columns: the rows before its end (the rows its passes run over)."""
@@ -62,6 +64,12 @@ class LoopedInverse:
                 products += size * (ancestors[top] + 1)
                 starts += size
         return up * BLOCK_COLUMNS, products * BLOCK_COLUMNS, products, starts * BLOCK_COLUMNS
+
+    @property
+    def pays(self):
+        """Its multiply-adds at most PAYS_BELOW of the solve's for Sᵀ's columns."""
+        own, saved = self.comparison
+        return own <= PAYS_BELOW * saved
 
     def multiply_adds(self):
         up, products, _, _ = self._counts()
@@ -102,10 +110,6 @@ def compared(robot, feet_rows, padded) -> Optional[LoopedInverse]:
 
 
 def tau_by_inverse(robot, feet_rows, padded) -> Optional[LoopedInverse]:
-    """compared's LoopedInverse where it pays: its multiply-adds at most PAYS_BELOW of the solve's for
-    Sᵀ's columns."""
+    """compared's LoopedInverse where it pays."""
     inverse = compared(robot, feet_rows, padded)
-    if inverse is None:
-        return None
-    own, saved = inverse.comparison
-    return inverse if own <= PAYS_BELOW * saved else None
+    return inverse if inverse is not None and inverse.pays else None

@@ -46,7 +46,8 @@ class LoopedSolve:
     complete the right-hand sides first, if any, and `feet` the feet's force-term derivatives
     (looped_feet_forces.py) with them; `factor`: the looped CRBA and factor (a
     looped_factor.LoopedFactor, packed) that write solve_L and solve_D_inv first, if the terms do not;
-    `inverse`: ∂a/∂τ as M⁻¹'s rows (looped_inverse.py) where B leaves Sᵀ out."""
+    `inverse`: ∂a/∂τ as M⁻¹'s rows (looped_inverse.py) where that is possible, taken where it pays (B
+    then leaves Sᵀ out), its counts in the banner either way."""
     parents: Tuple[int, ...]
     blocks: Tuple[Tuple[str, int], ...]
     terms: Tuple[Argument, ...]
@@ -54,7 +55,6 @@ class LoopedSolve:
     factor: object = None
     feet: Optional[looped_feet_forces.LoopedFeetForces] = None
     inverse: Optional[LoopedInverse] = None
-    inverse_considered: Tuple[int, ...] = ()  # where ∂a/∂τ could be M⁻¹'s rows: (their multiply-adds, the solve's)
     # per terms output whose entries a lane function keeps elsewhere than row-major (lane_places): where
     # each row-major entry is (None: zero, not stored)
     places: Tuple[Tuple[str, Tuple[Optional[int], ...]], ...] = ()
@@ -76,8 +76,13 @@ class LoopedSolve:
         place = dict(self.places).get(name)
         return logical if place is None else place[logical]
 
+    @property
+    def taken_inverse(self):
+        """`inverse` where it is taken, else None."""
+        return self.inverse if self.inverse is not None and self.inverse.pays else None
+
     def _parts(self):
-        return [part for part in (self.factor, self.rnea, self.feet, self.inverse) if part is not None]
+        return [part for part in (self.factor, self.rnea, self.feet, self.taken_inverse) if part is not None]
 
     @property
     def headers(self):
@@ -135,7 +140,7 @@ class LoopedSolve:
         body = [] if self.factor is None else self.factor.loops()
         body += [] if self.rnea is None else self.rnea.loops(with_table=self.factor is None)
         body += [dof_tree(self.parents)] + ([] if self.feet is None else self.feet.loops()) + self._tree_solve("solve_rhs")
-        body += [] if self.inverse is None else self.inverse.loops()
+        body += [] if self.taken_inverse is None else self.taken_inverse.loops()
         return body + _copies(self.blocks, "solve_rhs", self.nv, self.columns, self.column_order)
 
     def emission(self, terms_name):
@@ -145,12 +150,12 @@ class LoopedSolve:
                 "(the RNEA's derivatives as a loop)")
         rnea += ("" if self.feet is None else ", add_feet_force_term_derivatives adds ∂(Jᵀf)/∂q over the "
                  "dof tree's ancestor pairs")
-        if self.inverse is not None:
+        if self.taken_inverse is not None:
             rnea += (", ltdl_inverse writes ∂a/∂τ as M⁻¹'s rows Zᵀ D⁻¹ Z (%d multiply-adds where solving "
                      "Sᵀ's columns would take %d)" % self.inverse.comparison)
-        elif self.inverse_considered:
+        elif self.inverse is not None:
             rnea += (", ∂a/∂τ solved with the rest (as M⁻¹'s rows Zᵀ D⁻¹ Z, %d multiply-adds against the "
-                     "solve's %d for Sᵀ's columns)" % self.inverse_considered)
+                     "solve's %d for Sᵀ's columns)" % self.inverse.comparison)
         return ("looped solve: %s writes the %d right-hand sides%s%s, ltdl_solve_columns "
                 "solves them all at once, one SIMD row update per factor entry (%d)"
                 % (terms_name, self.width, factor, rnea, self.factor_entries))
@@ -372,10 +377,9 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
                                    dof_columns=_non_zero_columns(Z, m), column_order=order, places=places)
     else:
         feet_rows = 3 * len(scene.feet_for(robot))
-        considered = None if terms.lanes is not None else looped_inverse.compared(robot, feet_rows, differentiate.padded)
-        inverse = None if terms.lanes is not None else looped_inverse.tau_by_inverse(robot, feet_rows, differentiate.padded)
+        inverse = None if terms.lanes is not None else looped_inverse.compared(robot, feet_rows, differentiate.padded)
         blocks = tuple((arg.name, arg.cols) for arg in outputs
-                       if arg.cols and not (inverse is not None and arg.name == inverse.output))
+                       if arg.cols and not (inverse is not None and inverse.pays and arg.name == inverse.output))
         from .looped_factor import LoopedFactor  # it imports this module's loops' header
         columns = differentiate.padded(sum(width for _, width in blocks))
         subtract = looped_rnea_derivatives.subtracted_from(robot, terms.outputs, "solve_rhs", columns)
@@ -385,8 +389,7 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
         order = lane_derivatives.column_order(robot, feet_rows) if terms.lanes is not None else ()
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs,
                             rnea=subtract if rnea else None, factor=packed if factor else None, feet=feet,
-                            inverse=inverse, inverse_considered=considered and considered.comparison,
-                            column_order=order)
+                            inverse=inverse, column_order=order)
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)
     assert terms.outputs[0].cols == solve.columns
     return solve

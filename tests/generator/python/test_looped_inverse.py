@@ -47,8 +47,8 @@ class LoopedInverseTest(unittest.TestCase):
 
     def test_the_banner_says_the_comparison_where_the_solve_is_kept(self):
         function = looped_solve.looped_function(chain(12), SCENE, "forward_dynamics_derivatives")
-        self.assertIsNone(function.solve.inverse)
-        own, solve = function.solve.inverse_considered
+        self.assertIsNone(function.solve.taken_inverse)
+        own, solve = function.solve.inverse.comparison
         self.assertGreater(own, PAYS_BELOW * solve)
         self.assertIn("∂a/∂τ solved with the rest (as M⁻¹'s rows Zᵀ D⁻¹ Z, %d multiply-adds" % own,
                       function.solve.emission("terms"))
