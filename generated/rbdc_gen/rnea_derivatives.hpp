@@ -31,17 +31,25 @@ struct DenseDerivatives {
 };
 
 /// ∂τ/∂q and ∂τ/∂v subtracted from right-hand sides (row-major NV × NC, ∂/∂q in columns 0 … NV − 1,
-/// ∂/∂v in NV … 2 NV − 1) that hold the rest of −∂(RNEA − τ_e): forward_dynamics_derivatives' looped
-/// solve, whose columns are then −∂(RNEA − τ_e)/∂(q, v). Every entry is written once.
-template <class Scalar, int NV, int NC>
+/// ∂/∂v in NV … 2 NV − 1, or with Placed at place[0 … 2 NV − 1]) that hold the rest of
+/// −∂(RNEA − τ_e): forward_dynamics_derivatives' looped solve, whose columns are then
+/// −∂(RNEA − τ_e)/∂(q, v). Every entry is written once.
+template <class Scalar, int NV, int NC, bool Placed = false>
 struct SubtractedFromColumns {
   Scalar* rhs;
+  const int* place = nullptr;
+  RBDC_HOST_DEVICE int at(int column) const noexcept {
+    if constexpr (Placed)
+      return place[column];
+    else
+      return column;
+  }
   RBDC_HOST_DEVICE void clear() const noexcept {}
   RBDC_HOST_DEVICE void q(int row, int col, const Scalar& value) const noexcept {
-    rhs[row * NC + col] = rhs[row * NC + col] - value;
+    rhs[row * NC + at(col)] = rhs[row * NC + at(col)] - value;
   }
   RBDC_HOST_DEVICE void v(int row, int col, const Scalar& value) const noexcept {
-    rhs[row * NC + NV + col] = rhs[row * NC + NV + col] - value;
+    rhs[row * NC + at(NV + col)] = rhs[row * NC + at(NV + col)] - value;
   }
 };
 

@@ -139,36 +139,74 @@ RBDC_HOST_DEVICE inline int below_rows(const DofTree<NV, NE>& tree, int from, in
   return from;
 }
 
-/// ltdl_solve_columns on NR runs of B's columns from column c0: its passes, each row summed locally
+/// The rows the L⁻ᵀ pass of ltdl_solve_column_block updates, deepest first, each with its
+/// descendants among them (below_dof[e], e in [first(s), last(s)), deepest first, their entry at it
+/// L[below_entry[e]]) and whether it is solved with its parent, the next row: every row below Rows of
+/// the dof tree (the rows from Rows on are zero, and L⁻ᵀ keeps them so: it sums into ancestors only).
+template <int Rows, int NV, int NE>
+struct TreeRows {
+  const DofTree<NV, NE>& tree;
+  static constexpr int size = Rows;
+  RBDC_HOST_DEVICE int row(int s) const noexcept { return Rows - 1 - s; }
+  RBDC_HOST_DEVICE int all_first(int s) const noexcept { return tree.below_first[row(s)]; }  // zero rows too
+  RBDC_HOST_DEVICE int first(int s) const noexcept { return below_rows<Rows>(tree, all_first(s), last(s)); }
+  RBDC_HOST_DEVICE int last(int s) const noexcept { return tree.below_first[row(s) + 1]; }
+  RBDC_HOST_DEVICE bool pair(int s) const noexcept { return tree.pair_with_parent[row(s)]; }
+  RBDC_HOST_DEVICE int dof(int e) const noexcept { return tree.below_dof[e]; }
+  RBDC_HOST_DEVICE int entry(int e) const noexcept { return tree.below_entry[e]; }
+};
+
+/// The same for a block of right-hand sides that is zero off NS rows of the tree, closed under
+/// ancestors (a column of ∂τ/∂q is non-zero on its dof's ancestors and descendants only, a foot's
+/// Jacobian column on its path): the generator's table (passes/column_support.py), the L⁻ᵀ pass then
+/// skips the other rows, which stay zero.
+template <int NS, int NE>
+struct RowSubset {
+  int rows[NS];
+  int below_first[NS + 1];
+  int below_dof[NE];
+  int below_entry[NE];
+  int pair_with_parent[NS];
+  static constexpr int size = NS;
+  RBDC_HOST_DEVICE int row(int s) const noexcept { return rows[s]; }
+  RBDC_HOST_DEVICE int all_first(int s) const noexcept { return below_first[s]; }
+  RBDC_HOST_DEVICE int first(int s) const noexcept { return below_first[s]; }
+  RBDC_HOST_DEVICE int last(int s) const noexcept { return below_first[s + 1]; }
+  RBDC_HOST_DEVICE bool pair(int s) const noexcept { return pair_with_parent[s]; }
+  RBDC_HOST_DEVICE int dof(int e) const noexcept { return below_dof[e]; }
+  RBDC_HOST_DEVICE int entry(int e) const noexcept { return below_entry[e]; }
+};
+
+/// ltdl_solve_columns on NR runs of W of B's columns from column c0, its L⁻ᵀ pass over the rows `up`
+/// (TreeRows or RowSubset): its passes, each row summed locally
 /// from rows already final (no aliasing with the rows it reads), in the order they became final: the
 /// row finished last comes last, so a row's sum runs while the rows before it finish instead of
 /// after (a walk up the parents, nearest first, waited on each). Where the tree pairs a dof with its
 /// parent or child, both rows are summed in one sweep that loads each row they share once: a chain's
 /// solve does half the loads (100 dofs, 304 columns: 97 → 62 µs with clang 14, 98 → 66 µs with g++
 /// 12; Talos 6.7 → 4.8 µs, one driver, AMD EPYC, bitwise the same).
-template <class Scalar, int NV, int NC, int NE, int NR, Passes P, int Rows = NV>
-RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_column_block(const DofTree<NV, NE>& tree, const Scalar* L,
-                                                                    const Scalar* D_inv, Scalar* B, int c0) noexcept {
-  using R = ColumnRun<Scalar, NC>;
-  constexpr int W = R::size;
+template <class Scalar, int NV, int NC, int NE, int NR, Passes P, int W, class Up>
+RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_column_block(const DofTree<NV, NE>& tree, const Up& up,
+                                                                    const Scalar* L, const Scalar* D_inv, Scalar* B,
+                                                                    int c0) noexcept {
+  using R = Run<Scalar, W>;
   typename R::type row[NR], pair[NR];
-  // Rows: the block's rows from Rows on are zero, and L⁻ᵀ keeps them so (it sums into ancestors only)
-  for (int j = P == Passes::down ? -1 : Rows - 1; j >= 0; --j) {  // B ← L⁻ᵀ B, leaves to root: row j from its descendants'
+  for (int s = 0; s < (P == Passes::down ? 0 : Up::size); ++s) {  // B ← L⁻ᵀ B, leaves to root: row j from its descendants'
+    const int j = up.row(s);
     Scalar* row_j = B + j * NC + c0;
     for (int c = 0; c < NR; ++c) row[c] = R::load(row_j + c * W);
-    if (tree.pair_with_parent[j]) {
+    if (up.pair(s)) {  // with its parent j − 1, the next row
       Scalar* row_p = row_j - NC;
-      const int shared = tree.below_first[j + 1] - tree.below_first[j] + 1;  // j's descendants and j
+      const int shared = up.last(s) - up.all_first(s) + 1;  // j's descendants and j, last in the parent's
       for (int c = 0; c < NR; ++c) pair[c] = R::load(row_p + c * W);
-      for (int e = below_rows<Rows>(tree, tree.below_first[j - 1], tree.below_first[j] - shared);
-           e < tree.below_first[j] - shared; ++e) {  // the parent's others
-        const Scalar* row_i = B + tree.below_dof[e] * NC + c0;
-        const Scalar l = L[tree.below_entry[e]];
+      for (int e = up.first(s + 1); e < up.last(s + 1) - shared; ++e) {  // the parent's others
+        const Scalar* row_i = B + up.dof(e) * NC + c0;
+        const Scalar l = L[up.entry(e)];
         for (int c = 0; c < NR; ++c) pair[c] -= l * R::load(row_i + c * W);
       }
-      for (int e = below_rows<Rows>(tree, tree.below_first[j], tree.below_first[j + 1]); e < tree.below_first[j + 1]; ++e) {
-        const Scalar* row_i = B + tree.below_dof[e] * NC + c0;
-        const Scalar l = L[tree.below_entry[e]], l_parent = L[tree.below_entry[e] + 1];  // parent: next ancestor
+      for (int e = up.first(s); e < up.last(s); ++e) {
+        const Scalar* row_i = B + up.dof(e) * NC + c0;
+        const Scalar l = L[up.entry(e)], l_parent = L[up.entry(e) + 1];  // parent: next ancestor
         for (int c = 0; c < NR; ++c) {
           auto x = R::load(row_i + c * W);
           if constexpr (W > 1) in_register(x);
@@ -176,15 +214,15 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void ltdl_solve_column_block(const DofTre
           pair[c] -= l_parent * x;
         }
       }
-      const Scalar l = L[tree.below_entry[tree.below_first[j] - 1]];  // j's entry at its parent
+      const Scalar l = L[up.entry(up.last(s + 1) - 1)];  // j's entry at its parent
       for (int c = 0; c < NR; ++c) R::store(row_j + c * W, row[c]);
       for (int c = 0; c < NR; ++c) R::store(row_p + c * W, pair[c] - l * row[c]);
-      --j;
+      ++s;
       continue;
     }
-    for (int e = below_rows<Rows>(tree, tree.below_first[j], tree.below_first[j + 1]); e < tree.below_first[j + 1]; ++e) {
-      const Scalar* row_i = B + tree.below_dof[e] * NC + c0;
-      const Scalar l = L[tree.below_entry[e]];
+    for (int e = up.first(s); e < up.last(s); ++e) {
+      const Scalar* row_i = B + up.dof(e) * NC + c0;
+      const Scalar l = L[up.entry(e)];
       for (int c = 0; c < NR; ++c) row[c] -= l * R::load(row_i + c * W);
     }
     for (int c = 0; c < NR; ++c) R::store(row_j + c * W, row[c]);
@@ -235,30 +273,48 @@ constexpr int LTDL_BLOCK_RUNS = 12;
 /// 5 to 8 runs within 4 %). Below about 48 dofs the 16 runs fit and nothing changes.
 constexpr int LTDL_BLOCK_BYTES = 48 * 1024;
 
-/// The runs of a block for NV rows of NC columns: at most LTDL_BLOCK_RUNS, and within LTDL_BLOCK_BYTES.
-template <class Scalar, int NV, int NC>
+/// The runs of W columns in a block of NV rows: at most LTDL_BLOCK_RUNS, and within LTDL_BLOCK_BYTES.
+template <class Scalar, int NV, int W>
 constexpr int ltdl_block_runs() {
-  constexpr int fit = LTDL_BLOCK_BYTES / (NV * ColumnRun<Scalar, NC>::size * int(sizeof(Scalar)));
+  constexpr int fit = LTDL_BLOCK_BYTES / (NV * W * int(sizeof(Scalar)));
   return fit < 1 ? 1 : fit < LTDL_BLOCK_RUNS ? fit : LTDL_BLOCK_RUNS;
 }
 
+/// Runs [Done, End) of W columns of B, L⁻ᵀ over the rows `up`, in blocks of nearly equal width, at
+/// most ltdl_block_runs() runs each (columns are independent).
+template <class Scalar, int NV, int NC, Passes P, int W, int Done, int End, int NE, class Up>
+RBDC_HOST_DEVICE inline void ltdl_solve_runs(const DofTree<NV, NE>& tree, const Up& up, const Scalar* L,
+                                             const Scalar* D_inv, Scalar* B) noexcept {
+  constexpr int left = End - Done;
+  if constexpr (left > 0) {
+    constexpr int most = ltdl_block_runs<Scalar, NV, W>();
+    constexpr int blocks = (left + most - 1) / most;
+    constexpr int runs = (left + blocks - 1) / blocks;
+    ltdl_solve_column_block<Scalar, NV, NC, NE, runs, P, W>(tree, up, L, D_inv, B, Done * W);
+    ltdl_solve_runs<Scalar, NV, NC, P, W, Done + runs, End>(tree, up, L, D_inv, B);
+  }
+}
+
 /// Solves M X = B in place for the NC columns of B (row-major NV × NC), M = Lᵀ D L over the dof
-/// tree, L its factor entries in the packed layout of `tree`, D_inv the inverse pivots: in blocks
-/// of nearly equal width, at most ltdl_block_runs() runs each (columns are independent); P: only one
-/// half of the solve.
+/// tree, L its factor entries in the packed layout of `tree`, D_inv the inverse pivots; P: only one
+/// half of the solve; runs [Done, End) only, whose rows from Rows on are zero.
 template <class Scalar, int NV, int NC, Passes P = Passes::both, int NE, int Done = 0,
           int End = NC / ColumnRun<Scalar, NC>::size, int Rows = NV>
 RBDC_HOST_DEVICE inline void ltdl_solve_columns(const DofTree<NV, NE>& tree, const Scalar* L, const Scalar* D_inv,
                                                 Scalar* B) noexcept {
   constexpr int W = ColumnRun<Scalar, NC>::size;
-  constexpr int left = End - Done;
-  if constexpr (left > 0) {
-    constexpr int most = ltdl_block_runs<Scalar, NV, NC>();
-    constexpr int blocks = (left + most - 1) / most;
-    constexpr int runs = (left + blocks - 1) / blocks;
-    ltdl_solve_column_block<Scalar, NV, NC, NE, runs, P, Rows>(tree, L, D_inv, B, Done * W);
-    ltdl_solve_columns<Scalar, NV, NC, P, NE, Done + runs, End, Rows>(tree, L, D_inv, B);
-  }
+  ltdl_solve_runs<Scalar, NV, NC, P, W, Done, End>(tree, TreeRows<Rows, NV, NE>{tree}, L, D_inv, B);
+}
+
+constexpr int greatest_common_divisor(int a, int b) { return b == 0 ? a : greatest_common_divisor(b, a % b); }
+
+/// ltdl_solve_columns on B's columns [C0, C1), which are zero off the rows `up`: its L⁻ᵀ pass skips
+/// the others (passes/column_support.py). Runs as wide as C0, C1 and NC allow.
+template <class Scalar, int NV, int NC, int C0, int C1, int NE, int NS, int NES>
+RBDC_HOST_DEVICE inline void ltdl_solve_column_range(const DofTree<NV, NE>& tree, const RowSubset<NS, NES>& up,
+                                                     const Scalar* L, const Scalar* D_inv, Scalar* B) noexcept {
+  constexpr int W = column_run_size<Scalar, greatest_common_divisor(greatest_common_divisor(NC, C0), C1)>();
+  ltdl_solve_runs<Scalar, NV, NC, Passes::both, W, C0 / W, C1 / W>(tree, up, L, D_inv, B);
 }
 
 /// Where a product finds A's entry (i, k): row-major with LDA entries per row.
@@ -398,18 +454,23 @@ RBDC_HOST_DEVICE inline void multiply_sparse_minus(const RowSparsity<M, NNZ>& sp
 /// (those with a foot below them); the floating trunk's block (r, c) is ω_c · χ_r, c over its three
 /// rotations (its first Root dofs are one body). ω: each dof's world axis (zero for a translation),
 /// χ = Σ_k J_k × f_k, both NV × 3 row-major. Projected: the dofs are a mimic-coupled robot's tree
-/// dofs, entry (y, x) going to (column[y], column[x]) times weight[y] weight[x] (Gᵀ X G). The table's
-/// sizes NV and NE are deduced from it.
-template <class Scalar, int RowStride, int ColumnStride, int Root, int NR, bool Projected = false, int NV, int NE>
+/// dofs, entry (y, x) going to (column[y], column[x]) times weight[y] weight[x] (Gᵀ X G). Placed: the
+/// right-hand sides' column x is at place[x] (passes/column_support.py). The table's sizes NV and NE
+/// are deduced from it.
+template <class Scalar, int RowStride, int ColumnStride, int Root, int NR, bool Projected = false,
+          bool Placed = false, int NV, int NE>
 RBDC_HOST_DEVICE inline void add_feet_force_term_derivatives(const DofTree<NV, NE>& tree, const int* rows,
                                                              const Scalar* axis, const Scalar* moment, Scalar* B,
                                                              const int* column = nullptr,
-                                                             const double* weight = nullptr) noexcept {
+                                                             const double* weight = nullptr,
+                                                             const int* place = nullptr) noexcept {
   const auto dot = [&](int x, int y) {
     return axis[3 * x] * moment[3 * y] + axis[3 * x + 1] * moment[3 * y + 1] + axis[3 * x + 2] * moment[3 * y + 2];
   };
   const auto add = [&](int y, int x, const Scalar& entry) {
-    if constexpr (Projected)
+    if constexpr (Placed)
+      B[y * RowStride + place[x] * ColumnStride] += entry;
+    else if constexpr (Projected)
       B[column[y] * RowStride + column[x] * ColumnStride] += Scalar(weight[y] * weight[x]) * entry;
     else
       B[y * RowStride + x * ColumnStride] += entry;

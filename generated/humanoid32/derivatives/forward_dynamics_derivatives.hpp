@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_7e2b1b2d9eb3.hpp
+//   humanoid32/common/forward_dynamics_derivatives_32161b9a1bc1.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_7e2b1b2d9eb3.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_32161b9a1bc1.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -32,9 +32,9 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// schedule: limb lanes and a looped solve (the terms traced with the isomorphic limbs in SIMD
 ///   lanes: 2 of pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes),
 ///   the solve's right-hand sides in SIMD across columns): 66052 arithmetic instructions
-///   (cost 91851), scalar tree 131228 (cost 310187), looped solve 80616 (cost 126805),
-///   looped RNEA derivatives 83664 (cost 115906), looped CRBA 93835 (cost 137377)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_7e2b1b2d9eb3::forward_dynamics_derivatives;
+///   (cost 91851), scalar tree 131228 (cost 310187), looped solve 69368 (cost 115557),
+///   looped RNEA derivatives 72416 (cost 104658), looped CRBA 82587 (cost 126129)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_32161b9a1bc1::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

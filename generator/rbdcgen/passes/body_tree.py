@@ -99,7 +99,7 @@ def table(robot):
         components(moments, 3),
         components(rotational, 6),
         row(number(joint.actuator.armature if k and joint.actuator else 0.0) for k, joint in enumerate(joints))]
-    return f"const BodyTree<{robot.nb}> tree{{{', '.join(fields)}}};"
+    return f"RBDC_TABLE BodyTree<{robot.nb}> tree{{{', '.join(fields)}}};"
 
 
 def root_frame_pieces(robot):

@@ -82,7 +82,7 @@ class LoopedCrba:
         floating = "true" if self.robot.floating_base else "false"
         if self.packed:
             first = packed_starts(dof_parents(self.robot))[:-1]
-            out = [f"const int packed_first[{nv}] = {{{', '.join(map(str, first))}}};",
+            out = [f"RBDC_TABLE int packed_first[{nv}] = {{{', '.join(map(str, first))}}};",
                    f"const PackedMassMatrix<Scalar, {nv}> crba_out{{solve_L, solve_D, packed_first}};"]
         else:
             out = [f"const DenseMassMatrix<Scalar, {nv}> crba_out{{M}};"]

@@ -91,7 +91,7 @@ class LoopedFactor:
             "Scalar solve_D[%d];" % self.nv, *self.crba.loops(with_table)]
         pivots = "D_inv" if self.unpack else "solve_D_inv"
         body = crba + ([] if self.unpack else [f"Scalar solve_D_inv[{self.nv}];"]) + [
-            "const int dof_parent[%d] = {%s};" % (self.nv, ", ".join(map(str, self.parents))),
+            "RBDC_TABLE int dof_parent[%d] = {%s};" % (self.nv, ", ".join(map(str, self.parents))),
             f"ltdl_factor<Scalar, {self.nv}>(dof_parent, solve_L, solve_D, {pivots});"]
         if self.unpack:
             body.append(f"unpack_factor<Scalar, {self.nv}>(dof_parent, solve_L, solve_D, L, D);")

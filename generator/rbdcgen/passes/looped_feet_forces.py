@@ -38,7 +38,7 @@ class LoopedFeetForces:
     the terms' feet_axes and feet_moments into `target`: row-major right-hand sides `stride` wide,
     or (`stride` 0) the column-major `columns` × `columns` output, cleared first, whose terms are
     `terms`. `coupling`, for a coupled robot, G as per tree dof (independent dof, multiplier): each
-    entry is then projected."""
+    entry is then projected; `place`: the right-hand sides' column x is at place[x]."""
     parents: Tuple[int, ...]
     root_dofs: int
     rows: Tuple[int, ...]
@@ -47,6 +47,7 @@ class LoopedFeetForces:
     stride: int = 0
     terms: Tuple[Argument, ...] = ()
     coupling: Tuple[Tuple[int, float], ...] = ()
+    place: str = ""  # right-hand sides whose columns are sorted (column_support.py): the table of places
     headers: ClassVar[Tuple[str, ...]] = ("rbdc_gen/solve.hpp",)
 
     def _pairs(self):
@@ -80,14 +81,16 @@ class LoopedFeetForces:
         table = "dof_tree" if self.stride and not self.coupling else "feet_dof_tree"
         own = [] if table == "dof_tree" else [dof_tree(self.parents, table)]
         own += [] if self.stride else [f"for (int k = 0; k < {columns * columns}; ++k) {self.target}[k] = Scalar(0);"]
-        own.append(f"const int feet_rows[{max(1, len(rows))}] = {{{', '.join(map(str, rows)) or '0'}}};")
+        own.append(f"RBDC_TABLE int feet_rows[{max(1, len(rows))}] = {{{', '.join(map(str, rows)) or '0'}}};")
         projection = ""
         if self.coupling:
-            own += [f"const int feet_column[{n}] = {{{', '.join(str(k) for k, _ in self.coupling)}}};",
-                    f"const double feet_weight[{n}] = {{{', '.join(repr(w) for _, w in self.coupling)}}};"]
+            own += [f"RBDC_TABLE int feet_column[{n}] = {{{', '.join(str(k) for k, _ in self.coupling)}}};",
+                    f"RBDC_TABLE double feet_weight[{n}] = {{{', '.join(repr(w) for _, w in self.coupling)}}};"]
             projection = ", feet_column, feet_weight"
+        flags = ", false, true" if self.place else ", true" if self.coupling else ""
+        projection += f", nullptr, nullptr, {self.place}" if self.place else ""
         return own + [f"add_feet_force_term_derivatives<Scalar, {strides}, "
-                      f"{self.root_dofs}, {len(rows)}{', true' if self.coupling else ''}>({table}, feet_rows, "
+                      f"{self.root_dofs}, {len(rows)}{flags}>({table}, feet_rows, "
                       f"solve_feet_axes, solve_feet_moments, {self.target}{projection});"]
 
     def emission(self, terms_name):

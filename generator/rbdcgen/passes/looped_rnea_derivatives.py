@@ -138,8 +138,8 @@ class LoopedRneaDerivatives:
         a = self.acceleration_source if self.acceleration else "nullptr"
         statements = [body_tree.table(robot)] * with_table
         if self.coupling:
-            statements += [f"const int tree_column[{robot.nv}] = {{{', '.join(str(k) for k, _ in self.coupling)}}};",
-                           f"const double tree_weight[{robot.nv}] = {{{', '.join(repr(w) for _, w in self.coupling)}}};"]
+            statements += [f"RBDC_TABLE int tree_column[{robot.nv}] = {{{', '.join(str(k) for k, _ in self.coupling)}}};",
+                           f"RBDC_TABLE double tree_weight[{robot.nv}] = {{{', '.join(repr(w) for _, w in self.coupling)}}};"]
             expanded = {}
             for name, used, source in (("v", self.velocity, v), ("a", self.acceleration, a)):
                 expanded[name] = f"{name}_tree" if used else source
@@ -186,11 +186,13 @@ def looped_function(robot, scene, name):
     return with_loop(robot, scene, name, TERMS[name], loop)
 
 
-def subtracted_from(robot, terms, rhs, columns):
+def subtracted_from(robot, terms, rhs, columns, place=""):
     """The loop that subtracts ∂τ/∂q and ∂τ/∂v at the terms' acceleration `a` from the right-hand
-    sides `rhs` (row-major, `columns` wide, ∂/∂q and ∂/∂v in its first 2 nv columns): a looped
-    solve's (looped_solve.py)."""
-    writer, coupling = _writer(robot, (f"SubtractedFromColumns<Scalar, {robot.nv}, {columns}>", rhs))
+    sides `rhs` (row-major, `columns` wide, ∂/∂q and ∂/∂v in its first 2 nv columns, or with `place`
+    where that table puts them): a looped solve's (looped_solve.py)."""
+    placed = (f"SubtractedFromColumns<Scalar, {robot.nv}, {columns}, true>", f"{rhs}, {place}") if place else \
+        (f"SubtractedFromColumns<Scalar, {robot.nv}, {columns}>", rhs)
+    writer, coupling = _writer(robot, placed)
     return LoopedRneaDerivatives(robot=tree_view(robot), terms=terms, writer=writer, velocity=True,
                                  acceleration=True, acceleration_source="solve_a", subtracting=True,
                                  coupling=coupling)

@@ -18,8 +18,9 @@ from typing import Optional, Tuple
 from ..algorithms.contact_dynamics import PROXIMAL_STEPS
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
 from ..graph import expr as ex
-from . import (differentiate, lane_contact_derivatives, lane_derivatives, looped_crba, looped_feet_forces, looped_inverse,
-               looped_rnea_derivatives)
+from . import (column_support, differentiate, lane_contact_derivatives, lane_derivatives, looped_crba,
+               looped_feet_forces, looped_inverse, looped_rnea_derivatives)
+from .column_support import ColumnSupport
 from .looped_inverse import LoopedInverse
 from .looped_rnea_derivatives import LoopedRneaDerivatives
 from .trace import Argument, with_loop
@@ -47,7 +48,9 @@ class LoopedSolve:
     (looped_feet_forces.py) with them; `factor`: the looped CRBA and factor (a
     looped_factor.LoopedFactor, packed) that write solve_L and solve_D_inv first, if the terms do not;
     `inverse`: ∂a/∂τ as M⁻¹'s rows (looped_inverse.py) where that is possible, taken where it pays (B
-    then leaves Sᵀ out), its counts in the banner either way."""
+    then leaves Sᵀ out), its counts in the banner either way; `support`: B's columns sorted so that
+    each block's L⁻ᵀ runs over its columns' non-zero rows only (column_support.py), B then in its
+    `order`."""
     parents: Tuple[int, ...]
     blocks: Tuple[Tuple[str, int], ...]
     terms: Tuple[Argument, ...]
@@ -55,6 +58,7 @@ class LoopedSolve:
     factor: object = None
     feet: Optional[looped_feet_forces.LoopedFeetForces] = None
     inverse: Optional[LoopedInverse] = None
+    support: Optional[ColumnSupport] = None
     # per terms output whose entries a lane function keeps elsewhere than row-major (lane_places): where
     # each row-major entry is (None: zero, not stored)
     places: Tuple[Tuple[str, Tuple[Optional[int], ...]], ...] = ()
@@ -110,9 +114,16 @@ class LoopedSolve:
         """Per column: one multiply-add per factor entry on the way up and on the way down."""
         return 2 * self.factor_entries
 
+    def _skipped(self, per_block):
+        """Per block of `support`, per_block(columns, factor entries its L⁻ᵀ skips), summed."""
+        blocks = self.support.widths_and_entries() if self.support else ()
+        return sum(per_block(width, self.factor_entries - entries) for width, entries in blocks)
+
     def operations(self):
-        """Multiplications and additions of the loops (and one multiplication per pivot)."""
-        ops = {"mul": self.columns * (self.multiply_adds() + self.nv), "add": self.columns * self.multiply_adds()}
+        """Multiplications and additions of the loops: multiply_adds() per column (less the entries
+        L⁻ᵀ skips off each block's rows) and one multiplication per pivot."""
+        updates = self.columns * self.multiply_adds() - self._skipped(lambda width, skipped: width * skipped)
+        ops = {"mul": updates + self.columns * self.nv, "add": updates}
         for part in self._parts():
             for kind, n in part.operations().items():
                 ops[kind] = ops.get(kind, 0) + n
@@ -122,6 +133,7 @@ class LoopedSolve:
         """Vector instructions of the loops (a row update over the columns, SIMD_DOUBLES at a time):
         a load and a multiply-add per multiply-add, one per pivot."""
         return (-(-self.columns // SIMD_DOUBLES) * (2 * self.multiply_adds() + self.nv)
+                - self._skipped(lambda width, skipped: -(-width // SIMD_DOUBLES) * 2 * skipped)
                 + sum(part.instructions() for part in self._parts()))
 
     def cost(self):
@@ -138,8 +150,11 @@ class LoopedSolve:
         """The C++ statements after the terms: the looped CRBA and factor and the RNEA loop if any,
         solve, then copy each block into its output."""
         body = [] if self.factor is None else self.factor.loops()
+        body += [] if self.support is None else [self.support.place_table(column_support.PLACE)]
         body += [] if self.rnea is None else self.rnea.loops(with_table=self.factor is None)
-        body += [dof_tree(self.parents)] + ([] if self.feet is None else self.feet.loops()) + self._tree_solve("solve_rhs")
+        body += [dof_tree(self.parents)] + ([] if self.feet is None else self.feet.loops())
+        body += (self._tree_solve("solve_rhs") if self.support is None
+                 else self.support.loops(self.nv, self.columns, "solve_rhs"))
         body += [] if self.taken_inverse is None else self.taken_inverse.loops()
         return body + _copies(self.blocks, "solve_rhs", self.nv, self.columns, self.column_order)
 
@@ -156,6 +171,10 @@ class LoopedSolve:
         elif self.inverse is not None:
             rnea += (", ∂a/∂τ solved with the rest (as M⁻¹'s rows Zᵀ D⁻¹ Z, %d multiply-adds against the "
                      "solve's %d for Sᵀ's columns)" % self.inverse.comparison)
+        if self.support is not None:
+            rnea += (", the columns sorted into %d blocks, each block's L⁻ᵀ over its columns' non-zero "
+                     "rows (%d multiply-adds against %d over the whole tree)"
+                     % (len(self.support.blocks), self.support.up_multiply_adds(), self.columns * self.factor_entries))
         return ("looped solve: %s writes the %d right-hand sides%s%s, ltdl_solve_columns "
                 "solves them all at once, one SIMD row update per factor entry (%d)"
                 % (terms_name, self.width, factor, rnea, self.factor_entries))
@@ -238,10 +257,10 @@ def dof_tree(parents, name="dof_tree"):
     n = len(parents)
     ancestors = [dof_ancestors(parents, i) for i in range(n)]
     first = packed_starts(parents)
-    below = [[] for _ in range(n)]  # per dof its descendants and their entries, deepest first
-    for i in range(n - 1, -1, -1):
-        for e, j in enumerate(ancestors[i]):
-            below[j].append((i, first[i] + e))
+    deepest_first = list(range(n - 1, -1, -1))
+    lists = column_support.below_lists(parents, deepest_first)
+    below = lists[::-1]  # per dof its descendants and their entries, deepest first
+    pairs = column_support.pairs_with_parent(parents, deepest_first, lists)[::-1]
     below_first = [0]
     for entries in below:
         below_first.append(below_first[-1] + len(entries))
@@ -253,22 +272,8 @@ def dof_tree(parents, name="dof_tree"):
     tables = [table(first, n + 1), table([j for above in ancestors for j in above], entries),
               table(below_first, n + 1), table([i for column in below for i, _ in column], entries),
               table([k for column in below for _, k in column], entries),
-              table(_pairs_with_parent(parents, below), n), table(_pairs_with_child(parents), n)]
-    return "const DofTree<%d, %d> %s{%s};" % (n, entries, name, ", ".join(tables))
-
-
-def _pairs_with_parent(parents, below):
-    """1 where the L⁻ᵀ pass (leaves to root) solves row j together with its parent's row j − 1: the
-    parent's descendants are then its others, j's, and j last (depth-first numbering), so the pair
-    reads j's descendants once for both rows; greedily from the leaves, each row in one pair at most."""
-    flags = [0] * len(parents)
-    j = len(parents) - 1
-    while j >= 1:
-        others = len(below[j - 1]) - len(below[j]) - 1
-        joined = parents[j] == j - 1 and [i for i, _ in below[j - 1][others:]] == [i for i, _ in below[j]] + [j]
-        flags[j] = int(joined)
-        j -= 2 if joined else 1
-    return flags
+              table(pairs, n), table(_pairs_with_child(parents), n)]
+    return "RBDC_TABLE DofTree<%d, %d> %s{%s};" % (n, entries, name, ", ".join(tables))
 
 
 def _pairs_with_child(parents):
@@ -296,7 +301,7 @@ def row_sparsity(name, columns, place):
     for r in range(len(columns) - 2, -1, -1):
         if columns[r] == columns[r + 1]:
             together[r] = together[r + 1] + 1
-    return "const RowSparsity<%d, %d> %s{%s};" % (
+    return "RBDC_TABLE RowSparsity<%d, %d> %s{%s};" % (
         len(columns), len(flat), name, ", ".join("{%s}" % ", ".join(map(str, table))
                                                   for table in (first, flat, entries, together)))
 
@@ -382,14 +387,21 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
                        if arg.cols and not (inverse is not None and inverse.pays and arg.name == inverse.output))
         from .looped_factor import LoopedFactor  # it imports this module's loops' header
         columns = differentiate.padded(sum(width for _, width in blocks))
-        subtract = looped_rnea_derivatives.subtracted_from(robot, terms.outputs, "solve_rhs", columns)
+        rhs = terms.outputs[0].name
+        support = None if terms.lanes is not None or robot.couplings else column_support.planned(
+            parents, _column_rows(parents, terms.values[rhs], columns, sum(width for _, width in blocks)), columns)
+        place = column_support.PLACE if support else ""
+        subtract = looped_rnea_derivatives.subtracted_from(robot, terms.outputs, "solve_rhs", columns, place)
         packed = LoopedFactor(parents=parents, terms=terms.outputs, unpack=False,
                               crba=looped_crba.LoopedCrba(robot=robot, terms=terms.outputs, packed=True))
-        feet = looped_feet_forces.on_tree(robot, scene, "solve_rhs", stride=columns) if rnea and scene.feet_for(robot) else None
-        order = lane_derivatives.column_order(robot, feet_rows) if terms.lanes is not None else ()
+        feet = (looped_feet_forces.on_tree(robot, scene, "solve_rhs", stride=columns, place=place)
+                if rnea and scene.feet_for(robot) else None)
+        order = (lane_derivatives.column_order(robot, feet_rows) if terms.lanes is not None
+                 else support.order if support else ())
+        places = ((rhs, support.entry_places(len(parents), columns)),) if support else ()
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs,
                             rnea=subtract if rnea else None, factor=packed if factor else None, feet=feet,
-                            inverse=inverse, column_order=order)
+                            inverse=inverse, support=support, column_order=order, places=places)
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)
     assert terms.outputs[0].cols == solve.columns
     return solve
@@ -397,6 +409,21 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
 
 def _non_zero(entry):
     return not entry.is_const(0.0)
+
+
+def _column_rows(parents, rhs, columns, width):
+    """Per logical column of right-hand sides `rhs` (row-major, `columns` wide), the rows it may be
+    non-zero on: its traced entries', and for ∂/∂q_j and ∂/∂v_j (the first 2 nv, which loops may
+    write) j's and its descendants' (column_support.py)."""
+    n = len(parents)
+    descendants = [[] for _ in range(n)]
+    for i in range(n):
+        for j in dof_ancestors(parents, i):
+            descendants[j].append(i)
+    rows = [[r for r in range(n) if _non_zero(rhs[r * columns + c])] for c in range(width)]
+    for c in range(min(2 * n, width)):
+        rows[c] += [c % n] + descendants[c % n]
+    return rows
 
 
 def _non_zero_columns(entries, width):

@@ -12,7 +12,7 @@
 #include "rbdc_gen/lanes.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_ad320bf56a5f {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_d95bb6b4d9ff {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -1278,8 +1278,8 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 9848 arithmetic
 ///   instructions, scalar tree 25981 (cost 57594), limb lanes 7721 (cost 13770), looped
-///   solve 17388 (cost 27698), looped RNEA derivatives 20081 (cost 27491), looped CRBA
-///   23759 (cost 35347)
+///   solve 16380 (cost 26690), looped RNEA derivatives 19073 (cost 26483), looped CRBA
+///   22751 (cost 34339)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 60 right-hand sides and
 ///   the factor, ltdl_solve_columns solves them all at once, one SIMD row update per factor
 ///   entry (99)
@@ -1289,10 +1289,10 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   alignas(64) Scalar solve_L[99];
   alignas(64) Scalar solve_D_inv[18];
   forward_dynamics_derivatives_terms(q, v, tau, f, solve_rhs, solve_L, solve_D_inv);
-  const DofTree<18, 99> dof_tree{{0, 0, 1, 3, 6, 10, 15, 21, 28, 36, 42, 49, 57, 63, 70, 78, 84, 91, 99}, {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0, 5, 4, 3, 2, 1, 0, 6, 5, 4, 3, 2, 1, 0, 7, 6, 5, 4, 3, 2, 1, 0, 5, 4, 3, 2, 1, 0, 9, 5, 4, 3, 2, 1, 0, 10, 9, 5, 4, 3, 2, 1, 0, 5, 4, 3, 2, 1, 0, 12, 5, 4, 3, 2, 1, 0, 13, 12, 5, 4, 3, 2, 1, 0, 5, 4, 3, 2, 1, 0, 15, 5, 4, 3, 2, 1, 0, 16, 15, 5, 4, 3, 2, 1, 0}, {0, 17, 33, 48, 62, 75, 87, 89, 90, 90, 92, 93, 93, 95, 96, 96, 98, 99, 99}, {17, 16, 15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 17, 16, 15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 17, 16, 15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 17, 16, 15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 17, 16, 15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 17, 16, 15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 8, 7, 8, 11, 10, 11, 14, 13, 14, 17, 16, 17}, {98, 90, 83, 77, 69, 62, 56, 48, 41, 35, 27, 20, 14, 9, 5, 2, 0, 97, 89, 82, 76, 68, 61, 55, 47, 40, 34, 26, 19, 13, 8, 4, 1, 96, 88, 81, 75, 67, 60, 54, 46, 39, 33, 25, 18, 12, 7, 3, 95, 87, 80, 74, 66, 59, 53, 45, 38, 32, 24, 17, 11, 6, 94, 86, 79, 73, 65, 58, 52, 44, 37, 31, 23, 16, 10, 93, 85, 78, 72, 64, 57, 51, 43, 36, 30, 22, 15, 29, 21, 28, 50, 42, 49, 71, 63, 70, 92, 84, 91}, {0, 0, 1, 0, 1, 0, 1, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, {1, 0, 1, 0, 1, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0}};
+  RBDC_TABLE DofTree<18, 99> dof_tree{{0, 0, 1, 3, 6, 10, 15, 21, 28, 36, 42, 49, 57, 63, 70, 78, 84, 91, 99}, {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0, 5, 4, 3, 2, 1, 0, 6, 5, 4, 3, 2, 1, 0, 7, 6, 5, 4, 3, 2, 1, 0, 5, 4, 3, 2, 1, 0, 9, 5, 4, 3, 2, 1, 0, 10, 9, 5, 4, 3, 2, 1, 0, 5, 4, 3, 2, 1, 0, 12, 5, 4, 3, 2, 1, 0, 13, 12, 5, 4, 3, 2, 1, 0, 5, 4, 3, 2, 1, 0, 15, 5, 4, 3, 2, 1, 0, 16, 15, 5, 4, 3, 2, 1, 0}, {0, 17, 33, 48, 62, 75, 87, 89, 90, 90, 92, 93, 93, 95, 96, 96, 98, 99, 99}, {17, 16, 15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 17, 16, 15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 17, 16, 15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 17, 16, 15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 17, 16, 15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 17, 16, 15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 8, 7, 8, 11, 10, 11, 14, 13, 14, 17, 16, 17}, {98, 90, 83, 77, 69, 62, 56, 48, 41, 35, 27, 20, 14, 9, 5, 2, 0, 97, 89, 82, 76, 68, 61, 55, 47, 40, 34, 26, 19, 13, 8, 4, 1, 96, 88, 81, 75, 67, 60, 54, 46, 39, 33, 25, 18, 12, 7, 3, 95, 87, 80, 74, 66, 59, 53, 45, 38, 32, 24, 17, 11, 6, 94, 86, 79, 73, 65, 58, 52, 44, 37, 31, 23, 16, 10, 93, 85, 78, 72, 64, 57, 51, 43, 36, 30, 22, 15, 29, 21, 28, 50, 42, 49, 71, 63, 70, 92, 84, 91}, {0, 0, 1, 0, 1, 0, 1, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, {1, 0, 1, 0, 1, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0}};
   ltdl_solve_columns<Scalar, 18, 64>(dof_tree, solve_L, solve_D_inv, solve_rhs);
   Scalar* const solve_rhs_out[64] = {da_dq + 108, da_dq + 162, da_dq + 216, da_dq + 270, da_dq + 126, da_dq + 180, da_dq + 234, da_dq + 288, da_dq + 144, da_dq + 198, da_dq + 252, da_dq + 306, da_dv + 108, da_dv + 162, da_dv + 216, da_dv + 270, da_dv + 126, da_dv + 180, da_dv + 234, da_dv + 288, da_dv + 144, da_dv + 198, da_dv + 252, da_dv + 306, da_dtau + 0, da_dtau + 54, da_dtau + 108, da_dtau + 162, da_dtau + 18, da_dtau + 72, da_dtau + 126, da_dtau + 180, da_dtau + 36, da_dtau + 90, da_dtau + 144, da_dtau + 198, da_dq + 0, da_dq + 18, da_dq + 36, da_dq + 54, da_dq + 72, da_dq + 90, da_dv + 0, da_dv + 18, da_dv + 36, da_dv + 54, da_dv + 72, da_dv + 90, da_df + 0, da_df + 18, da_df + 36, da_df + 54, da_df + 72, da_df + 90, da_df + 108, da_df + 126, da_df + 144, da_df + 162, da_df + 180, da_df + 198, nullptr, nullptr, nullptr, nullptr};
   copy_out_columns<Scalar, 18, 64>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_ad320bf56a5f
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_d95bb6b4d9ff

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_449c60eec1b0 {
+namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_5c0c74fab577 {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -1469,10 +1469,10 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   alignas(64) Scalar solve_L[21];
   alignas(64) Scalar solve_D_inv[7];
   forward_dynamics_derivatives_terms(q, v, tau, f, solve_rhs, solve_L, solve_D_inv);
-  const DofTree<7, 21> dof_tree{{0, 0, 1, 3, 6, 10, 15, 21}, {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0, 5, 4, 3, 2, 1, 0}, {0, 6, 11, 15, 18, 20, 21, 21}, {6, 5, 4, 3, 2, 1, 6, 5, 4, 3, 2, 6, 5, 4, 3, 6, 5, 4, 6, 5, 6}, {20, 14, 9, 5, 2, 0, 19, 13, 8, 4, 1, 18, 12, 7, 3, 17, 11, 6, 16, 10, 15}, {0, 0, 1, 0, 1, 0, 1}, {1, 0, 1, 0, 1, 0, 0}};
+  RBDC_TABLE DofTree<7, 21> dof_tree{{0, 0, 1, 3, 6, 10, 15, 21}, {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0, 5, 4, 3, 2, 1, 0}, {0, 6, 11, 15, 18, 20, 21, 21}, {6, 5, 4, 3, 2, 1, 6, 5, 4, 3, 2, 6, 5, 4, 3, 6, 5, 4, 6, 5, 6}, {20, 14, 9, 5, 2, 0, 19, 13, 8, 4, 1, 18, 12, 7, 3, 17, 11, 6, 16, 10, 15}, {0, 0, 1, 0, 1, 0, 1}, {1, 0, 1, 0, 1, 0, 0}};
   ltdl_solve_columns<Scalar, 7, 24>(dof_tree, solve_L, solve_D_inv, solve_rhs);
   Scalar* const solve_rhs_out[24] = {da_dq + 0, da_dq + 7, da_dq + 14, da_dq + 21, da_dq + 28, da_dq + 35, da_dq + 42, da_dv + 0, da_dv + 7, da_dv + 14, da_dv + 21, da_dv + 28, da_dv + 35, da_dv + 42, da_dtau + 0, da_dtau + 7, da_dtau + 14, da_dtau + 21, da_dtau + 28, da_dtau + 35, da_dtau + 42, da_df + 0, da_df + 7, da_df + 14};
   copy_out_columns<Scalar, 7, 24>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_449c60eec1b0
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_5c0c74fab577
