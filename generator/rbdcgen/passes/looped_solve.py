@@ -171,13 +171,13 @@ class LoopedSolve:
         elif self.inverse is not None:
             rnea += (", ∂a/∂τ solved with the rest (as M⁻¹'s rows Zᵀ D⁻¹ Z, %d multiply-adds against the "
                      "solve's %d for Sᵀ's columns)" % self.inverse.comparison)
+        solve = "ltdl_solve_columns solves them all at once"
         if self.support is not None:
-            rnea += (", the columns sorted into %d blocks, each block's L⁻ᵀ over its columns' non-zero "
-                     "rows (%d multiply-adds against %d over the whole tree)"
+            solve = ("the columns sorted into %d blocks, ltdl_solve_column_range solves each, its L⁻ᵀ over "
+                     "its columns' non-zero rows only (%d multiply-adds against %d over the whole tree)"
                      % (len(self.support.blocks), self.support.up_multiply_adds(), self.columns * self.factor_entries))
-        return ("looped solve: %s writes the %d right-hand sides%s%s, ltdl_solve_columns "
-                "solves them all at once, one SIMD row update per factor entry (%d)"
-                % (terms_name, self.width, factor, rnea, self.factor_entries))
+        return ("looped solve: %s writes the %d right-hand sides%s%s, %s, one SIMD row update per factor "
+                "entry (%d)" % (terms_name, self.width, factor, rnea, solve, self.factor_entries))
 
 
 @dataclass(frozen=True)

@@ -79,7 +79,8 @@ class ColumnSupportTest(unittest.TestCase):
         self.assertIn("solve_feet_moments, solve_rhs, nullptr, nullptr, solve_rhs_place);", loops)
         self.assertEqual(loops.count("ltdl_solve_column_range"), len(support.blocks))
         self.assertEqual(function.solve.column_order, support.order)
-        self.assertIn("blocks, each block's L⁻ᵀ over its columns' non-zero rows", function.solve.emission("terms"))
+        self.assertIn("blocks, ltdl_solve_column_range solves each, its L⁻ᵀ over its columns' non-zero rows only",
+                      function.solve.emission("terms"))
         self.assertEqual(list(support.parents), dof_parents(robot))
         # the traced right-hand sides are where the order puts them: Sᵀ's 1 of dof 6 at its place
         rhs = function.values["rhs"]
