@@ -387,17 +387,18 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
                        if arg.cols and not (inverse is not None and inverse.pays and arg.name == inverse.output))
         from .looped_factor import LoopedFactor  # it imports this module's loops' header
         columns = differentiate.padded(sum(width for _, width in blocks))
-        rhs = terms.outputs[0].name
-        support = None if terms.lanes is not None or robot.couplings else column_support.planned(
-            parents, _column_rows(parents, terms.values[rhs], columns, sum(width for _, width in blocks)), columns)
+        rhs, width = terms.outputs[0].name, sum(width for _, width in blocks)
+        lane_order = lane_derivatives.column_order(robot, feet_rows) if terms.lanes is not None else ()
+        # a quadruped's lane order keeps each lane value's columns together, every limb in each run
+        support = None if robot.couplings or lane_order != tuple(range(len(lane_order))) else \
+            column_support.planned(parents, _column_rows(parents, terms.values[rhs], columns, width), columns)
         place = column_support.PLACE if support else ""
         subtract = looped_rnea_derivatives.subtracted_from(robot, terms.outputs, "solve_rhs", columns, place)
         packed = LoopedFactor(parents=parents, terms=terms.outputs, unpack=False,
                               crba=looped_crba.LoopedCrba(robot=robot, terms=terms.outputs, packed=True))
         feet = (looped_feet_forces.on_tree(robot, scene, "solve_rhs", stride=columns, place=place)
                 if rnea and scene.feet_for(robot) else None)
-        order = (lane_derivatives.column_order(robot, feet_rows) if terms.lanes is not None
-                 else support.order if support else ())
+        order = support.order if support else lane_order
         places = ((rhs, support.entry_places(len(parents), columns)),) if support else ()
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs,
                             rnea=subtract if rnea else None, factor=packed if factor else None, feet=feet,
