@@ -28,15 +28,6 @@
 #define RBDC_TABLE static constexpr
 #endif
 
-// A generated function starts on a 64-byte line: where it started 16 bytes in, humanoid32's
-// straight-line inverse dynamics took 420 ns against 358 ns, the same code (clang 14, AMD EPYC Zen 4:
-// the op cache and the fetch work in 64-byte windows). Without it the speed depended on the link.
-#if defined(__GNUC__) && !defined(__CUDACC__)
-#define RBDC_CODE_ALIGN __attribute__((aligned(64)))
-#else
-#define RBDC_CODE_ALIGN
-#endif
-
 // The blocks of a long generated function stay separate functions: inlined back into one, they
 // would cost the compile time that cutting them saved (docs/performance.md, "Blocks").
 #if defined(__CUDACC__)

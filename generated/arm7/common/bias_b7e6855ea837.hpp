@@ -21,7 +21,7 @@ namespace rbdc_gen::arm7::common::bias_b7e6855ea837 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             465  351    0     0    12    1    829
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
+RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

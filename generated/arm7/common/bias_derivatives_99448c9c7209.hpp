@@ -23,7 +23,7 @@ namespace rbdc_gen::arm7::common::bias_derivatives_99448c9c7209 {
 ///             1772  1522    0     0    12   10   3316
 /// schedule: scalar tree: 3316 arithmetic instructions, looped RNEA derivatives 4021 (cost 5620)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void bias_derivatives(const Scalar* q, const Scalar* v, Scalar* dbias_dq, Scalar* dbias_dv) noexcept {
+RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, Scalar* dbias_dq, Scalar* dbias_dv) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::common::center_of_mass_e75a8e194f83 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             302  210    0     0    14    0    526
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void center_of_mass(const Scalar* q, const Scalar* v, Scalar* com, Scalar* com_velocity) noexcept {
+RBDC_HOST_DEVICE inline void center_of_mass(const Scalar* q, const Scalar* v, Scalar* com, Scalar* com_velocity) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

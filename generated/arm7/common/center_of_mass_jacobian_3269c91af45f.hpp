@@ -20,7 +20,7 @@ namespace rbdc_gen::arm7::common::center_of_mass_jacobian_3269c91af45f {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             192  124    0     0    12    0    328
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void center_of_mass_jacobian(const Scalar* q, Scalar* J_c) noexcept {
+RBDC_HOST_DEVICE inline void center_of_mass_jacobian(const Scalar* q, Scalar* J_c) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], q[5]};
   const auto joint_trig = joint_sincos(joint_angle);

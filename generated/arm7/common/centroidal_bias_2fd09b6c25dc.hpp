@@ -21,7 +21,7 @@ namespace rbdc_gen::arm7::common::centroidal_bias_2fd09b6c25dc {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             632  472    0     0    14    0   1118
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void centroidal_bias(const Scalar* q, const Scalar* v, Scalar* Adot_v) noexcept {
+RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, Scalar* Adot_v) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

@@ -20,7 +20,7 @@ namespace rbdc_gen::arm7::common::centroidal_momentum_matrix_c8986469e2ef {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             365  314    0     0    14    4    697
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void centroidal_momentum_matrix(const Scalar* q, Scalar* A_G) noexcept {
+RBDC_HOST_DEVICE inline void centroidal_momentum_matrix(const Scalar* q, Scalar* A_G) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

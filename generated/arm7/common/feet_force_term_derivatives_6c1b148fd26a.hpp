@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::common::feet_force_term_derivatives_6c1b148fd26a {
 ///             203  129    0     0    12    3    347
 /// schedule: scalar tree: 347 arithmetic instructions, looped feet force terms 477 (cost 1020)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void feet_force_term_derivatives(const Scalar* q, const Scalar* f, Scalar* dtau_e_dq) noexcept {
+RBDC_HOST_DEVICE inline void feet_force_term_derivatives(const Scalar* q, const Scalar* f, Scalar* dtau_e_dq) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], q[5]};
   const auto joint_trig = joint_sincos(joint_angle);

@@ -21,7 +21,7 @@ namespace rbdc_gen::arm7::common::feet_force_terms_95442742f3e7 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             140   72    0     0    14    1    227
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void feet_force_terms(const Scalar* q, const Scalar* f, Scalar* tau_e) noexcept {
+RBDC_HOST_DEVICE inline void feet_force_terms(const Scalar* q, const Scalar* f, Scalar* tau_e) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

@@ -20,7 +20,7 @@ namespace rbdc_gen::arm7::common::feet_jacobian_f6d22fcf468f {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             108   74    0     0    12    4    198
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void feet_jacobian(const Scalar* q, Scalar* J) noexcept {
+RBDC_HOST_DEVICE inline void feet_jacobian(const Scalar* q, Scalar* J) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], q[5]};
   const auto joint_trig = joint_sincos(joint_angle);

@@ -21,7 +21,7 @@ namespace rbdc_gen::arm7::common::feet_velocities_f855a67b692a {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             141   75    0     0    14    0    230
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void feet_velocities(const Scalar* q, const Scalar* v, Scalar* pdot) noexcept {
+RBDC_HOST_DEVICE inline void feet_velocities(const Scalar* q, const Scalar* v, Scalar* pdot) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

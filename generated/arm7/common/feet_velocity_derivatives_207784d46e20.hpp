@@ -21,7 +21,7 @@ namespace rbdc_gen::arm7::common::feet_velocity_derivatives_207784d46e20 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             211  169    0     0    12    2    394
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void feet_velocity_derivatives(const Scalar* q, const Scalar* v, Scalar* dpdot_dq) noexcept {
+RBDC_HOST_DEVICE inline void feet_velocity_derivatives(const Scalar* q, const Scalar* v, Scalar* dpdot_dq) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], q[5]};
   const auto joint_trig = joint_sincos(joint_angle);

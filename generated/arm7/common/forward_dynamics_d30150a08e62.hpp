@@ -25,7 +25,7 @@ namespace rbdc_gen::arm7::common::forward_dynamics_d30150a08e62 {
 ///             859  657    6     0    14    0   1536
 /// schedule: scalar tree: 1536 arithmetic instructions, articulated-body algorithm 1995
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
+RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

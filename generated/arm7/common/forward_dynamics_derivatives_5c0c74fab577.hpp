@@ -15,7 +15,7 @@ namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_5c0c74fab577 {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics_derivatives_terms(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv) noexcept {
+RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);
@@ -1464,7 +1464,7 @@ RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics_derivatives_terms(
 ///   against the solve's 0 for Sᵀ's columns), ltdl_solve_columns solves them all at once,
 ///   one SIMD row update per factor entry (21)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* da_df) noexcept {
+RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* da_df) noexcept {
   alignas(64) Scalar solve_rhs[168];
   alignas(64) Scalar solve_L[21];
   alignas(64) Scalar solve_D_inv[7];

@@ -21,7 +21,7 @@ namespace rbdc_gen::arm7::common::frame_jacobians_b6a16c9c9271 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             295  193    0     0    14    9    511
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void frame_jacobians(const Scalar* q, Scalar* J_local, Scalar* J_world) noexcept {
+RBDC_HOST_DEVICE inline void frame_jacobians(const Scalar* q, Scalar* J_local, Scalar* J_world) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

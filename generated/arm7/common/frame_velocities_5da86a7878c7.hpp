@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::common::frame_velocities_5da86a7878c7 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             170   95    0     0    14    1    280
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void frame_velocities(const Scalar* q, const Scalar* v, Scalar* v_local, Scalar* v_world) noexcept {
+RBDC_HOST_DEVICE inline void frame_velocities(const Scalar* q, const Scalar* v, Scalar* v_local, Scalar* v_world) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

@@ -21,7 +21,7 @@ namespace rbdc_gen::arm7::common::gravity_derivatives_cf6816bbb5f8 {
 ///             274  182    0     0    12    6    474
 /// schedule: scalar tree: 474 arithmetic instructions, looped RNEA derivatives 1942 (cost 2709)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq) noexcept {
+RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

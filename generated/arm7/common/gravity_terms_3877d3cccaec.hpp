@@ -20,7 +20,7 @@ namespace rbdc_gen::arm7::common::gravity_terms_3877d3cccaec {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             117   75    0     0    12    1    205
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void gravity_terms(const Scalar* q, Scalar* g) noexcept {
+RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

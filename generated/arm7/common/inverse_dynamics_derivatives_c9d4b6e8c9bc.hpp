@@ -24,7 +24,7 @@ namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_c9d4b6e8c9bc {
 ///             1796  1548    0     0    12   10   3366
 /// schedule: scalar tree: 3366 arithmetic instructions, looped RNEA derivatives 4063 (cost 5679)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void inverse_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* dtau_dq, Scalar* dtau_dv) noexcept {
+RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* dtau_dq, Scalar* dtau_dv) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

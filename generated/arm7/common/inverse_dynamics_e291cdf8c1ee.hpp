@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::common::inverse_dynamics_e291cdf8c1ee {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             475  365    0     0    12    1    853
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void inverse_dynamics(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
+RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

@@ -21,7 +21,7 @@ namespace rbdc_gen::arm7::common::mass_matrix_94571527d2aa {
 ///             192  164    0     0    12    2    370
 /// schedule: scalar tree: 370 arithmetic instructions, looped CRBA 1484 (cost 2068)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
+RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

@@ -24,7 +24,7 @@ namespace rbdc_gen::arm7::common::mass_matrix_factor_e8fff2f1e436 {
 /// schedule: scalar tree: 496 arithmetic instructions, looped factor 593 (cost 1150), looped CRBA
 ///   1707 (cost 2848)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scalar* D, Scalar* D_inv) noexcept {
+RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scalar* D, Scalar* D_inv) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

@@ -20,7 +20,7 @@ namespace rbdc_gen::arm7::common::mass_matrix_inverse_0dac83da2fe7 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             367  298    6     0    12    2    685
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv) noexcept {
+RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

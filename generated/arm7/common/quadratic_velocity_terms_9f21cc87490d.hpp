@@ -21,7 +21,7 @@ namespace rbdc_gen::arm7::common::quadratic_velocity_terms_9f21cc87490d {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             454  342    0     0    12    1    809
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void quadratic_velocity_terms(const Scalar* q, const Scalar* v, Scalar* c) noexcept {
+RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Scalar* v, Scalar* c) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);

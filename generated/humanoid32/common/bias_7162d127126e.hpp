@@ -25,7 +25,7 @@ namespace rbdc_gen::humanoid32::common::bias_7162d127126e {
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 2535 arithmetic
 ///   instructions, scalar tree 4184 (cost 5282)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
+RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_v[13] = {make_lanes(v[6], v[12], v[6], v[12]),

@@ -16,7 +16,7 @@ namespace rbdc_gen::humanoid32::common::bias_derivatives_c226117e9eca {
 
 /// The traced part of bias_derivatives: what the loop below solves.
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void bias_derivatives_terms(const Scalar* q, const Scalar* v, Scalar* X, Scalar* g) noexcept {
+RBDC_HOST_DEVICE inline void bias_derivatives_terms(const Scalar* q, const Scalar* v, Scalar* X, Scalar* g) noexcept {
   static_cast<void>(v);
   // sines and cosines of the joint angles
   const Scalar joint_angle[32] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
@@ -498,7 +498,7 @@ RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void bias_derivatives_terms(const Scalar
 ///   gravity, rnea_derivatives_loop runs the recursion over a table of the tree (129 body-
 ///   ancestor steps)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void bias_derivatives(const Scalar* q, const Scalar* v, Scalar* dbias_dq, Scalar* dbias_dv) noexcept {
+RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, Scalar* dbias_dq, Scalar* dbias_dv) noexcept {
   alignas(64) Scalar solve_X[384];
   alignas(64) Scalar solve_g[3];
   bias_derivatives_terms(q, v, solve_X, solve_g);

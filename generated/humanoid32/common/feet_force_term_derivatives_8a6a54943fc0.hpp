@@ -22,7 +22,7 @@ namespace rbdc_gen::humanoid32::common::feet_force_term_derivatives_8a6a54943fc0
 ///             1812  1298    0     0    46    0   3156
 /// schedule: scalar tree: 3156 arithmetic instructions, looped feet force terms 4839 (cost 12134)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void feet_force_term_derivatives(const Scalar* q, const Scalar* f, Scalar* dtau_e_dq) noexcept {
+RBDC_HOST_DEVICE inline void feet_force_term_derivatives(const Scalar* q, const Scalar* f, Scalar* dtau_e_dq) noexcept {
   for (int k = 0; k < 1444; ++k) dtau_e_dq[k] = Scalar(0);
   // sines and cosines of the joint angles
   const Scalar joint_angle[23] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],

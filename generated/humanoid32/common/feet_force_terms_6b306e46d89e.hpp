@@ -21,7 +21,7 @@ namespace rbdc_gen::humanoid32::common::feet_force_terms_6b306e46d89e {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             758  444    0     0    64    8   1274
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void feet_force_terms(const Scalar* q, const Scalar* f, Scalar* tau_e) noexcept {
+RBDC_HOST_DEVICE inline void feet_force_terms(const Scalar* q, const Scalar* f, Scalar* tau_e) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[32] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18], q[19], q[20], q[21], q[22],

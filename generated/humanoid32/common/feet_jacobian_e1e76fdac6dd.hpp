@@ -20,7 +20,7 @@ namespace rbdc_gen::humanoid32::common::feet_jacobian_e1e76fdac6dd {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             636  480    0     0    46    0   1162
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void feet_jacobian(const Scalar* q, Scalar* J) noexcept {
+RBDC_HOST_DEVICE inline void feet_jacobian(const Scalar* q, Scalar* J) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[23] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18], q[19], q[20], q[21], q[25],

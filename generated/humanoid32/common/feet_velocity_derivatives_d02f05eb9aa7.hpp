@@ -21,7 +21,7 @@ namespace rbdc_gen::humanoid32::common::feet_velocity_derivatives_d02f05eb9aa7 {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1431  1233    0     0    58    0   2722
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void feet_velocity_derivatives(const Scalar* q, const Scalar* v, Scalar* dpdot_dq) noexcept {
+RBDC_HOST_DEVICE inline void feet_velocity_derivatives(const Scalar* q, const Scalar* v, Scalar* dpdot_dq) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[29] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18], q[19], q[20], q[21], q[22],

@@ -29,7 +29,7 @@ namespace rbdc_gen::humanoid32::common::forward_dynamics_07dc58095c0c {
 ///   scalar): 7214 arithmetic instructions (cost 12554), scalar tree 13701 (cost 28122),
 ///   limb lanes 8558 (cost 15779), articulated-body algorithm 11973 (cost 23975)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
+RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_f[6] = {make_lanes(f[0], f[3], f[0], f[3]),

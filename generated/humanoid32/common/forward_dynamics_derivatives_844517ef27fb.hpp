@@ -16,7 +16,7 @@ namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_844517ef27f
 
 /// Block 0 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part0(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part0(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_v[13] = {make_lanes(v[6], v[12], v[6], v[12]),
     make_lanes(v[7], v[13], v[7], v[13]),
@@ -449,7 +449,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 1 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part1(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part1(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_v[13] = {make_lanes(v[6], v[12], v[6], v[12]),
     make_lanes(v[7], v[13], v[7], v[13]),
@@ -1034,7 +1034,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 2 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part2(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part2(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -1618,7 +1618,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 3 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part3(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part3(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -2146,7 +2146,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 4 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part4(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part4(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -2668,7 +2668,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 5 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part5(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part5(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -3236,7 +3236,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 6 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part6(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part6(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -3891,7 +3891,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 7 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part7(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part7(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -4520,7 +4520,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 8 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part8(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part8(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -5102,7 +5102,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 9 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part9(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part9(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -5718,7 +5718,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 10 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part10(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part10(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -6312,7 +6312,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 11 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part11(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part11(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -6858,7 +6858,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 12 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part12(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part12(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -7407,7 +7407,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 13 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part13(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part13(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -7862,7 +7862,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 14 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part14(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part14(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_f[6] = {make_lanes(f[0], f[3], f[0], f[3]),
     make_lanes(f[1], f[4], f[1], f[4]),
@@ -8364,7 +8364,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 15 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part15(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part15(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_f[6] = {make_lanes(f[0], f[3], f[0], f[3]),
     make_lanes(f[1], f[4], f[1], f[4]),
@@ -8940,7 +8940,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 16 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part16(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part16(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -9575,7 +9575,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 17 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part17(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part17(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   static_cast<void>(q);
   static_cast<void>(tau);
@@ -10273,7 +10273,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 18 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part18(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part18(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   static_cast<void>(q);
   static_cast<void>(v);
@@ -10824,7 +10824,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 19 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part19(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part19(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   static_cast<void>(q);
   static_cast<void>(v);
@@ -11417,7 +11417,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 20 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part20(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part20(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   static_cast<void>(q);
   static_cast<void>(v);
@@ -11994,7 +11994,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 21 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part21(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part21(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_f[6] = {make_lanes(f[0], f[3], f[0], f[3]),
     make_lanes(f[1], f[4], f[1], f[4]),
@@ -12515,7 +12515,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 22 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part22(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part22(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_f[6] = {make_lanes(f[0], f[3], f[0], f[3]),
     make_lanes(f[1], f[4], f[1], f[4]),
@@ -13079,7 +13079,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 23 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part23(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part23(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_tau[13] = {make_lanes(tau[0], tau[6], tau[0], tau[6]),
     make_lanes(tau[1], tau[7], tau[1], tau[7]),
@@ -13702,7 +13702,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 24 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part24(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part24(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -14304,7 +14304,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 25 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part25(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part25(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -14922,7 +14922,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 26 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part26(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part26(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -15681,7 +15681,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 27 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part27(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part27(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -16273,7 +16273,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 28 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part28(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part28(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   const Lane lane_c[21] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),
     make_lanes(Scalar(0.19866933079506124), Scalar(-0.19866933079506124), Scalar(0.19866933079506124), Scalar(-0.19866933079506124)),
@@ -17022,7 +17022,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 
 /// Block 29 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives_terms_part29(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
+RBDC_HOST_DEVICE RBDC_NOINLINE void forward_dynamics_derivatives_terms_part29(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv, Scalar* rbdc_scratch) noexcept {
   using Lane = Lanes<Scalar>;
   static_cast<void>(q);
   static_cast<void>(v);
@@ -17857,7 +17857,7 @@ RBDC_HOST_DEVICE RBDC_NOINLINE RBDC_CODE_ALIGN void forward_dynamics_derivatives
 ///   of its own: one straight-line function of 7432 statements would compile in time
 ///   growing faster than its length
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics_derivatives_terms(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv) noexcept {
+RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv) noexcept {
   Scalar rbdc_scratch[5883];
   forward_dynamics_derivatives_terms_part0(q, v, tau, f, rhs, L, D_inv, rbdc_scratch);
   forward_dynamics_derivatives_terms_part1(q, v, tau, f, rhs, L, D_inv, rbdc_scratch);
@@ -17915,7 +17915,7 @@ RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics_derivatives_terms(
 ///   L⁻ᵀ over its columns' non-zero rows only (20512 multiply-adds against 43008 over the
 ///   whole tree), one SIMD row update per factor entry (336)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* da_df) noexcept {
+RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* da_df) noexcept {
   alignas(64) Scalar solve_rhs[4864];
   alignas(64) Scalar solve_L[336];
   alignas(64) Scalar solve_D_inv[38];

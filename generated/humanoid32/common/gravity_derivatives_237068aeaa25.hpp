@@ -24,7 +24,7 @@ namespace rbdc_gen::humanoid32::common::gravity_derivatives_237068aeaa25 {
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 3034 arithmetic
 ///   instructions, scalar tree 5325 (cost 8020), looped RNEA derivatives 9856 (cost 13751)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq) noexcept {
+RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_c[10] = {make_lanes(Scalar(0.09), Scalar(-0.09), Scalar(0.09), Scalar(-0.09)),

@@ -20,7 +20,7 @@ namespace rbdc_gen::humanoid32::common::gravity_terms_38917828f5d6 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             623  424    0     0    64   13   1124
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void gravity_terms(const Scalar* q, Scalar* g) noexcept {
+RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[32] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18], q[19], q[20], q[21], q[22],

@@ -26,7 +26,7 @@ namespace rbdc_gen::humanoid32::common::inverse_dynamics_a1774a2a427d {
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 2603 arithmetic
 ///   instructions, scalar tree 4283 (cost 5519)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void inverse_dynamics(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
+RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_a[13] = {make_lanes(a[6], a[12], a[6], a[12]),

@@ -16,7 +16,7 @@ namespace rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_5af2e5dd29f
 
 /// The traced part of inverse_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void inverse_dynamics_derivatives_terms(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* X, Scalar* g) noexcept {
+RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives_terms(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* X, Scalar* g) noexcept {
   static_cast<void>(v);
   static_cast<void>(a);
   // sines and cosines of the joint angles
@@ -500,7 +500,7 @@ RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void inverse_dynamics_derivatives_terms(
 ///   transforms and gravity, rnea_derivatives_loop runs the recursion over a table of the
 ///   tree (129 body-ancestor steps)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void inverse_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* dtau_dq, Scalar* dtau_dv) noexcept {
+RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* dtau_dq, Scalar* dtau_dv) noexcept {
   alignas(64) Scalar solve_X[384];
   alignas(64) Scalar solve_g[3];
   inverse_dynamics_derivatives_terms(q, v, a, solve_X, solve_g);

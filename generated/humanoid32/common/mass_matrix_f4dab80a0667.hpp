@@ -24,7 +24,7 @@ namespace rbdc_gen::humanoid32::common::mass_matrix_f4dab80a0667 {
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 2086 arithmetic
 ///   instructions, scalar tree 3652 (cost 4005), looped CRBA 7746 (cost 10804)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
+RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_c[14] = {make_lanes(Scalar(0.052000000000000005), Scalar(-0.052000000000000005), Scalar(0.052000000000000005), Scalar(-0.052000000000000005)),

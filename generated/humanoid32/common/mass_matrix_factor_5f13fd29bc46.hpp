@@ -24,7 +24,7 @@ namespace rbdc_gen::humanoid32::common::mass_matrix_factor_5f13fd29bc46 {
 /// schedule: scalar tree: 7494 arithmetic instructions (cost 13226), looped factor 7929 (cost
 ///   18974), looped CRBA 12023 (cost 25773)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scalar* D, Scalar* D_inv) noexcept {
+RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scalar* D, Scalar* D_inv) noexcept {
   for (int k = 0; k < 1444; ++k) L[k] = Scalar(0);
   // sines and cosines of the joint angles
   const Scalar joint_angle[32] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],

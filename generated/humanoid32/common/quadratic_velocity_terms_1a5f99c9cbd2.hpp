@@ -21,7 +21,7 @@ namespace rbdc_gen::humanoid32::common::quadratic_velocity_terms_1a5f99c9cbd2 {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2325  1776    0     0    64    0   4165
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void quadratic_velocity_terms(const Scalar* q, const Scalar* v, Scalar* c) noexcept {
+RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Scalar* v, Scalar* c) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[32] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18], q[19], q[20], q[21], q[22],

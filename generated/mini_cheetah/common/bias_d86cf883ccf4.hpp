@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::common::bias_d86cf883ccf4 {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 515 arithmetic
 ///   instructions, scalar tree 1775
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
+RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_v[3] = {make_lanes(v[6], v[9], v[12], v[15]),

@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::common::bias_derivatives_785d54d14fd2 {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1805 arithmetic
 ///   instructions, scalar tree 6675 (cost 11260), looped RNEA derivatives 7624 (cost 10651)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void bias_derivatives(const Scalar* q, const Scalar* v, Scalar* dbias_dq, Scalar* dbias_dv) noexcept {
+RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, Scalar* dbias_dq, Scalar* dbias_dv) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_v[3] = {make_lanes(v[6], v[9], v[12], v[15]),

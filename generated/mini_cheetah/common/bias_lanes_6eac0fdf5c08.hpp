@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah::common::bias_lanes_6eac0fdf5c08 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             995  780    0     0    24    0   1799
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void bias_lanes(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
+RBDC_HOST_DEVICE inline void bias_lanes(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_v[3] = {make_lanes(v[6], v[9], v[12], v[15]),

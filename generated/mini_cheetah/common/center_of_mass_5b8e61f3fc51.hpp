@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::common::center_of_mass_5b8e61f3fc51 {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 322 arithmetic
 ///   instructions, scalar tree 1041
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void center_of_mass(const Scalar* q, const Scalar* v, Scalar* com, Scalar* com_velocity) noexcept {
+RBDC_HOST_DEVICE inline void center_of_mass(const Scalar* q, const Scalar* v, Scalar* com, Scalar* com_velocity) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_v[3] = {make_lanes(v[6], v[9], v[12], v[15]),

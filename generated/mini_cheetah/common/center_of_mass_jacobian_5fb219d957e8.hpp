@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_5fb219d957e8 {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 236 arithmetic
 ///   instructions, scalar tree 713
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void center_of_mass_jacobian(const Scalar* q, Scalar* J_c) noexcept {
+RBDC_HOST_DEVICE inline void center_of_mass_jacobian(const Scalar* q, Scalar* J_c) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_c[5] = {make_lanes(Scalar(0.19), Scalar(0.19), Scalar(-0.19), Scalar(-0.19)),

@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::common::centroidal_bias_c72d4f5cccda {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 690 arithmetic
 ///   instructions, scalar tree 2256
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void centroidal_bias(const Scalar* q, const Scalar* v, Scalar* Adot_v) noexcept {
+RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, Scalar* Adot_v) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_v[3] = {make_lanes(v[6], v[9], v[12], v[15]),

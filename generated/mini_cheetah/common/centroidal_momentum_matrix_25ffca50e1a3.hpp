@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_25ffca50e1a
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 584 arithmetic
 ///   instructions, scalar tree 1646
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void centroidal_momentum_matrix(const Scalar* q, Scalar* A_G) noexcept {
+RBDC_HOST_DEVICE inline void centroidal_momentum_matrix(const Scalar* q, Scalar* A_G) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_c[14] = {make_lanes(Scalar(0.19), Scalar(0.19), Scalar(-0.19), Scalar(-0.19)),

@@ -27,7 +27,7 @@ namespace rbdc_gen::mini_cheetah::common::contact_dynamics_af290cbdb1f0 {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4954 arithmetic
 ///   instructions (cost 7130), scalar tree 9854 (cost 18890)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void contact_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, Scalar* a, Scalar* lambda) noexcept {
+RBDC_HOST_DEVICE inline void contact_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, Scalar* a, Scalar* lambda) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_tau[3] = {make_lanes(tau[0], tau[3], tau[6], tau[9]),

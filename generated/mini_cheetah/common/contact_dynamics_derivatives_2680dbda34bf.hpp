@@ -16,7 +16,7 @@ namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_2680dbda3
 
 /// The traced part of contact_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void contact_dynamics_derivatives_terms(const Scalar* q, const Scalar* v, const Scalar* tau, Scalar* R1, Scalar* R2, Scalar* Zt_D, Scalar* Z, Scalar* F_U, Scalar* F_DL, Scalar* mu, Scalar* L, Scalar* D_inv) noexcept {
+RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q, const Scalar* v, const Scalar* tau, Scalar* R1, Scalar* R2, Scalar* Zt_D, Scalar* Z, Scalar* F_U, Scalar* F_DL, Scalar* mu, Scalar* L, Scalar* D_inv) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_tau[3] = {make_lanes(tau[0], tau[3], tau[6], tau[9]),
@@ -2443,7 +2443,7 @@ RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void contact_dynamics_derivatives_terms(
 ///   between them, the Delassus system's proximal steps in closed form), one SIMD row
 ///   update per entry
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void contact_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* tau, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* dlambda_dq, Scalar* dlambda_dv, Scalar* dlambda_dtau) noexcept {
+RBDC_HOST_DEVICE inline void contact_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* tau, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* dlambda_dq, Scalar* dlambda_dv, Scalar* dlambda_dtau) noexcept {
   alignas(64) Scalar solve_R1[864];
   alignas(64) Scalar solve_R2[576];
   alignas(64) Scalar solve_Zt_D[216];

@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::common::feet_bias_accelerations_81d1af329877 {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 245 arithmetic
 ///   instructions, scalar tree 864
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void feet_bias_accelerations(const Scalar* q, const Scalar* v, Scalar* Jdot_v) noexcept {
+RBDC_HOST_DEVICE inline void feet_bias_accelerations(const Scalar* q, const Scalar* v, Scalar* Jdot_v) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_v[3] = {make_lanes(v[6], v[9], v[12], v[15]),

@@ -22,7 +22,7 @@ namespace rbdc_gen::mini_cheetah::common::feet_force_term_derivatives_1249c6e04c
 ///             891  660    0     0    24    8   1583
 /// schedule: scalar tree: 1583 arithmetic instructions, looped feet force terms 1889 (cost 4094)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void feet_force_term_derivatives(const Scalar* q, const Scalar* f, Scalar* dtau_e_dq) noexcept {
+RBDC_HOST_DEVICE inline void feet_force_term_derivatives(const Scalar* q, const Scalar* f, Scalar* dtau_e_dq) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

@@ -20,7 +20,7 @@ namespace rbdc_gen::mini_cheetah::common::feet_jacobian_f9b1437a55ba {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             327  266    0     0    24    0    617
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void feet_jacobian(const Scalar* q, Scalar* J) noexcept {
+RBDC_HOST_DEVICE inline void feet_jacobian(const Scalar* q, Scalar* J) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

@@ -28,7 +28,7 @@ namespace rbdc_gen::mini_cheetah::common::forward_dynamics_495ae6a418b2 {
 ///   trunk scalar): 1354 arithmetic instructions, scalar tree 4123 (cost 5135), limb lanes
 ///   1425, articulated-body algorithm 4476 (cost 5982)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
+RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_f[3] = {make_lanes(f[0], f[3], f[6], f[9]),

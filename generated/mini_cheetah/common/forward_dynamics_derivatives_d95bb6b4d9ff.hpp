@@ -16,7 +16,7 @@ namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_d95bb6b4d
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics_derivatives_terms(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv) noexcept {
+RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* rhs, Scalar* L, Scalar* D_inv) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_f[3] = {make_lanes(f[0], f[3], f[6], f[9]),
@@ -1284,7 +1284,7 @@ RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics_derivatives_terms(
 ///   the factor, ltdl_solve_columns solves them all at once, one SIMD row update per factor
 ///   entry (99)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* da_df) noexcept {
+RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* da_df) noexcept {
   alignas(64) Scalar solve_rhs[1152];
   alignas(64) Scalar solve_L[99];
   alignas(64) Scalar solve_D_inv[18];

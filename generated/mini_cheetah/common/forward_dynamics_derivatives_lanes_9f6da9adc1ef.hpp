@@ -29,7 +29,7 @@ namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_lanes_9f6
 /// operations    mul    add  div  sqrt  trig  neg  total
 ///             14047  12483   14     0    24  227  26795
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics_derivatives_lanes(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* da_df) noexcept {
+RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_lanes(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* da_dq, Scalar* da_dv, Scalar* da_dtau, Scalar* da_df) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_f[3] = {make_lanes(f[0], f[3], f[6], f[9]),

@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_aead3259f3ad {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2272  1854   14     0    24   81   4245
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics_lanes(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
+RBDC_HOST_DEVICE inline void forward_dynamics_lanes(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_f[3] = {make_lanes(f[0], f[3], f[6], f[9]),

@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::common::frame_bias_accelerations_36eac73e72bc 
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 284 arithmetic
 ///   instructions, scalar tree 951
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void frame_bias_accelerations(const Scalar* q, const Scalar* v, Scalar* spatial, Scalar* classical) noexcept {
+RBDC_HOST_DEVICE inline void frame_bias_accelerations(const Scalar* q, const Scalar* v, Scalar* spatial, Scalar* classical) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_v[3] = {make_lanes(v[6], v[9], v[12], v[15]),

@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::common::frame_jacobians_3d8b89cd7923 {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 381 arithmetic
 ///   instructions, scalar tree 1335
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void frame_jacobians(const Scalar* q, Scalar* J_local, Scalar* J_world) noexcept {
+RBDC_HOST_DEVICE inline void frame_jacobians(const Scalar* q, Scalar* J_local, Scalar* J_world) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_c[4] = {make_lanes(Scalar(-0.004), Scalar(0.004), Scalar(-0.004), Scalar(0.004)),

@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::common::frame_placements_b326b73d8334 {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 126 arithmetic
 ///   instructions, scalar tree 405
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void frame_placements(const Scalar* q, Scalar* R, Scalar* p) noexcept {
+RBDC_HOST_DEVICE inline void frame_placements(const Scalar* q, Scalar* R, Scalar* p) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_c[4] = {make_lanes(Scalar(-0.004), Scalar(0.004), Scalar(-0.004), Scalar(0.004)),

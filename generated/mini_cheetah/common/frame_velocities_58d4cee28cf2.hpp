@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::common::frame_velocities_58d4cee28cf2 {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 211 arithmetic
 ///   instructions, scalar tree 661
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void frame_velocities(const Scalar* q, const Scalar* v, Scalar* v_local, Scalar* v_world) noexcept {
+RBDC_HOST_DEVICE inline void frame_velocities(const Scalar* q, const Scalar* v, Scalar* v_local, Scalar* v_world) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_v[3] = {make_lanes(v[6], v[9], v[12], v[15]),

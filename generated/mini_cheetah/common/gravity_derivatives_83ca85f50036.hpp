@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah::common::gravity_derivatives_83ca85f50036 {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 296 arithmetic
 ///   instructions, scalar tree 1051, looped RNEA derivatives 3370 (cost 4696)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq) noexcept {
+RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_c[8] = {make_lanes(Scalar(0.19), Scalar(0.19), Scalar(-0.19), Scalar(-0.19)),

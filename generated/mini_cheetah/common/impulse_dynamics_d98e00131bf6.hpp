@@ -27,7 +27,7 @@ namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_d98e00131bf6 {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4187 arithmetic
 ///   instructions (cost 5289), scalar tree 7375 (cost 12940)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void impulse_dynamics(const Scalar* q, const Scalar* v, const Scalar* restitution, Scalar* v_plus, Scalar* impulse) noexcept {
+RBDC_HOST_DEVICE inline void impulse_dynamics(const Scalar* q, const Scalar* v, const Scalar* restitution, Scalar* v_plus, Scalar* impulse) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_v[3] = {make_lanes(v[6], v[9], v[12], v[15]),

@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_cd327c8c6208 {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 242 arithmetic
 ///   instructions, scalar tree 824
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void inverse_dynamics(const Scalar* q, const Scalar* a, Scalar* tau) noexcept {
+RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* a, Scalar* tau) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_a[3] = {make_lanes(a[6], a[9], a[12], a[15]),

@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_d1e06b234
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1842 arithmetic
 ///   instructions, scalar tree 6806 (cost 11574), looped RNEA derivatives 7696 (cost 10752)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void inverse_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* dtau_dq, Scalar* dtau_dv) noexcept {
+RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* dtau_dq, Scalar* dtau_dv) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_a[3] = {make_lanes(a[6], a[9], a[12], a[15]),

@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_lanes_fd4
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             3488  3195    0     0    24   58   6765
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void inverse_dynamics_derivatives_lanes(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* dtau_dq, Scalar* dtau_dv) noexcept {
+RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives_lanes(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* dtau_dq, Scalar* dtau_dv) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_a[3] = {make_lanes(a[6], a[9], a[12], a[15]),

@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_1e9cea7cb328 {
 /// operations   mul  add  div  sqrt  trig  neg  total
 ///             1061  858    0     0    24    0   1943
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void inverse_dynamics_lanes(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
+RBDC_HOST_DEVICE inline void inverse_dynamics_lanes(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_a[3] = {make_lanes(a[6], a[9], a[12], a[15]),

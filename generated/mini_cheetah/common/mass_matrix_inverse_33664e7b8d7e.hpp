@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah::common::mass_matrix_inverse_33664e7b8d7e {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1311 arithmetic
 ///   instructions, scalar tree 3610 (cost 3904)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv) noexcept {
+RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_c[12] = {make_lanes(Scalar(5.8e-05), Scalar(-5.8e-05), Scalar(5.8e-05), Scalar(-5.8e-05)),

@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_1bb489fc3102 {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 217 arithmetic
 ///   instructions, scalar tree 781
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void mass_matrix_lower(const Scalar* q, Scalar* M) noexcept {
+RBDC_HOST_DEVICE inline void mass_matrix_lower(const Scalar* q, Scalar* M) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_c[12] = {make_lanes(Scalar(5.8e-05), Scalar(-5.8e-05), Scalar(5.8e-05), Scalar(-5.8e-05)),

@@ -22,7 +22,7 @@ namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_lanes_9a085285fbd5 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             388  366    0     0    24   27    805
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M) noexcept {
+RBDC_HOST_DEVICE inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_c[12] = {make_lanes(Scalar(5.8e-05), Scalar(-5.8e-05), Scalar(5.8e-05), Scalar(-5.8e-05)),

@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::common::osc_closed_chain_adb3e9cda896 {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2385  1859    9     0    24   17   4294
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void osc_closed_chain(const Scalar* q, const Scalar* v, const Scalar* ground_mass, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
+RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, const Scalar* ground_mass, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

@@ -27,7 +27,7 @@ namespace rbdc_gen::mini_cheetah::common::osc_open_chain_6ca902462725 {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1198 arithmetic
 ///   instructions, scalar tree 4251 (cost 5442)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void osc_open_chain(const Scalar* q, const Scalar* v, const Scalar* f, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
+RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, const Scalar* f, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_f[3] = {make_lanes(f[0], f[3], f[6], f[9]),

@@ -27,7 +27,7 @@ namespace rbdc_gen::mini_cheetah::common::osc_open_chain_lanes_784f9d9e0ed0 {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2384  1837    8     0    24   32   4285
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void osc_open_chain_lanes(const Scalar* q, const Scalar* v, const Scalar* f, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
+RBDC_HOST_DEVICE inline void osc_open_chain_lanes(const Scalar* q, const Scalar* v, const Scalar* f, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_f[3] = {make_lanes(f[0], f[3], f[6], f[9]),

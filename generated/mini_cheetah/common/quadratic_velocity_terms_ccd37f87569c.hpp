@@ -21,7 +21,7 @@ namespace rbdc_gen::mini_cheetah::common::quadratic_velocity_terms_ccd37f87569c 
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             967  765    0     0    24    0   1756
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void quadratic_velocity_terms(const Scalar* q, const Scalar* v, Scalar* c) noexcept {
+RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Scalar* v, Scalar* c) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

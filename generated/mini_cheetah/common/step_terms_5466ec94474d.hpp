@@ -32,7 +32,7 @@ namespace rbdc_gen::mini_cheetah::common::step_terms_5466ec94474d {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2471  2049   14     0    24   28   4586
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void step_terms(const Scalar* q, const Scalar* v, const Scalar* tau, Scalar* p, Scalar* pdot, Scalar* omega, Scalar* J, Scalar* Jw, Scalar* L, Scalar* D, Scalar* D_inv, Scalar* a) noexcept {
+RBDC_HOST_DEVICE inline void step_terms(const Scalar* q, const Scalar* v, const Scalar* tau, Scalar* p, Scalar* pdot, Scalar* omega, Scalar* J, Scalar* Jw, Scalar* L, Scalar* D, Scalar* D_inv, Scalar* a) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

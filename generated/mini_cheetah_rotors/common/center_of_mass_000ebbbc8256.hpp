@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah_rotors::common::center_of_mass_000ebbbc8256 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             659  569    0     0    24    0   1252
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void center_of_mass(const Scalar* q, const Scalar* v, Scalar* com, Scalar* com_velocity) noexcept {
+RBDC_HOST_DEVICE inline void center_of_mass(const Scalar* q, const Scalar* v, Scalar* com, Scalar* com_velocity) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

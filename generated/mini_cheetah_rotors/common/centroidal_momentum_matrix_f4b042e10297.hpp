@@ -21,7 +21,7 @@ namespace rbdc_gen::mini_cheetah_rotors::common::centroidal_momentum_matrix_f4b0
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             929  862    0     0    24   14   1829
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void centroidal_momentum_matrix(const Scalar* q, Scalar* A_G) noexcept {
+RBDC_HOST_DEVICE inline void centroidal_momentum_matrix(const Scalar* q, Scalar* A_G) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

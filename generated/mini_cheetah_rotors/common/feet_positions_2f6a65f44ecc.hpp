@@ -21,7 +21,7 @@ namespace rbdc_gen::mini_cheetah_rotors::common::feet_positions_2f6a65f44ecc {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             183  146    0     0    24    0    353
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void feet_positions(const Scalar* q, Scalar* p) noexcept {
+RBDC_HOST_DEVICE inline void feet_positions(const Scalar* q, Scalar* p) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah_rotors::common::forward_dynamics_7d303b9e5e5c {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2666  2257   14     0    24    1   4962
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
+RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

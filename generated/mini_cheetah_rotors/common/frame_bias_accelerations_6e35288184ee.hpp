@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah_rotors::common::frame_bias_accelerations_6e3528
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             544  379    0     0    24    4    951
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void frame_bias_accelerations(const Scalar* q, const Scalar* v, Scalar* spatial, Scalar* classical) noexcept {
+RBDC_HOST_DEVICE inline void frame_bias_accelerations(const Scalar* q, const Scalar* v, Scalar* spatial, Scalar* classical) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

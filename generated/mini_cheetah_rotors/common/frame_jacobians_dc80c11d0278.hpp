@@ -22,7 +22,7 @@ namespace rbdc_gen::mini_cheetah_rotors::common::frame_jacobians_dc80c11d0278 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             729  530    0     0    24   52   1335
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void frame_jacobians(const Scalar* q, Scalar* J_local, Scalar* J_world) noexcept {
+RBDC_HOST_DEVICE inline void frame_jacobians(const Scalar* q, Scalar* J_local, Scalar* J_world) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

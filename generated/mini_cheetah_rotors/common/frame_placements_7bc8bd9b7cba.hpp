@@ -22,7 +22,7 @@ namespace rbdc_gen::mini_cheetah_rotors::common::frame_placements_7bc8bd9b7cba {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             207  158    0     0    24   16    405
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void frame_placements(const Scalar* q, Scalar* R, Scalar* p) noexcept {
+RBDC_HOST_DEVICE inline void frame_placements(const Scalar* q, Scalar* R, Scalar* p) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

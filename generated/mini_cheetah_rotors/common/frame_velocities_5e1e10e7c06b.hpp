@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah_rotors::common::frame_velocities_5e1e10e7c06b {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             375  252    0     0    24   10    661
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void frame_velocities(const Scalar* q, const Scalar* v, Scalar* v_local, Scalar* v_world) noexcept {
+RBDC_HOST_DEVICE inline void frame_velocities(const Scalar* q, const Scalar* v, Scalar* v_local, Scalar* v_world) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

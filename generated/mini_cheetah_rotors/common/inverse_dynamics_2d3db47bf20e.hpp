@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah_rotors::common::inverse_dynamics_2d3db47bf20e {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1485  1275    0     0    24    0   2784
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void inverse_dynamics(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
+RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

@@ -21,7 +21,7 @@ namespace rbdc_gen::mini_cheetah_rotors::common::mass_matrix_7c9f6796db8c {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             372  384    0     0    24   21    801
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
+RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

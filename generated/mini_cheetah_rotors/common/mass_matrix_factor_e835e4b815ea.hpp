@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah_rotors::common::mass_matrix_factor_e835e4b815ea
 ///             846  749   14     0    24   14   1647
 /// schedule: scalar tree: 1647 arithmetic instructions, looped factor 1929 (cost 4749)
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scalar* D, Scalar* D_inv) noexcept {
+RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scalar* D, Scalar* D_inv) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

@@ -21,7 +21,7 @@ namespace rbdc_gen::mini_cheetah_rotors::common::mass_matrix_inverse_8e5b65c3f31
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1920  1670   14     0    24    2   3630
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv) noexcept {
+RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah_rotors::common::osc_open_chain_f736faabfa99 {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2608  2190    8     0    24   29   4859
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void osc_open_chain(const Scalar* q, const Scalar* v, const Scalar* f, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
+RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, const Scalar* f, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};

@@ -22,7 +22,7 @@ namespace rbdc_gen::mini_cheetah_rotors::common::quadratic_velocity_terms_06fc1d
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1396  1155    0     0    24    0   2575
 template <class Scalar>
-RBDC_HOST_DEVICE RBDC_CODE_ALIGN inline void quadratic_velocity_terms(const Scalar* q, const Scalar* v, Scalar* c) noexcept {
+RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Scalar* v, Scalar* c) noexcept {
   // sines and cosines of the joint angles
   const Scalar joint_angle[12] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18]};
