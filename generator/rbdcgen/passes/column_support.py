@@ -6,10 +6,11 @@ rows closed under ancestors stays zero off it. ∂τ/∂q_j and ∂τ/∂v_j are
 ancestors and descendants only (a force below j or a motion above it), Sᵀ's column of dof j on j, a
 foot's Jacobian column on the foot's path. On a humanoid such a set is one limb and the trunk above
 it: taken eight columns at a time as Talos's outputs order them, L⁻ᵀ would visit 44 % of the factor
-entries it visits over the whole tree (but a block of twelve such runs spans every limb). The columns are
-sorted by the deepest of their rows (a limb's side by side), cut into blocks of whole runs of RUN
-columns, and each block's L⁻ᵀ runs over the union of its columns' rows (rbdc_gen::RowSubset,
-ltdl_solve_column_range). L⁻¹D⁻¹ fills every row, so the second half is as before."""
+entries it visits over the whole tree (but a block of twelve such runs spans every limb). The
+columns are sorted by the deepest of their rows (a limb's side by side), cut into blocks of whole
+runs of RUN columns, and each block's L⁻ᵀ runs over the union of its columns' rows
+(rbdc_gen::RowSubset, ltdl_solve_column_range). L⁻¹D⁻¹ fills every row, so the second half is as
+before."""
 
 from __future__ import annotations
 
