@@ -19,6 +19,15 @@
 #define RBDC_HOST_DEVICE
 #endif
 
+// The loops' tables (the tree's constants, each block's rows) are built at compile time, once: as
+// const locals they were copied onto the stack on every call (Talos's ∂q̈, 20.2 → 19.3 µs with clang
+// 14). Device code keeps const locals, which every nvcc takes.
+#if defined(__CUDA_ARCH__)
+#define RBDC_TABLE const
+#else
+#define RBDC_TABLE static constexpr
+#endif
+
 // The blocks of a long generated function stay separate functions: inlined back into one, they
 // would cost the compile time that cutting them saved (docs/performance.md, "Blocks").
 #if defined(__CUDACC__)
