@@ -92,6 +92,12 @@ RBDC_HOST_DEVICE inline Lanes<T> load_lanes(const T* p) noexcept {
   return LanesOf<T>::load(p);
 }
 
+/// The lanes (p[0], …, p[U − 1]) repeated: a group of U < 4 limbs filling the four lanes.
+template <int U, class T>
+RBDC_HOST_DEVICE inline Lanes<T> load_repeated_lanes(const T* p) noexcept {
+  return make_lanes(p[0], p[1 % U], p[2 % U], p[3 % U]);
+}
+
 /// p[0], p[1], p[2], p[3] = the lanes (x[0], x[1], x[2], x[3]).
 template <class T>
 RBDC_HOST_DEVICE inline void store_lanes(T* p, const Lanes<T>& x) noexcept {

@@ -7,11 +7,11 @@
 // feet_force_term_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_term_derivatives is the same code:
-//   humanoid32/common/feet_force_term_derivatives_8a6a54943fc0.hpp
+//   humanoid32/common/feet_force_term_derivatives_176579ee071b.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/feet_force_term_derivatives_8a6a54943fc0.hpp"
+#include "humanoid32/common/feet_force_term_derivatives_176579ee071b.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1812  1298    0     0    46    0   3156
 /// schedule: scalar tree: 3156 arithmetic instructions, looped feet force terms 4839 (cost 12134)
-using ::rbdc_gen::humanoid32::common::feet_force_term_derivatives_8a6a54943fc0::feet_force_term_derivatives;
+using ::rbdc_gen::humanoid32::common::feet_force_term_derivatives_176579ee071b::feet_force_term_derivatives;
 
 /// feet_force_term_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // bias for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   humanoid32/common/bias_7162d127126e.hpp
+//   humanoid32/common/bias_f8cdb78a73cb.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/bias_7162d127126e.hpp"
+#include "humanoid32/common/bias_f8cdb78a73cb.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -22,11 +22,11 @@ namespace rbdc_gen::humanoid32::full {
 /// @param cg out 38x1: quadratic velocity and gravity terms c + g
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             4210  3192    0     0   116    0   7518
+///             4210  3192    0     0    64    0   7466
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 2535 arithmetic
 ///   instructions, scalar tree 4184 (cost 5282)
-using ::rbdc_gen::humanoid32::common::bias_7162d127126e::bias;
+using ::rbdc_gen::humanoid32::common::bias_f8cdb78a73cb::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

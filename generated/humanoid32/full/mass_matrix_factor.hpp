@@ -7,11 +7,11 @@
 // mass_matrix_factor for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   humanoid32/common/mass_matrix_factor_5f13fd29bc46.hpp
+//   humanoid32/common/mass_matrix_factor_e4e6a8eceda3.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/mass_matrix_factor_5f13fd29bc46.hpp"
+#include "humanoid32/common/mass_matrix_factor_e4e6a8eceda3.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::humanoid32::full {
 ///             4120  3259   33     0    64   18   7494
 /// schedule: scalar tree: 7494 arithmetic instructions (cost 13226), looped factor 7929 (cost
 ///   18974), looped CRBA 12023 (cost 25773)
-using ::rbdc_gen::humanoid32::common::mass_matrix_factor_5f13fd29bc46::mass_matrix_factor;
+using ::rbdc_gen::humanoid32::common::mass_matrix_factor_e4e6a8eceda3::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

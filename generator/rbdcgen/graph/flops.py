@@ -22,12 +22,15 @@ def _result(counts):
 def count_ops(fn):
     """Operations of the live DAG of `fn` after folding, CSE and DCE (what emit_body prints), and of
     its looped solve if it has one. A lane operation counts once per lane (ex.LANES), the sum over
-    the lanes as LANES − 1 additions."""
+    the lanes as LANES − 1 additions, a lane joint angle's sin or cos once per distinct lane (a
+    pair's 2: emit computes only those)."""
     counts = {}
     for node in ex.reachable(fn.output_exprs()):
         kind = "add" if node.op == "lane_sum" else _KIND.get(node.op)
         if kind is not None:
             times = ex.LANES - 1 if node.op == "lane_sum" else ex.LANES if node.lane else 1
+            if kind == "trig" and node.lane and node.args[0].op == "sym":
+                times = fn.lanes.distinct_lanes(*node.args[0].value)
             counts[kind] = counts.get(kind, 0) + times
     if fn.solve is not None:  # the loop that solves the traced terms (passes/looped_solve.py)
         for kind, n in fn.solve.operations().items():

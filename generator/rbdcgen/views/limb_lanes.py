@@ -33,6 +33,12 @@ class LaneLayout:
     inputs: dict       # "lane_q" / "lane_v" / "lane_a" → per lane joint l, the (array, index) per lane
     angle_names: dict  # ("lane_q", l) → the identifier its sin/cos are named by
 
+    def distinct_lanes(self, array, index):
+        """How many lanes of lane input array[index] hold values of their own: all ex.LANES, or the
+        2 (1) of a smaller group repeated to fill them (only those need their own sin and cos)."""
+        sources = self.inputs[array][index]
+        return next(u for u in (1, 2, ex.LANES) if all(s == sources[k % u] for k, s in enumerate(sources)))
+
     def with_lanes(self, inputs):
         """Inputs {array: floats} of the full robot with the lane arrays added (expr.evaluate)."""
         lanes = {name: [tuple(inputs[array][index] for array, index in sources) for sources in joints]

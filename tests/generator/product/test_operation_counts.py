@@ -5,7 +5,8 @@ looped_factor.py, looped_solve.py, looped_rnea_derivatives.py, looped_feet_force
 column_support.py: loops counted by trip count, the traced parts node by node) on a
 branched tree with revolute and prismatic joints and two feet in contact, floating and fixed, on a
 mimic-coupled gripper's looped solve and RNEA derivatives, on a 32-link chain's ∂a/∂τ as M⁻¹'s rows,
-and on the Mini Cheetah's `full` scene (limb lanes: a lane operation counts four, a sum over the lanes three)."""
+on the Mini Cheetah's `full` scene (limb lanes: a lane operation counts four, a sum over the lanes three)
+and on humanoid32's limbs in pairs (a pair's joint angle: two sines and two cosines, not four)."""
 import os
 import re
 import subprocess
@@ -34,6 +35,7 @@ LOOPED_SOLVE = ("name: counted\nquantities: [forward_dynamics, contact_dynamics,
                 "derivatives: [forward_dynamics_derivatives, contact_dynamics_derivatives]\nschedule: looped_solve\n")
 COUPLED_LOOPED_SOLVE = "name: counted\nderivatives: [forward_dynamics_derivatives]\nschedule: looped_solve\n"
 CHAIN_INVERSE = "name: counted\nderivatives: [forward_dynamics_derivatives]\nschedule: looped_rnea\n"
+PAIRED_LANES = "name: counted\nquantities: [inverse_dynamics, mass_matrix]\nschedule: limb_lanes\n"
 COUPLED_LOOPED_RNEA = ("name: counted\nderivatives: [inverse_dynamics_derivatives, bias_derivatives, gravity_derivatives, "
                        "forward_dynamics_derivatives]\n"
                        "schedule: looped_rnea\n")
@@ -176,6 +178,11 @@ class OperationCountTest(unittest.TestCase):
     def test_mini_cheetah_full_scene_in_limb_lanes(self):
         self.assertIn("limb lanes", self.check(MINI_CHEETAH, "floating", (SCENES / "full.yaml").read_text(),
                                                "mini_cheetah", "full"))
+
+    def test_limbs_in_pairs(self):
+        text = self.check(ROOT / "robots" / "humanoid32.urdf", "floating", PAIRED_LANES, "humanoid32", "counted")
+        self.assertEqual(text.count("schedule: limb lanes"), 2)
+        self.assertIn("load_repeated_lanes<2>(joint_trig.sin", text)
 
 
 if __name__ == "__main__":

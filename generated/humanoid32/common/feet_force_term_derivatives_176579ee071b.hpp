@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::feet_force_term_derivatives_8a6a54943fc0 {
+namespace rbdc_gen::humanoid32::common::feet_force_term_derivatives_176579ee071b {
 
 /// Derivative of τ_e = Jᵀf at fixed world foot forces f.
 ///
@@ -23,7 +23,83 @@ namespace rbdc_gen::humanoid32::common::feet_force_term_derivatives_8a6a54943fc0
 /// schedule: scalar tree: 3156 arithmetic instructions, looped feet force terms 4839 (cost 12134)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void feet_force_term_derivatives(const Scalar* q, const Scalar* f, Scalar* dtau_e_dq) noexcept {
-  for (int k = 0; k < 1444; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 22; k < 24; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 29; k < 31; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 36; k < 38; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 60; k < 62; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 67; k < 69; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 74; k < 76; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 98; k < 100; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 105; k < 107; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 112; k < 228; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 231; k < 234; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 240; k < 266; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 269; k < 272; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 278; k < 304; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 307; k < 310; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 316; k < 342; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 345; k < 348; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 354; k < 380; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 383; k < 386; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 392; k < 418; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 421; k < 424; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 430; k < 456; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 459; k < 468; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 474; k < 494; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 497; k < 506; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 512; k < 532; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 535; k < 544; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 550; k < 570; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 573; k < 582; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 588; k < 608; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 611; k < 620; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 626; k < 646; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 649; k < 658; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 664; k < 684; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 687; k < 702; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 706; k < 708; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 713; k < 715; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 720; k < 722; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 725; k < 740; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 744; k < 746; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 751; k < 753; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 758; k < 760; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 763; k < 778; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 782; k < 784; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 789; k < 791; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 796; k < 798; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 801; k < 816; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 820; k < 912; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 915; k < 930; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 933; k < 936; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 941; k < 950; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 953; k < 968; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 971; k < 974; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 979; k < 988; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 991; k < 1006; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1009; k < 1012; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1017; k < 1026; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1029; k < 1044; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1047; k < 1050; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1055; k < 1064; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1067; k < 1082; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1085; k < 1088; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1093; k < 1178; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1181; k < 1196; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1199; k < 1209; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1214; k < 1216; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1219; k < 1234; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1237; k < 1247; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1252; k < 1254; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1257; k < 1272; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1275; k < 1285; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1290; k < 1292; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1295; k < 1310; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1313; k < 1323; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1328; k < 1330; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1333; k < 1348; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1351; k < 1361; ++k) dtau_e_dq[k] = Scalar(0);
+  for (int k = 1366; k < 1444; ++k) dtau_e_dq[k] = Scalar(0);
   // sines and cosines of the joint angles
   const Scalar joint_angle[23] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18], q[19], q[20], q[21], q[25],
@@ -1335,4 +1411,4 @@ RBDC_HOST_DEVICE inline void feet_force_term_derivatives(const Scalar* q, const 
   dtau_e_dq[1364] = t845;
 }
 
-}  // namespace rbdc_gen::humanoid32::common::feet_force_term_derivatives_8a6a54943fc0
+}  // namespace rbdc_gen::humanoid32::common::feet_force_term_derivatives_176579ee071b

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::inverse_dynamics_a1774a2a427d {
+namespace rbdc_gen::humanoid32::common::inverse_dynamics_63cc7583219c {
 
 /// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3).
 ///
@@ -21,7 +21,7 @@ namespace rbdc_gen::humanoid32::common::inverse_dynamics_a1774a2a427d {
 /// @param tau out 38x1: generalised forces M a + c + g
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             4263  3306    0     0   116    0   7685
+///             4263  3306    0     0    64    0   7633
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 2603 arithmetic
 ///   instructions, scalar tree 4283 (cost 5519)
@@ -64,53 +64,49 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
     make_lanes(Scalar(0.00936), Scalar(-0.00936), Scalar(0.00936), Scalar(-0.00936)),
     make_lanes(Scalar(0.018000000000000002), Scalar(-0.018000000000000002), Scalar(0.018000000000000002), Scalar(-0.018000000000000002))};
   // sines and cosines of the joint angles
-  const Scalar joint_angle[58] = {q[7], q[13], q[7], q[13], q[8], q[14], q[8], q[14],
-    q[9], q[15], q[9], q[15], q[10], q[16], q[10], q[16],
-    q[11], q[17], q[11], q[17], q[12], q[18], q[12], q[18],
-    q[25], q[32], q[25], q[32], q[26], q[33], q[26], q[33],
-    q[27], q[34], q[27], q[34], q[28], q[35], q[28], q[35],
-    q[29], q[36], q[29], q[36], q[30], q[37], q[30], q[37],
-    q[31], q[38], q[31], q[38], q[19], q[20], q[21], q[22],
-    q[23], q[24]};
+  const Scalar joint_angle[32] = {q[7], q[13], q[8], q[14], q[9], q[15], q[10], q[16],
+    q[11], q[17], q[12], q[18], q[25], q[32], q[26], q[33],
+    q[27], q[34], q[28], q[35], q[29], q[36], q[30], q[37],
+    q[31], q[38], q[19], q[20], q[21], q[22], q[23], q[24]};
   const auto joint_trig = joint_sincos(joint_angle);
-  const Lane sin_lanes_hip_yaw = load_lanes(joint_trig.sin + 0);
-  const Lane cos_lanes_hip_yaw = load_lanes(joint_trig.cos + 0);
-  const Lane sin_lanes_hip_roll = load_lanes(joint_trig.sin + 4);
-  const Lane cos_lanes_hip_roll = load_lanes(joint_trig.cos + 4);
-  const Lane sin_lanes_hip_pitch = load_lanes(joint_trig.sin + 8);
-  const Lane cos_lanes_hip_pitch = load_lanes(joint_trig.cos + 8);
-  const Lane sin_lanes_knee = load_lanes(joint_trig.sin + 12);
-  const Lane cos_lanes_knee = load_lanes(joint_trig.cos + 12);
-  const Lane sin_lanes_ankle_pitch = load_lanes(joint_trig.sin + 16);
-  const Lane cos_lanes_ankle_pitch = load_lanes(joint_trig.cos + 16);
-  const Lane sin_lanes_ankle_roll = load_lanes(joint_trig.sin + 20);
-  const Lane cos_lanes_ankle_roll = load_lanes(joint_trig.cos + 20);
-  const Lane sin_lanes_shoulder_pitch = load_lanes(joint_trig.sin + 24);
-  const Lane cos_lanes_shoulder_pitch = load_lanes(joint_trig.cos + 24);
-  const Lane sin_lanes_shoulder_roll = load_lanes(joint_trig.sin + 28);
-  const Lane cos_lanes_shoulder_roll = load_lanes(joint_trig.cos + 28);
-  const Lane sin_lanes_shoulder_yaw = load_lanes(joint_trig.sin + 32);
-  const Lane cos_lanes_shoulder_yaw = load_lanes(joint_trig.cos + 32);
-  const Lane sin_lanes_elbow = load_lanes(joint_trig.sin + 36);
-  const Lane cos_lanes_elbow = load_lanes(joint_trig.cos + 36);
-  const Lane sin_lanes_wrist_yaw = load_lanes(joint_trig.sin + 40);
-  const Lane cos_lanes_wrist_yaw = load_lanes(joint_trig.cos + 40);
-  const Lane sin_lanes_wrist_pitch = load_lanes(joint_trig.sin + 44);
-  const Lane cos_lanes_wrist_pitch = load_lanes(joint_trig.cos + 44);
-  const Lane sin_lanes_wrist_roll = load_lanes(joint_trig.sin + 48);
-  const Lane cos_lanes_wrist_roll = load_lanes(joint_trig.cos + 48);
-  const Scalar sin_waist_yaw = joint_trig.sin[52];
-  const Scalar cos_waist_yaw = joint_trig.cos[52];
-  const Scalar sin_waist_pitch = joint_trig.sin[53];
-  const Scalar cos_waist_pitch = joint_trig.cos[53];
-  const Scalar sin_waist_roll = joint_trig.sin[54];
-  const Scalar cos_waist_roll = joint_trig.cos[54];
-  const Scalar sin_neck_yaw = joint_trig.sin[55];
-  const Scalar cos_neck_yaw = joint_trig.cos[55];
-  const Scalar sin_neck_pitch = joint_trig.sin[56];
-  const Scalar cos_neck_pitch = joint_trig.cos[56];
-  const Scalar sin_neck_roll = joint_trig.sin[57];
-  const Scalar cos_neck_roll = joint_trig.cos[57];
+  const Lane sin_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.sin + 0);
+  const Lane cos_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.cos + 0);
+  const Lane sin_lanes_hip_roll = load_repeated_lanes<2>(joint_trig.sin + 2);
+  const Lane cos_lanes_hip_roll = load_repeated_lanes<2>(joint_trig.cos + 2);
+  const Lane sin_lanes_hip_pitch = load_repeated_lanes<2>(joint_trig.sin + 4);
+  const Lane cos_lanes_hip_pitch = load_repeated_lanes<2>(joint_trig.cos + 4);
+  const Lane sin_lanes_knee = load_repeated_lanes<2>(joint_trig.sin + 6);
+  const Lane cos_lanes_knee = load_repeated_lanes<2>(joint_trig.cos + 6);
+  const Lane sin_lanes_ankle_pitch = load_repeated_lanes<2>(joint_trig.sin + 8);
+  const Lane cos_lanes_ankle_pitch = load_repeated_lanes<2>(joint_trig.cos + 8);
+  const Lane sin_lanes_ankle_roll = load_repeated_lanes<2>(joint_trig.sin + 10);
+  const Lane cos_lanes_ankle_roll = load_repeated_lanes<2>(joint_trig.cos + 10);
+  const Lane sin_lanes_shoulder_pitch = load_repeated_lanes<2>(joint_trig.sin + 12);
+  const Lane cos_lanes_shoulder_pitch = load_repeated_lanes<2>(joint_trig.cos + 12);
+  const Lane sin_lanes_shoulder_roll = load_repeated_lanes<2>(joint_trig.sin + 14);
+  const Lane cos_lanes_shoulder_roll = load_repeated_lanes<2>(joint_trig.cos + 14);
+  const Lane sin_lanes_shoulder_yaw = load_repeated_lanes<2>(joint_trig.sin + 16);
+  const Lane cos_lanes_shoulder_yaw = load_repeated_lanes<2>(joint_trig.cos + 16);
+  const Lane sin_lanes_elbow = load_repeated_lanes<2>(joint_trig.sin + 18);
+  const Lane cos_lanes_elbow = load_repeated_lanes<2>(joint_trig.cos + 18);
+  const Lane sin_lanes_wrist_yaw = load_repeated_lanes<2>(joint_trig.sin + 20);
+  const Lane cos_lanes_wrist_yaw = load_repeated_lanes<2>(joint_trig.cos + 20);
+  const Lane sin_lanes_wrist_pitch = load_repeated_lanes<2>(joint_trig.sin + 22);
+  const Lane cos_lanes_wrist_pitch = load_repeated_lanes<2>(joint_trig.cos + 22);
+  const Lane sin_lanes_wrist_roll = load_repeated_lanes<2>(joint_trig.sin + 24);
+  const Lane cos_lanes_wrist_roll = load_repeated_lanes<2>(joint_trig.cos + 24);
+  const Scalar sin_waist_yaw = joint_trig.sin[26];
+  const Scalar cos_waist_yaw = joint_trig.cos[26];
+  const Scalar sin_waist_pitch = joint_trig.sin[27];
+  const Scalar cos_waist_pitch = joint_trig.cos[27];
+  const Scalar sin_waist_roll = joint_trig.sin[28];
+  const Scalar cos_waist_roll = joint_trig.cos[28];
+  const Scalar sin_neck_yaw = joint_trig.sin[29];
+  const Scalar cos_neck_yaw = joint_trig.cos[29];
+  const Scalar sin_neck_pitch = joint_trig.sin[30];
+  const Scalar cos_neck_pitch = joint_trig.cos[30];
+  const Scalar sin_neck_roll = joint_trig.sin[31];
+  const Scalar cos_neck_roll = joint_trig.cos[31];
   const Scalar t0 = q[4] + q[4];
   const Scalar t1 = q[5] + q[5];
   const Scalar t2 = q[6] + q[6];
@@ -778,4 +774,4 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   store_lanes(tau + 0, make_lanes((t266 + (((cos_waist_yaw * t529) - (sin_waist_yaw * t530)) - (Scalar(0.1) * t536))) + (t573[0] + t573[1]), (t267 + (((sin_waist_yaw * t529) + (cos_waist_yaw * t530)) + (Scalar(0.1) * t535))) + (t574[0] + t574[1]), t537 + (t575[0] + t575[1]), (((Scalar(8) * t3) + ((v[1] * t265) - (v[2] * t264))) + t535) + (t571[0] + t571[1])));
 }
 
-}  // namespace rbdc_gen::humanoid32::common::inverse_dynamics_a1774a2a427d
+}  // namespace rbdc_gen::humanoid32::common::inverse_dynamics_63cc7583219c

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::gravity_derivatives_237068aeaa25 {
+namespace rbdc_gen::humanoid32::common::gravity_derivatives_db5547fe40e8 {
 
 /// Derivative of the gravity terms g.
 ///
@@ -19,7 +19,7 @@ namespace rbdc_gen::humanoid32::common::gravity_derivatives_237068aeaa25 {
 /// @param dg_dq out 38x38: ∂g/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             6118  3571    0     0   116  105   9910
+///             6118  3571    0     0    64  105   9858
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 3034 arithmetic
 ///   instructions, scalar tree 5325 (cost 8020), looped RNEA derivatives 9856 (cost 13751)
@@ -38,53 +38,49 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
     make_lanes(Scalar(1.2914999999999999), Scalar(-1.2914999999999999), Scalar(1.2914999999999999), Scalar(-1.2914999999999999)),
     make_lanes(Scalar(1.0935), Scalar(-1.0935), Scalar(1.0935), Scalar(-1.0935))};
   // sines and cosines of the joint angles
-  const Scalar joint_angle[58] = {q[7], q[13], q[7], q[13], q[8], q[14], q[8], q[14],
-    q[9], q[15], q[9], q[15], q[10], q[16], q[10], q[16],
-    q[11], q[17], q[11], q[17], q[12], q[18], q[12], q[18],
-    q[25], q[32], q[25], q[32], q[26], q[33], q[26], q[33],
-    q[27], q[34], q[27], q[34], q[28], q[35], q[28], q[35],
-    q[29], q[36], q[29], q[36], q[30], q[37], q[30], q[37],
-    q[31], q[38], q[31], q[38], q[19], q[20], q[21], q[22],
-    q[23], q[24]};
+  const Scalar joint_angle[32] = {q[7], q[13], q[8], q[14], q[9], q[15], q[10], q[16],
+    q[11], q[17], q[12], q[18], q[25], q[32], q[26], q[33],
+    q[27], q[34], q[28], q[35], q[29], q[36], q[30], q[37],
+    q[31], q[38], q[19], q[20], q[21], q[22], q[23], q[24]};
   const auto joint_trig = joint_sincos(joint_angle);
-  const Lane sin_lanes_hip_yaw = load_lanes(joint_trig.sin + 0);
-  const Lane cos_lanes_hip_yaw = load_lanes(joint_trig.cos + 0);
-  const Lane sin_lanes_hip_roll = load_lanes(joint_trig.sin + 4);
-  const Lane cos_lanes_hip_roll = load_lanes(joint_trig.cos + 4);
-  const Lane sin_lanes_hip_pitch = load_lanes(joint_trig.sin + 8);
-  const Lane cos_lanes_hip_pitch = load_lanes(joint_trig.cos + 8);
-  const Lane sin_lanes_knee = load_lanes(joint_trig.sin + 12);
-  const Lane cos_lanes_knee = load_lanes(joint_trig.cos + 12);
-  const Lane sin_lanes_ankle_pitch = load_lanes(joint_trig.sin + 16);
-  const Lane cos_lanes_ankle_pitch = load_lanes(joint_trig.cos + 16);
-  const Lane sin_lanes_ankle_roll = load_lanes(joint_trig.sin + 20);
-  const Lane cos_lanes_ankle_roll = load_lanes(joint_trig.cos + 20);
-  const Lane sin_lanes_shoulder_pitch = load_lanes(joint_trig.sin + 24);
-  const Lane cos_lanes_shoulder_pitch = load_lanes(joint_trig.cos + 24);
-  const Lane sin_lanes_shoulder_roll = load_lanes(joint_trig.sin + 28);
-  const Lane cos_lanes_shoulder_roll = load_lanes(joint_trig.cos + 28);
-  const Lane sin_lanes_shoulder_yaw = load_lanes(joint_trig.sin + 32);
-  const Lane cos_lanes_shoulder_yaw = load_lanes(joint_trig.cos + 32);
-  const Lane sin_lanes_elbow = load_lanes(joint_trig.sin + 36);
-  const Lane cos_lanes_elbow = load_lanes(joint_trig.cos + 36);
-  const Lane sin_lanes_wrist_yaw = load_lanes(joint_trig.sin + 40);
-  const Lane cos_lanes_wrist_yaw = load_lanes(joint_trig.cos + 40);
-  const Lane sin_lanes_wrist_pitch = load_lanes(joint_trig.sin + 44);
-  const Lane cos_lanes_wrist_pitch = load_lanes(joint_trig.cos + 44);
-  const Lane sin_lanes_wrist_roll = load_lanes(joint_trig.sin + 48);
-  const Lane cos_lanes_wrist_roll = load_lanes(joint_trig.cos + 48);
-  const Scalar sin_waist_yaw = joint_trig.sin[52];
-  const Scalar cos_waist_yaw = joint_trig.cos[52];
-  const Scalar sin_waist_pitch = joint_trig.sin[53];
-  const Scalar cos_waist_pitch = joint_trig.cos[53];
-  const Scalar sin_waist_roll = joint_trig.sin[54];
-  const Scalar cos_waist_roll = joint_trig.cos[54];
-  const Scalar sin_neck_yaw = joint_trig.sin[55];
-  const Scalar cos_neck_yaw = joint_trig.cos[55];
-  const Scalar sin_neck_pitch = joint_trig.sin[56];
-  const Scalar cos_neck_pitch = joint_trig.cos[56];
-  const Scalar sin_neck_roll = joint_trig.sin[57];
-  const Scalar cos_neck_roll = joint_trig.cos[57];
+  const Lane sin_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.sin + 0);
+  const Lane cos_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.cos + 0);
+  const Lane sin_lanes_hip_roll = load_repeated_lanes<2>(joint_trig.sin + 2);
+  const Lane cos_lanes_hip_roll = load_repeated_lanes<2>(joint_trig.cos + 2);
+  const Lane sin_lanes_hip_pitch = load_repeated_lanes<2>(joint_trig.sin + 4);
+  const Lane cos_lanes_hip_pitch = load_repeated_lanes<2>(joint_trig.cos + 4);
+  const Lane sin_lanes_knee = load_repeated_lanes<2>(joint_trig.sin + 6);
+  const Lane cos_lanes_knee = load_repeated_lanes<2>(joint_trig.cos + 6);
+  const Lane sin_lanes_ankle_pitch = load_repeated_lanes<2>(joint_trig.sin + 8);
+  const Lane cos_lanes_ankle_pitch = load_repeated_lanes<2>(joint_trig.cos + 8);
+  const Lane sin_lanes_ankle_roll = load_repeated_lanes<2>(joint_trig.sin + 10);
+  const Lane cos_lanes_ankle_roll = load_repeated_lanes<2>(joint_trig.cos + 10);
+  const Lane sin_lanes_shoulder_pitch = load_repeated_lanes<2>(joint_trig.sin + 12);
+  const Lane cos_lanes_shoulder_pitch = load_repeated_lanes<2>(joint_trig.cos + 12);
+  const Lane sin_lanes_shoulder_roll = load_repeated_lanes<2>(joint_trig.sin + 14);
+  const Lane cos_lanes_shoulder_roll = load_repeated_lanes<2>(joint_trig.cos + 14);
+  const Lane sin_lanes_shoulder_yaw = load_repeated_lanes<2>(joint_trig.sin + 16);
+  const Lane cos_lanes_shoulder_yaw = load_repeated_lanes<2>(joint_trig.cos + 16);
+  const Lane sin_lanes_elbow = load_repeated_lanes<2>(joint_trig.sin + 18);
+  const Lane cos_lanes_elbow = load_repeated_lanes<2>(joint_trig.cos + 18);
+  const Lane sin_lanes_wrist_yaw = load_repeated_lanes<2>(joint_trig.sin + 20);
+  const Lane cos_lanes_wrist_yaw = load_repeated_lanes<2>(joint_trig.cos + 20);
+  const Lane sin_lanes_wrist_pitch = load_repeated_lanes<2>(joint_trig.sin + 22);
+  const Lane cos_lanes_wrist_pitch = load_repeated_lanes<2>(joint_trig.cos + 22);
+  const Lane sin_lanes_wrist_roll = load_repeated_lanes<2>(joint_trig.sin + 24);
+  const Lane cos_lanes_wrist_roll = load_repeated_lanes<2>(joint_trig.cos + 24);
+  const Scalar sin_waist_yaw = joint_trig.sin[26];
+  const Scalar cos_waist_yaw = joint_trig.cos[26];
+  const Scalar sin_waist_pitch = joint_trig.sin[27];
+  const Scalar cos_waist_pitch = joint_trig.cos[27];
+  const Scalar sin_waist_roll = joint_trig.sin[28];
+  const Scalar cos_waist_roll = joint_trig.cos[28];
+  const Scalar sin_neck_yaw = joint_trig.sin[29];
+  const Scalar cos_neck_yaw = joint_trig.cos[29];
+  const Scalar sin_neck_pitch = joint_trig.sin[30];
+  const Scalar cos_neck_pitch = joint_trig.cos[30];
+  const Scalar sin_neck_roll = joint_trig.sin[31];
+  const Scalar cos_neck_roll = joint_trig.cos[31];
   store_lanes(dg_dq + 116, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(dg_dq + 120, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(dg_dq + 124, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
@@ -1557,4 +1553,4 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   store_lanes(dg_dq + 1424, make_lanes(t1006, t942[1], t938[1], Scalar(0)));
 }
 
-}  // namespace rbdc_gen::humanoid32::common::gravity_derivatives_237068aeaa25
+}  // namespace rbdc_gen::humanoid32::common::gravity_derivatives_db5547fe40e8

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::mass_matrix_factor_5f13fd29bc46 {
+namespace rbdc_gen::humanoid32::common::mass_matrix_factor_e4e6a8eceda3 {
 
 /// M = Lᵀ D L over the tree's dofs (CRBA + the sparse factorisation forward_dynamics uses).
 ///
@@ -25,7 +25,43 @@ namespace rbdc_gen::humanoid32::common::mass_matrix_factor_5f13fd29bc46 {
 ///   18974), looped CRBA 12023 (cost 25773)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scalar* D, Scalar* D_inv) noexcept {
-  for (int k = 0; k < 1444; ++k) L[k] = Scalar(0);
+  L[38] = Scalar(0);
+  for (int k = 76; k < 78; ++k) L[k] = Scalar(0);
+  for (int k = 114; k < 117; ++k) L[k] = Scalar(0);
+  for (int k = 152; k < 156; ++k) L[k] = Scalar(0);
+  for (int k = 190; k < 195; ++k) L[k] = Scalar(0);
+  for (int k = 228; k < 234; ++k) L[k] = Scalar(0);
+  for (int k = 240; k < 273; ++k) L[k] = Scalar(0);
+  for (int k = 278; k < 312; ++k) L[k] = Scalar(0);
+  for (int k = 316; k < 351; ++k) L[k] = Scalar(0);
+  for (int k = 354; k < 390; ++k) L[k] = Scalar(0);
+  for (int k = 392; k < 429; ++k) L[k] = Scalar(0);
+  for (int k = 430; k < 468; ++k) L[k] = Scalar(0);
+  for (int k = 474; k < 507; ++k) L[k] = Scalar(0);
+  for (int k = 512; k < 546; ++k) L[k] = Scalar(0);
+  for (int k = 550; k < 585; ++k) L[k] = Scalar(0);
+  for (int k = 588; k < 624; ++k) L[k] = Scalar(0);
+  for (int k = 626; k < 663; ++k) L[k] = Scalar(0);
+  for (int k = 664; k < 702; ++k) L[k] = Scalar(0);
+  for (int k = 722; k < 741; ++k) L[k] = Scalar(0);
+  for (int k = 760; k < 780; ++k) L[k] = Scalar(0);
+  for (int k = 798; k < 819; ++k) L[k] = Scalar(0);
+  for (int k = 822; k < 858; ++k) L[k] = Scalar(0);
+  for (int k = 860; k < 897; ++k) L[k] = Scalar(0);
+  for (int k = 898; k < 936; ++k) L[k] = Scalar(0);
+  for (int k = 943; k < 975; ++k) L[k] = Scalar(0);
+  for (int k = 981; k < 1014; ++k) L[k] = Scalar(0);
+  for (int k = 1019; k < 1053; ++k) L[k] = Scalar(0);
+  for (int k = 1057; k < 1092; ++k) L[k] = Scalar(0);
+  for (int k = 1095; k < 1131; ++k) L[k] = Scalar(0);
+  for (int k = 1132; k < 1170; ++k) L[k] = Scalar(0);
+  for (int k = 1171; k < 1209; ++k) L[k] = Scalar(0);
+  for (int k = 1216; k < 1248; ++k) L[k] = Scalar(0);
+  for (int k = 1254; k < 1287; ++k) L[k] = Scalar(0);
+  for (int k = 1292; k < 1326; ++k) L[k] = Scalar(0);
+  for (int k = 1330; k < 1365; ++k) L[k] = Scalar(0);
+  for (int k = 1368; k < 1404; ++k) L[k] = Scalar(0);
+  for (int k = 1405; k < 1443; ++k) L[k] = Scalar(0);
   // sines and cosines of the joint angles
   const Scalar joint_angle[32] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18], q[19], q[20], q[21], q[22],
@@ -2592,4 +2628,4 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   D_inv[0] = Scalar(1) / t2011;
 }
 
-}  // namespace rbdc_gen::humanoid32::common::mass_matrix_factor_5f13fd29bc46
+}  // namespace rbdc_gen::humanoid32::common::mass_matrix_factor_e4e6a8eceda3

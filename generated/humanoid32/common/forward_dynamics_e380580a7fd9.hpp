@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_07dc58095c0c {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_e380580a7fd9 {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
 /// algorithm where that is cheaper: the schedule line says which).
@@ -23,7 +23,7 @@ namespace rbdc_gen::humanoid32::common::forward_dynamics_07dc58095c0c {
 /// @param a out 38x1: acceleration
 ///
 /// operations    mul   add  div  sqrt  trig  neg  total
-///             12144  9235   55     0   116    1  21551
+///             12144  9235   55     0    64    1  21499
 /// schedule: articulated-body algorithm in limb lanes (the isomorphic limbs in SIMD lanes: 2 of
 ///   pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes); the rest
 ///   scalar): 7214 arithmetic instructions (cost 12554), scalar tree 13701 (cost 28122),
@@ -79,53 +79,49 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
     make_lanes(Scalar(0.27733494043288276), Scalar(-0.27733494043288276), Scalar(0.27733494043288276), Scalar(-0.27733494043288276)),
     make_lanes(Scalar(-0.09), Scalar(0.09), Scalar(-0.09), Scalar(0.09))};
   // sines and cosines of the joint angles
-  const Scalar joint_angle[58] = {q[7], q[13], q[7], q[13], q[8], q[14], q[8], q[14],
-    q[9], q[15], q[9], q[15], q[10], q[16], q[10], q[16],
-    q[11], q[17], q[11], q[17], q[12], q[18], q[12], q[18],
-    q[25], q[32], q[25], q[32], q[26], q[33], q[26], q[33],
-    q[27], q[34], q[27], q[34], q[28], q[35], q[28], q[35],
-    q[29], q[36], q[29], q[36], q[30], q[37], q[30], q[37],
-    q[31], q[38], q[31], q[38], q[19], q[20], q[21], q[22],
-    q[23], q[24]};
+  const Scalar joint_angle[32] = {q[7], q[13], q[8], q[14], q[9], q[15], q[10], q[16],
+    q[11], q[17], q[12], q[18], q[25], q[32], q[26], q[33],
+    q[27], q[34], q[28], q[35], q[29], q[36], q[30], q[37],
+    q[31], q[38], q[19], q[20], q[21], q[22], q[23], q[24]};
   const auto joint_trig = joint_sincos(joint_angle);
-  const Lane sin_lanes_hip_yaw = load_lanes(joint_trig.sin + 0);
-  const Lane cos_lanes_hip_yaw = load_lanes(joint_trig.cos + 0);
-  const Lane sin_lanes_hip_roll = load_lanes(joint_trig.sin + 4);
-  const Lane cos_lanes_hip_roll = load_lanes(joint_trig.cos + 4);
-  const Lane sin_lanes_hip_pitch = load_lanes(joint_trig.sin + 8);
-  const Lane cos_lanes_hip_pitch = load_lanes(joint_trig.cos + 8);
-  const Lane sin_lanes_knee = load_lanes(joint_trig.sin + 12);
-  const Lane cos_lanes_knee = load_lanes(joint_trig.cos + 12);
-  const Lane sin_lanes_ankle_pitch = load_lanes(joint_trig.sin + 16);
-  const Lane cos_lanes_ankle_pitch = load_lanes(joint_trig.cos + 16);
-  const Lane sin_lanes_ankle_roll = load_lanes(joint_trig.sin + 20);
-  const Lane cos_lanes_ankle_roll = load_lanes(joint_trig.cos + 20);
-  const Lane sin_lanes_shoulder_pitch = load_lanes(joint_trig.sin + 24);
-  const Lane cos_lanes_shoulder_pitch = load_lanes(joint_trig.cos + 24);
-  const Lane sin_lanes_shoulder_roll = load_lanes(joint_trig.sin + 28);
-  const Lane cos_lanes_shoulder_roll = load_lanes(joint_trig.cos + 28);
-  const Lane sin_lanes_shoulder_yaw = load_lanes(joint_trig.sin + 32);
-  const Lane cos_lanes_shoulder_yaw = load_lanes(joint_trig.cos + 32);
-  const Lane sin_lanes_elbow = load_lanes(joint_trig.sin + 36);
-  const Lane cos_lanes_elbow = load_lanes(joint_trig.cos + 36);
-  const Lane sin_lanes_wrist_yaw = load_lanes(joint_trig.sin + 40);
-  const Lane cos_lanes_wrist_yaw = load_lanes(joint_trig.cos + 40);
-  const Lane sin_lanes_wrist_pitch = load_lanes(joint_trig.sin + 44);
-  const Lane cos_lanes_wrist_pitch = load_lanes(joint_trig.cos + 44);
-  const Lane sin_lanes_wrist_roll = load_lanes(joint_trig.sin + 48);
-  const Lane cos_lanes_wrist_roll = load_lanes(joint_trig.cos + 48);
-  const Scalar sin_waist_yaw = joint_trig.sin[52];
-  const Scalar cos_waist_yaw = joint_trig.cos[52];
-  const Scalar sin_waist_pitch = joint_trig.sin[53];
-  const Scalar cos_waist_pitch = joint_trig.cos[53];
-  const Scalar sin_waist_roll = joint_trig.sin[54];
-  const Scalar cos_waist_roll = joint_trig.cos[54];
-  const Scalar sin_neck_yaw = joint_trig.sin[55];
-  const Scalar cos_neck_yaw = joint_trig.cos[55];
-  const Scalar sin_neck_pitch = joint_trig.sin[56];
-  const Scalar cos_neck_pitch = joint_trig.cos[56];
-  const Scalar sin_neck_roll = joint_trig.sin[57];
-  const Scalar cos_neck_roll = joint_trig.cos[57];
+  const Lane sin_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.sin + 0);
+  const Lane cos_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.cos + 0);
+  const Lane sin_lanes_hip_roll = load_repeated_lanes<2>(joint_trig.sin + 2);
+  const Lane cos_lanes_hip_roll = load_repeated_lanes<2>(joint_trig.cos + 2);
+  const Lane sin_lanes_hip_pitch = load_repeated_lanes<2>(joint_trig.sin + 4);
+  const Lane cos_lanes_hip_pitch = load_repeated_lanes<2>(joint_trig.cos + 4);
+  const Lane sin_lanes_knee = load_repeated_lanes<2>(joint_trig.sin + 6);
+  const Lane cos_lanes_knee = load_repeated_lanes<2>(joint_trig.cos + 6);
+  const Lane sin_lanes_ankle_pitch = load_repeated_lanes<2>(joint_trig.sin + 8);
+  const Lane cos_lanes_ankle_pitch = load_repeated_lanes<2>(joint_trig.cos + 8);
+  const Lane sin_lanes_ankle_roll = load_repeated_lanes<2>(joint_trig.sin + 10);
+  const Lane cos_lanes_ankle_roll = load_repeated_lanes<2>(joint_trig.cos + 10);
+  const Lane sin_lanes_shoulder_pitch = load_repeated_lanes<2>(joint_trig.sin + 12);
+  const Lane cos_lanes_shoulder_pitch = load_repeated_lanes<2>(joint_trig.cos + 12);
+  const Lane sin_lanes_shoulder_roll = load_repeated_lanes<2>(joint_trig.sin + 14);
+  const Lane cos_lanes_shoulder_roll = load_repeated_lanes<2>(joint_trig.cos + 14);
+  const Lane sin_lanes_shoulder_yaw = load_repeated_lanes<2>(joint_trig.sin + 16);
+  const Lane cos_lanes_shoulder_yaw = load_repeated_lanes<2>(joint_trig.cos + 16);
+  const Lane sin_lanes_elbow = load_repeated_lanes<2>(joint_trig.sin + 18);
+  const Lane cos_lanes_elbow = load_repeated_lanes<2>(joint_trig.cos + 18);
+  const Lane sin_lanes_wrist_yaw = load_repeated_lanes<2>(joint_trig.sin + 20);
+  const Lane cos_lanes_wrist_yaw = load_repeated_lanes<2>(joint_trig.cos + 20);
+  const Lane sin_lanes_wrist_pitch = load_repeated_lanes<2>(joint_trig.sin + 22);
+  const Lane cos_lanes_wrist_pitch = load_repeated_lanes<2>(joint_trig.cos + 22);
+  const Lane sin_lanes_wrist_roll = load_repeated_lanes<2>(joint_trig.sin + 24);
+  const Lane cos_lanes_wrist_roll = load_repeated_lanes<2>(joint_trig.cos + 24);
+  const Scalar sin_waist_yaw = joint_trig.sin[26];
+  const Scalar cos_waist_yaw = joint_trig.cos[26];
+  const Scalar sin_waist_pitch = joint_trig.sin[27];
+  const Scalar cos_waist_pitch = joint_trig.cos[27];
+  const Scalar sin_waist_roll = joint_trig.sin[28];
+  const Scalar cos_waist_roll = joint_trig.cos[28];
+  const Scalar sin_neck_yaw = joint_trig.sin[29];
+  const Scalar cos_neck_yaw = joint_trig.cos[29];
+  const Scalar sin_neck_pitch = joint_trig.sin[30];
+  const Scalar cos_neck_pitch = joint_trig.cos[30];
+  const Scalar sin_neck_roll = joint_trig.sin[31];
+  const Scalar cos_neck_roll = joint_trig.cos[31];
   // outward pass, velocities: body 1 l_hip_yaw_link/r_hip_yaw_link
   const Lane t0 = v[3] - ((v[2] * lane_c[0]) + (Scalar(0.07) * v[1]));
   const Scalar t1 = v[4] + (Scalar(0.07) * v[0]);
@@ -2033,4 +2029,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[37] = t1795[1];
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_07dc58095c0c
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_e380580a7fd9
