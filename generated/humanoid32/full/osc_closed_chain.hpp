@@ -7,11 +7,11 @@
 // osc_closed_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   humanoid32/common/osc_closed_chain_48ba84f24a08.hpp
+//   humanoid32/common/osc_closed_chain_303050ec459b.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_closed_chain_48ba84f24a08.hpp"
+#include "humanoid32/common/osc_closed_chain_303050ec459b.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -25,8 +25,8 @@ namespace rbdc_gen::humanoid32::full {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             7962  5924   28     0    64    9  13987
-using ::rbdc_gen::humanoid32::common::osc_closed_chain_48ba84f24a08::osc_closed_chain;
+///             7946  5910   28     0    64    9  13957
+using ::rbdc_gen::humanoid32::common::osc_closed_chain_303050ec459b::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_open_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   humanoid32/common/osc_open_chain_1820197b2d40.hpp
+//   humanoid32/common/osc_open_chain_02862de507f9.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_open_chain_1820197b2d40.hpp"
+#include "humanoid32/common/osc_open_chain_02862de507f9.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -25,8 +25,8 @@ namespace rbdc_gen::humanoid32::full {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             8221  6075   27     0    64    9  14396
-using ::rbdc_gen::humanoid32::common::osc_open_chain_1820197b2d40::osc_open_chain;
+///             8205  6061   27     0    64    9  14366
+using ::rbdc_gen::humanoid32::common::osc_open_chain_02862de507f9::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

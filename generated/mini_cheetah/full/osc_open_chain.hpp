@@ -7,11 +7,11 @@
 // osc_open_chain for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   mini_cheetah/common/osc_open_chain_6ca902462725.hpp
+//   mini_cheetah/common/osc_open_chain_4e9211b5e92c.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/osc_open_chain_6ca902462725.hpp"
+#include "mini_cheetah/common/osc_open_chain_4e9211b5e92c.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -25,10 +25,10 @@ namespace rbdc_gen::mini_cheetah::full {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2384  1837    8     0    24   32   4285
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1198 arithmetic
-///   instructions, scalar tree 4251 (cost 5442)
-using ::rbdc_gen::mini_cheetah::common::osc_open_chain_6ca902462725::osc_open_chain;
+///             2392  1821    8     0    24   28   4273
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1195 arithmetic
+///   instructions, scalar tree 4233 (cost 5399)
+using ::rbdc_gen::mini_cheetah::common::osc_open_chain_4e9211b5e92c::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_open_chain_lanes for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain_lanes is the same code:
-//   mini_cheetah/common/osc_open_chain_lanes_784f9d9e0ed0.hpp
+//   mini_cheetah/common/osc_open_chain_lanes_94a571247c2a.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/osc_open_chain_lanes_784f9d9e0ed0.hpp"
+#include "mini_cheetah/common/osc_open_chain_lanes_94a571247c2a.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -27,8 +27,8 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2384  1837    8     0    24   32   4285
-using ::rbdc_gen::mini_cheetah::common::osc_open_chain_lanes_784f9d9e0ed0::osc_open_chain_lanes;
+///             2392  1821    8     0    24   28   4273
+using ::rbdc_gen::mini_cheetah::common::osc_open_chain_lanes_94a571247c2a::osc_open_chain_lanes;
 
 /// osc_open_chain_lanes on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

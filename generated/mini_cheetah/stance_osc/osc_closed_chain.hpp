@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "stance_osc": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_adb3e9cda896.hpp
+//   mini_cheetah/common/osc_closed_chain_b948b3d15584.hpp
 #pragma once
 
 #include "mini_cheetah/stance_osc.hpp"
-#include "mini_cheetah/common/osc_closed_chain_adb3e9cda896.hpp"
+#include "mini_cheetah/common/osc_closed_chain_b948b3d15584.hpp"
 
 namespace rbdc_gen::mini_cheetah::stance_osc {
 
@@ -25,8 +25,8 @@ namespace rbdc_gen::mini_cheetah::stance_osc {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2385  1859    9     0    24   17   4294
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_adb3e9cda896::osc_closed_chain;
+///             2381  1847    9     0    24   17   4278
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_b948b3d15584::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

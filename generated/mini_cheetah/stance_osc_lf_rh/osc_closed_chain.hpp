@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "stance_osc_lf_rh": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_e39d8d3c6c1a.hpp
+//   mini_cheetah/common/osc_closed_chain_fb09d602cbbc.hpp
 #pragma once
 
 #include "mini_cheetah/stance_osc_lf_rh.hpp"
-#include "mini_cheetah/common/osc_closed_chain_e39d8d3c6c1a.hpp"
+#include "mini_cheetah/common/osc_closed_chain_fb09d602cbbc.hpp"
 
 namespace rbdc_gen::mini_cheetah::stance_osc_lf_rh {
 
@@ -25,8 +25,8 @@ namespace rbdc_gen::mini_cheetah::stance_osc_lf_rh {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2285  1786    9     0    24   19   4123
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_e39d8d3c6c1a::osc_closed_chain;
+///             2281  1773    9     0    24   19   4106
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_fb09d602cbbc::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "stance_osc_rf_lh": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_4a08e6cdabc2.hpp
+//   mini_cheetah/common/osc_closed_chain_6c8d02bfe4a1.hpp
 #pragma once
 
 #include "mini_cheetah/stance_osc_rf_lh.hpp"
-#include "mini_cheetah/common/osc_closed_chain_4a08e6cdabc2.hpp"
+#include "mini_cheetah/common/osc_closed_chain_6c8d02bfe4a1.hpp"
 
 namespace rbdc_gen::mini_cheetah::stance_osc_rf_lh {
 
@@ -25,8 +25,8 @@ namespace rbdc_gen::mini_cheetah::stance_osc_rf_lh {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2285  1786    9     0    24   19   4123
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_4a08e6cdabc2::osc_closed_chain;
+///             2281  1773    9     0    24   19   4106
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_6c8d02bfe4a1::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -46,12 +46,6 @@ def _apply(rows, x):
     return sp.vec([sp.dot(row, x) for row in rows])
 
 
-def _congruence(X, rows):
-    """X_iᵀ I X_i in the parent's coordinates: column c is X_iᵀ (I (X_i e_c))."""
-    columns = [X.force_T(_apply(rows, X.motion(_unit(c)))) for c in range(6)]
-    return _symmetric(lambda r, c: columns[c][r])
-
-
 def forward_dynamics_aba(m):
     """a (by v index) with M a = Sᵀτ + τ_e − c − g, as forward_dynamics.forward_dynamics."""
     robot = m.robot
@@ -87,7 +81,7 @@ def forward_dynamics_aba(m):
         Ia = _symmetric(lambda r, c: IA[i][r][c] - U[i][r] * scaled[c])
         pa = sp.vadd(sp.vadd(pA[i], _apply(Ia, bias_acc[i])), sp.vscale(u[i], scaled))
         X = m.X_up(i)
-        carried = m.into_parent(i, tuple(map(tuple, _congruence(X, Ia))))
+        carried = m.into_parent(i, X.congruence6(Ia))
         IA[j] = _symmetric(lambda r, c: IA[j][r][c] + carried[r][c])
         pA[j] = sp.vadd(pA[j], m.into_parent(i, X.force_T(pa)))
     qdd = [None] * robot.nv

@@ -8,6 +8,7 @@ fewer operations even before folding removes the zeros of constant parameters.
 
 from __future__ import annotations
 
+import functools
 import math
 
 from . import expr as ex
@@ -268,17 +269,70 @@ class Chain:
         return inertia
 
     def congruence6(self, m):
+        """Xᵀ M X for a symmetric 6×6 M, factor by factor or with the factors merged into one
+        transform, whichever takes fewer operations: merged, a tilted placement and the joint's
+        rotation become one dense rotation of M's blocks instead of a sparse and a dense one (a
+        100-body chain of tilted placements: 8 % fewer operations in its articulated-body
+        algorithm); always merged, Talos's took 1.6 % more."""
+        separate = m
         for x in reversed(self.factors):
-            m = congruence6(x, m)
-        return m
+            separate = congruence6(x, separate)
+        merged = congruence6(functools.reduce(Transform.then, self.factors), m)
+        given = [e for row in m for e in row] + [e for x in self.factors for e in _entries(x)]
+        return min((separate, merged), key=lambda result: _operations(result, given))
+
+
+def _entries(x):
+    """A transform's expressions: E's entries and r's."""
+    return [e for row in (x.E or ()) for e in row] + list(x.r or ())
+
+
+def _operations(rows, given):
+    """The operations computing the matrix `rows` from the expressions `given`."""
+    stop = {e.id for e in given}
+    seen, stack, count = set(), [e for row in rows for e in row], 0
+    while stack:
+        node = stack.pop()
+        if node.id in seen or node.id in stop:
+            continue
+        seen.add(node.id)
+        count += node.op not in ("const", "sym")
+        stack.extend(node.args)
+    return count
 
 
 def congruence6(x, m):
-    """Xᵀ M X for a symmetric 6×6 M (articulated inertias), upper triangle then mirrored."""
-    a_cols = [x.force_T(col) for col in transpose(m)]  # columns of Xᵀ M
-    a = transpose(a_cols)
-    rows = [x.force_T(row) for row in a]               # rows of (Xᵀ M) X = (Xᵀ (Xᵀ M)ᵀ)ᵀ
-    return symmetric(rows)
+    """Xᵀ M X for a symmetric 6×6 M (articulated inertias) and X = (E, r), by 3×3 blocks
+    M = [A B; Bᵀ C]: rotated, A' = Eᵀ A E, B' = Eᵀ B E, C' = Eᵀ C E; then shifted by X's
+    translation [1 0; −r̃ 1], B'' = B' + r̃ C' and A'' = A' + (r̃ B'ᵀ)ᵀ + r̃ B''ᵀ. The symmetric
+    blocks are computed on one triangle (column by column through force_T, a 100-body chain's
+    articulated-body algorithm took 6 % more operations)."""
+    A = tuple(row[:3] for row in m[:3])
+    B = tuple(row[3:] for row in m[:3])
+    C = tuple(row[3:] for row in m[3:])
+    if x.E is not None:
+        A = _rotated_symmetric(x.E, A)
+        B = matmul(transpose(x.E), matmul(B, x.E))
+        C = _rotated_symmetric(x.E, C)
+    if x.r is not None:
+        shift = skew(x.r)
+        B_shifted = tuple(vadd(row, shifted) for row, shifted in zip(B, matmul(shift, C)))
+        A = _symmetric_of(lambda i, j: A[i][j] + dot(shift[j], B[i]) + dot(shift[i], B_shifted[j]))
+        B = B_shifted
+    return tuple(tuple(A[i]) + tuple(B[i]) for i in range(3)) + tuple(
+        tuple(B[j][i] for j in range(3)) + tuple(C[i]) for i in range(3))
+
+
+def _symmetric_of(entry):
+    """The symmetric 3×3 matrix with entry(i, j) for i ≤ j, mirrored below."""
+    upper = {(i, j): entry(i, j) for i in range(3) for j in range(i, 3)}
+    return tuple(tuple(upper[min(i, j), max(i, j)] for j in range(3)) for i in range(3))
+
+
+def _rotated_symmetric(E, S):
+    """Eᵀ S E for a symmetric S, on one triangle."""
+    SE = matmul(S, E)
+    return _symmetric_of(lambda i, j: sum((E[k][i] * SE[k][j] for k in range(1, 3)), E[0][i] * SE[0][j]))
 
 
 def matvec6(m, a):

@@ -8,12 +8,14 @@ loops, each entry written once."""
 import os
 import re
 import unittest
+import unittest.mock
 from collections import Counter
 
 import numpy as np
 from numeric_check import DATA, chain, evaluate, random_state
 
 from rbdcgen.algorithms.forward_dynamics import dof_ancestors, dof_parents
+from rbdcgen.backend import emit
 from rbdcgen.backend.emit import ZERO_FILL_MIN, emit_body
 from rbdcgen.frontend.ir import load_ir
 from rbdcgen.frontend.scene import scene_from_dict
@@ -92,6 +94,8 @@ class LoopedFeetForces(unittest.TestCase):
                 written[int(store[1])] += 1
         self.assertEqual(set(written), set(range(len(values))))
         self.assertEqual(max(written.values()), 1)  # cleared whole first, the stored ones took 2
+        with unittest.mock.patch.object(emit, "ZERO_RUNS_MAX", 0):  # too many runs: one loop
+            self.assertEqual(emit_body(fn)[0], "for (int k = 0; k < %d; ++k) rhs[k] = Scalar(0);" % len(values))
 
 if __name__ == "__main__":
     unittest.main()

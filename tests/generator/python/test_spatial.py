@@ -1,5 +1,6 @@
 """Structured spatial algebra equals the dense 6×6 forms of conventions.md (reference.py):
-transforms on motion and force vectors, inertia congruence, rotations of ±coordinate axes."""
+transforms on motion and force vectors, inertia congruence, the articulated inertias' congruence (a
+transform, a chain of two factor by factor and merged), rotations of ±coordinate axes."""
 
 import math
 import random
@@ -48,6 +49,20 @@ class DenseAgreement(unittest.TestCase):
         applied = numbers(inertia.apply(sp.vec(self.m)))
         self.assertLess(max_relative_error(applied, ref.matvec(ref.spatial_inertia(Body), self.m)),
                         1e-15)
+
+    def test_articulated_inertia_congruence(self):
+        rng = random.Random(5)
+        a = [[rng.uniform(-1, 1) for _ in range(6)] for _ in range(6)]
+        symmetric = ref.matmul(ref.transpose(a), a)
+        M = sp.mat(symmetric)
+        joint = sp.Transform(sp.coordinate_rotation([0, 1, 0], ex.const(math.cos(0.3)), ex.const(math.sin(0.3))))
+        chain = sp.Chain(self.X, joint)  # the placement first, then the joint: X = X_J X_T
+        dense_chain = ref.matmul(ref.motion_transform(ref.transpose(ref.axis_rotation([0, 1, 0], 0.3)), [0, 0, 0]),
+                                 self.dense)
+        for got, X in ((sp.congruence6(self.X, M), self.dense), (chain.congruence6(M), dense_chain),
+                       (sp.congruence6(self.X.then(joint), M), dense_chain)):
+            want = ref.matmul(ref.transpose(X), ref.matmul(symmetric, X))
+            self.assertLess(max_relative_error([x.value for row in got for x in row], sum(want, [])), 1e-14)
 
     def test_coordinate_axis_rotations_are_exact_and_right(self):
         c, s = ex.const(math.cos(0.4)), ex.const(math.sin(0.4))
