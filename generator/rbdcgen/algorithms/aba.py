@@ -33,15 +33,6 @@ def _unit(k):
     return sp.vec([1.0 if r == k else 0.0 for r in range(6)])
 
 
-def _symmetric(entry):
-    """The 6 × 6 symmetric matrix (rows) with entry(r, c) for r ≥ c, mirrored above."""
-    rows = [[None] * 6 for _ in range(6)]
-    for r in range(6):
-        for c in range(r + 1):
-            rows[r][c] = rows[c][r] = entry(r, c)
-    return rows
-
-
 def _apply(rows, x):
     return sp.vec([sp.dot(row, x) for row in rows])
 
@@ -61,7 +52,7 @@ def forward_dynamics_aba(m):
         if i > 0:
             bias_acc[i] = sp.crm(velocities[i], sp.vscale(m.vi(i), S[i]))
         columns = [inertia.apply(_unit(c)) for c in range(6)]
-        IA[i] = _symmetric(lambda r, c: columns[c][r])
+        IA[i] = sp.symmetric_of(6, lambda r, c: columns[c][r])
         pA[i] = sp.crf(velocities[i], inertia.apply(velocities[i]))
         if external[i] is not None:
             pA[i] = sp.vsub(pA[i], external[i])
@@ -78,11 +69,11 @@ def forward_dynamics_aba(m):
         if j == 0 and not floating:
             continue  # the fixed base takes no load
         scaled = sp.vscale(inv_D[i], U[i])
-        Ia = _symmetric(lambda r, c: IA[i][r][c] - U[i][r] * scaled[c])
+        Ia = sp.symmetric_of(6, lambda r, c: IA[i][r][c] - U[i][r] * scaled[c])
         pa = sp.vadd(sp.vadd(pA[i], _apply(Ia, bias_acc[i])), sp.vscale(u[i], scaled))
         X = m.X_up(i)
         carried = m.into_parent(i, X.congruence6(Ia))
-        IA[j] = _symmetric(lambda r, c: IA[j][r][c] + carried[r][c])
+        IA[j] = sp.symmetric_of(6, lambda r, c: IA[j][r][c] + carried[r][c])
         pA[j] = sp.vadd(pA[j], m.into_parent(i, X.force_T(pa)))
     qdd = [None] * robot.nv
     if floating:

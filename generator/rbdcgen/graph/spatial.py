@@ -317,22 +317,25 @@ def congruence6(x, m):
     if x.r is not None:
         shift = skew(x.r)
         B_shifted = tuple(vadd(row, shifted) for row, shifted in zip(B, matmul(shift, C)))
-        A = _symmetric_of(lambda i, j: A[i][j] + dot(shift[j], B[i]) + dot(shift[i], B_shifted[j]))
+        A = symmetric_of(3, lambda j, i: A[i][j] + dot(shift[j], B[i]) + dot(shift[i], B_shifted[j]))
         B = B_shifted
     return tuple(tuple(A[i]) + tuple(B[i]) for i in range(3)) + tuple(
         tuple(B[j][i] for j in range(3)) + tuple(C[i]) for i in range(3))
 
 
-def _symmetric_of(entry):
-    """The symmetric 3×3 matrix with entry(i, j) for i ≤ j, mirrored below."""
-    upper = {(i, j): entry(i, j) for i in range(3) for j in range(i, 3)}
-    return tuple(tuple(upper[min(i, j), max(i, j)] for j in range(3)) for i in range(3))
+def symmetric_of(n, entry):
+    """The symmetric n × n matrix (rows) with entry(r, c) for r ≥ c, mirrored above."""
+    rows = [[None] * n for _ in range(n)]
+    for r in range(n):
+        for c in range(r + 1):
+            rows[r][c] = rows[c][r] = entry(r, c)
+    return tuple(map(tuple, rows))
 
 
 def _rotated_symmetric(E, S):
     """Eᵀ S E for a symmetric S, on one triangle."""
     SE = matmul(S, E)
-    return _symmetric_of(lambda i, j: sum((E[k][i] * SE[k][j] for k in range(1, 3)), E[0][i] * SE[0][j]))
+    return symmetric_of(3, lambda j, i: sum((E[k][i] * SE[k][j] for k in range(1, 3)), E[0][i] * SE[0][j]))
 
 
 def matvec6(m, a):

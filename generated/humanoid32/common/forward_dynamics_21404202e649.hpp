@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_27dbfa8568b1 {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_21404202e649 {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
 /// algorithm where that is cheaper: the schedule line says which).
@@ -1103,8 +1103,8 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t914 = ((cos_lanes_shoulder_pitch * ((cos_lanes_shoulder_pitch * t826) + t856)) + (sin_lanes_shoulder_pitch * (t857 + (sin_lanes_shoulder_pitch * t831)))) + ((lane_c[3] * t889) - (Scalar(0.36) * t888));
   const Lane t915 = t914 + ((lane_c[3] * t907) - (Scalar(0.36) * t906));
   const Lane t916 = (((Scalar(0.9800665778412416) * t859) + (lane_c[2] * t862)) + (Scalar(0.36) * t870)) + ((lane_c[3] * t910) - (Scalar(0.36) * t909));
-  const Lane t917 = (((lane_c[1] * t859) + (Scalar(0.9800665778412416) * t862)) + (t870 * lane_c[11])) + ((lane_c[3] * t913) - (Scalar(0.36) * t912));
-  const Lane t918 = (((Scalar(0.9800665778412416) * ((Scalar(0.9800665778412416) * t828) + (lane_c[2] * t860))) + (lane_c[2] * (t885 + (lane_c[2] * t863)))) + (Scalar(0.36) * t894)) + (Scalar(0.36) * t908);
+  const Lane t917 = (((Scalar(0.9800665778412416) * ((Scalar(0.9800665778412416) * t828) + (lane_c[2] * t860))) + (lane_c[2] * (t885 + (lane_c[2] * t863)))) + (Scalar(0.36) * t894)) + (Scalar(0.36) * t908);
+  const Lane t918 = (((lane_c[1] * t859) + (Scalar(0.9800665778412416) * t862)) + (t870 * lane_c[11])) + ((lane_c[3] * t913) - (Scalar(0.36) * t912));
   const Lane t919 = (((Scalar(0.9800665778412416) * t886) + (lane_c[2] * t887)) + (t894 * lane_c[11])) + (Scalar(0.36) * t911);
   const Lane t920 = (((lane_c[1] * t886) + (Scalar(0.9800665778412416) * t887)) + (t895 * lane_c[11])) + (lane_c[11] * t911);
   const Lane t921 = (cos_lanes_shoulder_pitch * t852) - (sin_lanes_shoulder_pitch * t850);
@@ -1263,8 +1263,8 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1071 = (((cos_neck_yaw * ((cos_neck_yaw * t1019) - t1045)) - (sin_neck_yaw * (t1046 - (sin_neck_yaw * t1021)))) - (Scalar(0.44) * t1056)) - (Scalar(0.44) * t1068);
   const Scalar t1072 = (Scalar(1.048) + (t915[0] + t915[1])) + t1071;
   const Scalar t1073 = (t916[0] + t916[1]) + ((((cos_neck_yaw * t1047) - (sin_neck_yaw * t1048)) + (Scalar(0.44) * t1055)) - (Scalar(0.44) * t1070));
-  const Scalar t1074 = (Scalar(0.9413333330000002) + (t918[0] + t918[1])) + ((((sin_neck_yaw * t1047) + (cos_neck_yaw * t1048)) + (Scalar(0.44) * t1057)) + (Scalar(0.44) * t1069));
-  const Scalar t1075 = ((t917[0] + t917[1]) - Scalar(0.032)) + (((cos_neck_yaw * t1022) - (sin_neck_yaw * t1023)) - (Scalar(0.44) * t1054));
+  const Scalar t1074 = (Scalar(0.9413333330000002) + (t917[0] + t917[1])) + ((((sin_neck_yaw * t1047) + (cos_neck_yaw * t1048)) + (Scalar(0.44) * t1057)) + (Scalar(0.44) * t1069));
+  const Scalar t1075 = ((t918[0] + t918[1]) - Scalar(0.032)) + (((cos_neck_yaw * t1022) - (sin_neck_yaw * t1023)) - (Scalar(0.44) * t1054));
   const Scalar t1076 = (t905[0] + t905[1]) + (t1055 - t1067);
   const Scalar t1077 = ((t906[0] + t906[1]) - Scalar(3.2)) + t1068;
   const Scalar t1078 = (t907[0] + t907[1]) + (((cos_neck_yaw * t1033) - (sin_neck_yaw * t1034)) - (Scalar(0.44) * t1063));
@@ -1831,13 +1831,13 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t1630 = ((cos_lanes_hip_yaw * ((cos_lanes_hip_yaw * t1571) - t1598)) - (sin_lanes_hip_yaw * (t1599 - (sin_lanes_hip_yaw * t1573)))) + ((Scalar(0.07) * t1608) + (lane_c[0] * t1609));
   const Lane t1631 = t1630 + ((Scalar(0.07) * t1622) + (lane_c[0] * t1623));
   const Lane t1632 = (((cos_lanes_hip_yaw * t1600) - (sin_lanes_hip_yaw * t1601)) - (Scalar(0.07) * t1607)) + ((Scalar(0.07) * t1625) + (lane_c[0] * t1626));
-  const Lane t1633 = (((cos_lanes_hip_yaw * t1574) - (sin_lanes_hip_yaw * t1575)) + (t1607 * lane_c[12])) + ((Scalar(0.07) * t1628) + (lane_c[0] * t1629));
-  const Lane t1634 = (((sin_lanes_hip_yaw * t1600) + (cos_lanes_hip_yaw * t1601)) - (Scalar(0.07) * t1610)) - (Scalar(0.07) * t1624);
+  const Lane t1633 = (((sin_lanes_hip_yaw * t1600) + (cos_lanes_hip_yaw * t1601)) - (Scalar(0.07) * t1610)) - (Scalar(0.07) * t1624);
+  const Lane t1634 = (((cos_lanes_hip_yaw * t1574) - (sin_lanes_hip_yaw * t1575)) + (t1607 * lane_c[12])) + ((Scalar(0.07) * t1628) + (lane_c[0] * t1629));
   const Lane t1635 = (((sin_lanes_hip_yaw * t1574) + (cos_lanes_hip_yaw * t1575)) + (t1610 * lane_c[12])) - (Scalar(0.07) * t1627);
   const Lane t1636 = ((t1557 - (t1557 * t1567)) + (t1606 * lane_c[12])) + (lane_c[12] * t1627);
   const Scalar t1637 = ((((cos_waist_yaw * t1248) - (sin_waist_yaw * t1249)) + (Scalar(0.1) * t1256)) - (Scalar(0.1) * t1271)) + (t1632[0] + t1632[1]);
-  const Scalar t1638 = (Scalar(0.0416666667) + ((((sin_waist_yaw * t1248) + (cos_waist_yaw * t1249)) + (Scalar(0.1) * t1258)) + (Scalar(0.1) * t1270))) + (t1634[0] + t1634[1]);
-  const Scalar t1639 = (((cos_waist_yaw * t1222) - (sin_waist_yaw * t1223)) - (Scalar(0.1) * t1255)) + (t1633[0] + t1633[1]);
+  const Scalar t1638 = (Scalar(0.0416666667) + ((((sin_waist_yaw * t1248) + (cos_waist_yaw * t1249)) + (Scalar(0.1) * t1258)) + (Scalar(0.1) * t1270))) + (t1633[0] + t1633[1]);
+  const Scalar t1639 = (((cos_waist_yaw * t1222) - (sin_waist_yaw * t1223)) - (Scalar(0.1) * t1255)) + (t1634[0] + t1634[1]);
   const Scalar t1640 = (t1256 - t1268) + (t1621[0] + t1621[1]);
   const Scalar t1641 = t1269 + (t1622[0] + t1622[1]);
   const Scalar t1642 = (((cos_waist_yaw * t1233) - (sin_waist_yaw * t1234)) - (Scalar(0.1) * t1264)) + (t1623[0] + t1623[1]);
@@ -2068,4 +2068,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[37] = t1835[1];
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_27dbfa8568b1
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_21404202e649
