@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_6073302189e8.hpp
+//   arm7/common/forward_dynamics_derivatives_ac61776ca7de.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_6073302189e8.hpp"
+#include "arm7/common/forward_dynamics_derivatives_ac61776ca7de.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -32,7 +32,7 @@ namespace rbdc_gen::arm7::derivatives {
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4993 arithmetic
 ///   instructions (cost 6459), scalar tree 6236 (cost 10206), looped RNEA derivatives 6520
 ///   (cost 8678), looped CRBA 8568 (cost 11868)
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_6073302189e8::forward_dynamics_derivatives;
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_ac61776ca7de::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   humanoid32/common/mass_matrix_d530d8271922.hpp
+//   humanoid32/common/mass_matrix_bb2da34c554b.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/mass_matrix_d530d8271922.hpp"
+#include "humanoid32/common/mass_matrix_bb2da34c554b.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 2086 arithmetic
 ///   instructions, scalar tree 3652 (cost 4005), looped CRBA 7746 (cost 10804)
-using ::rbdc_gen::humanoid32::common::mass_matrix_d530d8271922::mass_matrix;
+using ::rbdc_gen::humanoid32::common::mass_matrix_bb2da34c554b::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

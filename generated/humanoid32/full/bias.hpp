@@ -7,11 +7,11 @@
 // bias for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   humanoid32/common/bias_f8cdb78a73cb.hpp
+//   humanoid32/common/bias_08f007f16e3b.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/bias_f8cdb78a73cb.hpp"
+#include "humanoid32/common/bias_08f007f16e3b.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::humanoid32::full {
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 2535 arithmetic
 ///   instructions, scalar tree 4184 (cost 5282)
-using ::rbdc_gen::humanoid32::common::bias_f8cdb78a73cb::bias;
+using ::rbdc_gen::humanoid32::common::bias_08f007f16e3b::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

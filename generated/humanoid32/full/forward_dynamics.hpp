@@ -7,11 +7,11 @@
 // forward_dynamics for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   humanoid32/common/forward_dynamics_21404202e649.hpp
+//   humanoid32/common/forward_dynamics_d61db493c0c0.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/forward_dynamics_21404202e649.hpp"
+#include "humanoid32/common/forward_dynamics_d61db493c0c0.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -30,7 +30,7 @@ namespace rbdc_gen::humanoid32::full {
 ///   pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes); the rest
 ///   scalar): 6864 arithmetic instructions (cost 11714), scalar tree 13701 (cost 28122),
 ///   limb lanes 8558 (cost 15779), articulated-body algorithm 11351 (cost 22482)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_21404202e649::forward_dynamics;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_d61db493c0c0::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   humanoid32/common/inverse_dynamics_63cc7583219c.hpp
+//   humanoid32/common/inverse_dynamics_6fe611b6f0fa.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/inverse_dynamics_63cc7583219c.hpp"
+#include "humanoid32/common/inverse_dynamics_6fe611b6f0fa.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::humanoid32::full {
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 2603 arithmetic
 ///   instructions, scalar tree 4283 (cost 5519)
-using ::rbdc_gen::humanoid32::common::inverse_dynamics_63cc7583219c::inverse_dynamics;
+using ::rbdc_gen::humanoid32::common::inverse_dynamics_6fe611b6f0fa::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

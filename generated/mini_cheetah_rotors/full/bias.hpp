@@ -8,11 +8,11 @@
 // bias for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   mini_cheetah_rotors/common/bias_a89363cd902c.hpp
+//   mini_cheetah_rotors/common/bias_342f6ecd58b8.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/bias_a89363cd902c.hpp"
+#include "mini_cheetah_rotors/common/bias_342f6ecd58b8.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1405  1165    0     0    24    0   2594
-using ::rbdc_gen::mini_cheetah_rotors::common::bias_a89363cd902c::bias;
+using ::rbdc_gen::mini_cheetah_rotors::common::bias_342f6ecd58b8::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // forward_dynamics for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah_rotors/common/forward_dynamics_7d303b9e5e5c.hpp
+//   mini_cheetah_rotors/common/forward_dynamics_298658ab1b55.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/forward_dynamics_7d303b9e5e5c.hpp"
+#include "mini_cheetah_rotors/common/forward_dynamics_298658ab1b55.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2666  2257   14     0    24    1   4962
-using ::rbdc_gen::mini_cheetah_rotors::common::forward_dynamics_7d303b9e5e5c::forward_dynamics;
+using ::rbdc_gen::mini_cheetah_rotors::common::forward_dynamics_298658ab1b55::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // step_terms for mini_cheetah_rotors, scene "simulation": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose step_terms is the same code:
-//   mini_cheetah_rotors/common/step_terms_e25f2d60b860.hpp
+//   mini_cheetah_rotors/common/step_terms_04cfa4ca3f85.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/simulation.hpp"
-#include "mini_cheetah_rotors/common/step_terms_e25f2d60b860.hpp"
+#include "mini_cheetah_rotors/common/step_terms_04cfa4ca3f85.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::simulation {
 
@@ -35,7 +35,7 @@ namespace rbdc_gen::mini_cheetah_rotors::simulation {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2900  2459   14     0    24   27   5424
-using ::rbdc_gen::mini_cheetah_rotors::common::step_terms_e25f2d60b860::step_terms;
+using ::rbdc_gen::mini_cheetah_rotors::common::step_terms_04cfa4ca3f85::step_terms;
 
 /// step_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -20,7 +20,7 @@ from __future__ import annotations
 from ..graph import expr as ex
 from ..graph import spatial as sp
 from .contact_dynamics import dense_ldlt, ldlt_solve
-from .kinematics import body_velocities, world_frames
+from .kinematics import body_velocity, world_frames
 from .rnea import base_acceleration, foot_wrenches
 from .rnea_derivatives import has_rotors
 
@@ -41,15 +41,16 @@ def forward_dynamics_aba(m):
     """a (by v index) with M a = Sᵀτ + τ_e − c − g, as forward_dynamics.forward_dynamics."""
     robot = m.robot
     nb = robot.nb
-    velocities = body_velocities(m)
+    velocities = [m.base_velocity()] + [None] * (nb - 1)
     external = foot_wrenches(m, world_frames(m)) if m.feet else [None] * nb
     S = [None] + [m.motion_subspace(i) for i in range(1, nb)]
     floating = robot.floating_base
     bias_acc, IA, pA = [sp.zeros(6)] * nb, [None] * nb, [None] * nb
-    for i in range(0 if floating else 1, nb):
-        m.mark("ABA: outward pass, velocity products and bias forces", i)
+    for i in range(0 if floating else 1, nb):  # body by body: a velocity dies with its children's
+        m.mark("ABA: outward pass, velocities, velocity products and bias forces", i)
         inertia = m.inertia(i)
         if i > 0:
+            velocities[i] = body_velocity(m, i, velocities[robot.parent[i]])
             bias_acc[i] = sp.crm(velocities[i], sp.vscale(m.vi(i), S[i]))
         columns = [inertia.apply(_unit(c)) for c in range(6)]
         IA[i] = sp.symmetric_of(6, lambda r, c: columns[c][r])

@@ -11,10 +11,13 @@ def body_velocities(m):
     velocities = [m.base_velocity()]
     for i in range(1, m.robot.nb):
         m.mark("outward pass, velocities", i)
-        j = m.robot.parent[i]
-        v_joint = sp.vscale(m.vi(i), m.motion_subspace(i))
-        velocities.append(sp.vadd(m.X_up(i).motion(velocities[j]), v_joint))
+        velocities.append(body_velocity(m, i, velocities[m.robot.parent[i]]))
     return velocities
+
+
+def body_velocity(m, i, parent_velocity):
+    """Eq. 13 for one body: v_i = X_λ(i)^i v_λ(i) + S_i q̇_i."""
+    return sp.vadd(m.X_up(i).motion(parent_velocity), sp.vscale(m.vi(i), m.motion_subspace(i)))
 
 
 def world_frames(m):

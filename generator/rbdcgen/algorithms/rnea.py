@@ -5,7 +5,7 @@ dynamics M a + c + g, all one outward and one inward pass with different inputs.
 from __future__ import annotations
 
 from ..graph import spatial as sp
-from .kinematics import body_velocities, world_frames
+from .kinematics import body_velocity, world_frames
 
 
 def foot_wrenches(m, frames):
@@ -78,21 +78,21 @@ def rnea(m, base_acceleration, joint_accelerations, with_velocity, external=None
     `with_velocity` enables the velocity product terms, `external` the body wrenches. Rotors take
     part as bodies of their own (rotor_wrenches)."""
     nb = m.robot.nb
-    velocities = body_velocities(m) if with_velocity else None
+    velocities = [m.base_velocity()] if with_velocity else None
     accelerations = [base_acceleration]
-    for i in range(1, nb):
-        m.mark("outward pass, accelerations", i)
-        j = m.robot.parent[i]
-        a_i = m.X_up(i).motion(accelerations[j])
-        S = m.motion_subspace(i)
-        if with_velocity:
-            a_i = sp.vadd(a_i, sp.crm(velocities[i], sp.vscale(m.vi(i), S)))
-        if joint_accelerations is not None:
-            a_i = sp.vadd(a_i, sp.vscale(joint_accelerations[i], S))
-        accelerations.append(a_i)
     forces = []
-    for i in range(nb):
-        m.mark("outward pass, forces", i)
+    for i in range(nb):  # body by body, so that a body's velocity and acceleration die with its children's
+        m.mark("outward pass", i)
+        if i > 0:
+            j = m.robot.parent[i]
+            S = m.motion_subspace(i)
+            a_i = m.X_up(i).motion(accelerations[j])
+            if with_velocity:
+                velocities.append(body_velocity(m, i, velocities[j]))
+                a_i = sp.vadd(a_i, sp.crm(velocities[i], sp.vscale(m.vi(i), S)))
+            if joint_accelerations is not None:
+                a_i = sp.vadd(a_i, sp.vscale(joint_accelerations[i], S))
+            accelerations.append(a_i)
         inertia = m.inertia(i)
         f_i = inertia.apply(accelerations[i])
         if with_velocity:

@@ -83,6 +83,9 @@ def schedule(fn):
         if n.op in ("const", "sym") or _is_joint_trig(n):
             size[n.id] = 0
             continue
+        if n.op == "lane_get":  # read where used: its lane value stays live instead (one register,
+            size[n.id] = 0      # not one per lane), and no view's late extraction holds it to the end
+            continue
         while 1 + sum(size[a.id] for a in n.args) > MAX_INLINE_OPS:
             largest = max(n.args, key=lambda a: size[a.id])  # give it its own statement
             temp_ids.add(largest.id)
