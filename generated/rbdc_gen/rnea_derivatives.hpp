@@ -16,18 +16,59 @@
 
 namespace rbdc_gen {
 
+/// Body j's entries with its subtree i = j … end[j] − 1 through a writer's q and v, entry by entry:
+/// rows i of column j (q_row[i], v_row[i]) and, below the diagonal, row j of columns i (q_column[i],
+/// v_column[i]); the v arrays null without velocity terms.
+template <class Out, int NB, class Scalar>
+RBDC_HOST_DEVICE inline void write_subtree(const Out& out, const BodyTree<NB>& tree, int j, const Scalar* q_row,
+                                           const Scalar* v_row, const Scalar* q_column, const Scalar* v_column) noexcept {
+  const int dj = tree.dof[j];
+  RBDC_SCALAR_LOOP
+  for (int i = j; i < tree.end[j]; ++i) {
+    const int di = tree.dof[i];
+    out.q(di, dj, q_row[i]);
+    if (v_row != nullptr) out.v(di, dj, v_row[i]);
+    if (i != j) {
+      out.q(dj, di, q_column[i]);
+      if (v_column != nullptr) out.v(dj, di, v_column[i]);
+    }
+  }
+}
+
 /// ∂τ/∂q and ∂τ/∂v written whole, column-major NV × NV; dv may be null (gravity_derivatives).
 template <class Scalar, int NV>
 struct DenseDerivatives {
   Scalar* dq;
   Scalar* dv;
-  RBDC_HOST_DEVICE void clear() const noexcept {
-    for (int k = 0; k < NV * NV; ++k) dq[k] = Scalar(0);
-    if (dv != nullptr)
-      for (int k = 0; k < NV * NV; ++k) dv[k] = Scalar(0);
+  /// Every entry the loop does not write (tree_detail::clear_unwritten), and ∂τ/∂q's columns of the
+  /// trunk's position, which it never writes (zero: moving the whole robot leaves τ alone), cleared
+  /// with the root's other columns.
+  template <int NB>
+  RBDC_HOST_DEVICE void clear(const BodyTree<NB>& tree, bool runs) const noexcept {
+    constexpr int root = NV - (NB - 1);
+    tree_detail::clear_unwritten<Scalar, NB, NV>(tree, runs, dq);
+    for (int k = 0; k < root * NV; ++k) dq[k] = Scalar(0);
+    if (dv != nullptr) tree_detail::clear_unwritten<Scalar, NB, NV>(tree, runs, dv);
   }
   RBDC_HOST_DEVICE void q(int row, int col, const Scalar& value) const noexcept { dq[col * NV + row] = value; }
   RBDC_HOST_DEVICE void v(int row, int col, const Scalar& value) const noexcept { dv[col * NV + row] = value; }
+  /// Body j's subtree (rbdc_gen::write_subtree): with depth-first dofs its column's run is contiguous,
+  /// copied as a vector when long (tree_detail::kLongRun).
+  template <int NB>
+  RBDC_HOST_DEVICE void subtree(const BodyTree<NB>& tree, bool runs, int j, const Scalar* q_row, const Scalar* v_row,
+                                const Scalar* q_column, const Scalar* v_column) const noexcept {
+    if (!runs || tree.end[j] - j < tree_detail::kLongRun)
+      return write_subtree(*this, tree, j, q_row, v_row, q_column, v_column);
+    const int dj = tree.dof[j], shift = dj - j;  // body i's dof: i + shift
+    for (int i = j; i < tree.end[j]; ++i) dq[dj * NV + i + shift] = q_row[i];
+    if (v_row != nullptr)
+      for (int i = j; i < tree.end[j]; ++i) dv[dj * NV + i + shift] = v_row[i];
+    RBDC_SCALAR_LOOP
+    for (int i = j + 1; i < tree.end[j]; ++i) {
+      dq[(i + shift) * NV + dj] = q_column[i];
+      if (v_column != nullptr) dv[(i + shift) * NV + dj] = v_column[i];
+    }
+  }
 };
 
 /// ∂τ/∂q and ∂τ/∂v subtracted from right-hand sides (row-major NV × NC, ∂/∂q in columns 0 … NV − 1,
@@ -44,12 +85,32 @@ struct SubtractedFromColumns {
     else
       return column;
   }
-  RBDC_HOST_DEVICE void clear() const noexcept {}
+  template <int NB>
+  RBDC_HOST_DEVICE void clear(const BodyTree<NB>&, bool) const noexcept {}
   RBDC_HOST_DEVICE void q(int row, int col, const Scalar& value) const noexcept {
     rhs[row * NC + at(col)] = rhs[row * NC + at(col)] - value;
   }
   RBDC_HOST_DEVICE void v(int row, int col, const Scalar& value) const noexcept {
     rhs[row * NC + at(NV + col)] = rhs[row * NC + at(NV + col)] - value;
+  }
+  /// Body j's subtree (rbdc_gen::write_subtree): with depth-first dofs and unplaced columns, row j's
+  /// run is contiguous, updated as a vector when long (tree_detail::kLongRun).
+  template <int NB>
+  RBDC_HOST_DEVICE void subtree(const BodyTree<NB>& tree, bool runs, int j, const Scalar* q_row, const Scalar* v_row,
+                                const Scalar* q_column, const Scalar* v_column) const noexcept {
+    if (Placed || !runs || tree.end[j] - j < tree_detail::kLongRun)
+      return write_subtree(*this, tree, j, q_row, v_row, q_column, v_column);
+    const int dj = tree.dof[j], shift = dj - j;  // body i's dof: i + shift
+    Scalar* row = rhs + dj * NC + shift;
+    for (int i = j + 1; i < tree.end[j]; ++i) row[i] = row[i] - q_column[i];
+    if (v_column != nullptr)
+      for (int i = j + 1; i < tree.end[j]; ++i) row[NV + i] = row[NV + i] - v_column[i];
+    RBDC_SCALAR_LOOP
+    for (int i = j; i < tree.end[j]; ++i) {
+      Scalar* entry = rhs + (i + shift) * NC + dj;
+      entry[0] = entry[0] - q_row[i];
+      if (v_row != nullptr) entry[NV] = entry[NV] - v_row[i];
+    }
   }
 };
 
@@ -59,12 +120,22 @@ template <class Scalar, int NV>
 struct SummedDerivatives {
   Scalar* dq;
   Scalar* dv;
-  RBDC_HOST_DEVICE void clear() const noexcept { DenseDerivatives<Scalar, NV>{dq, dv}.clear(); }
+  template <int NB>
+  RBDC_HOST_DEVICE void clear(const BodyTree<NB>&, bool) const noexcept {
+    for (int k = 0; k < NV * NV; ++k) dq[k] = Scalar(0);
+    if (dv != nullptr)
+      for (int k = 0; k < NV * NV; ++k) dv[k] = Scalar(0);
+  }
   RBDC_HOST_DEVICE void q(int row, int col, const Scalar& value) const noexcept {
     dq[col * NV + row] = dq[col * NV + row] + value;
   }
   RBDC_HOST_DEVICE void v(int row, int col, const Scalar& value) const noexcept {
     dv[col * NV + row] = dv[col * NV + row] + value;
+  }
+  template <int NB>
+  RBDC_HOST_DEVICE void subtree(const BodyTree<NB>& tree, bool, int j, const Scalar* q_row, const Scalar* v_row,
+                                const Scalar* q_column, const Scalar* v_column) const noexcept {
+    write_subtree(*this, tree, j, q_row, v_row, q_column, v_column);
   }
 };
 
@@ -76,12 +147,18 @@ struct Projected {
   const int* column;
   const double* weight;
   Out out;
-  RBDC_HOST_DEVICE void clear() const noexcept { out.clear(); }
+  template <int NB>
+  RBDC_HOST_DEVICE void clear(const BodyTree<NB>& tree, bool) const noexcept { out.clear(tree, false); }
   RBDC_HOST_DEVICE void q(int row, int col, const Scalar& value) const noexcept {
     out.q(column[row], column[col], Scalar(weight[row] * weight[col]) * value);
   }
   RBDC_HOST_DEVICE void v(int row, int col, const Scalar& value) const noexcept {
     out.v(column[row], column[col], Scalar(weight[row] * weight[col]) * value);
+  }
+  template <int NB>
+  RBDC_HOST_DEVICE void subtree(const BodyTree<NB>& tree, bool, int j, const Scalar* q_row, const Scalar* v_row,
+                                const Scalar* q_column, const Scalar* v_column) const noexcept {
+    write_subtree(*this, tree, j, q_row, v_row, q_column, v_column);
   }
 };
 
@@ -272,7 +349,8 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
     store(columns_G, i, G);
     store(columns_D, i, D);
   }
-  out.clear();
+  const bool runs = tree_detail::depth_first_dofs(tree);
+  out.clear(tree, runs);
   Scalar w[3], trunk_v[3];
   for (int k = 0; k < 3; ++k) w[k] = V[k][0], trunk_v[k] = V[3 + k][0];
   if (Floating)
@@ -318,17 +396,7 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
         }
         q_column[i] = sG;
       }
-    const int dj = tree.dof[j];
-    RBDC_SCALAR_LOOP
-    for (int i = j; i < tree.end[j]; ++i) {
-      const int di = tree.dof[i];
-      out.q(di, dj, q_row[i]);
-      if (Velocity) out.v(di, dj, v_row[i]);
-      if (i != j) {
-        out.q(dj, di, q_column[i]);
-        if (Velocity) out.v(dj, di, v_column[i]);
-      }
-    }
+    out.subtree(tree, runs, j, q_row, Velocity ? v_row : nullptr, q_column, Velocity ? v_column : nullptr);
   }
   if (Floating) {  // the trunk's block: I^C₀ c_k, and B^C₀ e_k + I^C₀ shift_k
     const CompositeInertia<Scalar> I = load_inertia(inertia, 0);
