@@ -1,0 +1,60 @@
+#!/usr/bin/python3
+"""What rate issue 20's targets would ask of the machine: per robot and quantity, the generated
+function's arithmetic instructions (its header's `/// schedule:` count, else its operation count),
+its measured median time, the instructions it retires per cycle, and the rate the target ratio over
+the peer would need at the same instruction count. A needed rate above what the core sustains
+(docs/performance.md, "What bounds each remaining gap") means the gap closes only with fewer
+instructions, not with better scheduling.
+
+Usage: tools/instruction_rates.py SUMMARY GENERATED [GHZ]
+  SUMMARY    the peer benchmark's summary.md (rows "| robot | pair | peer min / median | rbdc min /
+             median | ratio× |", pairs named "peer_function → rbdc_function")
+  GENERATED  the directory holding <robot>/full/*.hpp and <robot>/derivatives/*.hpp
+  GHZ        the core's clock (default 3.65: the Zen 4 of 5 December, by a dependent-add loop)
+"""
+import re
+import sys
+from pathlib import Path
+
+# quantity: (rbdc function, scene directory, the issue's target ratio)
+TARGETS = {"ID": ("inverse_dynamics", "full", 10), "c+g": ("bias", "full", 10),
+           "M": ("mass_matrix", "full", 10), "FD": ("forward_dynamics", "full", 10),
+           "∂ID": ("inverse_dynamics_derivatives", "derivatives", 8),
+           "∂FD": ("forward_dynamics_derivatives", "derivatives", 5)}
+ROW = re.compile(r"\| (\S+) \| \S+ → (\w+) \| [\d.]+ / ([\d.]+) \| [\d.]+ / ([\d.]+) \| ([\d.]+)×")
+
+
+def instructions(header):
+    """The schedule line's arithmetic instructions, else the operation table's total."""
+    doc = " ".join(" ".join(line.lstrip("/").split()) for line in header.read_text().splitlines()
+                   if line.startswith("///"))
+    counted = re.search(r"schedule: .*?: (\d+) arithmetic instructions", doc)
+    if counted:
+        return int(counted.group(1))
+    return int(re.search(r"operations mul add div sqrt trig neg total (?:\d+ ){6}(\d+)", doc).group(1))
+
+
+def main():
+    if len(sys.argv) not in (3, 4) or sys.argv[1] in ("-h", "--help"):
+        print(__doc__.strip())
+        return 0 if len(sys.argv) > 1 and sys.argv[1] in ("-h", "--help") else 2
+    summary, generated = Path(sys.argv[1]), Path(sys.argv[2])
+    ghz = float(sys.argv[3]) if len(sys.argv) == 4 else 3.65
+    measured = {(m.group(1), m.group(2)): (float(m.group(3)), float(m.group(4)), float(m.group(5)))
+                for m in map(ROW.match, summary.read_text().splitlines()) if m}
+    print("| robot | quantity | rbdc ns | instructions | per cycle | ratio | target | per cycle needed |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|")
+    for robot in dict.fromkeys(robot for robot, _ in measured):
+        for quantity, (function, scene, target) in TARGETS.items():
+            if (robot, function) not in measured:
+                continue
+            peer, ours, ratio = measured[(robot, function)]
+            n = instructions(generated / robot / scene / (function + ".hpp"))
+            needed = "met" if ratio >= target else "%.2f" % (n / (peer / target * ghz))
+            print("| %s | %s | %.0f | %d | %.2f | %.2f× | %d× | %s |"
+                  % (robot, quantity, ours, n, n / (ours * ghz), ratio, target, needed))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
