@@ -26,7 +26,10 @@ namespace rbdc_gen {
 /// its descendants are bodies i + 1 … end[i] − 1 (depth-first numbering); its spatial inertia at its
 /// origin is mass[i], h = mass · com (h[k][i]) and Ī (Ibar[k][i], the upper triangle xx, xy, xz, yy,
 /// yz, zz); armature[i] joins M's diagonal. Vectors component by component, as the loops hold them.
-/// Body 0 is the root: fixed, or the floating trunk whose six dofs come first.
+/// Body 0 is the root: fixed, or the floating trunk whose six dofs come first. With depth_first_dofs
+/// (dof[i] = dof[1] + i − 1, a robot loaded from a URDF) a body's subtree is one run of dofs, which a
+/// writer may store whole; chain: every body but the last has one child, numbered next, and the dofs
+/// are depth-first.
 template <int NB>
 struct BodyTree {
   int parent[NB];
@@ -38,6 +41,8 @@ struct BodyTree {
   double h[3][NB];
   double Ibar[6][NB];
   double armature[NB];
+  bool depth_first_dofs;
+  bool chain;
 };
 
 /// A spatial inertia (mass, first moment, rotational inertia's upper triangle) as it accumulates;
@@ -161,31 +166,20 @@ RBDC_HOST_DEVICE inline void store(Scalar (*x)[NP], int i, const CompositeInerti
   for (int k = 0; k < 6; ++k) x[4 + k][i] = c.I[k];
 }
 
-/// Whether the dofs follow the table's depth-first order, dof[i] = dof[1] + i − 1 (a robot loaded
-/// from a URDF): then the dofs of a body and its descendants are one run, which a writer may store
-/// whole instead of entry by entry through the table.
-template <int NB>
-RBDC_HOST_DEVICE inline bool depth_first_dofs(const BodyTree<NB>& tree) noexcept {
-  for (int i = 2; i < NB; ++i)
-    if (tree.dof[i] != tree.dof[1] + i - 1) return false;
-  return true;
-}
-
 /// Runs of a subtree's entries at least this long are copied as vectors; shorter ones entry by entry
 /// (humanoid32's ∂τ, whose limbs are runs of 6, was 4 % slower with every run a vector loop).
 constexpr int kLongRun = 16;
 
 /// Clears the column-major NV × NV matrix x for a loop that writes the entries of every (body,
-/// ancestor) pair, and the root's: nothing on a chain numbered depth-first (`runs`: depth_first_dofs),
-/// where those are all of them (chain100's M spent 9 % of its time clearing 80 kB it then wrote
-/// again), else the whole matrix (clearing a tree's unrelated pairs column by column, runs of a few
-/// entries each, made humanoid32's ∂τ about 5 % slower than one clear).
+/// ancestor) pair, and the root's: nothing on a chain (BodyTree::chain), where those are all of them
+/// (chain100's M spent 9 % of its time clearing 80 kB it then wrote again), else the whole matrix
+/// (clearing a tree's unrelated pairs column by column, runs of a few entries each, made humanoid32's
+/// ∂τ about 5 % slower than one clear). Returns whether it cleared.
 template <class Scalar, int NB, int NV>
-RBDC_HOST_DEVICE inline void clear_unwritten(const BodyTree<NB>& tree, bool runs, Scalar* x) noexcept {
-  bool chain = runs;
-  for (int i = 2; chain && i < NB; ++i) chain = tree.parent[i] == i - 1;
-  if (!chain)
-    for (int k = 0; k < NV * NV; ++k) x[k] = Scalar(0);
+RBDC_HOST_DEVICE inline bool clear_unwritten(const BodyTree<NB>& tree, Scalar* x) noexcept {
+  if (tree.chain) return false;
+  for (int k = 0; k < NV * NV; ++k) x[k] = Scalar(0);
+  return true;
 }
 
 /// Each body's frame X_0^i = (E0, p0) (root → body i) and motion subspace S_i in the root's

@@ -44,20 +44,20 @@ struct DenseDerivatives {
   /// trunk's position, which it never writes (zero: moving the whole robot leaves τ alone), cleared
   /// with the root's other columns.
   template <int NB>
-  RBDC_HOST_DEVICE void clear(const BodyTree<NB>& tree, bool runs) const noexcept {
+  RBDC_HOST_DEVICE void clear(const BodyTree<NB>& tree) const noexcept {
     constexpr int root = NV - (NB - 1);
-    tree_detail::clear_unwritten<Scalar, NB, NV>(tree, runs, dq);
-    for (int k = 0; k < root * NV; ++k) dq[k] = Scalar(0);
-    if (dv != nullptr) tree_detail::clear_unwritten<Scalar, NB, NV>(tree, runs, dv);
+    if (!tree_detail::clear_unwritten<Scalar, NB, NV>(tree, dq))
+      for (int k = 0; k < root * NV; ++k) dq[k] = Scalar(0);
+    if (dv != nullptr) tree_detail::clear_unwritten<Scalar, NB, NV>(tree, dv);
   }
   RBDC_HOST_DEVICE void q(int row, int col, const Scalar& value) const noexcept { dq[col * NV + row] = value; }
   RBDC_HOST_DEVICE void v(int row, int col, const Scalar& value) const noexcept { dv[col * NV + row] = value; }
   /// Body j's subtree (rbdc_gen::write_subtree): with depth-first dofs its column's run is contiguous,
   /// copied as a vector when long (tree_detail::kLongRun).
   template <int NB>
-  RBDC_HOST_DEVICE void subtree(const BodyTree<NB>& tree, bool runs, int j, const Scalar* q_row, const Scalar* v_row,
+  RBDC_HOST_DEVICE void subtree(const BodyTree<NB>& tree, int j, const Scalar* q_row, const Scalar* v_row,
                                 const Scalar* q_column, const Scalar* v_column) const noexcept {
-    if (!runs || tree.end[j] - j < tree_detail::kLongRun)
+    if (!tree.depth_first_dofs || tree.end[j] - j < tree_detail::kLongRun)
       return write_subtree(*this, tree, j, q_row, v_row, q_column, v_column);
     const int dj = tree.dof[j], shift = dj - j;  // body i's dof: i + shift
     for (int i = j; i < tree.end[j]; ++i) dq[dj * NV + i + shift] = q_row[i];
@@ -86,7 +86,7 @@ struct SubtractedFromColumns {
       return column;
   }
   template <int NB>
-  RBDC_HOST_DEVICE void clear(const BodyTree<NB>&, bool) const noexcept {}
+  RBDC_HOST_DEVICE void clear(const BodyTree<NB>&) const noexcept {}
   RBDC_HOST_DEVICE void q(int row, int col, const Scalar& value) const noexcept {
     rhs[row * NC + at(col)] = rhs[row * NC + at(col)] - value;
   }
@@ -96,9 +96,9 @@ struct SubtractedFromColumns {
   /// Body j's subtree (rbdc_gen::write_subtree): with depth-first dofs and unplaced columns, row j's
   /// run is contiguous, updated as a vector when long (tree_detail::kLongRun).
   template <int NB>
-  RBDC_HOST_DEVICE void subtree(const BodyTree<NB>& tree, bool runs, int j, const Scalar* q_row, const Scalar* v_row,
+  RBDC_HOST_DEVICE void subtree(const BodyTree<NB>& tree, int j, const Scalar* q_row, const Scalar* v_row,
                                 const Scalar* q_column, const Scalar* v_column) const noexcept {
-    if (Placed || !runs || tree.end[j] - j < tree_detail::kLongRun)
+    if (Placed || !tree.depth_first_dofs || tree.end[j] - j < tree_detail::kLongRun)
       return write_subtree(*this, tree, j, q_row, v_row, q_column, v_column);
     const int dj = tree.dof[j], shift = dj - j;  // body i's dof: i + shift
     Scalar* row = rhs + dj * NC + shift;
@@ -121,7 +121,7 @@ struct SummedDerivatives {
   Scalar* dq;
   Scalar* dv;
   template <int NB>
-  RBDC_HOST_DEVICE void clear(const BodyTree<NB>&, bool) const noexcept {
+  RBDC_HOST_DEVICE void clear(const BodyTree<NB>&) const noexcept {
     for (int k = 0; k < NV * NV; ++k) dq[k] = Scalar(0);
     if (dv != nullptr)
       for (int k = 0; k < NV * NV; ++k) dv[k] = Scalar(0);
@@ -133,7 +133,7 @@ struct SummedDerivatives {
     dv[col * NV + row] = dv[col * NV + row] + value;
   }
   template <int NB>
-  RBDC_HOST_DEVICE void subtree(const BodyTree<NB>& tree, bool, int j, const Scalar* q_row, const Scalar* v_row,
+  RBDC_HOST_DEVICE void subtree(const BodyTree<NB>& tree, int j, const Scalar* q_row, const Scalar* v_row,
                                 const Scalar* q_column, const Scalar* v_column) const noexcept {
     write_subtree(*this, tree, j, q_row, v_row, q_column, v_column);
   }
@@ -148,7 +148,7 @@ struct Projected {
   const double* weight;
   Out out;
   template <int NB>
-  RBDC_HOST_DEVICE void clear(const BodyTree<NB>& tree, bool) const noexcept { out.clear(tree, false); }
+  RBDC_HOST_DEVICE void clear(const BodyTree<NB>& tree) const noexcept { out.clear(tree); }
   RBDC_HOST_DEVICE void q(int row, int col, const Scalar& value) const noexcept {
     out.q(column[row], column[col], Scalar(weight[row] * weight[col]) * value);
   }
@@ -156,7 +156,7 @@ struct Projected {
     out.v(column[row], column[col], Scalar(weight[row] * weight[col]) * value);
   }
   template <int NB>
-  RBDC_HOST_DEVICE void subtree(const BodyTree<NB>& tree, bool, int j, const Scalar* q_row, const Scalar* v_row,
+  RBDC_HOST_DEVICE void subtree(const BodyTree<NB>& tree, int j, const Scalar* q_row, const Scalar* v_row,
                                 const Scalar* q_column, const Scalar* v_column) const noexcept {
     write_subtree(*this, tree, j, q_row, v_row, q_column, v_column);
   }
@@ -349,8 +349,7 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
     store(columns_G, i, G);
     store(columns_D, i, D);
   }
-  const bool runs = tree_detail::depth_first_dofs(tree);
-  out.clear(tree, runs);
+  out.clear(tree);
   Scalar w[3], trunk_v[3];
   for (int k = 0; k < 3; ++k) w[k] = V[k][0], trunk_v[k] = V[3 + k][0];
   if (Floating)
@@ -396,7 +395,7 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
         }
         q_column[i] = sG;
       }
-    out.subtree(tree, runs, j, q_row, Velocity ? v_row : nullptr, q_column, Velocity ? v_column : nullptr);
+    out.subtree(tree, j, q_row, Velocity ? v_row : nullptr, q_column, Velocity ? v_column : nullptr);
   }
   if (Floating) {  // the trunk's block: I^C₀ c_k, and B^C₀ e_k + I^C₀ shift_k
     const CompositeInertia<Scalar> I = load_inertia(inertia, 0);

@@ -93,13 +93,29 @@ def table(robot):
         row(map(str, parents)),
         row(map(str, subtree_ends(parents))),
         row(str(joint.v_index if k else -1) for k, joint in enumerate(joints)),
-        row("true" if k and joint.type == "revolute" else "false" for k, joint in enumerate(joints)),
+        row(cpp_bool(k and joint.type == "revolute") for k, joint in enumerate(joints)),
         components(axes, 3),
         row(number(body.mass) for body in bodies),
         components(moments, 3),
         components(rotational, 6),
-        row(number(joint.actuator.armature if k and joint.actuator else 0.0) for k, joint in enumerate(joints))]
+        row(number(joint.actuator.armature if k and joint.actuator else 0.0) for k, joint in enumerate(joints)),
+        cpp_bool(depth_first_dofs(joints)), cpp_bool(depth_first_dofs(joints) and is_chain(parents))]
     return f"RBDC_TABLE BodyTree<{robot.nb}> tree{{{', '.join(fields)}}};"
+
+
+def cpp_bool(flag):
+    return "true" if flag else "false"
+
+
+def depth_first_dofs(joints):
+    """Whether the table's bodies 1, 2, … have consecutive dofs (a robot loaded from a URDF): then a
+    body's subtree is one run of dofs."""
+    return all(joints[k].v_index == joints[1].v_index + k - 1 for k in range(1, len(joints)))
+
+
+def is_chain(parents):
+    """Whether every body but the last has one child, numbered next."""
+    return all(parents[k] == k - 1 for k in range(2, len(parents)))
 
 
 def root_frame_pieces(robot):
