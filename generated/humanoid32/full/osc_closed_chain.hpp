@@ -7,11 +7,11 @@
 // osc_closed_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   humanoid32/common/osc_closed_chain_303050ec459b.hpp
+//   humanoid32/common/osc_closed_chain_cc0229b5600f.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_closed_chain_303050ec459b.hpp"
+#include "humanoid32/common/osc_closed_chain_cc0229b5600f.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -26,7 +26,9 @@ namespace rbdc_gen::humanoid32::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             7946  5910   28     0    64    9  13957
-using ::rbdc_gen::humanoid32::common::osc_closed_chain_303050ec459b::osc_closed_chain;
+/// schedule: scalar tree: 13957 arithmetic instructions (cost 28737), looped operational-space
+///   columns 18039 (cost 32500)
+using ::rbdc_gen::humanoid32::common::osc_closed_chain_cc0229b5600f::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_b948b3d15584.hpp
+//   mini_cheetah/common/osc_closed_chain_4d2c61c8acac.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/osc_closed_chain_b948b3d15584.hpp"
+#include "mini_cheetah/common/osc_closed_chain_4d2c61c8acac.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -26,7 +26,9 @@ namespace rbdc_gen::mini_cheetah::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2381  1847    9     0    24   17   4278
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_b948b3d15584::osc_closed_chain;
+/// schedule: scalar tree: 4278 arithmetic instructions (cost 5507), looped operational-space
+///   columns 6226 (cost 8172)
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_4d2c61c8acac::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -39,6 +39,21 @@ def dof_ancestors(parents, i):
     return out
 
 
+def dof_depths(parents):
+    """len(dof_ancestors(parents, i)) of every dof i, each parent's reused."""
+    depth = [None] * len(parents)
+    for i in range(len(parents)):
+        path, j = [], i
+        while j != -1 and depth[j] is None:  # up to the first dof already known
+            path.append(j)
+            j = parents[j]
+        d = -1 if j == -1 else depth[j]
+        for k in reversed(path):
+            d += 1
+            depth[k] = d
+    return depth
+
+
 def _as_is(k, i, value):
     return value
 

@@ -7,7 +7,8 @@ from __future__ import annotations
 
 from ..graph import expr as ex
 from ..graph import spatial as sp
-from .kinematics import body_velocities, world_frames
+from .crba import depth_first_order
+from .kinematics import body_velocities, root_transforms, world_frames
 from .rnea import foot_wrenches
 
 
@@ -18,9 +19,20 @@ def output_specs(n_joints):
             ("b", 6, 1, "operational-space bias force b_t")]
 
 
-def _recursion(m, articulated, beta, velocities):
+def terms_specs(nb):
+    """The outputs of the OSC functions' looped forms' traced part: J̄ᵀ's column terms for the loop
+    in place of J̄ᵀ (column_terms)."""
+    return [("Lambda", 6, 6, "operational-space inertia Λ_t of the trunk task"),
+            ("columns", 12, nb - 1, "column k: the (k + 1)-th body in depth-first order "
+             "(crba.depth_first_order), S_i then w_i = Xᵀ U_i D_i in the trunk's coordinates"),
+            ("b", 6, 1, "operational-space bias force b_t")]
+
+
+def _recursion(m, articulated, beta, velocities, couplings=None):
     """Table 1 inward loop. `articulated[i]` (I_i^A, dense 6×6) and `beta[i]` (β_i^A) are
-    initialised by the caller; returns (Λ_t, J̄_tᵀ as 6 × n_joints rows, b_t)."""
+    initialised by the caller; returns (Λ_t, J̄_tᵀ as 6 × n_joints rows, b_t). With a dict
+    `couplings` (the looped form) J̄_tᵀ's columns are not carried: couplings[i] gets body i's
+    w_i = −B_λ(i)i in its parent's coordinates, and J̄_tᵀ has no columns."""
     robot = m.robot
     nb = robot.nb
     B = [dict() for _ in range(nb)]        # B[i][k]: torque-force coupling B_ik (Eq. 32)
@@ -32,7 +44,7 @@ def _recursion(m, articulated, beta, velocities):
         Ia = articulated[i]
         U = sp.matvec(Ia, S)                                        # I_i^A Φ_i
         if m.rotor(i) is not None:
-            _joint_with_rotor(m, i, articulated, beta, B, velocities, U)
+            _joint_with_rotor(m, i, articulated, beta, B, velocities, U, couplings)
             continue
         pivot = sp.dot(S, U)
         if m.armature(i):
@@ -49,12 +61,11 @@ def _recursion(m, articulated, beta, velocities):
         LIa = sp.symmetric(tuple(sp.vsub(Ia[r], sp.vscale(UD[r], U)) for r in range(6)))
         articulated[j] = sp.mat6_add(articulated[j], m.into_parent(i, X.congruence6(LIa)))
         beta[j] = sp.vadd(beta[j], m.into_parent(i, X.force_T(propagate(p))))
-        B[j][i] = sp.vneg(X.force_T(UD))
-        for k, column in B[i].items():
-            B[j][k] = X.force_T(propagate(column))
+        _couple(B, i, j, X.force_T(UD), couplings,
+                lambda column: X.force_T(propagate(column)))
     m.mark("trunk task")
     Lam = articulated[0]
-    JbarT_cols = [B[0][k] for k in range(1, nb)]
+    JbarT_cols = [B[0][k] for k in range(1, nb)] if couplings is None else []
     JbarT = tuple(tuple(col[r] for col in JbarT_cols) for r in range(6))
     v0 = velocities[0]
     trunk_bias = sp.zeros(3) + sp.cross(sp.ang(v0), sp.lin(v0))
@@ -63,7 +74,18 @@ def _recursion(m, articulated, beta, velocities):
     return Lam, JbarT, b
 
 
-def _joint_with_rotor(m, i, articulated, beta, B, velocities, U):
+def _couple(B, i, j, w, couplings, carry):
+    """Eq. 32's B_ji = −w (w = Xᵀ U_i D_i) and Eq. 37's B_jk = `carry`(B_ik) for the descendants k
+    of i; in the looped form only couplings[i] = w."""
+    if couplings is not None:
+        couplings[i] = w
+        return
+    B[j][i] = sp.vneg(w)
+    for k, column in B[i].items():
+        B[j][k] = carry(column)
+
+
+def _joint_with_rotor(m, i, articulated, beta, B, velocities, U, couplings):
     """One step of the inward loop for a joint whose rotor (runtime/src/rotors.hpp) rides on the
     parent j: the rotor is a leaf body spinning with q̇_i, so it joins the pivot and the parent's
     articulated quantities as in Cheetah-Software's articulated-body algorithm (runtime osc.cpp):
@@ -93,9 +115,7 @@ def _joint_with_rotor(m, i, articulated, beta, B, velocities, U):
     articulated[j] = sp.mat6_add(articulated[j], carried)
     along = sp.dot(S, p) + sp.dot(S_rot, p_rot)
     beta[j] = sp.vadd(beta[j], sp.vsub(sp.vadd(X.force_T(p), X_rot.force_T(p_rot)), sp.vscale(along, UD)))
-    B[j][i] = sp.vneg(UD)
-    for k, column in B[i].items():
-        B[j][k] = sp.vsub(X.force_T(column), sp.vscale(sp.dot(S, column), UD))
+    _couple(B, i, j, UD, couplings, lambda column: sp.vsub(X.force_T(column), sp.vscale(sp.dot(S, column), UD)))
 
 
 def _outward(m):
@@ -110,17 +130,40 @@ def _outward(m):
     return velocities, articulated, beta
 
 
-def osc_open_chain(m):
-    """Table 1 with the measured foot forces f (world frame): β_i^A −= f_i^e."""
+def _looped(m, articulated, beta, velocities):
+    """Table 1's inward loop without J̄_tᵀ's columns: (Λ_t, column_terms, b_t)."""
+    couplings = {}
+    Lam, _, b = _recursion(m, articulated, beta, velocities, couplings)
+    return Lam, column_terms(m, couplings), b
+
+
+def column_terms(m, couplings):
+    """What osc_columns_loop (rbdc_gen/osc.hpp, passes/looped_osc.py) forms J̄_tᵀ from: for each body
+    i ≥ 1 in depth_first_order, S_i and w_i (`couplings`, in the parent's coordinates) both in the
+    trunk's coordinates, 12 values. There Eq. 37 carries a column by B_λ(i)k = Xᵀ B_ik − (S_iᵀ B_ik) w_i
+    without any transform: S_iᵀ B_ik is the same number in every coordinates, so the loop only subtracts
+    (S_i·c) w_i from each descendant column c, and J̄_tᵀ's column k is −w_k carried to the trunk."""
+    transforms = root_transforms(m)
+    values = []
+    for i in depth_first_order(m.robot)[1:]:
+        m.mark("J̄ᵀ column terms", i)
+        values += transforms[i].motion_back(m.motion_subspace(i))
+        values += transforms[m.robot.parent[i]].force_T(couplings[i])
+    return tuple(values)
+
+
+def osc_open_chain(m, looped=False):
+    """Table 1 with the measured foot forces f (world frame): β_i^A −= f_i^e. `looped`: J̄_tᵀ's
+    column terms in its place (column_terms)."""
     velocities, articulated, beta = _outward(m)
     for i, wrench in enumerate(foot_wrenches(m, world_frames(m))):
         if wrench is not None:
             beta[i] = sp.vsub(beta[i], wrench)
-    return _recursion(m, articulated, beta, velocities)
+    return (_looped if looped else _recursion)(m, articulated, beta, velocities)
 
 
-def osc_closed_chain(m):
-    """Table 2: each foot in contact hangs a ground inertia I_c on a spherical joint. With Φ_c the
+def osc_closed_chain(m, looped=False):
+    """Table 2 (`looped` as for osc_open_chain): each foot in contact hangs a ground inertia I_c on a spherical joint. With Φ_c the
     angular free modes, L_cᵀ I_c = diag(0, M 1), so Eqs. 46-47 add a point mass M (ground_mass)
     at the foot to I_i^A and Xᵀ (0, M g_c) to β_i^A (g_c: gravity in body coordinates)."""
     velocities, articulated, beta = _outward(m)
@@ -138,4 +181,4 @@ def osc_closed_chain(m):
         g_c = sp.mat_tmatvec(frames[i][0], m.gravity)
         force = sp.vscale(M, g_c)
         beta[i] = sp.vadd(beta[i], sp.cross(r, force) + force)                  # Eq. 47
-    return _recursion(m, articulated, beta, velocities)
+    return (_looped if looped else _recursion)(m, articulated, beta, velocities)

@@ -1,7 +1,8 @@
 """What the loops over a tree's bodies share (rbdc_gen/body_tree.hpp): the tree's constants as a
 BodyTree table, the bodies in depth-first order (the order of the traced transforms,
 crba.body_transforms), and the operation counts of the pieces every such loop runs. Used by the
-looped CRBA (looped_crba.py) and the looped RNEA derivatives (looped_rnea_derivatives.py)."""
+looped CRBA (looped_crba.py), the looped RNEA derivatives (looped_rnea_derivatives.py) and the looped
+OSC columns (looped_osc.py)."""
 
 from __future__ import annotations
 

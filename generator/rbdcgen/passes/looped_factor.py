@@ -15,7 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Optional, Tuple
 
-from ..algorithms.forward_dynamics import dof_ancestors, dof_parents
+from ..algorithms.forward_dynamics import dof_ancestors, dof_depths, dof_parents
 from . import looped_crba
 from .looped_inverse import FACTOR_HEADER
 from .looped_solve import HEADER, SIMD_DOUBLES
@@ -38,8 +38,8 @@ FACTOR_WEIGHT = 3.5
 def factor_multiply_adds(parents):
     """The multiply-adds of the factorisation over the dof tree `parents`: for dof k and each ancestor
     i, the ratio, the update of i's pivot and of i's row (depth(i) entries)."""
-    return sum(2 + len(dof_ancestors(parents, i)) for k in range(len(parents))
-               for i in dof_ancestors(parents, k))
+    depth = dof_depths(parents)
+    return sum(2 + depth[i] for k in range(len(parents)) for i in dof_ancestors(parents, k))
 
 
 @dataclass(frozen=True)
@@ -66,7 +66,8 @@ class LoopedFactor:
         """The loop's arithmetic, by trip count: per dof one division (its inverse pivot); per
         (k, ancestor i) the ratio (a multiplication), the pivot update (a multiply-add) and the
         update of i's row (a multiply-add per entry)."""
-        row = sum(len(dof_ancestors(self.parents, i)) for _, i in self._pairs())
+        depth = dof_depths(self.parents)
+        row = sum(depth[i] for _, i in self._pairs())
         pairs = len(self._pairs())
         counts = {"div": self.nv, "mul": 2 * pairs + row, "add": pairs + row}
         for kind, n in (() if self.crba is None else self.crba.operations().items()):
@@ -76,7 +77,8 @@ class LoopedFactor:
     def instructions(self):
         """Vector instructions: a row update a load, a multiply-add and a store per SIMD_DOUBLES
         entries, plus PAIR_OVERHEAD per pair and one division per dof."""
-        rows = sum(-(-len(dof_ancestors(self.parents, i)) // SIMD_DOUBLES) for _, i in self._pairs())
+        depth = dof_depths(self.parents)
+        rows = sum(-(-depth[i] // SIMD_DOUBLES) for _, i in self._pairs())
         crba = 0 if self.crba is None else self.crba.instructions()
         return 3 * rows + PAIR_OVERHEAD * len(self._pairs()) + self.nv + crba
 

@@ -4,7 +4,8 @@ contact-dynamics derivatives) a looped solve with SIMD across the right-hand sid
 (looped_solve.py), (forward dynamics) the articulated-body algorithm (algorithms/aba.py), or
 (mass_matrix_factor) the factorisation as a loop (looped_factor.py), or (mass_matrix) the CRBA as a
 loop over the bodies (looped_crba.py), or (the RNEA's derivatives) their recursion as a loop over the
-bodies (looped_rnea_derivatives.py). The quantity is the same;
+bodies (looped_rnea_derivatives.py), or (the OSC recursions) J̄ᵀ's columns as a loop (looped_osc.py).
+The quantity is the same;
 only how it is evaluated changes, so the function keeps its plain name and its doc gains one line
 that says the choice and its numbers.
 
@@ -13,11 +14,12 @@ operation being one vector instruction for all limbs, the sum over the lanes two
 add of four), a looped solve's row update one per looped_solve.SIMD_DOUBLES columns; straight-line
 code past FRONT_END_LIMIT instructions and the tree loops' and the factor's instructions weigh
 more, as measured (`cost`). Where the
-unrolled factor is past looped_factor.UNROLL_LIMIT, the unrolled CRBA past looped_crba.UNROLL_LIMIT, or
-the unrolled RNEA derivatives past looped_rnea_derivatives.UNROLL_LIMIT,
+unrolled factor is past looped_factor.UNROLL_LIMIT, the unrolled CRBA past looped_crba.UNROLL_LIMIT,
+the unrolled RNEA derivatives past looped_rnea_derivatives.UNROLL_LIMIT, or the OSC's unrolled columns
+past looped_osc.UNROLL_LIMIT,
 `auto` does not trace the forms that unroll it (tracing them alone would take minutes) when another
 form exists. A scene may force a form (`schedule: scalar`, `limb_lanes`, `looped_solve`, `aba`,
-`looped_factor`, `looped_crba` or `looped_rnea`) where the function has it."""
+`looped_factor`, `looped_crba`, `looped_rnea`, `looped_feet` or `looped_osc`) where the function has it."""
 
 from __future__ import annotations
 
@@ -30,8 +32,8 @@ from ..graph import expr as ex
 from ..views.coupled import tree_view
 from ..views import limbs
 from ..views.limbs import LimbError
-from . import (body_tree, lane_functions, looped_crba, looped_factor, looped_feet_forces, looped_rnea_derivatives,
-               looped_solve, singular_mass)
+from . import (body_tree, lane_functions, looped_crba, looped_factor, looped_feet_forces, looped_osc,
+               looped_rnea_derivatives, looped_solve, singular_mass)
 from .trace import signature, trace_function
 
 _LANE_SUM_INSTRUCTIONS = 2  # log2(LANES) horizontal additions
@@ -104,6 +106,8 @@ def _forms(robot, scene, name):
         forms["looped_rnea"] = lambda: looped_rnea_derivatives.looped_function(robot, scene, name)
     if looped_feet_forces.has_looped_form(robot, name):
         forms["looped_feet"] = lambda: looped_feet_forces.looped_function(robot, scene, name)
+    if looped_osc.has_looped_form(robot, name):
+        forms["looped_osc"] = lambda: looped_osc.looped_function(robot, scene, name)
     if name in looped_solve.LOOP_TERMS and body_tree.applies(tree_view(robot)):  # coupled: projected
         forms["looped_rnea"] = lambda: looped_solve.looped_function(robot, scene, name, rnea=True)
     if name in looped_solve.LOOP_TERMS and body_tree.applies(robot):
@@ -138,7 +142,10 @@ _UNROLLED_PARTS = (
     (looped_rnea_derivatives.unrolled_too_large,
      lambda robot: "its recursion: %d body-ancestor steps" % looped_rnea_derivatives.ancestor_steps(robot),
      {**{name: ("scalar", "limb_lanes") for name in looped_rnea_derivatives.TERMS},
-      **{name: ("scalar", "looped_solve", "lanes_looped_solve") for name in looped_solve.LOOP_TERMS}}))
+      **{name: ("scalar", "looped_solve", "lanes_looped_solve") for name in looped_solve.LOOP_TERMS}}),
+    (looped_osc.unrolled_too_large,
+     lambda robot: "its columns: %d body-ancestor steps" % looped_osc.ancestor_steps(robot),
+     {name: ("scalar", "limb_lanes") for name in looped_osc.NAMES}))
 
 
 # A forced schedule → the forms that satisfy it, in order of preference (limb lanes: the contact
@@ -149,7 +156,8 @@ _FORCED = {"limb_lanes": ("limb_lanes", "lanes_looped_solve"), "looped_rnea": ("
 _SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "looped_solve": "looped solve",
           "lanes_looped_solve": "limb lanes and a looped solve",
           "aba": "articulated-body algorithm", "aba_lanes": "articulated-body algorithm in limb lanes", "looped_factor": "looped factor", "looped_crba": "looped CRBA",
-          "looped_rnea": "looped RNEA derivatives", "looped_feet": "looped feet force terms"}
+          "looped_rnea": "looped RNEA derivatives", "looped_feet": "looped feet force terms",
+          "looped_osc": "looped operational-space columns"}
 _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes, the trunk scalar)" % ex.LANES,
            "looped_solve": " (the solve's right-hand sides in SIMD across columns)",
            "lanes_looped_solve": " (the terms traced with the %d isomorphic limbs in SIMD lanes, the "
@@ -159,7 +167,8 @@ _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes,
            "looped_factor": " (the sparse LᵀDL factorisation a loop)",
            "looped_crba": " (a loop over the bodies, the tree's constants in a table)",
            "looped_rnea": " (a loop over the bodies, the tree's constants in a table)",
-           "looped_feet": " (a loop over the dof tree's ancestor pairs)"}
+           "looped_feet": " (a loop over the dof tree's ancestor pairs)",
+           "looped_osc": " (J̄ᵀ's columns a loop over the bodies' descendants, the tree's constants in a table)"}
 
 
 # The lane forms' words for a robot whose limbs in lanes are not the quadruped's (limbs.groups_in_words).

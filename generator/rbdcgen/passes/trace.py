@@ -95,6 +95,10 @@ def _spec(robot, nf, nc):
         Lam, JbarT, b = result
         return {"Lambda": _matrix(Lam, 6), "JbarT": _matrix(JbarT, nj), "b": tuple(b)}
 
+    def osc_terms(result):
+        Lam, columns, b = result
+        return {"Lambda": _matrix(Lam, 6), "columns": columns, "b": tuple(b)}
+
     osc_out = osc.output_specs(nj)
     return {
         "feet_positions": (
@@ -204,6 +208,12 @@ def _spec(robot, nf, nc):
             "Trunk operational-space Λ, J̄ᵀ, b with feet in contact (paper 001 Table 2).",
             ("q", "v", "ground_mass"), osc_out,
             lambda m: osc_outputs(osc.osc_closed_chain(m))),
+        **{name + "_terms": (
+            "The traced part of %s in its looped form (passes/looped_osc.py)." % name,
+            inputs, osc.terms_specs(robot.nb),
+            lambda m, algorithm=algorithm: osc_terms(algorithm(m, looped=True)))
+           for name, inputs, algorithm in (("osc_open_chain", ("q", "v", "f"), osc.osc_open_chain),
+                                           ("osc_closed_chain", ("q", "v", "ground_mass"), osc.osc_closed_chain))},
         "contact_dynamics": (
             "Rigid-contact dynamics of the scene's contact feet: a and λ of M a − Jᵀλ = Sᵀτ − c − g, "
             "J a = −J̇v (Schur complement, damped proximal Delassus solve; docs/runtime.md).",

@@ -2,7 +2,7 @@
 a scene is compiled with a scalar type that counts every arithmetic operator, sin, cos and sqrt, and
 one call must match the header's table kind by kind. Run on the looped forms (passes/looped_crba.py,
 looped_factor.py, looped_solve.py, looped_rnea_derivatives.py, looped_feet_forces.py, looped_inverse.py,
-column_support.py: loops counted by trip count, the traced parts node by node) on a
+column_support.py, looped_osc.py: loops counted by trip count, the traced parts node by node) on a
 branched tree with revolute and prismatic joints and two feet in contact, floating and fixed, on a
 mimic-coupled gripper's looped solve and RNEA derivatives, on a 32-link chain's ∂a/∂τ as M⁻¹'s rows,
 on the Mini Cheetah's `full` scene (limb lanes: a lane operation counts four, a sum over the lanes three)
@@ -33,6 +33,7 @@ LOOPED_RNEA = ("name: counted\nderivatives: [inverse_dynamics_derivatives, bias_
                "forward_dynamics_derivatives, feet_force_term_derivatives]\nschedule: looped_rnea\n")
 LOOPED_SOLVE = ("name: counted\nquantities: [forward_dynamics, contact_dynamics, impulse_dynamics]\n"
                 "derivatives: [forward_dynamics_derivatives, contact_dynamics_derivatives]\nschedule: looped_solve\n")
+LOOPED_OSC = "name: counted\nquantities: [osc_open_chain, osc_closed_chain]\nschedule: looped_osc\n"
 COUPLED_LOOPED_SOLVE = "name: counted\nderivatives: [forward_dynamics_derivatives]\nschedule: looped_solve\n"
 CHAIN_INVERSE = "name: counted\nderivatives: [forward_dynamics_derivatives]\nschedule: looped_rnea\n"
 PAIRED_LANES = "name: counted\nquantities: [inverse_dynamics, mass_matrix]\nschedule: limb_lanes\n"
@@ -153,6 +154,9 @@ class OperationCountTest(unittest.TestCase):
         text = self.tree("fixed", LOOPED_RNEA)
         self.assertEqual(text.count("schedule: looped RNEA derivatives"), 4)
         self.assertIn("ltdl_solve_column_range", text)  # ∂q̈'s blocks of columns on their own rows
+
+    def test_looped_operational_space_columns(self):
+        self.assertEqual(self.tree("floating", LOOPED_OSC).count("schedule: looped operational-space columns"), 2)
 
     def test_looped_solves_of_forward_and_contact_dynamics(self):
         self.assertEqual(self.tree("floating", LOOPED_SOLVE).count("schedule: looped solve"), 2)
