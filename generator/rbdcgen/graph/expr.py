@@ -31,6 +31,7 @@ that sorting by (position, id) is a topological order that follows the algorithm
 from __future__ import annotations
 
 import math
+import operator
 import threading
 
 # Operation names. "const" and "sym" are leaves; the rest are the emitted operations.
@@ -65,7 +66,13 @@ class Graph:
         return False
 
     def intern(self, op, args, value):
-        key = (op, tuple(a.id for a in args), value)
+        # Keys by arity without a generator (this runs for every node traced): lengths or types differ.
+        if len(args) == 2:
+            key = (op, args[0].id, args[1].id, value)
+        elif len(args) == 1:
+            key = (op, args[0].id, value)
+        else:
+            key = (op, tuple(a.id for a in args), value)
         node = self._table.get(key)
         if node is None:
             node = self.new_node(op, args, value)
@@ -224,9 +231,10 @@ def _node(op, *args):
 
 
 def neg(x):
-    folded = _fold_lanes(lambda a: -a, x)
-    if folded is not None:
-        return folded
+    if x.lane:
+        folded = _fold_lanes(operator.neg, x)
+        if folded is not None:
+            return folded
     if x.op == "const":
         return const(-x.value)
     if x.op == "neg":
@@ -239,9 +247,10 @@ def neg(x):
 def add(x, y):
     if x.op == "const" and y.op == "const":
         return const(x.value + y.value)
-    folded = _fold_lanes(lambda a, b: a + b, x, y)
-    if folded is not None:
-        return folded
+    if x.lane or y.lane:
+        folded = _fold_lanes(operator.add, x, y)
+        if folded is not None:
+            return folded
     if y.is_const(0.0):
         return x
     if x.is_const(0.0):
@@ -256,9 +265,10 @@ def add(x, y):
 def sub(x, y):
     if x.op == "const" and y.op == "const":
         return const(x.value - y.value)
-    folded = _fold_lanes(lambda a, b: a - b, x, y)
-    if folded is not None:
-        return folded
+    if x.lane or y.lane:
+        folded = _fold_lanes(operator.sub, x, y)
+        if folded is not None:
+            return folded
     if x is y:
         return const(0.0)
     if y.is_const(0.0):
@@ -275,9 +285,10 @@ def sub(x, y):
 def mul(x, y):
     if x.op == "const" and y.op == "const":
         return const(x.value * y.value)
-    folded = _fold_lanes(lambda a, b: a * b, x, y)
-    if folded is not None:
-        return folded
+    if x.lane or y.lane:
+        folded = _fold_lanes(operator.mul, x, y)
+        if folded is not None:
+            return folded
     if y.op == "const":
         x, y = y, x
     if x.op == "const":
@@ -304,9 +315,10 @@ def mul(x, y):
 
 
 def div(x, y):
-    folded = _fold_lanes(lambda a, b: a / b, x, y)
-    if folded is not None:
-        return folded
+    if x.lane or y.lane:
+        folded = _fold_lanes(operator.truediv, x, y)
+        if folded is not None:
+            return folded
     if y.op == "const":
         if y.value == 0.0:
             raise ZeroDivisionError("rbdcgen.expr: division by the constant 0")

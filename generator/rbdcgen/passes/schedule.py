@@ -72,13 +72,19 @@ LANE_CODE_LIMIT = 32000
 FRONT_END_PENALTY = 1.4
 
 
-def cost(fn):
+def cost(fn, straight_line=None):
     """What `auto` minimises, in units of one short straight-line instruction: the straight-line part
-    with the front-end penalty, the loops weighted by what each of their instructions was measured to
-    cost (their `cost()`)."""
-    n = straight_line_instructions(fn)
+    (its instructions `straight_line`, counted here if not given) with the front-end penalty, the
+    loops weighted by what each of their instructions was measured to cost (their `cost()`)."""
+    n = straight_line_instructions(fn) if straight_line is None else straight_line
     loops = fn.solve.cost() if fn.solve is not None else 0
     return round(n + FRONT_END_PENALTY * max(0, n - FRONT_END_LIMIT) + loops)
+
+
+def _instructions_and_cost(fn):
+    """(instructions(fn), cost(fn)), the DAG walked once."""
+    n = straight_line_instructions(fn)
+    return n + (fn.solve.instructions() if fn.solve is not None else 0), cost(fn, n)
 
 
 def _forms(robot, scene, name):
@@ -201,7 +207,7 @@ def scheduled_function(robot, scene, name):
             del traced[form]
             untraced.append("%s not emitted (%d straight-line instructions in lanes, past %d)"
                             % (_SHORT[form], lane_code, LANE_CODE_LIMIT))
-    figures = {form: (instructions(fn), cost(fn)) for form, fn in traced.items()}
+    figures = {form: _instructions_and_cost(fn) for form, fn in traced.items()}
     best = min(figures, key=lambda form: figures[form][1])  # dicts keep order: the scalar tree wins a tie
     others = ", ".join(["%s %s" % (_SHORT[form], _figures(*figures[form])) for form in figures if form != best]
                        + untraced)
