@@ -64,24 +64,25 @@ def split(body, parameters, function_name, max_statements=MAX_STATEMENTS):
         match = _DEFINITION.match(statement)
         if match and match.group(1) != "auto" and not match.group(3):
             defined[match.group(2)] = (match.group(1), block_of[i])
+    references = [_references(statement) for statement in body]
     readers = {}  # name defined in an earlier block -> blocks reading it
     for i, statement in enumerate(body):
-        for name in _references(statement):
+        for name in references[i]:
             if name in defined and defined[name][1] != block_of[i]:
                 readers.setdefault(name, set()).add(block_of[i])
     place, size = _places(readers, defined)
     parts = []
+    passed = sorted(readers, key=lambda n: place[n])
     for b in range(len(cuts) - 1):
-        statements = body[cuts[b]:cuts[b + 1]]
-        loads = [_load(name, defined[name][0], place[name])
-                 for name in sorted(readers, key=lambda n: place[n]) if b in readers[name]]
+        loads = [_load(name, defined[name][0], place[name]) for name in passed if b in readers[name]]
         stored = []
-        for statement in statements:
+        used = set().union(*(_references(s) for s in loads), *references[cuts[b]:cuts[b + 1]])
+        for statement in body[cuts[b]:cuts[b + 1]]:
             stored.append(statement)
             match = _DEFINITION.match(statement)
             if match and match.group(2) in readers:
                 stored.append(_store(match.group(2), defined[match.group(2)][0], place[match.group(2)]))
-        used = set().union(*(_references(s) for s in loads + stored))
+                used.add(SCRATCH)
         setup = ([LANE_TYPE] if repeated else []) + [
             statement for name, statement in repeated if name in used]
         unused = ["static_cast<void>(%s);" % p for p in [*parameters, SCRATCH] if p not in used]

@@ -86,11 +86,13 @@ def schedule(fn):
         if n.op == "lane_get":  # read where used: its lane value stays live instead (one register,
             size[n.id] = 0      # not one per lane), and no view's late extraction holds it to the end
             continue
-        while 1 + sum(size[a.id] for a in n.args) > MAX_INLINE_OPS:
+        inlined = 1 + sum([size[a.id] for a in n.args])
+        while inlined > MAX_INLINE_OPS:
             largest = max(n.args, key=lambda a: size[a.id])  # give it its own statement
             temp_ids.add(largest.id)
             size[largest.id] = 0
-        size[n.id] = 1 + sum(size[a.id] for a in n.args)
+            inlined = 1 + sum([size[a.id] for a in n.args])
+        size[n.id] = inlined
         if uses[n.id] > 1:
             temp_ids.add(n.id)
             size[n.id] = 0
@@ -99,8 +101,11 @@ def schedule(fn):
     # ties keep the depth-first order, so operands still come first.
     place = {}
     for index, n in enumerate(order):
-        operands = [place[a.id][0] for a in n.args if a.op not in ("const", "sym")]
-        place[n.id] = (max([n.position] + operands), index)
+        at = n.position
+        for a in n.args:
+            if a.op != "const" and a.op != "sym" and place[a.id][0] > at:
+                at = place[a.id][0]
+        place[n.id] = (at, index)
     temps = sorted((n for n in order if n.id in temp_ids), key=lambda n: place[n.id])
     return trig, temps, uses
 

@@ -30,6 +30,7 @@ that sorting by (position, id) is a topological order that follows the algorithm
 
 from __future__ import annotations
 
+import gc
 import math
 import operator
 import threading
@@ -55,14 +56,21 @@ class Graph:
         self.position = None  # where a rewritten node stands in creation order (absorb_negations)
         self.lane_constants = []  # values of lane constant k (symbol lane_c[k]): LANES floats
         self._lane_constant_index = {}
+        self.reachable_orders = {}  # output ids → reachable(outputs)
 
     def __enter__(self):
         self._outer = getattr(_state, "graph", None)
         _state.graph = self
+        # Tracing makes a node per operation, all alive as long as the graph: the cyclic collector
+        # would walk them again and again and free nothing (a 200-body chain's OSC: 2 s of 6).
+        self._collecting = gc.isenabled()
+        gc.disable()
         return self
 
     def __exit__(self, *exc):
         _state.graph = self._outer
+        if self._collecting:
+            gc.enable()
         return False
 
     def intern(self, op, args, value):
@@ -377,7 +385,19 @@ def lane_rotate(x, shift):
 
 def reachable(outputs):
     """Nodes reaching `outputs` (dead-code elimination), in a deterministic topological order:
-    depth-first post-order, operands before users, outputs visited in the given order."""
+    depth-first post-order, operands before users, outputs visited in the given order. Kept per
+    graph and outputs (nodes never change, so neither does the order): tracing, scheduling, counting
+    and emitting each ask for it; callers only read it."""
+    if not outputs:
+        return []
+    cache = outputs[0].graph.reachable_orders
+    key = tuple(root.id for root in outputs)
+    if key not in cache:
+        cache[key] = _depth_first_post_order(outputs)
+    return cache[key]
+
+
+def _depth_first_post_order(outputs):
     seen = set()
     order = []
     for root in outputs:
