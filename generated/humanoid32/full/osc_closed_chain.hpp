@@ -7,11 +7,11 @@
 // osc_closed_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   humanoid32/common/osc_closed_chain_cc0229b5600f.hpp
+//   humanoid32/common/osc_closed_chain_d0c716efc718.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_closed_chain_cc0229b5600f.hpp"
+#include "humanoid32/common/osc_closed_chain_d0c716efc718.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -27,8 +27,8 @@ namespace rbdc_gen::humanoid32::full {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             7946  5910   28     0    64    9  13957
 /// schedule: scalar tree: 13957 arithmetic instructions (cost 28737), looped operational-space
-///   columns 18039 (cost 32500)
-using ::rbdc_gen::humanoid32::common::osc_closed_chain_cc0229b5600f::osc_closed_chain;
+///   columns 19810 (cost 35278)
+using ::rbdc_gen::humanoid32::common::osc_closed_chain_d0c716efc718::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

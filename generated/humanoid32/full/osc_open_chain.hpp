@@ -7,11 +7,11 @@
 // osc_open_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   humanoid32/common/osc_open_chain_f2a96081a1b4.hpp
+//   humanoid32/common/osc_open_chain_046a8a9b0e44.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_open_chain_f2a96081a1b4.hpp"
+#include "humanoid32/common/osc_open_chain_046a8a9b0e44.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -27,8 +27,8 @@ namespace rbdc_gen::humanoid32::full {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             8205  6061   27     0    64    9  14366
 /// schedule: scalar tree: 14366 arithmetic instructions (cost 29718), looped operational-space
-///   columns 18448 (cost 33481)
-using ::rbdc_gen::humanoid32::common::osc_open_chain_f2a96081a1b4::osc_open_chain;
+///   columns 19868 (cost 35417)
+using ::rbdc_gen::humanoid32::common::osc_open_chain_046a8a9b0e44::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_open_chain for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   mini_cheetah/common/osc_open_chain_ea156615a088.hpp
+//   mini_cheetah/common/osc_open_chain_519265f556f3.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/osc_open_chain_ea156615a088.hpp"
+#include "mini_cheetah/common/osc_open_chain_519265f556f3.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -27,9 +27,9 @@ namespace rbdc_gen::mini_cheetah::full {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2392  1821    8     0    24   28   4273
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1195 arithmetic
-///   instructions, scalar tree 4233 (cost 5399), looped operational-space columns 6141
-///   (cost 7968)
-using ::rbdc_gen::mini_cheetah::common::osc_open_chain_ea156615a088::osc_open_chain;
+///   instructions, scalar tree 4233 (cost 5399), looped operational-space columns 7027
+///   (cost 9543)
+using ::rbdc_gen::mini_cheetah::common::osc_open_chain_519265f556f3::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

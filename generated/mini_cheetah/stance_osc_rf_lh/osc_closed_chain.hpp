@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "stance_osc_rf_lh": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_31e988b0f10d.hpp
+//   mini_cheetah/common/osc_closed_chain_e3cec6a59b6c.hpp
 #pragma once
 
 #include "mini_cheetah/stance_osc_rf_lh.hpp"
-#include "mini_cheetah/common/osc_closed_chain_31e988b0f10d.hpp"
+#include "mini_cheetah/common/osc_closed_chain_e3cec6a59b6c.hpp"
 
 namespace rbdc_gen::mini_cheetah::stance_osc_rf_lh {
 
@@ -27,8 +27,8 @@ namespace rbdc_gen::mini_cheetah::stance_osc_rf_lh {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2281  1773    9     0    24   19   4106
 /// schedule: scalar tree: 4106 arithmetic instructions (cost 5094), looped operational-space
-///   columns 6034 (cost 7712)
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_31e988b0f10d::osc_closed_chain;
+///   columns 7056 (cost 9612)
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_e3cec6a59b6c::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

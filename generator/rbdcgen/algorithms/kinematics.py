@@ -36,19 +36,6 @@ def world_frames(m):
     return frames
 
 
-def root_transforms(m):
-    """X_0^i (root → body i coordinates) of every body as one Transform, composed outward joint by
-    joint; the root's is the identity."""
-    transforms = [sp.Transform()]
-    for i in range(1, m.robot.nb):
-        m.mark("root transforms", i)
-        X = transforms[m.robot.parent[i]]
-        for x in m.X_up(i).factors:
-            X = X.then(x)
-        transforms.append(X)
-    return transforms
-
-
 def feet_positions(m, frames=None):
     """Eqs. 16-18: p_fk = p_φ(k) + R_φ(k) r_fk (world coordinates)."""
     frames = frames or world_frames(m)

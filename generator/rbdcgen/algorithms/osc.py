@@ -8,7 +8,7 @@ from __future__ import annotations
 from ..graph import expr as ex
 from ..graph import spatial as sp
 from .crba import depth_first_order
-from .kinematics import body_velocities, root_transforms, world_frames
+from .kinematics import body_velocities, world_frames
 from .rnea import foot_wrenches
 
 
@@ -23,8 +23,9 @@ def terms_specs(nb):
     """The outputs of the OSC functions' looped forms' traced part: J̄ᵀ's column terms for the loop
     in place of J̄ᵀ (column_terms)."""
     return [("Lambda", 6, 6, "operational-space inertia Λ_t of the trunk task"),
-            ("columns", 12, nb - 1, "column k: the (k + 1)-th body in depth-first order "
-             "(crba.depth_first_order), S_i then w_i = Xᵀ U_i D_i in the trunk's coordinates"),
+            ("columns", 12, nb, "column k < nb − 1: the (k + 1)-th body in depth-first order "
+             "(crba.depth_first_order), S_i then w_i = Xᵀ U_i D_i in world coordinates; the last: "
+             "the trunk's R_0 (row-major, trunk → world) and p_0"),
             ("b", 6, 1, "operational-space bias force b_t")]
 
 
@@ -130,36 +131,46 @@ def _outward(m):
     return velocities, articulated, beta
 
 
-def _looped(m, articulated, beta, velocities):
-    """Table 1's inward loop without J̄_tᵀ's columns: (Λ_t, column_terms, b_t)."""
+def _inward(m, articulated, beta, velocities, frames, looped):
+    """Table 1's inward loop: (Λ_t, J̄_tᵀ, b_t), or `looped`, (Λ_t, column_terms, b_t)."""
+    if not looped:
+        return _recursion(m, articulated, beta, velocities)
     couplings = {}
     Lam, _, b = _recursion(m, articulated, beta, velocities, couplings)
-    return Lam, column_terms(m, couplings), b
+    return Lam, column_terms(m, couplings, frames), b
 
 
-def column_terms(m, couplings):
-    """What osc_columns_loop (rbdc_gen/osc.hpp, passes/looped_osc.py) forms J̄_tᵀ from: for each body
-    i ≥ 1 in depth_first_order, S_i and w_i (`couplings`, in the parent's coordinates) both in the
-    trunk's coordinates, 12 values. There Eq. 37 carries a column by B_λ(i)k = Xᵀ B_ik − (S_iᵀ B_ik) w_i
-    without any transform: S_iᵀ B_ik is the same number in every coordinates, so the loop only subtracts
-    (S_i·c) w_i from each descendant column c, and J̄_tᵀ's column k is −w_k carried to the trunk."""
-    transforms = root_transforms(m)
+def column_terms(m, couplings, frames):
+    """What osc_columns_loop (rbdc_gen/osc.hpp, passes/looped_osc.py) forms J̄_tᵀ from, in world
+    coordinates (the bodies' world `frames`, which the recursion's foot terms need anyway): for each
+    body i ≥ 1 in depth_first_order, S_i and w_i (`couplings`, in the parent's coordinates), 12 values;
+    then the trunk's frame, R_0 row-major and p_0, for the columns' way back to trunk coordinates.
+    There Eq. 37 carries a column by B_λ(i)k = Xᵀ B_ik − (S_iᵀ B_ik) w_i without any transform:
+    S_iᵀ B_ik is the same number in every coordinates, so the loop only subtracts (S_i·c) w_i from
+    each descendant column c, and J̄_tᵀ's column k is −w_k carried to the trunk."""
     values = []
     for i in depth_first_order(m.robot)[1:]:
         m.mark("J̄ᵀ column terms", i)
-        values += transforms[i].motion_back(m.motion_subspace(i))
-        values += transforms[m.robot.parent[i]].force_T(couplings[i])
-    return tuple(values)
+        R, p = frames[i]
+        S = m.motion_subspace(i)
+        w = sp.matvec(R, sp.ang(S))
+        values += w + sp.vadd(sp.matvec(R, sp.lin(S)), sp.cross(p, w))
+        R, p = frames[m.robot.parent[i]]
+        f = sp.matvec(R, sp.lin(couplings[i]))
+        values += sp.vadd(sp.matvec(R, sp.ang(couplings[i])), sp.cross(p, f)) + f
+    R, p = frames[0]
+    return tuple(values) + tuple(e for row in R for e in row) + tuple(p)
 
 
 def osc_open_chain(m, looped=False):
     """Table 1 with the measured foot forces f (world frame): β_i^A −= f_i^e. `looped`: J̄_tᵀ's
     column terms in its place (column_terms)."""
     velocities, articulated, beta = _outward(m)
-    for i, wrench in enumerate(foot_wrenches(m, world_frames(m))):
+    frames = world_frames(m)
+    for i, wrench in enumerate(foot_wrenches(m, frames)):
         if wrench is not None:
             beta[i] = sp.vsub(beta[i], wrench)
-    return (_looped if looped else _recursion)(m, articulated, beta, velocities)
+    return _inward(m, articulated, beta, velocities, frames, looped)
 
 
 def osc_closed_chain(m, looped=False):
@@ -181,4 +192,4 @@ def osc_closed_chain(m, looped=False):
         g_c = sp.mat_tmatvec(frames[i][0], m.gravity)
         force = sp.vscale(M, g_c)
         beta[i] = sp.vadd(beta[i], sp.cross(r, force) + force)                  # Eq. 47
-    return (_looped if looped else _recursion)(m, articulated, beta, velocities)
+    return _inward(m, articulated, beta, velocities, frames, looped)

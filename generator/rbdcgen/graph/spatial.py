@@ -218,13 +218,6 @@ class Transform:
             u = vsub(u, cross(self.r, w))
         return self.rotate(w) + self.rotate(u)
 
-    def motion_back(self, m):
-        """X⁻¹ m = (Eᵀ ω, Eᵀ v + r × Eᵀ ω): a motion in B coordinates back to A."""
-        w, u = self.rotate_back(ang(m)), self.rotate_back(lin(m))
-        if self.r is not None:
-            u = vadd(u, cross(self.r, w))
-        return w + u
-
     def force_T(self, f):
         """Xᵀ f = (Eᵀ n + r × Eᵀ f, Eᵀ f): a force in B coordinates back to A (Eq. 8)."""
         n, u = self.rotate_back(ang(f)), self.rotate_back(lin(f))

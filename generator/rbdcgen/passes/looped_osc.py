@@ -4,9 +4,9 @@
 Unrolled, paper 001's Table 1 carries each body's column of J̄_tᵀ to every ancestor by a force
 transform: O(n·depth) straight-line code (a 200-body chain's: 48 MB per function, most of the
 generator's four minutes). In the looped form the traced part runs the recursion for Λ_t and b_t
-(O(n)) and writes each body's S_i and w_i in the trunk's coordinates (algorithms/osc.column_terms);
+(O(n)) and writes each body's S_i and w_i in world coordinates (algorithms/osc.column_terms);
 osc_columns_loop (rbdc_gen/osc.hpp) carries the columns there, a dot product and a multiply-add per
-(body, ancestor) pair, SIMD across a body's descendants."""
+(body, ancestor) pair, SIMD across a body's descendants, and moves each to the trunk's coordinates."""
 
 from __future__ import annotations
 
@@ -23,15 +23,16 @@ HEADER = "rbdc_gen/osc.hpp"
 # has 238): a 200-body chain's 19 900 are 48 MB of C++ per function.
 UNROLL_LIMIT = 1000
 PAIR = (12, 11)      # per (body, ancestor) pair: s = S_iᵀ c, c −= s w_i
+TO_TRUNK = (24, 18)  # per column, world → trunk coordinates: (R_0ᵀ (n − p_0 × f), R_0ᵀ f)
 # Instructions per pair step: the arithmetic fused (12), the column's six loads and six stores.
 PAIR_INSTRUCTIONS = 24
 SIMD_DOUBLES = 4     # columns per instruction the cost model assumes for a run (AVX2); the rest scalar
 # Per body: its column's start and store and what its run costs beyond its steps (the wait on the
 # previous body's stores of the same columns, the run's branches), set so that the cost model gives
-# the ratio measured on humanoid32 (runs of at most 6; Zen 4, clang 14): osc_open_chain looped
-# 2 000 ns (its traced part alone 1 555), unrolled 1 760. Talos measured even (open chain 5 %
-# faster looped, closed 8 % slower).
-BODY_INSTRUCTIONS = 140
+# the ratios measured on humanoid32 (runs of at most 6; Zen 4, clang 14): osc_open_chain looped
+# 2 085 ns against 1 750 unrolled, osc_closed_chain 2 100 against 1 720. (An earlier loop in the
+# trunk's coordinates measured even on Talos: open chain 5 % faster looped, closed 8 % slower.)
+BODY_INSTRUCTIONS = 186
 COPIED = 42          # Λ_t and b_t from the traced part's locals
 
 
@@ -49,8 +50,9 @@ class LoopedOsc:
     headers: ClassVar[Tuple[str, ...]] = (body_tree.HEADER, HEADER)
 
     def operations(self):
-        steps = ancestor_steps(self.robot)
-        return {"mul": PAIR[0] * steps, "add": PAIR[1] * steps, "neg": 6 * (self.robot.nb - 1)}
+        steps, columns = ancestor_steps(self.robot), self.robot.nb - 1
+        return {"mul": PAIR[0] * steps + TO_TRUNK[0] * columns, "add": PAIR[1] * steps + TO_TRUNK[1] * columns,
+                "neg": 6 * columns}
 
     def instructions(self):
         """A run's pairs SIMD_DOUBLES at a time, its remainder one by one, and BODY_INSTRUCTIONS per body."""

@@ -1,5 +1,5 @@
-"""The looped operational-space columns (passes/looped_osc.py): the traced part's Λ, b and per-body
-S_i, w_i, carried as osc_columns_loop does (rbdc_gen/osc.hpp, here in Python), give the unrolled
+"""The looped operational-space columns (passes/looped_osc.py): the traced part's Λ, b, per-body
+S_i, w_i and the trunk's frame, carried as osc_columns_loop does (rbdc_gen/osc.hpp, here in Python), give the unrolled
 recursion's J̄ᵀ; `auto` keeps the unrolled columns on a small tree and, past UNROLL_LIMIT, takes the
 loop without tracing them. The C++ loop is checked against the runtime by
 generator_verify_random_looped_osc and its operation count by product/test_operation_counts.py."""
@@ -27,8 +27,13 @@ def scene(schedule, name):
 
 def carried_columns(robot, columns):
     """osc_columns_loop in Python: column k (bodies in depth-first order) starts as −w_k, then each
-    ancestor i, nearest first, subtracts (S_i · c) w_i; returns J̄ᵀ column-major by joint."""
+    ancestor i, nearest first, subtracts (S_i · c) w_i; then (n, f) in world coordinates go to the
+    trunk's, (R_0ᵀ (n − p_0 × f), R_0ᵀ f). Returns J̄ᵀ column-major by joint."""
     terms = {body: columns[12 * (p - 1):12 * p] for p, body in enumerate(depth_first_order(robot)) if p}
+    R0, p0 = columns[-12:-3], columns[-3:]
+
+    def trunk(v):  # R_0ᵀ v
+        return [sum(R0[3 * a + b] * v[a] for a in range(3)) for b in range(3)]
     JbarT = []
     for k in range(1, robot.nb):
         c = [-x for x in terms[k][6:]]
@@ -38,7 +43,9 @@ def carried_columns(robot, columns):
             s = sum(a * b for a, b in zip(S, c))
             c = [x - s * y for x, y in zip(c, w)]
             i = robot.parent[i]
-        JbarT += c
+        n, f = c[:3], c[3:]
+        p_x_f = [p0[1] * f[2] - p0[2] * f[1], p0[2] * f[0] - p0[0] * f[2], p0[0] * f[1] - p0[1] * f[0]]
+        JbarT += trunk([x - y for x, y in zip(n, p_x_f)]) + trunk(f)
     return JbarT
 
 

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::osc_closed_chain_cc0229b5600f {
+namespace rbdc_gen::humanoid32::common::osc_closed_chain_d0c716efc718 {
 
 /// Trunk operational-space Λ, J̄ᵀ, b with feet in contact (paper 001 Table 2).
 ///
@@ -24,7 +24,7 @@ namespace rbdc_gen::humanoid32::common::osc_closed_chain_cc0229b5600f {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             7946  5910   28     0    64    9  13957
 /// schedule: scalar tree: 13957 arithmetic instructions (cost 28737), looped operational-space
-///   columns 18039 (cost 32500)
+///   columns 19810 (cost 35278)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, const Scalar* ground_mass, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
   // sines and cosines of the joint angles
@@ -4352,4 +4352,4 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   b[5] = (((((v[0] * t232) - (v[1] * t231)) + t2643) + t3278) + t3842) - (((t3834 * t3886) + (t3836 * t3887)) + (t3837 * t3888));
 }
 
-}  // namespace rbdc_gen::humanoid32::common::osc_closed_chain_cc0229b5600f
+}  // namespace rbdc_gen::humanoid32::common::osc_closed_chain_d0c716efc718

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::osc_closed_chain_4d2c61c8acac {
+namespace rbdc_gen::mini_cheetah::common::osc_closed_chain_cd13f73c6e26 {
 
 /// Trunk operational-space Λ, J̄ᵀ, b with feet in contact (paper 001 Table 2).
 ///
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::common::osc_closed_chain_4d2c61c8acac {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2381  1847    9     0    24   17   4278
 /// schedule: scalar tree: 4278 arithmetic instructions (cost 5507), looped operational-space
-///   columns 6226 (cost 8172)
+///   columns 7229 (cost 10028)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, const Scalar* ground_mass, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
   // sines and cosines of the joint angles
@@ -1397,4 +1397,4 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   b[5] = t1154 - (((t1141 * t1173) - (t1138 * t1172)) + (t1142 * t1174));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::osc_closed_chain_4d2c61c8acac
+}  // namespace rbdc_gen::mini_cheetah::common::osc_closed_chain_cd13f73c6e26

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::osc_closed_chain_60a603e6a41a {
+namespace rbdc_gen::mini_cheetah::common::osc_closed_chain_06796f13350d {
 
 /// Trunk operational-space Λ, J̄ᵀ, b with feet in contact (paper 001 Table 2).
 ///
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::common::osc_closed_chain_60a603e6a41a {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2281  1773    9     0    24   19   4106
 /// schedule: scalar tree: 4106 arithmetic instructions (cost 5094), looped operational-space
-///   columns 6034 (cost 7712)
+///   columns 7056 (cost 9612)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, const Scalar* ground_mass, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
   // sines and cosines of the joint angles
@@ -1339,4 +1339,4 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   b[5] = t1102 - (((t1089 * t1121) - (t1086 * t1120)) + (t1090 * t1122));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::osc_closed_chain_60a603e6a41a
+}  // namespace rbdc_gen::mini_cheetah::common::osc_closed_chain_06796f13350d

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::osc_open_chain_f2a96081a1b4 {
+namespace rbdc_gen::humanoid32::common::osc_open_chain_046a8a9b0e44 {
 
 /// Trunk operational-space Λ, J̄ᵀ, b with measured foot forces (paper 001 Table 1).
 ///
@@ -24,7 +24,7 @@ namespace rbdc_gen::humanoid32::common::osc_open_chain_f2a96081a1b4 {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             8205  6061   27     0    64    9  14366
 /// schedule: scalar tree: 14366 arithmetic instructions (cost 29718), looped operational-space
-///   columns 18448 (cost 33481)
+///   columns 19868 (cost 35417)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, const Scalar* f, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
   // sines and cosines of the joint angles
@@ -4467,4 +4467,4 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   b[5] = (((((v[0] * t232) - (v[1] * t231)) + t2770) + t3393) + t3956) - (((t3948 * t4000) + (t3950 * t4001)) + (t3951 * t4002));
 }
 
-}  // namespace rbdc_gen::humanoid32::common::osc_open_chain_f2a96081a1b4
+}  // namespace rbdc_gen::humanoid32::common::osc_open_chain_046a8a9b0e44

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::osc_open_chain_ea156615a088 {
+namespace rbdc_gen::mini_cheetah::common::osc_open_chain_519265f556f3 {
 
 /// Trunk operational-space Λ, J̄ᵀ, b with measured foot forces (paper 001 Table 1).
 ///
@@ -25,8 +25,8 @@ namespace rbdc_gen::mini_cheetah::common::osc_open_chain_ea156615a088 {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2392  1821    8     0    24   28   4273
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1195 arithmetic
-///   instructions, scalar tree 4233 (cost 5399), looped operational-space columns 6141
-///   (cost 7968)
+///   instructions, scalar tree 4233 (cost 5399), looped operational-space columns 7027
+///   (cost 9543)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, const Scalar* f, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -436,4 +436,4 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   b[5] = (((v[0] * t26) - (v[1] * t25)) + lane_sum(t288)) - (((t277 * t324) + (t278 * t325)) + (t281 * t326));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::osc_open_chain_ea156615a088
+}  // namespace rbdc_gen::mini_cheetah::common::osc_open_chain_519265f556f3
