@@ -15,8 +15,8 @@ add of four), a looped solve's row update one per looped_solve.SIMD_DOUBLES colu
 code past FRONT_END_LIMIT instructions and the tree loops' and the factor's instructions weigh
 more, as measured (`cost`). Where the
 unrolled factor is past looped_factor.UNROLL_LIMIT, the unrolled CRBA past looped_crba.UNROLL_LIMIT,
-the unrolled RNEA derivatives past looped_rnea_derivatives.UNROLL_LIMIT, or the OSC's unrolled columns
-past looped_osc.UNROLL_LIMIT,
+the unrolled RNEA derivatives past looped_rnea_derivatives.UNROLL_LIMIT, the feet's unrolled force
+terms past looped_feet_forces.UNROLL_LIMIT, or the OSC's unrolled columns past looped_osc.UNROLL_LIMIT,
 `auto` does not trace the forms that unroll it (tracing them alone would take minutes) when another
 form exists. A scene may force a form (`schedule: scalar`, `limb_lanes`, `looped_solve`, `aba`,
 `looped_factor`, `looped_crba`, `looped_rnea`, `looped_feet` or `looped_osc`) where the function has it."""
@@ -149,6 +149,9 @@ _UNROLLED_PARTS = (
      lambda robot: "its recursion: %d body-ancestor steps" % looped_rnea_derivatives.ancestor_steps(robot),
      {**{name: ("scalar", "limb_lanes") for name in looped_rnea_derivatives.TERMS},
       **{name: ("scalar", "looped_solve", "lanes_looped_solve") for name in looped_solve.LOOP_TERMS}}),
+    (looped_feet_forces.unrolled_too_large,
+     lambda robot: "its entries: %d dof-ancestor pairs on the feet's paths" % looped_feet_forces.path_pairs(robot),
+     {looped_feet_forces.NAME: ("scalar",)}),
     (looped_osc.unrolled_too_large,
      lambda robot: "its columns: %d body-ancestor steps" % looped_osc.ancestor_steps(robot),
      {name: ("scalar", "limb_lanes") for name in looped_osc.NAMES}))

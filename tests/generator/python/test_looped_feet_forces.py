@@ -19,6 +19,7 @@ from rbdcgen.backend import emit
 from rbdcgen.backend.emit import ZERO_FILL_MIN, emit_body
 from rbdcgen.frontend.ir import load_ir
 from rbdcgen.frontend.scene import scene_from_dict
+from rbdcgen.passes import looped_feet_forces
 from rbdcgen.passes.schedule import scheduled_function
 from rbdcgen.passes.trace import trace_function
 
@@ -67,6 +68,14 @@ class LoopedFeetForces(unittest.TestCase):
             self.assertTrue(fn.schedule.startswith("scalar tree"), fn.schedule)
             self.assertIn("looped feet force terms", fn.schedule)  # traced and counted, not taken
         self.assertIsNotNone(scheduled_function(chain(100), scene("looped_feet"), NAME).solve)
+
+    def test_auto_loops_past_the_unrolled_terms_limit(self):
+        """Past UNROLL_LIMIT pairs the unrolled term is not traced (its header's compile time)."""
+        self.assertLess(looped_feet_forces.path_pairs(chain(100)), looped_feet_forces.UNROLL_LIMIT)
+        self.assertGreater(looped_feet_forces.path_pairs(chain(130)), looped_feet_forces.UNROLL_LIMIT)
+        fn = scheduled_function(chain(130), scene("auto"), NAME)
+        self.assertTrue(fn.schedule.startswith("looped feet force terms"), fn.schedule)
+        self.assertIn("scalar tree not traced (its entries: 8385 dof-ancestor pairs", fn.schedule)
 
     def test_the_looped_rnea_solve_adds_the_term_by_the_loop(self):
         fn = scheduled_function(FLOATING, scene("looped_rnea", "forward_dynamics_derivatives"),
