@@ -11,7 +11,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "generator"))
 DATA = os.path.join(HERE, "..", "data")
 
-from rbdcgen.frontend.ir import load_ir  # noqa: E402
+from dataclasses import replace  # noqa: E402
+
+from rbdcgen.frontend.ir import Actuator, Rotor, load_ir  # noqa: E402
 from rbdcgen.graph import expr as ex  # noqa: E402
 
 
@@ -86,3 +88,12 @@ def chain(links):
                     "kappa": [list(range(1, i + 1)) for i in range(nb)],
                     "mu": [[i + 1] if i + 1 < nb else [] for i in range(nb)],
                     "nu": [list(range(i, nb)) for i in range(nb)]})
+
+
+def geared(robot, joint=1):
+    """`robot` with a geared rotor on `joint` (a tree with rotors: the loops over bodies do not apply)."""
+    rotor = Rotor(gear_ratio=6.0, mass=0.1, inertia=((1e-4, 0, 0), (0, 1e-4, 0), (0, 0, 2e-4)),
+                  rotation=((1, 0, 0), (0, 1, 0), (0, 0, 1)), translation=(0, 0, 0), axis=(0, 0, 1))
+    joints = list(robot.joints)
+    joints[joint] = replace(joints[joint], actuator=Actuator(armature=0.0, rotor=rotor))
+    return replace(robot, joints=tuple(joints))

@@ -7,12 +7,11 @@ generator_verify_random_looped_osc and its operation count by product/test_opera
 import os
 import unittest
 import unittest.mock
-from dataclasses import replace
 
-from numeric_check import DATA, evaluate, max_relative_error, random_state
+from numeric_check import DATA, evaluate, geared, max_relative_error, random_state
 
 from rbdcgen.algorithms.crba import depth_first_order
-from rbdcgen.frontend.ir import Actuator, Rotor, load_ir
+from rbdcgen.frontend.ir import load_ir
 from rbdcgen.frontend.scene import scene_from_dict
 from rbdcgen.passes import looped_osc
 from rbdcgen.passes.schedule import scheduled_function
@@ -76,13 +75,9 @@ class LoopedOsc(unittest.TestCase):
     def test_rotors_have_no_looped_columns(self):
         self.assertTrue(looped_osc.has_looped_form(FLOATING, "osc_closed_chain"))
         self.assertFalse(looped_osc.has_looped_form(FLOATING, "mass_matrix"))
-        rotor = Rotor(gear_ratio=6.0, mass=0.1, inertia=((1e-4, 0, 0), (0, 1e-4, 0), (0, 0, 2e-4)),
-                      rotation=((1, 0, 0), (0, 1, 0), (0, 0, 1)), translation=(0, 0, 0), axis=(0, 0, 1))
-        joints = list(FLOATING.joints)
-        joints[1] = replace(joints[1], actuator=Actuator(armature=0.0, rotor=rotor))
-        geared = replace(FLOATING, joints=tuple(joints))
-        self.assertFalse(looped_osc.has_looped_form(geared, "osc_open_chain"))
-        self.assertIsNone(scheduled_function(geared, scene("looped_osc", "osc_open_chain"), "osc_open_chain").solve)
+        self.assertFalse(looped_osc.has_looped_form(geared(FLOATING), "osc_open_chain"))
+        self.assertIsNone(scheduled_function(geared(FLOATING), scene("looped_osc", "osc_open_chain"),
+                                             "osc_open_chain").solve)
 
 
 if __name__ == "__main__":
