@@ -12,9 +12,115 @@
 // product, instead of a force transform per (body, ancestor) pair.
 #pragma once
 
+#include <type_traits>
+
 #include "rbdc_gen/body_tree.hpp"
 
 namespace rbdc_gen {
+
+/// Whether a writer takes the loop's per-body vectors instead of its entries (InverseTimesVectors).
+template <class Out, class = void>
+struct TakesVectors : std::false_type {};
+template <class Out>
+struct TakesVectors<Out, std::void_t<decltype(Out::kTakesVectors)>> : std::bool_constant<Out::kTakesVectors> {};
+
+/// ∂a/∂q = −M⁻¹ (∂τ/∂q − ∂(Jᵀf)/∂q) and ∂a/∂v = −M⁻¹ ∂τ/∂v (forward_dynamics_derivatives) of a
+/// fixed-base chain, from M⁻¹ and the per-body vectors of rnea_derivatives_loop, without forming ∂τ
+/// or solving for its columns. Both are low-rank by blocks: entry (i, j) is A_i·C_j for i in j's
+/// subtree and S_i·G_j for i an ancestor of j (the loop's formulas, with A = (ρ^I, ρ^B), C = (c, u)
+/// or (2u, S), G or D; the feet's ∂(Jᵀf)/∂q adds χ_i·ω_j and ω_i·χ_j, ω each dof's world axis and
+/// χ = Σ_k J_k × f_k). On a chain a body's subtree is every body after it and its ancestors every
+/// body before it, so column j of M⁻¹∂τ is T_j C_j + R_j G_j with the running sums
+/// T_j = Σ_{i ≥ j} M⁻¹_{:,i} A_iᵀ and R_j = Σ_{i < j} M⁻¹_{:,i} S_iᵀ: 66 NV² multiply-adds in all,
+/// where solving the 2 NV columns takes 2 NV per factor entry (passes/looped_low_rank.py).
+/// Minv column-major NV × NV; axis and moment NV × 3 row-major, null without feet.
+template <class Scalar, int NV>
+struct InverseTimesVectors {
+  static constexpr bool kTakesVectors = true;
+  const Scalar* Minv;
+  const Scalar* axis;
+  const Scalar* moment;
+  Scalar* da_dq;
+  Scalar* da_dv;
+
+  // The entry writers' members, for the code after rnea_derivatives_loop's return: never called.
+  template <int NB>
+  RBDC_HOST_DEVICE void clear(const BodyTree<NB>&) const noexcept {}
+  RBDC_HOST_DEVICE void q(int, int, const Scalar&) const noexcept {}
+  RBDC_HOST_DEVICE void v(int, int, const Scalar&) const noexcept {}
+  template <int NB>
+  RBDC_HOST_DEVICE void subtree(const BodyTree<NB>&, int, const Scalar*, const Scalar*, const Scalar*,
+                                const Scalar*) const noexcept {}
+
+  template <int NB, int NP>
+  RBDC_HOST_DEVICE void vectors(const BodyTree<NB>& tree, const Scalar (*S)[NP], const Scalar (*C)[NP],
+                                const Scalar (*U)[NP], const Scalar (*rows_I)[NP], const Scalar (*rows_B)[NP],
+                                const Scalar (*columns_G)[NP], const Scalar (*columns_D)[NP]) const noexcept {
+    constexpr int NA = 15;  // A: ρ^I, ρ^B, χ
+    constexpr int NS = 9;   // S: S, ω
+    alignas(64) Scalar T[NA][NV], R[NS][NV];
+    for (int c = 0; c < NA; ++c)
+      for (int r = 0; r < NV; ++r) T[c][r] = Scalar(0);
+    for (int c = 0; c < NS; ++c)
+      for (int r = 0; r < NV; ++r) R[c][r] = Scalar(0);
+    const auto feet = [&](const Scalar* x, int d, int k) { return x == nullptr ? Scalar(0) : x[3 * d + k]; };
+    for (int b = NB - 1; b >= 1; --b) {  // from the tip: T_j, then column j's A·C parts
+      const int d = tree.dof[b];
+      const Scalar* m = Minv + d * NV;
+      Scalar a[NA], cq[NA], cv[12];
+      for (int k = 0; k < 6; ++k) {
+        a[k] = rows_I[k][b];
+        a[6 + k] = rows_B[k][b];
+        cq[k] = -C[k][b];
+        cq[6 + k] = -U[k][b];
+        cv[k] = Scalar(-2) * U[k][b];
+        cv[6 + k] = -S[k][b];
+      }
+      for (int k = 0; k < 3; ++k) {
+        a[12 + k] = feet(moment, d, k);
+        cq[12 + k] = feet(axis, d, k);
+      }
+      for (int c = 0; c < NA; ++c)
+        for (int r = 0; r < NV; ++r) T[c][r] = T[c][r] + a[c] * m[r];
+      Scalar* oq = da_dq + d * NV;
+      Scalar* ov = da_dv + d * NV;
+      for (int r = 0; r < NV; ++r) {
+        Scalar q = T[0][r] * cq[0], v = T[0][r] * cv[0];
+        for (int c = 1; c < NA; ++c) q = q + T[c][r] * cq[c];
+        for (int c = 1; c < 12; ++c) v = v + T[c][r] * cv[c];
+        oq[r] = q;
+        ov[r] = v;
+      }
+    }
+    for (int b = 1; b < NB; ++b) {  // from the root: column j's S·G parts, then R_{j+1}
+      const int d = tree.dof[b];
+      Scalar g[NS], e[6], s[NS];
+      for (int k = 0; k < 6; ++k) {
+        g[k] = -columns_G[k][b];
+        e[k] = -columns_D[k][b];
+        s[k] = S[k][b];
+      }
+      for (int k = 0; k < 3; ++k) {
+        g[6 + k] = feet(moment, d, k);
+        s[6 + k] = feet(axis, d, k);
+      }
+      if (b > 1) {
+        Scalar* oq = da_dq + d * NV;
+        Scalar* ov = da_dv + d * NV;
+        for (int r = 0; r < NV; ++r) {
+          Scalar q = R[0][r] * g[0], v = R[0][r] * e[0];
+          for (int c = 1; c < NS; ++c) q = q + R[c][r] * g[c];
+          for (int c = 1; c < 6; ++c) v = v + R[c][r] * e[c];
+          oq[r] = oq[r] + q;
+          ov[r] = ov[r] + v;
+        }
+      }
+      const Scalar* m = Minv + d * NV;
+      for (int c = 0; c < NS; ++c)
+        for (int r = 0; r < NV; ++r) R[c][r] = R[c][r] + s[c] * m[r];
+    }
+  }
+};
 
 /// Body j's entries with its subtree i = j … end[j] − 1 through a writer's q and v, entry by entry:
 /// rows i of column j (q_row[i], v_row[i]) and, below the diagonal, row j of columns i (q_column[i],
@@ -348,6 +454,11 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
     store(rows_B, i, rho_B);
     store(columns_G, i, G);
     store(columns_D, i, D);
+  }
+  if constexpr (TakesVectors<Out>::value) {  // InverseTimesVectors: the vectors, no entries
+    static_assert(!Floating && Velocity && Acceleration, "the low-rank product is for a fixed-base ∂q̈");
+    out.vectors(tree, S, C, U, rows_I, rows_B, columns_G, columns_D);
+    return;
   }
   out.clear(tree);
   Scalar w[3], trunk_v[3];

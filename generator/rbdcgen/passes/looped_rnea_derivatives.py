@@ -68,6 +68,7 @@ class LoopedRneaDerivatives:
     acceleration_source: str = "a"
     subtracting: bool = False
     coupling: Tuple[Tuple[int, float], ...] = ()
+    low_rank: bool = False  # the writer takes the per-body vectors (InverseTimesVectors, looped_low_rank.py)
     headers: ClassVar[Tuple[str, ...]] = (body_tree.HEADER, HEADER)
 
     def _counts(self, vector_width=1):
@@ -92,6 +93,9 @@ class LoopedRneaDerivatives:
                 pieces += [APPLY, SPATIAL_CROSS, APPLY, (6, 18), APPLY, SPATIAL_CROSS, (0, 12)]
             if floating:
                 pieces += [CROSS] + ([_times(CROSS, 2), (3, 6)] if velocity else [])
+        if self.low_rank:  # InverseTimesVectors instead of the entries
+            pieces.append(tuple(n // vector_width for n in low_rank_counts(robot)))  # SIMD along M⁻¹'s rows
+            return sum(m for m, _ in pieces), sum(a for _, a in pieces)
         # the entries along each body's subtree, blocks of PRODUCT_BLOCK bodies, padding included
         pieces.append(_times(SUBTREE_LANE if velocity else SUBTREE_LANE_AT_REST, subtree_lanes(robot) // vector_width))
         if floating:  # the trunk's block
@@ -119,7 +123,7 @@ class LoopedRneaDerivatives:
 
     def operations(self):
         mul, add = self._counts()
-        return {"mul": mul, "add": add}
+        return {"mul": mul, "add": add, **({"neg": LOW_RANK_NEGATIONS * (self.robot.nb - 1)} if self.low_rank else {})}
 
     def instructions(self):
         """The arithmetic as max(multiplications, additions) (fused), the blocks SIMD_DOUBLES lanes at a
@@ -153,6 +157,21 @@ class LoopedRneaDerivatives:
         return ("looped RNEA derivatives: %s writes the %d bodies' transforms and gravity, "
                 "rnea_derivatives_loop runs the recursion over a table of the tree (%d body-ancestor steps)"
                 % (terms_name, self.robot.nb - 1, ancestor_steps(self.robot)))
+
+
+# InverseTimesVectors per body: T's update (15 multiply-adds a row) and column j's A·C parts (15 for ∂q,
+# 12 for ∂v) from the tip; from the root, below the first body, its S·G parts (9 and 6, each added to
+# the column) and, for every body, R's update (9). Negations: −c, −u, −S, −G, −D; −2u a multiplication.
+LOW_RANK_NEGATIONS = 30
+
+
+def low_rank_counts(robot):
+    """(multiplications, additions) of InverseTimesVectors on `robot` (a fixed-base chain)."""
+    bodies, nv = robot.nb - 1, robot.nv
+    below_first = bodies - 1
+    mul = (15 + 15 + 12 + 9) * nv * bodies + 6 * bodies + (9 + 6) * nv * below_first
+    add = (15 + 14 + 11 + 9) * nv * bodies + (9 + 6) * nv * below_first
+    return mul, add
 
 
 def has_looped_form(robot, name):
@@ -196,3 +215,13 @@ def subtracted_from(robot, terms, rhs, columns, place=""):
     return LoopedRneaDerivatives(robot=tree_view(robot), terms=terms, writer=writer, velocity=True,
                                  acceleration=True, acceleration_source="solve_a", subtracting=True,
                                  coupling=coupling)
+
+
+def inverse_times_vectors(robot, terms, feet):
+    """The loop whose writer forms ∂a/∂q and ∂a/∂v from M⁻¹ (already in da_dtau) and the per-body
+    vectors (InverseTimesVectors: a fixed-base chain's low-rank product, looped_solve.LoopedSolve with
+    low_rank); `feet`: whether the terms hold the feet's axes and moments."""
+    axes = "solve_feet_axes, solve_feet_moments" if feet else "nullptr, nullptr"
+    writer = f"InverseTimesVectors<Scalar, {robot.nv}> out{{da_dtau, {axes}, da_dq, da_dv}}"
+    return LoopedRneaDerivatives(robot=robot, terms=terms, writer=writer, velocity=True, acceleration=True,
+                                 acceleration_source="solve_a", low_rank=True)

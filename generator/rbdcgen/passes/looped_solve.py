@@ -16,9 +16,10 @@ from dataclasses import dataclass, replace
 from typing import Optional, Tuple
 
 from ..algorithms.contact_dynamics import PROXIMAL_STEPS
+from ..algorithms.crba import depth_first_order
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
 from ..graph import expr as ex
-from . import (column_support, differentiate, lane_contact_derivatives, lane_derivatives, looped_crba,
+from . import (body_tree, column_support, differentiate, lane_contact_derivatives, lane_derivatives, looped_crba,
                looped_feet_forces, looped_inverse, looped_rnea_derivatives)
 from .column_support import ColumnSupport
 from .looped_inverse import LoopedInverse
@@ -36,6 +37,7 @@ TREE_TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_tree_
 # build for has (AVX-512 halves the loop's instructions again).
 SIMD_DOUBLES = 4
 HEADER = "rbdc_gen/solve.hpp"  # the loops
+LOW_RANK_RUN = 16  # the widest vector run of columns (16 floats): the low-rank solve starts at a multiple
 
 
 @dataclass(frozen=True)
@@ -63,6 +65,9 @@ class LoopedSolve:
     # each row-major entry is (None: zero, not stored)
     places: Tuple[Tuple[str, Tuple[Optional[int], ...]], ...] = ()
     column_order: Tuple[int, ...] = ()  # the logical column at each place of rhs (R1 and R2; empty: in order)
+    # ∂a/∂q and ∂a/∂v formed from M⁻¹ by `rnea`'s writer (a fixed-base chain: low_rank_applies), the
+    # solve then over the columns from first_solved only (the feet's)
+    low_rank: bool = False
 
     def placed(self, values):
         """The terms' values {name: row-major entries} where `places` keeps them."""
@@ -114,6 +119,17 @@ class LoopedSolve:
         """Per column: one multiply-add per factor entry on the way up and on the way down."""
         return 2 * self.factor_entries
 
+    @property
+    def first_solved(self):
+        """The first column the solve runs over: 0, or with `low_rank` the run of 16 that holds the
+        first column after ∂/∂q and ∂/∂v (a multiple of every vector run, so the count is the machine's
+        own); the columns before it are not solved, and neither written nor read."""
+        return 2 * self.nv // LOW_RANK_RUN * LOW_RANK_RUN if self.low_rank else 0
+
+    @property
+    def solved_columns(self):
+        return self.columns - self.first_solved
+
     def _skipped(self, per_block):
         """Per block of `support`, per_block(columns, factor entries its L⁻ᵀ skips), summed."""
         blocks = self.support.widths_and_entries() if self.support else ()
@@ -122,8 +138,8 @@ class LoopedSolve:
     def operations(self):
         """Multiplications and additions of the loops: multiply_adds() per column (less the entries
         L⁻ᵀ skips off each block's rows) and one multiplication per pivot."""
-        updates = self.columns * self.multiply_adds() - self._skipped(lambda width, skipped: width * skipped)
-        ops = {"mul": updates + self.columns * self.nv, "add": updates}
+        updates = self.solved_columns * self.multiply_adds() - self._skipped(lambda width, skipped: width * skipped)
+        ops = {"mul": updates + self.solved_columns * self.nv, "add": updates}
         for part in self._parts():
             for kind, n in part.operations().items():
                 ops[kind] = ops.get(kind, 0) + n
@@ -132,7 +148,7 @@ class LoopedSolve:
     def instructions(self):
         """Vector instructions of the loops (a row update over the columns, SIMD_DOUBLES at a time):
         a load and a multiply-add per multiply-add, one per pivot."""
-        return (-(-self.columns // SIMD_DOUBLES) * (2 * self.multiply_adds() + self.nv)
+        return (-(-self.solved_columns // SIMD_DOUBLES) * (2 * self.multiply_adds() + self.nv)
                 - self._skipped(lambda width, skipped: -(-width // SIMD_DOUBLES) * 2 * skipped)
                 + sum(part.instructions() for part in self._parts()))
 
@@ -142,14 +158,22 @@ class LoopedSolve:
         return self.instructions() + sum(part.cost() - part.instructions() for part in self._parts())
 
     def _tree_solve(self, target, passes=None):
-        """M⁻¹ on `target`, or one half of it (`passes`: rbdc_gen::Passes' up or down)."""
+        """M⁻¹ on `target`, or one half of it (`passes`: rbdc_gen::Passes' up or down); from
+        first_solved on."""
         which = "" if passes is None else f", Passes::{passes}"
+        if self.first_solved:
+            run = f"ColumnRun<Scalar, {self.columns}>::size"
+            which = f", Passes::both, {self.factor_entries}, {self.first_solved} / {run}"
         return [f"ltdl_solve_columns<Scalar, {self.nv}, {self.columns}{which}>(dof_tree, solve_L, solve_D_inv, {target});"]
 
     def loops(self):
         """The C++ statements after the terms: the looped CRBA and factor and the RNEA loop if any,
         solve, then copy each block into its output."""
         body = [] if self.factor is None else self.factor.loops()
+        if self.low_rank:  # M⁻¹ first: the RNEA loop's writer multiplies by it
+            return (body + [dof_tree(self.parents)] + self.taken_inverse.loops()
+                    + self.rnea.loops(with_table=self.factor is None) + self._tree_solve("solve_rhs")
+                    + _copies(self.blocks[2:], "solve_rhs", self.nv, self.columns, first=2 * self.nv))
         body += [] if self.support is None else [self.support.place_table(column_support.PLACE)]
         body += [] if self.rnea is None else self.rnea.loops(with_table=self.factor is None)
         body += [dof_tree(self.parents)] + ([] if self.feet is None else self.feet.loops())
@@ -159,6 +183,12 @@ class LoopedSolve:
         return body + _copies(self.blocks, "solve_rhs", self.nv, self.columns, self.column_order)
 
     def emission(self, terms_name):
+        if self.low_rank:
+            return ("low-rank product: %s writes the feet's right-hand sides, crba_loop and ltdl_factor M's "
+                    "factor, ltdl_inverse M⁻¹ (%d multiply-adds), rnea_derivatives_loop's per-body vectors "
+                    "times M⁻¹'s columns give ∂a/∂q and ∂a/∂v (InverseTimesVectors: running sums along the "
+                    "chain, ∂τ never formed), ltdl_solve_columns solves the %d columns from %d"
+                    % (terms_name, self.inverse.comparison[0], self.solved_columns, self.first_solved))
         factor = (" and the factor" if self.factor is None else
                   ", crba_loop and ltdl_factor M's factor over a table of the tree (the looped CRBA and factor)")
         rnea = ("" if self.rnea is None else ", rnea_derivatives_loop subtracts ∂τ/∂(q, v) over the table "
@@ -330,13 +360,12 @@ def lane_places(entries, stored=lambda e: True):
     return tuple(place)
 
 
-def _copies(blocks, source, rows, columns, order=()):
+def _copies(blocks, source, rows, columns, order=(), first=0):
     """Each block's columns of the row-major `source` into its column-major output (copy_out_columns:
-    per column of `source` where its rows go); with `order` (the logical column at each place), from
-    where the order put them."""
+    per column of `source` where its rows go), the first block from column `first`; with `order` (the
+    logical column at each place), from where the order put them."""
     logical = list(order) + list(range(len(order), columns))
     destination = {}
-    first = 0
     for name, width in blocks:
         for c in range(width):
             destination[first + c] = f"{name} + {rows * c}"
@@ -353,19 +382,34 @@ def has_looped_form(robot, name):
     return name in TERMS and (not robot.couplings or name == "forward_dynamics_derivatives")
 
 
-def looped_function(robot, scene, name, terms_name=None, rnea=False, factor=False):
+def looped_function(robot, scene, name, terms_name=None, rnea=False, factor=False, low_rank=False):
     """`name` in its looped form: the traced terms (function TERMS[name], or `terms_name`: its lane
-    function; with `rnea` LOOP_TERMS[name], with `factor` too TREE_TERMS[name]), with the loops as a
-    LoopedSolve."""
+    function; with `rnea` LOOP_TERMS[name], with `factor` (or `low_rank`) too TREE_TERMS[name]), with
+    the loops as a LoopedSolve."""
+    factor = factor or low_rank
     terms_name = TREE_TERMS[name] if factor else LOOP_TERMS[name] if rnea else terms_name or TERMS[name]
     function = with_loop(robot, scene, name, terms_name,
-                         lambda terms, outputs: _solve(robot, scene, name, terms, outputs, rnea or factor, factor))
+                         lambda terms, outputs: _solve(robot, scene, name, terms, outputs, rnea or factor, factor,
+                                                       low_rank))
     return replace(function, values=function.solve.placed(function.values))
 
 
-def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
+def low_rank_applies(robot, scene, name):
+    """Whether forward_dynamics_derivatives has the low-rank form here (InverseTimesVectors): a
+    fixed-base chain of bodies alone (body_tree.applies), dofs numbered along it, where ∂a/∂τ is M⁻¹'s
+    rows (looped_inverse.py), which the product needs."""
+    if name != "forward_dynamics_derivatives" or robot.floating_base or not body_tree.applies(robot):
+        return False
+    parents = body_tree.table_parents(robot)
+    joints = [robot.joints[i] for i in depth_first_order(robot)]
+    return (body_tree.is_chain(parents) and body_tree.depth_first_dofs(joints)
+            and looped_inverse.tau_by_inverse(robot, 3 * len(scene.feet_for(robot)), differentiate.padded) is not None)
+
+
+def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False, low_rank=False):
     """The loops that solve the traced terms into the outputs of `name` (with `rnea`, after the
-    looped RNEA derivatives complete them; with `factor`, with M's factor from the looped CRBA)."""
+    looped RNEA derivatives complete them; with `factor`, with M's factor from the looped CRBA; with
+    `low_rank`, ∂a/∂q and ∂a/∂v from M⁻¹ and the RNEA loop's vectors instead)."""
     parents = tuple(dof_parents(robot))
     if name == "contact_dynamics_derivatives":
         widths = {arg.name: arg.cols for arg in outputs}
@@ -400,9 +444,15 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False):
                 if rnea and scene.feet_for(robot) else None)
         order = support.order if support else lane_order
         places = ((rhs, support.entry_places(len(parents), columns)),) if support else ()
+        if low_rank:  # the traced part leaves ∂/∂q and ∂/∂v to the loop on a fixed base
+            assert all(_non_zero(e) is False for r in range(robot.nv) for e in terms.values[rhs][r * columns:r * columns + 2 * robot.nv])
+            subtract, feet, support, order, places = (
+                looped_rnea_derivatives.inverse_times_vectors(robot, terms.outputs, bool(scene.feet_for(robot))),
+                None, None, (), ())
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs,
                             rnea=subtract if rnea else None, factor=packed if factor else None, feet=feet,
-                            inverse=inverse, support=support, column_order=order, places=places)
+                            inverse=inverse, support=support, column_order=order, places=places,
+                            low_rank=low_rank)
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)
     assert terms.outputs[0].cols == solve.columns
     return solve

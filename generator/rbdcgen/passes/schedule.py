@@ -4,7 +4,8 @@ contact-dynamics derivatives) a looped solve with SIMD across the right-hand sid
 (looped_solve.py), (forward dynamics) the articulated-body algorithm (algorithms/aba.py), or
 (mass_matrix_factor) the factorisation as a loop (looped_factor.py), or (mass_matrix) the CRBA as a
 loop over the bodies (looped_crba.py), or (the RNEA's derivatives) their recursion as a loop over the
-bodies (looped_rnea_derivatives.py), or (the OSC recursions) J̄ᵀ's columns as a loop (looped_osc.py).
+bodies (looped_rnea_derivatives.py), or (the OSC recursions) J̄ᵀ's columns as a loop (looped_osc.py),
+or (a fixed-base chain's ∂q̈) M⁻¹ times ∂τ's low-rank blocks (looped_solve.low_rank_applies).
 The quantity is the same;
 only how it is evaluated changes, so the function keeps its plain name and its doc gains one line
 that says the choice and its numbers.
@@ -19,7 +20,8 @@ the unrolled RNEA derivatives past looped_rnea_derivatives.UNROLL_LIMIT, the fee
 terms past looped_feet_forces.UNROLL_LIMIT, or the OSC's unrolled columns past looped_osc.UNROLL_LIMIT,
 `auto` does not trace the forms that unroll it (tracing them alone would take minutes) when another
 form exists. A scene may force a form (`schedule: scalar`, `limb_lanes`, `looped_solve`, `aba`,
-`looped_factor`, `looped_crba`, `looped_rnea`, `looped_feet` or `looped_osc`) where the function has it."""
+`looped_factor`, `looped_crba`, `looped_rnea`, `looped_feet`, `looped_osc` or `low_rank`) where the
+function has it."""
 
 from __future__ import annotations
 
@@ -118,6 +120,8 @@ def _forms(robot, scene, name):
         forms["looped_rnea"] = lambda: looped_solve.looped_function(robot, scene, name, rnea=True)
     if name in looped_solve.LOOP_TERMS and body_tree.applies(robot):
         forms["looped_crba"] = lambda: looped_solve.looped_function(robot, scene, name, factor=True)
+    if looped_solve.low_rank_applies(robot, scene, name):
+        forms["low_rank"] = lambda: looped_solve.looped_function(robot, scene, name, low_rank=True)
     return forms
 
 
@@ -166,7 +170,7 @@ _SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "looped_solve": "
           "lanes_looped_solve": "limb lanes and a looped solve",
           "aba": "articulated-body algorithm", "aba_lanes": "articulated-body algorithm in limb lanes", "looped_factor": "looped factor", "looped_crba": "looped CRBA",
           "looped_rnea": "looped RNEA derivatives", "looped_feet": "looped feet force terms",
-          "looped_osc": "looped operational-space columns"}
+          "looped_osc": "looped operational-space columns", "low_rank": "low-rank product"}
 _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes, the trunk scalar)" % ex.LANES,
            "looped_solve": " (the solve's right-hand sides in SIMD across columns)",
            "lanes_looped_solve": " (the terms traced with the %d isomorphic limbs in SIMD lanes, the "
@@ -177,7 +181,8 @@ _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes,
            "looped_crba": " (a loop over the bodies, the tree's constants in a table)",
            "looped_rnea": " (a loop over the bodies, the tree's constants in a table)",
            "looped_feet": " (a loop over the dof tree's ancestor pairs)",
-           "looped_osc": " (J̄ᵀ's columns a loop over the bodies' descendants, the tree's constants in a table)"}
+           "looped_osc": " (J̄ᵀ's columns a loop over the bodies' descendants, the tree's constants in a table)",
+           "low_rank": " (M⁻¹ times ∂τ's low-rank blocks by running sums along the chain, ∂τ never formed)"}
 
 
 # The lane forms' words for a robot whose limbs in lanes are not the quadruped's (limbs.groups_in_words).

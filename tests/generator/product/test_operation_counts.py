@@ -2,7 +2,7 @@
 a scene is compiled with a scalar type that counts every arithmetic operator, sin, cos and sqrt, and
 one call must match the header's table kind by kind. Run on the looped forms (passes/looped_crba.py,
 looped_factor.py, looped_solve.py, looped_rnea_derivatives.py, looped_feet_forces.py, looped_inverse.py,
-column_support.py, looped_osc.py: loops counted by trip count, the traced parts node by node) on a
+column_support.py, looped_osc.py, the low-rank product: loops counted by trip count, the traced parts node by node) on a
 branched tree with revolute and prismatic joints and two feet in contact, floating and fixed, on a
 mimic-coupled gripper's looped solve and RNEA derivatives, on a 32-link chain's ∂a/∂τ as M⁻¹'s rows,
 on the Mini Cheetah's `full` scene (limb lanes: a lane operation counts four, a sum over the lanes three)
@@ -36,6 +36,7 @@ LOOPED_SOLVE = ("name: counted\nquantities: [forward_dynamics, contact_dynamics,
 LOOPED_OSC = "name: counted\nquantities: [osc_open_chain, osc_closed_chain]\nschedule: looped_osc\n"
 COUPLED_LOOPED_SOLVE = "name: counted\nderivatives: [forward_dynamics_derivatives]\nschedule: looped_solve\n"
 CHAIN_INVERSE = "name: counted\nderivatives: [forward_dynamics_derivatives]\nschedule: looped_rnea\n"
+LOW_RANK = "name: counted\nderivatives: [forward_dynamics_derivatives]\nschedule: low_rank\n"
 PAIRED_LANES = "name: counted\nquantities: [inverse_dynamics, mass_matrix]\nschedule: limb_lanes\n"
 COUPLED_LOOPED_RNEA = ("name: counted\nderivatives: [inverse_dynamics_derivatives, bias_derivatives, gravity_derivatives, "
                        "forward_dynamics_derivatives]\n"
@@ -178,6 +179,15 @@ class OperationCountTest(unittest.TestCase):
             subprocess.run([sys.executable, str(ROOT / "tools" / "make_chain.py"), "32", str(urdf)], check=True)
             text = self.check(urdf, "fixed", CHAIN_INVERSE, "chain32", "counted")
         self.assertIn("ltdl_inverse<Scalar, 32, 0>", text)
+
+    def test_low_rank_product_on_a_chain(self):
+        """The same chain's ∂a/∂q and ∂a/∂v as M⁻¹ times ∂τ's low-rank blocks (InverseTimesVectors,
+        looped_rnea_derivatives.low_rank_counts), the solve over the feet's columns only."""
+        with tempfile.TemporaryDirectory() as tmp:
+            urdf = Path(tmp) / "chain32.urdf"
+            subprocess.run([sys.executable, str(ROOT / "tools" / "make_chain.py"), "32", str(urdf)], check=True)
+            text = self.check(urdf, "fixed", LOW_RANK, "chain32", "counted")
+        self.assertIn("InverseTimesVectors<Scalar, 32>", text)
 
     def test_mini_cheetah_full_scene_in_limb_lanes(self):
         self.assertIn("limb lanes", self.check(MINI_CHEETAH, "floating", (SCENES / "full.yaml").read_text(),
