@@ -126,7 +126,7 @@ struct InverseTimesVectors {
 /// rows i of column j (q_row[i], v_row[i]) and, below the diagonal, row j of columns i (q_column[i],
 /// v_column[i]); the v arrays null without velocity terms.
 template <class Out, int NB, class Scalar>
-RBDC_HOST_DEVICE inline void write_subtree(const Out& out, const BodyTree<NB>& tree, int j, const Scalar* q_row,
+RBDC_HOST_DEVICE RBDC_ALWAYS_INLINE void write_subtree(const Out& out, const BodyTree<NB>& tree, int j, const Scalar* q_row,
                                            const Scalar* v_row, const Scalar* q_column, const Scalar* v_column) noexcept {
   const int dj = tree.dof[j];
   RBDC_SCALAR_LOOP
