@@ -445,7 +445,8 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False, low_ran
         order = support.order if support else lane_order
         places = ((rhs, support.entry_places(len(parents), columns)),) if support else ()
         if low_rank:  # the traced part leaves ∂/∂q and ∂/∂v to the loop on a fixed base
-            assert all(_non_zero(e) is False for r in range(robot.nv) for e in terms.values[rhs][r * columns:r * columns + 2 * robot.nv])
+            assert not any(_non_zero(e) for r in range(robot.nv)
+                           for e in terms.values[rhs][r * columns:r * columns + 2 * robot.nv])
             subtract, feet, support, order, places = (
                 looped_rnea_derivatives.inverse_times_vectors(robot, terms.outputs, bool(scene.feet_for(robot))),
                 None, None, (), ())
