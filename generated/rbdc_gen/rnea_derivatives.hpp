@@ -32,7 +32,7 @@ struct TakesVectors<Out, std::void_t<decltype(Out::kTakesVectors)>> : std::bool_
 /// χ = Σ_k J_k × f_k). On a chain a body's subtree is every body after it and its ancestors every
 /// body before it, so column j of M⁻¹∂τ is T_j C_j + R_j G_j with the running sums
 /// T_j = Σ_{i ≥ j} M⁻¹_{:,i} A_iᵀ and R_j = Σ_{i < j} M⁻¹_{:,i} S_iᵀ: 66 NV² multiply-adds in all,
-/// where solving the 2 NV columns takes 2 NV per factor entry (passes/looped_low_rank.py).
+/// where solving the 2 NV columns takes 2 NV per factor entry (passes/looped_solve.low_rank_applies).
 /// Minv column-major NV × NV; axis and moment NV × 3 row-major, null without feet.
 template <class Scalar, int NV>
 struct InverseTimesVectors {

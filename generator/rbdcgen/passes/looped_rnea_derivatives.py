@@ -68,7 +68,7 @@ class LoopedRneaDerivatives:
     acceleration_source: str = "a"
     subtracting: bool = False
     coupling: Tuple[Tuple[int, float], ...] = ()
-    low_rank: bool = False  # the writer takes the per-body vectors (InverseTimesVectors, looped_low_rank.py)
+    low_rank: bool = False  # the writer takes the per-body vectors (InverseTimesVectors, looped_solve.low_rank_applies)
     headers: ClassVar[Tuple[str, ...]] = (body_tree.HEADER, HEADER)
 
     def _counts(self, vector_width=1):
