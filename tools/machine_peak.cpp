@@ -1,7 +1,7 @@
 // What one core sustains, for reading an instruction count against a time (tools/instruction_rates.py,
 // docs/performance.md, "What bounds each remaining gap"): the clock, by a chain of dependent integer
-// additions (one a cycle), then independent floating-point chains: scalar FMAs, 512-bit FMAs, and
-// FMAs and additions half and half (the two kinds go to different pipes).
+// additions (one a cycle), then independent floating-point chains: scalar FMAs, 512-bit FMAs, scalar
+// additions, and FMAs and additions half and half (the two kinds go to different pipes).
 //
 //   g++ -O2 -march=native tools/machine_peak.cpp -o /tmp/machine_peak && taskset -c 1 /tmp/machine_peak
 //
@@ -27,32 +27,30 @@ constexpr long kIterations = 100000000;
 
 }  // namespace
 
+// Independent chains, enough of them to cover a pipelined unit's latency times its units (Zen 5:
+// two FMA pipes of latency 4, two adders of latency 2; eight FMA chains read 1.5 a cycle there).
+#define RBDC_FMA(width, r) "vfmadd231" width " %%" #r "14,%%" #r "15,%%" #r
+#define RBDC_FMA12(width, r)                                                                          \
+  RBDC_FMA(width, r) "0\n" RBDC_FMA(width, r) "1\n" RBDC_FMA(width, r) "2\n" RBDC_FMA(width, r) "3\n"   \
+  RBDC_FMA(width, r) "4\n" RBDC_FMA(width, r) "5\n" RBDC_FMA(width, r) "6\n" RBDC_FMA(width, r) "7\n"   \
+  RBDC_FMA(width, r) "8\n" RBDC_FMA(width, r) "9\n" RBDC_FMA(width, r) "10\n" RBDC_FMA(width, r) "11\n"
+#define RBDC_ADD(r) "vaddsd %%xmm15,%%xmm" #r ",%%xmm" #r "\n"
+#define RBDC_ADD12                                                                                    \
+  RBDC_ADD(16) RBDC_ADD(17) RBDC_ADD(18) RBDC_ADD(19) RBDC_ADD(20) RBDC_ADD(21) RBDC_ADD(22) RBDC_ADD(23) \
+  RBDC_ADD(24) RBDC_ADD(25) RBDC_ADD(26) RBDC_ADD(27)
+#define RBDC_FMA_REGISTERS "xmm0", "xmm1", "xmm2", "xmm3", "xmm4", "xmm5", "xmm6", "xmm7", "xmm8", "xmm9", "xmm10", "xmm11"
+#define RBDC_ADD_REGISTERS \
+  "xmm16", "xmm17", "xmm18", "xmm19", "xmm20", "xmm21", "xmm22", "xmm23", "xmm24", "xmm25", "xmm26", "xmm27"
+
 int main() {
   const double clock_seconds = RBDC_TIMED_LOOP("add $1, %%rax\n", "rax");
   const double ghz = kIterations / clock_seconds / 1e9;  // the dependent additions: one a cycle
   std::printf("clock: %.2f GHz\n", ghz);
   const auto rate = [&](double seconds, int per_iteration) { return per_iteration * kIterations / seconds / 1e9 / ghz; };
-#define FMA8(width) \
-  "vfmadd231" width " %%xmm14,%%xmm15,%%xmm0\nvfmadd231" width " %%xmm14,%%xmm15,%%xmm1\n" \
-  "vfmadd231" width " %%xmm14,%%xmm15,%%xmm2\nvfmadd231" width " %%xmm14,%%xmm15,%%xmm3\n" \
-  "vfmadd231" width " %%xmm14,%%xmm15,%%xmm4\nvfmadd231" width " %%xmm14,%%xmm15,%%xmm5\n" \
-  "vfmadd231" width " %%xmm14,%%xmm15,%%xmm6\nvfmadd231" width " %%xmm14,%%xmm15,%%xmm7\n"
-  std::printf("scalar FMAs: %.2f a cycle\n",
-              rate(RBDC_TIMED_LOOP(FMA8("sd"), "xmm0", "xmm1", "xmm2", "xmm3", "xmm4", "xmm5", "xmm6", "xmm7"), 8));
-  std::printf("512-bit FMAs: %.2f a cycle\n",
-              rate(RBDC_TIMED_LOOP("vfmadd231pd %%zmm14,%%zmm15,%%zmm0\nvfmadd231pd %%zmm14,%%zmm15,%%zmm1\n"
-                                   "vfmadd231pd %%zmm14,%%zmm15,%%zmm2\nvfmadd231pd %%zmm14,%%zmm15,%%zmm3\n"
-                                   "vfmadd231pd %%zmm14,%%zmm15,%%zmm4\nvfmadd231pd %%zmm14,%%zmm15,%%zmm5\n"
-                                   "vfmadd231pd %%zmm14,%%zmm15,%%zmm6\nvfmadd231pd %%zmm14,%%zmm15,%%zmm7\n",
-                                   "xmm0", "xmm1", "xmm2", "xmm3", "xmm4", "xmm5", "xmm6", "xmm7"),
-                   8));
+  std::printf("scalar FMAs: %.2f a cycle\n", rate(RBDC_TIMED_LOOP(RBDC_FMA12("sd", xmm), RBDC_FMA_REGISTERS), 12));
+  std::printf("512-bit FMAs: %.2f a cycle\n", rate(RBDC_TIMED_LOOP(RBDC_FMA12("pd", zmm), RBDC_FMA_REGISTERS), 12));
+  std::printf("scalar additions: %.2f a cycle\n", rate(RBDC_TIMED_LOOP(RBDC_ADD12, RBDC_ADD_REGISTERS), 12));
   std::printf("scalar FMAs and additions, half and half: %.2f a cycle\n",
-              rate(RBDC_TIMED_LOOP(FMA8("sd") "vaddsd %%xmm15,%%xmm16,%%xmm16\nvaddsd %%xmm15,%%xmm17,%%xmm17\n"
-                                              "vaddsd %%xmm15,%%xmm18,%%xmm18\nvaddsd %%xmm15,%%xmm19,%%xmm19\n"
-                                              "vaddsd %%xmm15,%%xmm20,%%xmm20\nvaddsd %%xmm15,%%xmm21,%%xmm21\n"
-                                              "vaddsd %%xmm15,%%xmm22,%%xmm22\nvaddsd %%xmm15,%%xmm23,%%xmm23\n",
-                                   "xmm0", "xmm1", "xmm2", "xmm3", "xmm4", "xmm5", "xmm6", "xmm7", "xmm16", "xmm17",
-                                   "xmm18", "xmm19", "xmm20", "xmm21", "xmm22", "xmm23"),
-                   16));
+              rate(RBDC_TIMED_LOOP(RBDC_FMA12("sd", xmm) RBDC_ADD12, RBDC_FMA_REGISTERS, RBDC_ADD_REGISTERS), 24));
   return 0;
 }
