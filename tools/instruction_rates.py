@@ -2,15 +2,18 @@
 """What rate issue 20's targets would ask of the machine: per robot and quantity, the generated
 function's arithmetic instructions (its header's `/// schedule:` count, else its operation count),
 its measured median time, the instructions it retires per cycle, and the rate the target ratio over
-the peer would need at the same instruction count. A needed rate above what the core sustains
-(docs/performance.md, "What bounds each remaining gap") means the gap closes only with fewer
-instructions, not with better scheduling.
+the peer would need at the same instruction count. Then the most the core could sustain for that
+code: its multiplications (the operation table's share of its multiplications and additions) go
+to the two FMA pipes, so at most 2 / share instructions a cycle, and never more than the mixed
+peak (tools/machine_peak.cpp). A needed rate above that means the gap closes only with
+fewer instructions, not with better scheduling (docs/performance.md, "What bounds each remaining gap").
 
-Usage: tools/instruction_rates.py SUMMARY GENERATED [GHZ]
+Usage: tools/instruction_rates.py SUMMARY GENERATED [GHZ [PEAK]]
   SUMMARY    the peer benchmark's summary.md (rows "| robot | pair | peer min / median | rbdc min /
              median | ratio× |", pairs named "peer_function → rbdc_function")
   GENERATED  the directory holding <robot>/full/*.hpp and <robot>/derivatives/*.hpp
   GHZ        the core's clock (default 3.65: the Zen 4 of 5 December, by a dependent-add loop)
+  PEAK       FMAs and additions a cycle, half and half (default 4.05: tools/machine_peak on Zen 5)
 """
 import re
 import sys
@@ -21,6 +24,7 @@ TARGETS = {"ID": ("inverse_dynamics", "full", 10), "c+g": ("bias", "full", 10),
            "M": ("mass_matrix", "full", 10), "FD": ("forward_dynamics", "full", 10),
            "∂ID": ("inverse_dynamics_derivatives", "derivatives", 8),
            "∂FD": ("forward_dynamics_derivatives", "derivatives", 5)}
+FMA_PIPES = 2  # multiplications and FMAs a cycle: both AMD cores measured (tools/machine_peak.cpp)
 ROW = re.compile(r"\| (\S+) \| \S+ → (\w+) \| [\d.]+ / ([\d.]+) \| [\d.]+ / ([\d.]+) \| ([\d.]+)×")
 
 
@@ -34,25 +38,40 @@ def instructions(header):
     return int(re.search(r"operations mul add div sqrt trig neg total (?:\d+ ){6}(\d+)", doc).group(1))
 
 
+def multiplication_share(header):
+    """Multiplications over multiplications and additions in the operation table (the counted
+    instructions count an FMA as a multiplication and an addition), or None without a table."""
+    doc = " ".join(" ".join(line.lstrip("/").split()) for line in header.read_text().splitlines()
+                   if line.startswith("///"))
+    table = re.search(r"operations mul add div sqrt trig neg total (\d+) (\d+) ", doc)
+    return int(table.group(1)) / (int(table.group(1)) + int(table.group(2))) if table else None
+
+
 def main():
-    if len(sys.argv) not in (3, 4) or sys.argv[1] in ("-h", "--help"):
+    if len(sys.argv) not in (3, 4, 5) or sys.argv[1] in ("-h", "--help"):
         print(__doc__.strip())
         return 0 if len(sys.argv) > 1 and sys.argv[1] in ("-h", "--help") else 2
     summary, generated = Path(sys.argv[1]), Path(sys.argv[2])
-    ghz = float(sys.argv[3]) if len(sys.argv) == 4 else 3.65
+    ghz = float(sys.argv[3]) if len(sys.argv) >= 4 else 3.65
+    peak = float(sys.argv[4]) if len(sys.argv) == 5 else 4.05
     measured = {(m.group(1), m.group(2)): (float(m.group(3)), float(m.group(4)), float(m.group(5)))
                 for m in map(ROW.match, summary.read_text().splitlines()) if m}
-    print("| robot | quantity | rbdc ns | instructions | per cycle | ratio | target | per cycle needed |")
-    print("|---|---|---:|---:|---:|---:|---:|---:|")
+    print("| robot | quantity | rbdc ns | instructions | per cycle | ratio | target | per cycle needed "
+          "| multiplications | most per cycle |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
     for robot in dict.fromkeys(robot for robot, _ in measured):
         for quantity, (function, scene, target) in TARGETS.items():
             if (robot, function) not in measured:
                 continue
             peer, ours, ratio = measured[(robot, function)]
-            n = instructions(generated / robot / scene / (function + ".hpp"))
+            header = generated / robot / scene / (function + ".hpp")
+            n = instructions(header)
             needed = "met" if ratio >= target else "%.2f" % (n / (peer / target * ghz))
-            print("| %s | %s | %.0f | %d | %.2f | %.2f× | %d× | %s |"
-                  % (robot, quantity, ours, n, n / (ours * ghz), ratio, target, needed))
+            share = multiplication_share(header)
+            most = "%.2f" % min(peak, FMA_PIPES / share) if share else "–"
+            print("| %s | %s | %.0f | %d | %.2f | %.2f× | %d× | %s | %s | %s |"
+                  % (robot, quantity, ours, n, n / (ours * ghz), ratio, target, needed,
+                     "%.0f %%" % (100 * share) if share else "–", most))
     return 0
 
 
