@@ -115,6 +115,8 @@ constexpr int kAngleLanes = 4;
 /// (tests/generator/sincos_test.cpp, docs/performance.md).
 constexpr double kMaxAngle = 1e5;
 
+/// Angles up to which joint_sincos is inlined into its caller (below).
+constexpr int kInlineAngles = 16;
 
 /// sin and cos of W doubles, branch-free. Range reduction: x = k·π/2 + r with |r| <= π/4, k the
 /// nearest integer (rounded by adding 1.5·2^52, whose low mantissa bits then hold k) and r from a
@@ -177,7 +179,7 @@ inline void sincos_checked(const Vector<double, W>& x, Vector<double, W>& s, Vec
 /// vector in one unrolled run (their dependency chains overlap; g++ kept a loop), then one test
 /// of all angles and libm for those out of its range (inf, NaN, |x| > kMaxAngle).
 template <int N>
-inline JointTrig<double, N> joint_sincos(const double (&angle)[N]) noexcept {
+RBDC_ALWAYS_INLINE JointTrig<double, N> joint_sincos_inline(const double (&angle)[N]) noexcept {
   using V = simd::Vector<double, simd::kAngleLanes>;
   constexpr int n_vectors = (N + simd::kAngleLanes - 1) / simd::kAngleLanes;
   V x[n_vectors] = {};
@@ -200,6 +202,25 @@ inline JointTrig<double, N> joint_sincos(const double (&angle)[N]) noexcept {
     }
   }
   return trig;
+}
+
+/// joint_sincos_inline called as a function, for many angles.
+template <int N>
+RBDC_NOINLINE JointTrig<double, N> joint_sincos_called(const double (&angle)[N]) noexcept {
+  return joint_sincos_inline(angle);
+}
+
+/// Few angles (a quadruped's, an arm's) inlined into the caller: called, the results went out
+/// through memory and back, 8-13 % of the Mini Cheetah's ID, c + g and M on Zen 5; many angles
+/// (humanoid32's 32, TALOS's 44, a 100-link chain's) called: inlined there, the callers' code grew
+/// and ran 2-11 % slower (docs/performance.md, "The joint angles' sines inlined for few angles").
+template <int N>
+RBDC_ALWAYS_INLINE JointTrig<double, N> joint_sincos(const double (&angle)[N]) noexcept {
+  if constexpr (N <= simd::kInlineAngles) {
+    return joint_sincos_inline(angle);
+  } else {
+    return joint_sincos_called(angle);
+  }
 }
 
 /// float: evaluated in double and rounded once (error <= 0.5 ulp of float plus the double's).
