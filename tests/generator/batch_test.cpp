@@ -144,6 +144,21 @@ TEST(Batch, PackAndUnpackAreInverse) {
   }
 }
 
+// transposed_lanes<N, J>(p): lane k is p[k·N + J], by vector loads and shuffles for double and float,
+// element by element for other types; N = 5 puts the four entries in four different vectors.
+template <class T, int N, int J>
+void expect_transposed() {
+  T p[4 * N];
+  for (int i = 0; i < 4 * N; ++i) p[i] = static_cast<T>(i);
+  const auto lanes = rbdc_gen::transposed_lanes<N, J>(p);
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(lanes[k], static_cast<T>(k * N + J)) << "N " << N << " J " << J;
+}
+
+TEST(Lanes, TransposedLanesTakeEntryJOfEachLimb) {
+  expect_transposed<double, 3, 0>(), expect_transposed<double, 3, 2>(), expect_transposed<double, 5, 4>();
+  expect_transposed<double, 1, 0>(), expect_transposed<float, 3, 1>(), expect_transposed<long double, 5, 3>();
+}
+
 TEST(Batch, ArithmeticAndTrigonometryPerLane) {
   using P = rbdc_gen::Batch<double>;
   P x, y;

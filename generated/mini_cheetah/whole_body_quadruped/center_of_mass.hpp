@@ -7,11 +7,11 @@
 // center_of_mass for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose center_of_mass is the same code:
-//   mini_cheetah/common/center_of_mass_5b8e61f3fc51.hpp
+//   mini_cheetah/common/center_of_mass_2a1198de70eb.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/center_of_mass_5b8e61f3fc51.hpp"
+#include "mini_cheetah/common/center_of_mass_2a1198de70eb.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 ///             602  455    0     0    24    0   1081
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 322 arithmetic
 ///   instructions, scalar tree 1041
-using ::rbdc_gen::mini_cheetah::common::center_of_mass_5b8e61f3fc51::center_of_mass;
+using ::rbdc_gen::mini_cheetah::common::center_of_mass_2a1198de70eb::center_of_mass;
 
 /// center_of_mass on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

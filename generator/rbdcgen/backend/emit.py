@@ -125,18 +125,29 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
     angles = {node.args[0].id: node.args[0] for node in trig}
     slot = {}  # angle symbol id -> its index in joint_angle
     entries = []
+    full = []  # the full-width lane angles' sources, in slot order
     for angle in sorted(angles.values(), key=lambda a: -width(a)):  # stable: trig order otherwise
         slot[angle.id] = len(entries)
         if angle.lane:
             sources = lanes.inputs[angle.value[0]][angle.value[1]]
             entries += ["%s[%d]" % source for source in sources[:width(angle)]]
+            if width(angle) == ex.LANES:
+                full.append(sources)
         else:
             entries.append(text(angle, False))
     n = len(entries)
-    rows = [", ".join(entries[i:i + ANGLES_PER_LINE]) for i in range(0, n, ANGLES_PER_LINE)]
-    lines = ["// sines and cosines of the joint angles",
-             "const Scalar joint_angle[%d] = {%s};" % (n, (",\n    ").join(rows)),
-             "const auto joint_trig = joint_sincos(joint_angle);"]
+    block = _transposition(full) if full else None
+    if block:  # the lanes' angles as whole vectors, the rest one by one
+        stored = ex.LANES * len(full)
+        lines = ["// sines and cosines of the joint angles", "Scalar joint_angle[%d];" % n]
+        lines += ["store_lanes(joint_angle + %d, transposed_lanes<%d, %d>(%s + %d));"
+                  % (ex.LANES * j, len(full), j, block[0], block[1]) for j in range(len(full))]
+        lines += ["joint_angle[%d] = %s;" % (k, entries[k]) for k in range(stored, n)]
+    else:
+        rows = [", ".join(entries[i:i + ANGLES_PER_LINE]) for i in range(0, n, ANGLES_PER_LINE)]
+        lines = ["// sines and cosines of the joint angles",
+                 "const Scalar joint_angle[%d] = {%s};" % (n, (",\n    ").join(rows))]
+    lines.append("const auto joint_trig = joint_sincos(joint_angle);")
     for node in trig:
         angle = node.args[0]
         name = "%s_%s" % (node.op, angle_names.get(angle.value) or "%s_%d" % angle.value)
@@ -148,6 +159,25 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
             lines.append("const Scalar %s = joint_trig.%s[%d];" % (name, node.op, slot[angle.id]))
         names[node.id] = name
     return lines
+
+
+def _transposition(items):
+    """(array, base) when lane value J of `items` (per item its four (array, index) sources) is entry J
+    of four consecutive runs of len(items) entries, array[base + k·N + J] in lane k: a limb-major
+    block that transposed_lanes loads as whole vectors (a strided load became a gather), else None."""
+    n = len(items)
+    array, base = items[0][0]
+    if all(items[j][k] == (array, base + k * n + j) for j in range(n) for k in range(ex.LANES)):
+        return array, base
+    return None
+
+
+def _lane_inputs(items):
+    """The initialisers of a lane input array: transposed_lanes of a limb-major block, else make_lanes."""
+    block = _transposition(items) if all(len(sources) == ex.LANES for sources in items) else None
+    if block:
+        return ["transposed_lanes<%d, %d>(%s + %d)" % (len(items), j, block[0], block[1]) for j in range(len(items))]
+    return ["make_lanes(%s)" % ", ".join("%s[%d]" % s for s in sources) for sources in items]
 
 
 def _lane_block(fn, order, names):
@@ -164,8 +194,7 @@ def _lane_block(fn, order, names):
         names[node.id] = "%s[%d]" % (ex.LANE_CONSTANTS, k)
     lines = ["// the isomorphic limbs, one per lane; %s: constants that differ between them"
              % ex.LANE_CONSTANTS, "using Lane = Lanes<Scalar>;"]
-    arrays = [(name, ["make_lanes(%s)" % ", ".join("%s[%d]" % s for s in sources)
-                      for sources in lanes.inputs[name]]) for name in sorted(used)]
+    arrays = [(name, _lane_inputs(lanes.inputs[name])) for name in sorted(used)]
     arrays.append((ex.LANE_CONSTANTS, ["make_lanes(%s)" % ", ".join(format_constant(v) for v in
                                                                    lanes.constants[n.value[1]])
                                        for n in constants]))
