@@ -10,11 +10,10 @@ import json
 import os
 import pathlib
 import re
-import subprocess
-import tempfile
 
 from result_files import write_result
 
+from .compile_cost import compile_costs, cost_table
 from .common import QUANTITY_TITLES, RESULTS, ROOT, format_ns, ratio, say
 from .derivatives import DERIVATIVE_TITLES
 from .runner import bench_statistics, build, compiler_version, flop_counts, machine_description, run_bench
@@ -27,7 +26,6 @@ FLOP_FUNCTIONS = {"gravity_terms": "gravity_terms", "bias": "inverse_dynamics",
                   "forward_dynamics": "forward_dynamics", "quadratic_velocity_terms": "quadratic_velocity_terms",
                   "inverse_dynamics_derivatives": "inverse_dynamics_derivatives",
                   "forward_dynamics_derivatives": "forward_dynamics_derivatives"}
-COMPILE_FLAGS = ["-std=c++17", "-O3", "-march=native", "-DNDEBUG", "-I/usr/include/eigen3"]
 
 
 def loader_args(robot):
@@ -66,40 +64,6 @@ def generated_headers(build_dir, robot):
         for header in sorted((root / robot / "common").glob("*.hpp")):
             headers.setdefault(header.name, (root, header))
     return list(headers.values())
-
-
-def compile_cost(root, header, robot):
-    """g++ on a translation unit that takes the address of the header's function for double: seconds,
-    peak MB (GNU time), and the header's size."""
-    stem = header.stem
-    function = re.sub(r"_[0-9a-f]{12}$", "", stem)
-    source = (f'#include "{robot}/common/{header.name}"\n'
-              f"void* rbdc_instantiated = reinterpret_cast<void*>("
-              f"&rbdc_gen::{robot}::common::{stem}::{function}<double>);\n")
-    with tempfile.TemporaryDirectory() as scratch:
-        tu = pathlib.Path(scratch) / "cost.cpp"
-        tu.write_text(source)
-        timing = pathlib.Path(scratch) / "time.txt"
-        result = subprocess.run(["/usr/bin/time", "-f", "%e %M", "-o", timing, "g++"] + COMPILE_FLAGS
-                                + [f"-I{root}", "-c", tu, "-o", pathlib.Path(scratch) / "cost.o"],
-                                capture_output=True, text=True)
-        if result.returncode != 0:
-            say(f"compile of {header.name} failed: {result.stderr.strip()[-400:]}")
-            return None
-        seconds, kilobytes = timing.read_text().split()[-2:]
-    text = header.read_text()
-    return {"function": function, "header": header.name, "bytes": len(text.encode()),
-            "lines": text.count("\n"), "seconds": float(seconds), "peak_mb": round(int(kilobytes) / 1024)}
-
-
-def compile_costs(build_dir, robot):
-    rows = []
-    for root, header in generated_headers(build_dir, robot):
-        say(f"compiling {robot}/common/{header.name} alone (g++ -O3)")
-        row = compile_cost(root, header, robot)
-        if row:
-            rows.append(row)
-    return rows
 
 
 def robot_table(robot, cases, counts):
@@ -143,19 +107,7 @@ def markdown(details):
             lines.append(f"| {TITLES.get(quantity, quantity)} | {cell('generated_double')} | {cell('runtime')} | "
                          f"{cell('mujoco')} | {ratio(entries.get('runtime', {}).get('ns'), generated.get('ns'))} | "
                          f"{flops or '–'} | {per_flop} |")
-        costs = data["compile"]
-        lines += ["", f"Each generated header of {robot} alone (g++ -O3 -march=native, its function "
-                  "instantiated for double):", "",
-                  "| function | header KB | lines | g++ s | peak MB |", "|---|---|---|---|---|"]
-        for row in sorted(costs, key=lambda r: -r["seconds"]):
-            lines.append(f"| {row['function']} | {row['bytes'] / 1024:.0f} | {row['lines']} | "
-                         f"{row['seconds']:.1f} | {row['peak_mb']} |")
-        if costs:
-            lines += ["", f"All {len(costs)} headers: {sum(r['seconds'] for r in costs):.1f} s of g++, "
-                      f"{sum(r['bytes'] for r in costs) / 2**20:.1f} MB of C++; the slowest "
-                      f"{max(r['seconds'] for r in costs):.1f} s, the most memory "
-                      f"{max(r['peak_mb'] for r in costs)} MB."]
-        lines.append("")
+        lines += [""] + cost_table(robot, data["compile"]) + [""]
     return "\n".join(lines) + "\n"
 
 
@@ -178,7 +130,7 @@ def report(build_root, compiler, args):
                 counts.setdefault(function, kinds)
         details["robots"][robot] = {"urdf": os.path.relpath(urdf, ROOT), "base": base,
                                     "times": robot_table(robot, cases, counts),
-                                    "compile": compile_costs(build_dir, robot)}
+                                    "compile": compile_costs(generated_headers(build_dir, robot), robot)}
     details["machine"] = machine_description({compiler: details["compiler"]}, "-O3 -march=native")
     write_result(RESULTS / "big_robots.json", json.dumps(details, indent=1, sort_keys=True) + "\n")
     write_result(RESULTS / "big_robots.md", markdown(details))

@@ -115,11 +115,14 @@ def count_instructions(build_dir, calls):
 
 
 def machine_description(compiler_versions, flags):
-    cpu = "unknown"
+    # The model name alone ("AMD EPYC") does not tell Zen 3 from Zen 5: the family and model do.
+    fields = {}
     for line in pathlib.Path("/proc/cpuinfo").read_text().splitlines():
-        if line.startswith("model name"):
-            cpu = line.split(":", 1)[1].strip()
-            break
+        key, _, value = line.partition(":")
+        fields.setdefault(key.strip(), value.strip())
+    cpu = fields.get("model name", "unknown")
+    if "cpu family" in fields:
+        cpu += f" (family {fields['cpu family']}, model {fields.get('model', '?')})"
     cores = os.cpu_count()
     return {"cpu": cpu, "cores": cores, "kernel": platform.release(),
             "compilers": compiler_versions, "flags": flags,
