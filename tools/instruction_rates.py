@@ -28,10 +28,15 @@ FMA_PIPES = 2  # multiplications and FMAs a cycle: both AMD cores measured (tool
 ROW = re.compile(r"\| (\S+) \| \S+ → (\w+) \| [\d.]+ / ([\d.]+) \| [\d.]+ / ([\d.]+) \| ([\d.]+)×")
 
 
+def doc_comment(header):
+    """The header's /// lines as one line of single-spaced words (tables and wrapped lines read alike)."""
+    return " ".join(" ".join(line.lstrip("/").split()) for line in header.read_text().splitlines()
+                    if line.startswith("///"))
+
+
 def instructions(header):
     """The schedule line's arithmetic instructions, else the operation table's total."""
-    doc = " ".join(" ".join(line.lstrip("/").split()) for line in header.read_text().splitlines()
-                   if line.startswith("///"))
+    doc = doc_comment(header)
     counted = re.search(r"schedule: .*?: (\d+) arithmetic instructions", doc)
     if counted:
         return int(counted.group(1))
@@ -41,8 +46,7 @@ def instructions(header):
 def multiplication_share(header):
     """Multiplications over multiplications and additions in the operation table (the counted
     instructions count an FMA as a multiplication and an addition), or None without a table."""
-    doc = " ".join(" ".join(line.lstrip("/").split()) for line in header.read_text().splitlines()
-                   if line.startswith("///"))
+    doc = doc_comment(header)
     table = re.search(r"operations mul add div sqrt trig neg total (\d+) (\d+) ", doc)
     return int(table.group(1)) / (int(table.group(1)) + int(table.group(2))) if table else None
 
