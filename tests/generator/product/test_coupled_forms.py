@@ -7,13 +7,12 @@ looped-RNEA solve (passes/looped_feet_forces.py). The runtime has no coupled ∂
 `rbdc verify` to compare with, so the C++ loops are checked against the straight-line code (itself
 checked against central differences in tests/generator/python/test_coupling.py). Fingers on an arm
 (M' keeps a tree) and a coupling across branches (M' dense), floating and fixed."""
-import os
 import subprocess
 import tempfile
 import unittest
 from pathlib import Path
 
-from rbdc_cli import ROOT, run_rbdc
+from rbdc_cli import CXX, ROOT, run_rbdc
 
 ROBOTS = (("mimic_fingers", "floating"), ("mimic_across_branches", "fixed"))
 DERIVATIVES = ("[forward_dynamics_derivatives, inverse_dynamics_derivatives, bias_derivatives, gravity_derivatives, "
@@ -95,7 +94,7 @@ class CoupledLoopedForms(unittest.TestCase):
                 self.assertEqual(sum("/// emission: looped feet force terms" in text for text in headers), 1)
                 self.assertEqual(sum("add_feet_force_term_derivatives<" in text for text in headers), 2)
                 (directory / "driver.cpp").write_text(DRIVER.replace("ROBOT", robot))
-                build = subprocess.run([os.environ.get("CXX", "c++"), "-std=c++17", "-O1", "-I", str(directory),
+                build = subprocess.run([*CXX, "-std=c++17", "-O1", "-I", str(directory),
                                         "-I", "/usr/include/eigen3", str(directory / "driver.cpp"),
                                         "-o", str(directory / "driver")], capture_output=True, text=True)
                 self.assertEqual(build.returncode, 0, build.stderr)

@@ -8,7 +8,7 @@ import tempfile
 import unittest
 from pathlib import Path
 
-from rbdc_cli import MINI_CHEETAH, ROOT, SCENES, run_rbdc
+from rbdc_cli import MINI_CHEETAH, SCENES, run_rbdc
 
 
 def written_files(directory: Path) -> set[str]:

@@ -7,7 +7,6 @@ branched tree with revolute and prismatic joints and two feet in contact, floati
 mimic-coupled gripper's looped solve and RNEA derivatives, on a 32-link chain's ∂a/∂τ as M⁻¹'s rows,
 on the Mini Cheetah's `full` scene (limb lanes: a lane operation counts four, a sum over the lanes three)
 and on humanoid32's limbs in pairs (a pair's joint angle: two sines and two cosines, not four)."""
-import os
 import re
 import subprocess
 import sys
@@ -15,7 +14,7 @@ import tempfile
 import unittest
 from pathlib import Path
 
-from rbdc_cli import MINI_CHEETAH, ROOT, SCENES, run_rbdc
+from rbdc_cli import CXX, MINI_CHEETAH, ROOT, SCENES, run_rbdc
 
 # A branched tree: a trunk, two chains of revolute and prismatic joints with tilted placements.
 URDF = """<robot name="counted">
@@ -124,7 +123,7 @@ class OperationCountTest(unittest.TestCase):
             calls = "\n".join(call for _, call in functions.values())
             driver = DRIVER.replace("ROBOT", robot).replace("SCENE", scene).replace("CALLS", calls)
             (directory / "driver.cpp").write_text(driver)
-            build = subprocess.run([os.environ.get("CXX", "c++"), "-std=c++17", "-O0", "-I", str(directory),
+            build = subprocess.run([*CXX, "-std=c++17", "-O0", "-I", str(directory),
                                     "-I", "/usr/include/eigen3", str(directory / "driver.cpp"),
                                     "-o", str(directory / "driver")], capture_output=True, text=True)
             self.assertEqual(build.returncode, 0, build.stderr)
