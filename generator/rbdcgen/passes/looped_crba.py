@@ -1,4 +1,4 @@
-"""The looped form of the CRBA, for mass_matrix and (under the looped factor) mass_matrix_factor
+"""The looped form of the CRBA, for mass_matrix, mass_matrix_lower and (under the looped factor) mass_matrix_factor
 (docs/performance.md, "The mass matrix as a loop").
 
 Unrolled, the CRBA is one force transform per (body, ancestor) pair: O(n²) straight-line code on a
@@ -45,10 +45,12 @@ def unrolled_too_large(robot):
 @dataclass(frozen=True)
 class LoopedCrba:
     """crba_loop over the robot's bodies, reading the terms' transforms X, writing M whole
-    (`packed` False: the argument M) or ltdl_factor's packed entries (solve_L, solve_D)."""
+    (`packed` False: the argument M), its lower triangle (`lower`: mass_matrix_lower) or
+    ltdl_factor's packed entries (solve_L, solve_D)."""
     robot: object
     terms: Tuple[Argument, ...]
     packed: bool = False
+    lower: bool = False
     headers: ClassVar[Tuple[str, ...]] = (body_tree.HEADER, HEADER)
 
     @property
@@ -85,7 +87,8 @@ class LoopedCrba:
             out = [f"RBDC_TABLE int packed_first[{nv}] = {{{', '.join(map(str, first))}}};",
                    f"const PackedMassMatrix<Scalar, {nv}> crba_out{{solve_L, solve_D, packed_first}};"]
         else:
-            out = [f"const DenseMassMatrix<Scalar, {nv}> crba_out{{M}};"]
+            writer = "LowerMassMatrix" if self.lower else "DenseMassMatrix"
+            out = [f"const {writer}<Scalar, {nv}> crba_out{{M}};"]
         return [body_tree.table(self.robot)] * with_table + [*out,
                 f"crba_loop<Scalar, {self.nb}, {nv}, {floating}>(tree, solve_X, crba_out);"]
 
@@ -95,10 +98,13 @@ class LoopedCrba:
 
 
 def has_looped_form(robot, name):
-    """mass_matrix on a tree without rotors or couplings (both change M beyond the bodies' CRBA)."""
-    return name == "mass_matrix" and body_tree.applies(robot)
+    """mass_matrix or mass_matrix_lower on a tree without rotors or couplings (both change M beyond the
+    bodies' CRBA)."""
+    return name in ("mass_matrix", "mass_matrix_lower") and body_tree.applies(robot)
 
 
 def looped_function(robot, scene, name):
-    """mass_matrix in its looped-CRBA form: the traced transforms, with the loop as a LoopedCrba."""
-    return with_loop(robot, scene, name, TERMS, lambda terms, _: LoopedCrba(robot=robot, terms=terms.outputs))
+    """mass_matrix or mass_matrix_lower in its looped-CRBA form: the traced transforms, with the loop
+    as a LoopedCrba."""
+    return with_loop(robot, scene, name, TERMS, lambda terms, _: LoopedCrba(
+        robot=robot, terms=terms.outputs, lower=name == "mass_matrix_lower"))

@@ -26,7 +26,8 @@ LINK = ('<link name="l{i}"><inertial><origin xyz="0.02 0.01 0.1"/><mass value="0
         '<joint name="j{i}" type="{kind}"><parent link="{parent}"/><child link="l{i}"/>'
         '<origin xyz="0 0.01 0.2" rpy="0.1 0 0.2"/><axis xyz="{axis}"/>'
         '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>')
-LOOPED_CRBA = ("name: counted\nquantities: [mass_matrix, mass_matrix_factor]\nderivatives: [forward_dynamics_derivatives]\n"
+LOOPED_CRBA = ("name: counted\nquantities: [mass_matrix, mass_matrix_lower, mass_matrix_factor]\n"
+               "derivatives: [forward_dynamics_derivatives]\n"
                "schedule: looped_crba\n")
 LOOPED_RNEA = ("name: counted\nderivatives: [inverse_dynamics_derivatives, bias_derivatives, gravity_derivatives, "
                "forward_dynamics_derivatives, feet_force_term_derivatives]\nschedule: looped_rnea\n")
@@ -142,10 +143,10 @@ class OperationCountTest(unittest.TestCase):
             return self.check(urdf, base, scene_text, "counted", "counted")
 
     def test_looped_crba_floating_base(self):
-        self.assertEqual(self.tree("floating", LOOPED_CRBA).count("schedule: looped CRBA"), 3)
+        self.assertEqual(self.tree("floating", LOOPED_CRBA).count("schedule: looped CRBA"), 4)
 
     def test_looped_crba_fixed_base(self):
-        self.assertEqual(self.tree("fixed", LOOPED_CRBA).count("schedule: looped CRBA"), 3)
+        self.assertEqual(self.tree("fixed", LOOPED_CRBA).count("schedule: looped CRBA"), 4)
 
     def test_looped_rnea_derivatives_floating_base(self):
         self.assertEqual(self.tree("floating", LOOPED_RNEA).count("schedule: looped RNEA derivatives"), 4)

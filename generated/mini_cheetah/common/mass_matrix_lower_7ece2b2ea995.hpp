@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_e5edfab33c2f {
+namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_7ece2b2ea995 {
 
 /// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5), its lower triangle only (n(n+1)/2 stores
 /// instead of n²): for Eigen's M.selfadjointView<Eigen::Lower>() and its LDLᵀ/LLᵀ.
@@ -22,7 +22,7 @@ namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_e5edfab33c2f {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             388  366    0     0    24   27    805
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 217 arithmetic
-///   instructions, scalar tree 781
+///   instructions, scalar tree 781, looped CRBA 2252 (cost 3137)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void mass_matrix_lower(const Scalar* q, Scalar* M) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -192,4 +192,4 @@ RBDC_HOST_DEVICE inline void mass_matrix_lower(const Scalar* q, Scalar* M) noexc
   store_lanes(M + 31, make_lanes(t49[2], t22[2], t71[3], t49[3]));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_e5edfab33c2f
+}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_7ece2b2ea995
