@@ -60,6 +60,11 @@ struct LanesOf {
   static RBDC_HOST_DEVICE void store(T* p, const type& x) noexcept {
     for (int k = 0; k < 4; ++k) p[k] = x.v[k];
   }
+  template <int K>
+  static RBDC_HOST_DEVICE void store_transposed(T* const (&p)[4], const type (&x)[K]) noexcept {
+    for (int k = 0; k < K; ++k)
+      for (int l = 0; l < 4; ++l) p[l][k] = x[k].v[l];
+  }
 };
 #if defined(RBDC_HAS_VECTOR_SINCOS)
 /// A vector literal, so that constant lanes become one vector constant; one vector load or store.
@@ -88,6 +93,23 @@ struct PackLanesOf {
     return type(__builtin_shufflevector(ab, cd, 0, 1, 4, 5));
   }
   static void store(T* p, const type& x) noexcept { std::memcpy(p, &x.v, sizeof x.v); }
+  /// Four lane values at a time transposed in registers (eight two-source shuffles), each limb's
+  /// entries then one store; built from single lanes, each store took three to five shuffles.
+  template <int K>
+  static void store_transposed(T* const (&p)[4], const type (&x)[K]) noexcept {
+    using V = typename type::Vector;
+    for (int k = 0; k < K; k += 4) {
+      const int n = K - k < 4 ? K - k : 4;  // this group's lane values
+      const V a = x[k].v, b = x[k + (n > 1)].v, c = x[k + 2 * (n > 2)].v, d = x[k + 3 * (n > 3)].v;
+      const V ab_even = __builtin_shufflevector(a, b, 0, 4, 2, 6), ab_odd = __builtin_shufflevector(a, b, 1, 5, 3, 7);
+      const V cd_even = __builtin_shufflevector(c, d, 0, 4, 2, 6), cd_odd = __builtin_shufflevector(c, d, 1, 5, 3, 7);
+      const V limb[4] = {__builtin_shufflevector(ab_even, cd_even, 0, 1, 4, 5),
+                         __builtin_shufflevector(ab_odd, cd_odd, 0, 1, 4, 5),
+                         __builtin_shufflevector(ab_even, cd_even, 2, 3, 6, 7),
+                         __builtin_shufflevector(ab_odd, cd_odd, 2, 3, 6, 7)};
+      for (int l = 0; l < 4; ++l) std::memcpy(p[l] + k, &limb[l], n * sizeof(T));
+    }
+  }
 };
 template <>
 struct LanesOf<double> : PackLanesOf<double> {};
@@ -129,6 +151,13 @@ RBDC_HOST_DEVICE inline Lanes<T> load_repeated_lanes(const T* p) noexcept {
 template <class T>
 RBDC_HOST_DEVICE inline void store_lanes(T* p, const Lanes<T>& x) noexcept {
   LanesOf<T>::store(p, x);
+}
+
+/// p[l][k] = x_k[l] for the limbs l < 4 and k < K: K lane values written limb by limb, limb l's K
+/// entries one after the other from p[l] (a limb dof's column of M: its rows at the trunk's dofs).
+template <int K, class T>
+RBDC_HOST_DEVICE inline void store_transposed_lanes(T* const (&p)[4], const Lanes<T> (&x)[K]) noexcept {
+  LanesOf<T>::template store_transposed<K>(p, x);
 }
 
 /// The lanes rotated: lane k of the result is lane (k + Shift) mod 4 of x (one shuffle).

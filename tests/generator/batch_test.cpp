@@ -159,6 +159,30 @@ TEST(Lanes, TransposedLanesTakeEntryJOfEachLimb) {
   expect_transposed<double, 1, 0>(), expect_transposed<float, 3, 1>(), expect_transposed<long double, 5, 3>();
 }
 
+/// store_transposed_lanes of K lane values (x_k's lane l = 100 k + l) into four separate segments
+/// of a zeroed buffer: segment l holds lane l of x_0 … x_K−1, every other entry stays zero.
+template <class T, int K>
+void expect_stored_transposed() {
+  T out[4 * 20] = {};
+  T* const starts[4] = {out + 41, out, out + 62, out + 20};  // out of order, gaps between them
+  rbdc_gen::Lanes<T> x[K];
+  for (int k = 0; k < K; ++k)
+    x[k] = rbdc_gen::make_lanes<T>(100 * k, 100 * k + 1, 100 * k + 2, 100 * k + 3);
+  rbdc_gen::store_transposed_lanes<K>(starts, x);
+  int written = 0;
+  for (int l = 0; l < 4; ++l)
+    for (int k = 0; k < K; ++k, ++written) EXPECT_EQ(starts[l][k], static_cast<T>(100 * k + l)) << "K " << K;
+  int nonzero = 0;
+  for (T value : out) nonzero += value != T(0);
+  EXPECT_EQ(nonzero, written - 1) << "K " << K;  // x_0's lane 0 is the only zero written
+}
+
+TEST(Lanes, StoredTransposedPutsEachLimbsLanesTogether) {
+  expect_stored_transposed<double, 3>(), expect_stored_transposed<double, 6>();
+  expect_stored_transposed<double, 9>(), expect_stored_transposed<float, 5>();
+  expect_stored_transposed<long double, 4>();
+}
+
 TEST(Batch, ArithmeticAndTrigonometryPerLane) {
   using P = rbdc_gen::Batch<double>;
   P x, y;

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_ba72492a267f.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_6e3f00fb3534.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_ba72492a267f.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_6e3f00fb3534.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -34,7 +34,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///   instructions, scalar tree 25981 (cost 57594), limb lanes 7721 (cost 13770), looped
 ///   solve 16380 (cost 26690), looped RNEA derivatives 19073 (cost 26483), looped CRBA
 ///   22495 (cost 33725)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_ba72492a267f::forward_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_6e3f00fb3534::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah/common/forward_dynamics_54455bff0c60.hpp
+//   mini_cheetah/common/forward_dynamics_9a6c07e4d26e.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/forward_dynamics_54455bff0c60.hpp"
+#include "mini_cheetah/common/forward_dynamics_9a6c07e4d26e.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -29,7 +29,7 @@ namespace rbdc_gen::mini_cheetah::full {
 /// schedule: articulated-body algorithm in limb lanes (the 4 isomorphic limbs in SIMD lanes, the
 ///   trunk scalar): 1289 arithmetic instructions, scalar tree 4123 (cost 5135), limb lanes
 ///   1425, articulated-body algorithm 4220 (cost 5368)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_54455bff0c60::forward_dynamics;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_9a6c07e4d26e::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix_inverse for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_inverse is the same code:
-//   mini_cheetah/common/mass_matrix_inverse_a260f6b5ee81.hpp
+//   mini_cheetah/common/mass_matrix_inverse_d5ce2772dd8b.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/mass_matrix_inverse_a260f6b5ee81.hpp"
+#include "mini_cheetah/common/mass_matrix_inverse_d5ce2772dd8b.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 ///             2044  1742   14     0    24   79   3903
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1311 arithmetic
 ///   instructions, scalar tree 3610 (cost 3904)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_inverse_a260f6b5ee81::mass_matrix_inverse;
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_inverse_d5ce2772dd8b::mass_matrix_inverse;
 
 /// mass_matrix_inverse on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -19,9 +19,10 @@ the operator (`x + Scalar(0.5)`, never `x - Scalar(-0.5)`). Same DAG in, same te
 A lane function (fn.lanes, views/limb_lanes.py) also declares `Lane = Lanes<Scalar>` (rbdc_gen/lanes.hpp),
 its lane inputs and constants as arrays `lane_v[…]`, `lane_c[…]` of make_lanes(…), loads the sin/cos
 of a lane angle from ex.LANES consecutive joint_trig entries, declares lane temporaries `const Lane`,
-reads lane k of a lane value as `t7[k]`, and writes each run of ex.LANES consecutive output entries
-with one vector store, `store_lanes(M + 8, make_lanes(…));` (of the lane value itself where the run
-holds its lanes in order)."""
+reads lane k of a lane value as `t7[k]`, writes the runs where each limb's entries are the same lanes
+of several lane values (a leg's column of M) transposed, `store_transposed_lanes<6>({M + 144, …},
+{t21, …});`, and each other run of ex.LANES consecutive output entries with one vector store,
+`store_lanes(M + 8, make_lanes(…));` (of the lane value itself where the run holds its lanes in order)."""
 
 from __future__ import annotations
 
@@ -257,6 +258,11 @@ def emit_body(fn, angle_names=None):
     for position, item in enumerate(items):
         if position == tail:
             lines.append("// outputs")
+        if isinstance(item, TransposedStore):
+            lines.append("store_transposed_lanes<%d>({%s}, {%s});" % (
+                len(item.values), ", ".join("%s + %d" % (item.arg_name, s) for s in item.starts),
+                ", ".join(text(v, False) for v in item.values)))
+            continue
         if isinstance(item, list):  # output entries, stored as soon as their values are computed
             arg_name, k, node = item[0]
             if len(item) == 1:
@@ -315,18 +321,89 @@ def _zero_filled(fn):
     return cleared
 
 
+class TransposedStore(list):
+    """A store unit of a lane function (its entries, as the other units): K lane values written limb
+    by limb, limb l's lanes at starts[l], starts[l] + 1, … (store_transposed_lanes)."""
+
+    def __init__(self, arg_name, starts, values, entries):
+        super().__init__(entries)
+        self.arg_name, self.starts, self.values = arg_name, starts, values
+
+
+# A run of fewer lane values stays in the 4-wide stores: two transposed cost about what they save.
+TRANSPOSED_MIN = 3
+# Candidate places per lane of a lane value stored more than once (M's symmetric entries): the first few.
+TRANSPOSED_PLACES = 3
+
+
+def _transposed_stores(arg_name, values):
+    """The runs of an output where limb l's entries starts[l] + k are lane l of lane values x_0 … x_K−1
+    (a leg's column of M: its rows at the trunk's dofs), longest first, each at least TRANSPOSED_MIN
+    long and disjoint from the others."""
+    places = {}  # (lane value id, lane) -> the entries holding it
+    for k, node in enumerate(values):
+        if node is not None and node.op == "lane_get":
+            places.setdefault((node.args[0].id, node.value), []).append(k)
+
+    def lane_of(k):
+        node = values[k] if 0 <= k < len(values) else None
+        return (node.args[0], node.value) if node is not None and node.op == "lane_get" else (None, None)
+
+    candidates = []
+    for k, node in enumerate(values):
+        value, lane = lane_of(k)
+        if value is None or lane != 0:
+            continue
+        others = [places.get((value.id, l), [])[:TRANSPOSED_PLACES] for l in range(1, ex.LANES)]
+        for starts in _combinations([k], others):
+            run = []
+            while True:
+                step = [lane_of(s + len(run)) for s in starts]
+                if not all(v is not None and v is step[0][0] and l == i for i, (v, l) in enumerate(step)):
+                    break
+                run.append(step[0][0])
+            if len(run) >= TRANSPOSED_MIN and _disjoint(starts, len(run)):
+                candidates.append((starts, run))
+    chosen, covered = [], set()
+    for starts, run in sorted(candidates, key=lambda c: -len(c[1])):
+        entries = {s + k for s in starts for k in range(len(run))}
+        if not entries & covered:
+            covered |= entries
+            chosen.append(TransposedStore(arg_name, starts, run,
+                                          [(arg_name, e, values[e]) for e in sorted(entries)]))
+    return chosen, covered
+
+
+def _combinations(prefix, choices):
+    if not choices:
+        yield prefix
+        return
+    for choice in choices[0]:
+        yield from _combinations(prefix + [choice], choices[1:])
+
+
+def _disjoint(starts, length):
+    ends = sorted(starts)
+    return all(b >= a + length for a, b in zip(ends, ends[1:]))
+
+
 def _store_units(fn, cleared):
     """The written output entries (argument name, index, node) grouped as they are stored: one by
-    one; in a lane function, each run of consecutive written entries of an argument in vector
-    stores of ex.LANES from the run's start (the Mini Cheetah's M in lanes: its 324 scalar stores
-    were the bottleneck, 172 -> 110 ns with g++; docs/performance.md), the rest one by one. The zeros of
-    the outputs in `cleared` (_zero_filled) are not stored: a loop cleared them."""
+    one; in a lane function, first the transposed runs (_transposed_stores), then each run of the
+    other consecutive written entries of an argument in vector stores of ex.LANES from the run's start
+    (the Mini Cheetah's M in lanes: its 324 scalar stores were the bottleneck, 172 -> 110 ns with g++;
+    docs/performance.md), the rest one by one. The zeros of the outputs in `cleared` (_zero_filled)
+    are not stored: a loop cleared them."""
     width = ex.LANES if fn.lanes is not None else 1
     units = []
     for arg in fn.traced_arguments():
+        covered = set()
+        if fn.lanes is not None:
+            transposed, covered = _transposed_stores(arg.name, fn.values[arg.name])
+            units += transposed
         runs = []  # maximal runs of consecutive written entries
         for k, node in enumerate(fn.values[arg.name]):
-            if node is None or (arg.name in cleared and node.is_const(0.0)):
+            if node is None or k in covered or (arg.name in cleared and node.is_const(0.0)):
                 continue
             if not runs or runs[-1][-1][1] != k - 1:
                 runs.append([])

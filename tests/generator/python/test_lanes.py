@@ -145,10 +145,12 @@ class MiniCheetahLanes(unittest.TestCase):
         return pairs
 
     def test_outputs_stored_four_at_a_time_once_each(self):
-        """Emission of a lane function: each run of four consecutive output entries is one
-        store_lanes, the rest one by one; every entry written exactly once (M's lower triangle alone,
-        nothing above it, for mass_matrix_lower and its lanes), each store after the temporaries it
-        reads (the scalar functions keep one store per entry)."""
+        """Emission of a lane function: the limbs' runs of the same lanes of several lane values are
+        transposed stores (the Mini Cheetah's M: a leg's column, its rows at the trunk's dofs; τ: the
+        legs' torques), each other run of four consecutive output entries one store_lanes, the rest
+        one by one; every entry written exactly once (M's lower triangle alone, nothing above it, for
+        mass_matrix_lower and its lanes), each store after the temporaries it reads (the scalar
+        functions keep one store per entry)."""
         robot = mini_cheetah.load()
         for name in ("mass_matrix_lanes", "inverse_dynamics_lanes", "mass_matrix_lower_lanes",
                      "mass_matrix_lower"):
@@ -156,10 +158,21 @@ class MiniCheetahLanes(unittest.TestCase):
             lines = emit_body(fn)
             defined = set()
             written = {arg.name: [] for arg in fn.outputs}
+            vector_stores, transposed = 0, set()
             for line in (l for l in lines if not l.startswith("//")):
                 declared = re.match(r"const (?:Scalar|Lane) (t\d+) = ", line)
                 if declared:
                     defined.add(declared.group(1))
+                    continue
+                block = re.match(r"store_transposed_lanes<(\d+)>\(\{(\w+) \+ (\d+), \w+ \+ (\d+), \w+ \+ (\d+), "
+                                 r"\w+ \+ (\d+)\}, \{(.*)\}\);$", line)
+                if block:
+                    size, arg, starts, values = int(block.group(1)), block.group(2), block.group(3, 4, 5, 6), block.group(7)
+                    self.assertEqual(len(values.split(", ")), size, line)
+                    entries = [int(s) + k for s in starts for k in range(size)]
+                    written[arg] += entries
+                    transposed |= {(arg, k) for k in entries}
+                    self.assertLessEqual(set(re.findall(r"\bt\d+\b", values)), defined, line)
                     continue
                 vector = re.match(r"store_lanes\((\w+) \+ (\d+), make_lanes\((.*)\)\);$", line)
                 scalar = re.match(r"(\w+)\[(\d+)\] = (.*);$", line)
@@ -168,18 +181,18 @@ class MiniCheetahLanes(unittest.TestCase):
                     continue
                 first = int(match.group(2))
                 written[match.group(1)] += range(first, first + (ex.LANES if vector else 1))
+                vector_stores += bool(vector)
                 self.assertLessEqual(set(re.findall(r"\bt\d+\b", match.group(3))), defined, line)
             for arg in fn.outputs:
                 expected = [k for k, e in enumerate(fn.values[arg.name]) if e is not None]
                 self.assertEqual(sorted(written[arg.name]), expected, (name, arg.name))
-            targets = (re.match(r"store_lanes\((\w+) ", line) for line in lines)
-            stores = sum(1 for t in targets if t and t.group(1) in written)  # not the joint angles' stores
-            # whole outputs: every entry in a vector store but the last size % 4; M's lower
-            # triangle: runs of 4 within each column (18 columns of 18 ... 1 entries: 36 stores)
-            vector_entries = sum(len(e) - len(e) % ex.LANES for e in _written_runs(fn))
-            self.assertEqual(stores * ex.LANES, vector_entries if fn.lanes else 0, name)
+            # the entries no transposed store writes: every one in a vector store but the last
+            # size % 4 of each run (M's lower triangle: runs of 4 within each column)
+            vector_entries = sum(len(e) - len(e) % ex.LANES for e in _written_runs(fn, transposed))
+            self.assertEqual(vector_stores * ex.LANES, vector_entries if fn.lanes else 0, name)
+            self.assertEqual(bool(transposed), fn.lanes is not None, name)
         scalar_lines = emit_body(trace_function(robot, default_scene(), "mass_matrix"))
-        self.assertFalse(any(line.startswith("store_lanes(") for line in scalar_lines))
+        self.assertFalse(any(line.startswith(("store_lanes(", "store_transposed_lanes")) for line in scalar_lines))
 
     def test_lane_angle_names_unique(self):
         """The lanes' sin/cos are named by what the limbs' joint names share (prefix and suffix);
@@ -320,13 +333,14 @@ class HexapodGroups(unittest.TestCase):
                 self.assertLess(max_relative_error(got[output], want[output]), 1e-12, (name, output))
 
 
-def _written_runs(fn):
-    """Each output's maximal runs of consecutive written entries."""
+def _written_runs(fn, left_out=frozenset()):
+    """Each output's maximal runs of consecutive written entries, but those in `left_out`
+    ((argument, index) pairs)."""
     runs = []
     for arg in fn.outputs:
         previous = None
         for k, e in enumerate(fn.values[arg.name]):
-            if e is None:
+            if e is None or (arg.name, k) in left_out:
                 continue
             if previous != k - 1:
                 runs.append([])

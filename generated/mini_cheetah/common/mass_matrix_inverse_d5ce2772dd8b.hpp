@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::mass_matrix_inverse_a260f6b5ee81 {
+namespace rbdc_gen::mini_cheetah::common::mass_matrix_inverse_d5ce2772dd8b {
 
 /// M⁻¹ from the sparse factor M = Lᵀ D L (CRBA, paper 000 Alg. 5).
 ///
@@ -239,15 +239,19 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Scalar t180 = t143 * t147;
   const Scalar t181 = t133 * t139;
   const Scalar t182 = t145 * t151;
+  M_inv[4] = t182;
   const Scalar t183 = t143 * t150;
   const Scalar t184 = t139 * t149;
   const Scalar t185 = t124 * t132;
+  M_inv[76] = t123 + ((((t151 * t182) + (t150 * t183)) + (t149 * t184)) + (t124 * t185));
   const Scalar t186 = t145 * t155;
   const Scalar t187 = -t186;
+  M_inv[5] = t187;
   const Scalar t188 = t143 * t154;
   const Scalar t189 = t139 * t153;
   const Scalar t190 = t132 * t152;
   const Scalar t191 = t110 * t123;
+  M_inv[95] = t109 + (((((t155 * t186) + (t154 * t188)) + (t153 * t189)) + (t152 * t190)) + (t110 * t191));
   const Lane t192 = t145 * t160;
   const Lane t193 = t143 * t159;
   const Lane t194 = t139 * t158;
@@ -258,7 +262,6 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Lane t199 = t96 * t109;
   const Lane t200 = -t199;
   const Lane t201 = t145 * t166;
-  store_lanes(M_inv + 4, make_lanes(t182, t187, t192[0], t201[0]));
   const Lane t202 = t143 * t165;
   const Lane t203 = t139 * t164;
   const Lane t204 = t132 * t163;
@@ -266,9 +269,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Lane t206 = t109 * t161;
   const Lane t207 = t80 * t95;
   const Lane t208 = t145 * t174;
-  store_lanes(M_inv + 8, make_lanes(t208[0], t192[1], t201[1], t208[1]));
-  store_lanes(M_inv + 12, make_lanes(t192[2], t201[2], t208[2], t192[3]));
-  store_lanes(M_inv + 16, make_lanes(t201[3], t208[3], t176, t143 + (t144 * t175)));
+  store_transposed_lanes<3>({M_inv + 6, M_inv + 9, M_inv + 12, M_inv + 15}, {t192, t201, t208});
   const Lane t209 = t143 * t172;
   const Lane t210 = t139 * t171;
   const Lane t211 = t132 * t170;
@@ -279,74 +280,61 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Lane t216 = t193 - (t144 * t192);
   const Lane t217 = t202 - (t144 * t201);
   const Lane t218 = t209 - (t144 * t208);
-  store_lanes(M_inv + 24, make_lanes(t216[0], t217[0], t218[0], t216[1]));
-  store_lanes(M_inv + 28, make_lanes(t217[1], t218[1], t216[2], t217[2]));
-  store_lanes(M_inv + 32, make_lanes(t218[2], t216[3], t217[3], t218[3]));
+  store_transposed_lanes<3>({M_inv + 24, M_inv + 27, M_inv + 30, M_inv + 33}, {t216, t217, t218});
   const Scalar t219 = -(t178 + (t146 * t175));
   const Lane t220 = t194 + ((t146 * t192) - (t140 * t193));
   const Lane t221 = t203 + ((t146 * t201) - (t140 * t202));
   const Lane t222 = t210 + ((t146 * t208) - (t140 * t209));
-  store_lanes(M_inv + 44, make_lanes(t222[0], t220[1], t221[1], t222[1]));
-  store_lanes(M_inv + 48, make_lanes(t220[2], t221[2], t222[2], t220[3]));
+  store_transposed_lanes<3>({M_inv + 42, M_inv + 45, M_inv + 48, M_inv + 51}, {t220, t221, t222});
   const Scalar t223 = t180 - (t148 * t175);
-  store_lanes(M_inv + 52, make_lanes(t221[3], t222[3], t179, t223));
+  store_lanes(M_inv + 18, make_lanes(t176, t143 + (t144 * t175), t219, t223));
   const Scalar t224 = ((t148 * t177) - (t147 * t178)) - t181;
   store_lanes(M_inv + 36, make_lanes(t177, t219, t139 + ((t146 * t177) + (t140 * t178)), t224));
+  store_lanes(M_inv + 54, make_lanes(t179, t223, t224, t132 + (((t148 * t179) + (t147 * t180)) + (t133 * t181))));
   const Lane t225 = (((t148 * t192) + (t147 * t193)) - (t133 * t194)) - t195;
-  store_lanes(M_inv + 108, make_lanes(t192[0], t216[0], t220[0], t225[0]));
-  store_lanes(M_inv + 216, make_lanes(t192[2], t216[2], t220[2], t225[2]));
   const Lane t226 = t204 + (((t148 * t201) + (t147 * t202)) - (t133 * t203));
-  store_lanes(M_inv + 180, make_lanes(t201[1], t217[1], t221[1], t226[1]));
-  store_lanes(M_inv + 288, make_lanes(t201[3], t217[3], t221[3], t226[3]));
   const Lane t227 = t211 + (((t148 * t208) + (t147 * t209)) - (t133 * t210));
-  store_lanes(M_inv + 60, make_lanes(t225[0], t226[0], t227[0], t225[1]));
-  store_lanes(M_inv + 64, make_lanes(t226[1], t227[1], t225[2], t226[2]));
-  store_lanes(M_inv + 68, make_lanes(t227[2], t225[3], t226[3], t227[3]));
-  store_lanes(M_inv + 144, make_lanes(t208[0], t218[0], t222[0], t227[0]));
-  store_lanes(M_inv + 252, make_lanes(t208[2], t218[2], t222[2], t227[2]));
+  store_transposed_lanes<3>({M_inv + 60, M_inv + 63, M_inv + 66, M_inv + 69}, {t225, t226, t227});
   const Scalar t228 = t183 - (t151 * t175);
+  M_inv[22] = t228;
   const Scalar t229 = ((t151 * t177) - (t150 * t178)) - t184;
+  M_inv[40] = t229;
   const Scalar t230 = t185 + (((t151 * t179) + (t150 * t180)) + (t149 * t181));
+  M_inv[58] = t230;
   store_lanes(M_inv + 72, make_lanes(t182, t228, t229, t230));
   const Lane t231 = ((((t151 * t192) + (t150 * t193)) - (t149 * t194)) - (t124 * t195)) - t197;
   const Lane t232 = t205 + ((((t151 * t201) + (t150 * t202)) - (t149 * t203)) + (t124 * t204));
   const Lane t233 = t212 + ((((t151 * t208) + (t150 * t209)) - (t149 * t210)) + (t124 * t211));
-  store_lanes(M_inv + 80, make_lanes(t233[0], t231[1], t232[1], t233[1]));
-  store_lanes(M_inv + 84, make_lanes(t231[2], t232[2], t233[2], t231[3]));
+  store_transposed_lanes<3>({M_inv + 78, M_inv + 81, M_inv + 84, M_inv + 87}, {t231, t232, t233});
   const Scalar t234 = t188 + (t155 * t175);
-  store_lanes(M_inv + 20, make_lanes(t219, t223, t228, t234));
-  store_lanes(M_inv + 88, make_lanes(t232[3], t233[3], t187, t234));
+  M_inv[23] = t234;
   const Scalar t235 = t189 - ((t155 * t177) + (t154 * t178));
-  store_lanes(M_inv + 40, make_lanes(t229, t235, t220[0], t221[0]));
+  M_inv[41] = t235;
   const Scalar t236 = t190 + (((t154 * t180) - (t155 * t179)) - (t153 * t181));
-  store_lanes(M_inv + 56, make_lanes(t224, t132 + (((t148 * t179) + (t147 * t180)) + (t133 * t181)), t230, t236));
+  M_inv[59] = t236;
+  store_lanes(M_inv + 90, make_lanes(t187, t234, t235, t236));
   const Scalar t237 = t191 + ((((t154 * t183) - (t155 * t182)) - (t153 * t184)) + (t152 * t185));
-  store_lanes(M_inv + 76, make_lanes(t123 + ((((t151 * t182) + (t150 * t183)) + (t149 * t184)) + (t124 * t185)), t237, t231[0], t232[0]));
-  store_lanes(M_inv + 92, make_lanes(t235, t236, t237, t109 + (((((t155 * t186) + (t154 * t188)) + (t153 * t189)) + (t152 * t190)) + (t110 * t191))));
+  M_inv[77] = t237;
+  M_inv[94] = t237;
   const Lane t238 = (((((t154 * t193) - (t155 * t192)) + (t153 * t194)) - (t152 * t195)) - (t110 * t197)) - t199;
-  store_lanes(M_inv + 164, make_lanes(t220[1], t225[1], t231[1], t238[1]));
-  store_lanes(M_inv + 272, make_lanes(t220[3], t225[3], t231[3], t238[3]));
+  store_transposed_lanes<6>({M_inv + 108, M_inv + 162, M_inv + 216, M_inv + 270}, {t192, t216, t220, t225, t231, t238});
   const Lane t239 = t206 + (((((t154 * t202) - (t155 * t201)) + (t153 * t203)) + (t152 * t204)) + (t110 * t205));
-  store_lanes(M_inv + 128, make_lanes(t221[0], t226[0], t232[0], t239[0]));
-  store_lanes(M_inv + 236, make_lanes(t221[2], t226[2], t232[2], t239[2]));
+  store_transposed_lanes<6>({M_inv + 126, M_inv + 180, M_inv + 234, M_inv + 288}, {t201, t217, t221, t226, t232, t239});
   const Lane t240 = t213 + (((((t154 * t209) - (t155 * t208)) + (t153 * t210)) + (t152 * t211)) + (t110 * t212));
-  store_lanes(M_inv + 96, make_lanes(t238[0], t239[0], t240[0], t238[1]));
-  store_lanes(M_inv + 100, make_lanes(t239[1], t240[1], t238[2], t239[2]));
-  store_lanes(M_inv + 104, make_lanes(t240[2], t238[3], t239[3], t240[3]));
-  store_lanes(M_inv + 200, make_lanes(t222[1], t227[1], t233[1], t240[1]));
-  store_lanes(M_inv + 308, make_lanes(t222[3], t227[3], t233[3], t240[3]));
+  store_transposed_lanes<6>({M_inv + 144, M_inv + 198, M_inv + 252, M_inv + 306}, {t208, t218, t222, t227, t233, t240});
+  store_transposed_lanes<3>({M_inv + 96, M_inv + 99, M_inv + 102, M_inv + 105}, {t238, t239, t240});
   const Lane t241 = t95 + ((((((t160 * t192) + (t159 * t193)) + (t158 * t194)) + (t157 * t195)) + (t156 * t197)) + (t96 * t199));
   const Lane t242 = ((((((t166 * t192) + (t165 * t193)) + (t164 * t194)) - (t163 * t195)) - (t162 * t197)) - (t161 * t199)) - t207;
-  store_lanes(M_inv + 112, make_lanes(t231[0], t238[0], t241[0], t242[0]));
   const Lane t243 = (((((t166 * t201) + (t165 * t202)) + (t164 * t203)) + (t163 * t204)) + (t162 * t205)) + (t161 * t206);
   const Lane t244 = t79 + (t243 + (t80 * t207));
   const Lane t245 = t214 + ((((((t174 * t192) + (t172 * t193)) + (t171 * t194)) - (t170 * t195)) - (t169 * t197)) - (t168 * t199));
+  store_transposed_lanes<3>({M_inv + 114, M_inv + 171, M_inv + 228, M_inv + 285}, {t241, t242, t245});
   const Lane t246 = (((((t174 * t201) + (t172 * t202)) + (t171 * t203)) + (t170 * t204)) + (t169 * t205)) + (t168 * t206);
   const Lane t247 = (t246 - (t167 * t207)) - t215;
-  store_lanes(M_inv + 148, make_lanes(t233[0], t240[0], t245[0], t247[0]));
-  store_lanes(M_inv + 304, make_lanes(t244[3], t247[3], t208[3], t218[3]));
+  store_transposed_lanes<3>({M_inv + 132, M_inv + 189, M_inv + 246, M_inv + 303}, {t242, t244, t247});
   const Lane t248 = (((((t174 * t208) + (t172 * t209)) + (t171 * t210)) + (t170 * t211)) + (t169 * t212)) + (t168 * t213);
   const Lane t249 = Scalar(2057.0036861506055) + ((t248 + (t167 * t214)) + (t62 * t215));
+  store_transposed_lanes<3>({M_inv + 150, M_inv + 207, M_inv + 264, M_inv + 321}, {t245, t247, t249});
   const Lane t250 = rotate_lanes<1>(t192);
   const Lane t251 = rotate_lanes<1>(t193);
   const Lane t252 = rotate_lanes<1>(t194);
@@ -354,7 +342,6 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Lane t254 = rotate_lanes<1>(t198);
   const Lane t255 = rotate_lanes<1>(t200);
   const Lane t256 = (((((t160 * t250) + (t159 * t251)) + (t158 * t252)) - (t157 * t253)) - (t156 * t254)) - (t96 * t255);
-  store_lanes(M_inv + 228, make_lanes(t241[2], t242[2], t245[2], t256[2]));
   const Lane t257 = rotate_lanes<1>(t201);
   const Lane t258 = rotate_lanes<1>(t202);
   const Lane t259 = rotate_lanes<1>(t203);
@@ -362,7 +349,6 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Lane t261 = rotate_lanes<1>(t205);
   const Lane t262 = rotate_lanes<1>(t206);
   const Lane t263 = (((((t160 * t257) + (t159 * t258)) + (t158 * t259)) - (t157 * t260)) - (t156 * t261)) - (t96 * t262);
-  store_lanes(M_inv + 172, make_lanes(t242[1], t245[1], t256[1], t263[1]));
   const Lane t264 = rotate_lanes<1>(t208);
   const Lane t265 = rotate_lanes<1>(t209);
   const Lane t266 = rotate_lanes<1>(t210);
@@ -370,31 +356,18 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Lane t268 = rotate_lanes<1>(t212);
   const Lane t269 = rotate_lanes<1>(t213);
   const Lane t270 = (((((t160 * t264) + (t159 * t265)) + (t158 * t266)) - (t157 * t267)) - (t156 * t268)) - (t96 * t269);
-  store_lanes(M_inv + 116, make_lanes(t245[0], t256[0], t263[0], t270[0]));
-  store_lanes(M_inv + 232, make_lanes(t263[2], t270[2], t201[2], t217[2]));
+  store_transposed_lanes<3>({M_inv + 117, M_inv + 174, M_inv + 231, M_inv + 276}, {t256, t263, t270});
   const Lane t271 = (((((t166 * t250) + (t165 * t251)) + (t164 * t252)) + (t163 * t253)) + (t162 * t254)) + (t161 * t255);
-  store_lanes(M_inv + 132, make_lanes(t242[0], t244[0], t247[0], t271[0]));
   const Lane t272 = (((((t166 * t257) + (t165 * t258)) + (t164 * t259)) + (t163 * t260)) + (t162 * t261)) + (t161 * t262);
-  store_lanes(M_inv + 184, make_lanes(t232[1], t239[1], t263[0], t272[0]));
-  store_lanes(M_inv + 292, make_lanes(t232[3], t239[3], t271[3], t272[3]));
   const Lane t273 = (((((t166 * t264) + (t165 * t265)) + (t164 * t266)) + (t163 * t267)) + (t162 * t268)) + (t161 * t269);
-  store_lanes(M_inv + 248, make_lanes(t247[2], t271[2], t272[2], t273[2]));
+  store_transposed_lanes<3>({M_inv + 135, M_inv + 192, M_inv + 249, M_inv + 294}, {t271, t272, t273});
   const Lane t274 = (((((t174 * t250) + (t172 * t251)) + (t171 * t252)) + (t170 * t253)) + (t169 * t254)) + (t168 * t255);
-  store_lanes(M_inv + 124, make_lanes(t271[3], t274[3], t201[0], t217[0]));
-  store_lanes(M_inv + 168, make_lanes(t256[0], t271[0], t274[0], t241[1]));
-  store_lanes(M_inv + 264, make_lanes(t245[2], t247[2], t249[2], t274[2]));
-  store_lanes(M_inv + 284, make_lanes(t274[2], t241[3], t242[3], t245[3]));
+  store_transposed_lanes<3>({M_inv + 168, M_inv + 225, M_inv + 282, M_inv + 123}, {t256, t271, t274});
   const Lane t275 = (((((t174 * t257) + (t172 * t258)) + (t171 * t259)) + (t170 * t260)) + (t169 * t261)) + (t168 * t262);
-  store_lanes(M_inv + 188, make_lanes(t275[0], t242[1], t244[1], t247[1]));
-  store_lanes(M_inv + 208, make_lanes(t247[1], t249[1], t274[1], t275[1]));
-  store_lanes(M_inv + 244, make_lanes(t272[1], t275[1], t242[2], t244[2]));
-  store_lanes(M_inv + 300, make_lanes(t263[2], t272[2], t275[2], t242[3]));
+  store_transposed_lanes<3>({M_inv + 186, M_inv + 243, M_inv + 300, M_inv + 141}, {t263, t272, t275});
   const Lane t276 = (((((t174 * t264) + (t172 * t265)) + (t171 * t266)) + (t170 * t267)) + (t169 * t268)) + (t168 * t269);
-  store_lanes(M_inv + 152, make_lanes(t249[0], t274[0], t275[0], t276[0]));
-  store_lanes(M_inv + 160, make_lanes(t273[3], t276[3], t192[1], t216[1]));
-  store_lanes(M_inv + 204, make_lanes(t270[0], t273[0], t276[0], t245[1]));
-  store_lanes(M_inv + 268, make_lanes(t275[2], t276[2], t192[3], t216[3]));
-  store_lanes(M_inv + 320, make_lanes(t276[2], t245[3], t247[3], t249[3]));
+  store_transposed_lanes<3>({M_inv + 153, M_inv + 210, M_inv + 267, M_inv + 312}, {t274, t275, t276});
+  store_transposed_lanes<3>({M_inv + 204, M_inv + 261, M_inv + 318, M_inv + 159}, {t270, t273, t276});
   const Lane t277 = rotate_lanes<2>(t192);
   const Lane t278 = rotate_lanes<2>(t193);
   const Lane t279 = rotate_lanes<2>(t194);
@@ -402,7 +375,6 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Lane t281 = rotate_lanes<2>(t198);
   const Lane t282 = rotate_lanes<2>(t200);
   const Lane t283 = (((((t160 * t277) + (t159 * t278)) + (t158 * t279)) - (t157 * t280)) - (t156 * t281)) - (t96 * t282);
-  store_lanes(M_inv + 276, make_lanes(t256[3], t263[3], t270[3], t283[1]));
   const Lane t284 = rotate_lanes<2>(t201);
   const Lane t285 = rotate_lanes<2>(t202);
   const Lane t286 = rotate_lanes<2>(t203);
@@ -410,7 +382,6 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Lane t288 = rotate_lanes<2>(t205);
   const Lane t289 = rotate_lanes<2>(t206);
   const Lane t290 = (((((t160 * t284) + (t159 * t285)) + (t158 * t286)) - (t157 * t287)) - (t156 * t288)) - (t96 * t289);
-  store_lanes(M_inv + 192, make_lanes(t271[1], t272[1], t273[1], t290[3]));
   const Lane t291 = rotate_lanes<2>(t208);
   const Lane t292 = rotate_lanes<2>(t209);
   const Lane t293 = rotate_lanes<2>(t210);
@@ -418,29 +389,16 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Lane t295 = rotate_lanes<2>(t212);
   const Lane t296 = rotate_lanes<2>(t213);
   const Lane t297 = (((((t160 * t291) + (t159 * t292)) + (t158 * t293)) - (t157 * t294)) - (t156 * t295)) - (t96 * t296);
-  store_lanes(M_inv + 312, make_lanes(t274[3], t275[3], t276[3], t297[1]));
   const Lane t298 = (((((t166 * t277) + (t165 * t278)) + (t164 * t279)) + (t163 * t280)) + (t162 * t281)) + (t161 * t282);
-  store_lanes(M_inv + 220, make_lanes(t231[2], t238[2], t283[0], t298[0]));
   const Lane t299 = (((((t166 * t284) + (t165 * t285)) + (t164 * t286)) + (t163 * t287)) + (t162 * t288)) + (t161 * t289);
-  store_lanes(M_inv + 136, make_lanes(t272[0], t273[0], t290[2], t299[2]));
   const Lane t300 = (((((t166 * t291) + (t165 * t292)) + (t164 * t293)) + (t163 * t294)) + (t162 * t295)) + (t161 * t296);
-  store_lanes(M_inv + 256, make_lanes(t233[2], t240[2], t297[0], t300[0]));
   const Lane t301 = (((((t174 * t277) + (t172 * t278)) + (t171 * t279)) + (t170 * t280)) + (t169 * t281)) + (t168 * t282);
-  store_lanes(M_inv + 120, make_lanes(t283[2], t298[2], t301[2], t256[3]));
-  store_lanes(M_inv + 176, make_lanes(t270[1], t283[3], t298[3], t301[3]));
-  store_lanes(M_inv + 224, make_lanes(t301[0], t256[1], t271[1], t274[1]));
-  store_lanes(M_inv + 280, make_lanes(t298[1], t301[1], t256[2], t271[2]));
+  store_transposed_lanes<3>({M_inv + 222, M_inv + 279, M_inv + 120, M_inv + 177}, {t283, t298, t301});
   const Lane t302 = (((((t174 * t284) + (t172 * t285)) + (t171 * t286)) + (t170 * t287)) + (t169 * t288)) + (t168 * t289);
-  store_lanes(M_inv + 140, make_lanes(t302[2], t263[3], t272[3], t275[3]));
-  store_lanes(M_inv + 196, make_lanes(t299[3], t302[3], t208[1], t218[1]));
-  store_lanes(M_inv + 240, make_lanes(t290[0], t299[0], t302[0], t263[1]));
-  store_lanes(M_inv + 296, make_lanes(t273[3], t290[1], t299[1], t302[1]));
+  store_transposed_lanes<3>({M_inv + 240, M_inv + 297, M_inv + 138, M_inv + 195}, {t290, t299, t302});
   const Lane t303 = (((((t174 * t291) + (t172 * t292)) + (t171 * t293)) + (t170 * t294)) + (t169 * t295)) + (t168 * t296);
   // outputs
-  store_lanes(M_inv + 156, make_lanes(t297[2], t300[2], t303[2], t270[3]));
-  store_lanes(M_inv + 212, make_lanes(t276[1], t297[3], t300[3], t303[3]));
-  store_lanes(M_inv + 260, make_lanes(t303[0], t270[1], t273[1], t276[1]));
-  store_lanes(M_inv + 316, make_lanes(t300[1], t303[1], t270[2], t273[2]));
+  store_transposed_lanes<3>({M_inv + 258, M_inv + 315, M_inv + 156, M_inv + 213}, {t297, t300, t303});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_inverse_a260f6b5ee81
+}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_inverse_d5ce2772dd8b

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::frame_placements_4b5d70afbc53 {
+namespace rbdc_gen::mini_cheetah::common::frame_placements_16e83f9d230b {
 
 /// Placements of the scene's frames: W_R_F and the origin (paper 000 Eqs. 15-18).
 ///
@@ -43,6 +43,9 @@ RBDC_HOST_DEVICE inline void frame_placements(const Scalar* q, Scalar* R, Scalar
   const Lane cos_lanes_hip_joint = load_lanes(joint_trig.cos + 4);
   const Lane sin_lanes_knee_joint = load_lanes(joint_trig.sin + 8);
   const Lane cos_lanes_knee_joint = load_lanes(joint_trig.cos + 8);
+  p[0] = q[0];
+  p[1] = q[1];
+  p[2] = q[2];
   const Scalar t0 = q[4] + q[4];
   const Scalar t1 = q[5] + q[5];
   const Scalar t2 = q[6] + q[6];
@@ -67,6 +70,7 @@ RBDC_HOST_DEVICE inline void frame_placements(const Scalar* q, Scalar* R, Scalar
   const Scalar t20 = t8 + t9;
   store_lanes(R + 4, make_lanes(t17, t20, t15, t18));
   const Scalar t21 = Scalar(1) - (t3 + t4);
+  R[8] = t21;
   // world frames: body 1 LF_abad/RF_abad/LH_abad/RH_abad
   const Lane t22 = (t14 * cos_lanes_abad_joint) + (t15 * sin_lanes_abad_joint);
   const Lane t23 = (t15 * cos_lanes_abad_joint) - (t14 * sin_lanes_abad_joint);
@@ -89,31 +93,17 @@ RBDC_HOST_DEVICE inline void frame_placements(const Scalar* q, Scalar* R, Scalar
   // world frames: body 3 LF_knee/RF_knee/LH_knee/RH_knee
   const Lane t39 = (t33 * cos_lanes_knee_joint) - (t34 * sin_lanes_knee_joint);
   const Lane t40 = (t33 * sin_lanes_knee_joint) + (t34 * cos_lanes_knee_joint);
-  store_lanes(R + 12, make_lanes(t29[0], t30[0], t32[0], t40[0]));
   const Lane t41 = -((t35 * cos_lanes_knee_joint) + (t36 * sin_lanes_knee_joint));
   const Lane t42 = (t36 * cos_lanes_knee_joint) - (t35 * sin_lanes_knee_joint);
-  store_lanes(R + 40, make_lanes(t30[3], t32[3], t40[3], t42[3]));
   const Lane t43 = (t37 * cos_lanes_knee_joint) - (t38 * sin_lanes_knee_joint);
-  store_lanes(R + 8, make_lanes(t21, t39[0], t41[0], t43[0]));
-  store_lanes(R + 20, make_lanes(t43[1], t29[1], t30[1], t32[1]));
-  store_lanes(R + 28, make_lanes(t41[2], t43[2], t29[2], t30[2]));
-  store_lanes(R + 36, make_lanes(t39[3], t41[3], t43[3], t29[3]));
   const Lane t44 = (t37 * sin_lanes_knee_joint) + (t38 * cos_lanes_knee_joint);
-  store_lanes(R + 16, make_lanes(t42[0], t44[0], t39[1], t41[1]));
-  store_lanes(R + 24, make_lanes(t40[1], t42[1], t44[1], t39[2]));
-  store_lanes(R + 32, make_lanes(t32[2], t40[2], t42[2], t44[2]));
-  R[44] = t44[3];
+  store_transposed_lanes<9>({R + 9, R + 18, R + 27, R + 36}, {t39, t41, t43, t29, t30, t32, t40, t42, t44});
   // placement of frame LF_foot/RF_foot/LH_foot/RH_foot
   const Lane t45 = (((q[0] + ((t13 * lane_c[1]) + (t14 * lane_c[2]))) + (t22 * lane_c[3])) - (Scalar(0.209) * t34)) - ((lane_c[0] * t22) + (Scalar(0.195) * t40));
-  store_lanes(p + 0, make_lanes(q[0], q[1], q[2], t45[0]));
-  p[12] = t45[3];
   const Lane t46 = (((q[1] + ((t16 * lane_c[1]) + (t17 * lane_c[2]))) + (t24 * lane_c[3])) - (Scalar(0.209) * t36)) - ((lane_c[0] * t24) + (Scalar(0.195) * t42));
-  p[13] = t46[3];
   const Lane t47 = (((q[2] + ((t19 * lane_c[1]) + (t20 * lane_c[2]))) + (t26 * lane_c[3])) - (Scalar(0.209) * t38)) - ((lane_c[0] * t26) + (Scalar(0.195) * t44));
   // outputs
-  store_lanes(p + 4, make_lanes(t46[0], t47[0], t45[1], t46[1]));
-  store_lanes(p + 8, make_lanes(t47[1], t45[2], t46[2], t47[2]));
-  p[14] = t47[3];
+  store_transposed_lanes<3>({p + 3, p + 6, p + 9, p + 12}, {t45, t46, t47});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::frame_placements_4b5d70afbc53
+}  // namespace rbdc_gen::mini_cheetah::common::frame_placements_16e83f9d230b

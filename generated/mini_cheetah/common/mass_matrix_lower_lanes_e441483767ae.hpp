@@ -2,27 +2,27 @@
 // input: robots/mini_cheetah.urdf (sha256 b23f00116f98e183b9f7166a74175cc628a8919051c201a68bfa170439e8eeca)
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// mass_matrix_lanes for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
+// mass_matrix_lower_lanes for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
 // folded, shared subexpressions computed once, only what reaches the outputs kept. The file is named
-// by a hash of its content: every scene whose mass_matrix_lanes is this code includes this one file
-// and brings the function into its namespace (<scene>/mass_matrix_lanes.hpp).
+// by a hash of its content: every scene whose mass_matrix_lower_lanes is this code includes this one file
+// and brings the function into its namespace (<scene>/mass_matrix_lower_lanes.hpp).
 #pragma once
 
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::mass_matrix_lanes_c24842f6cad7 {
+namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_lanes_e441483767ae {
 
-/// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5), the four isomorphic limbs' passes
-/// evaluated together in SIMD lanes, the trunk scalar; equals mass_matrix.
+/// The lower triangle of M (CRBA, paper 000 Alg. 5), the four isomorphic limbs' passes evaluated
+/// together in SIMD lanes, the trunk scalar; equals mass_matrix_lower.
 ///
 /// @param q in  19x1: configuration (position, quaternion w x y z, joints)
-/// @param M out 18x18: mass matrix, full symmetric
+/// @param M out 18x18: mass matrix, lower triangle (row ≥ column); the entries above the diagonal are not written
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             388  366    0     0    24   27    805
 template <class Scalar>
-RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexcept {
+RBDC_HOST_DEVICE inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_c[12] = {make_lanes(Scalar(5.8e-05), Scalar(-5.8e-05), Scalar(5.8e-05), Scalar(-5.8e-05)),
@@ -49,23 +49,36 @@ RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexc
   const Lane cos_lanes_hip_joint = load_lanes(joint_trig.cos + 4);
   const Lane sin_lanes_knee_joint = load_lanes(joint_trig.sin + 8);
   const Lane cos_lanes_knee_joint = load_lanes(joint_trig.cos + 8);
-  store_lanes(M + 92, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(8.251999999999999)));
-  store_lanes(M + 120, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 136, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 140, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(M + 57, make_lanes(Scalar(8.251999999999999), Scalar(0), Scalar(0), Scalar(0)));
+  M[69] = Scalar(0);
+  M[76] = Scalar(8.251999999999999);
+  M[77] = Scalar(0);
+  M[95] = Scalar(8.251999999999999);
+  store_lanes(M + 117, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(M + 121, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  M[125] = Scalar(0);
+  store_lanes(M + 137, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  M[141] = Scalar(0);
+  M[142] = Scalar(0);
+  M[143] = Scalar(0);
   store_lanes(M + 152, make_lanes(Scalar(0.000486144), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(M + 156, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 176, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 192, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 212, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 224, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 240, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 260, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 276, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 280, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 296, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 312, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 316, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  M[160] = Scalar(0);
+  M[161] = Scalar(0);
+  store_lanes(M + 174, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  M[178] = Scalar(0);
+  M[179] = Scalar(0);
+  store_lanes(M + 194, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(M + 209, make_lanes(Scalar(0.000486144), Scalar(0), Scalar(0), Scalar(0)));
+  M[213] = Scalar(0);
+  M[214] = Scalar(0);
+  M[215] = Scalar(0);
+  M[231] = Scalar(0);
+  M[232] = Scalar(0);
+  M[233] = Scalar(0);
+  M[251] = Scalar(0);
+  store_lanes(M + 266, make_lanes(Scalar(0.000486144), Scalar(0), Scalar(0), Scalar(0)));
+  M[323] = Scalar(0.000486144);
   // inward pass, composite inertias (CRBA): body 3 LF_knee/RF_knee/LH_knee/RH_knee
   const Lane t0 = Scalar(0.003904) * sin_lanes_knee_joint;
   const Lane t1 = Scalar(0.003904) * cos_lanes_knee_joint;
@@ -77,34 +90,26 @@ RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexc
   const Lane t7 = Scalar(0.002398904) + (((cos_lanes_knee_joint * (Scalar(0.000483144) * cos_lanes_knee_joint)) + (sin_lanes_knee_joint * (Scalar(6e-06) * sin_lanes_knee_joint))) + (t5 + (Scalar(0.209) * (t1 + Scalar(0.013375999999999999)))));
   const Lane t8 = Scalar(1.3e-05) + (((sin_lanes_knee_joint * t3) - (cos_lanes_knee_joint * t2)) - (Scalar(0.000815936) * sin_lanes_knee_joint));
   const Lane t9 = Scalar(0.0023566) + (Scalar(0.000486144) - ((Scalar(0.209) * t4) - t5));
+  M[304] = t9[3];
   const Lane t10 = Scalar(0.000570304) + ((sin_lanes_knee_joint * t2) + (cos_lanes_knee_joint * t3));
   const Lane t11 = Scalar(0.000486144) + t5;
-  store_lanes(M + 208, make_lanes(t11[1], Scalar(0.000486144), Scalar(0), Scalar(0)));
-  store_lanes(M + 248, make_lanes(t11[2], Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(M + 133, make_lanes(t9[0], t11[0], Scalar(0), Scalar(0)));
+  store_lanes(M + 190, make_lanes(t9[1], t11[1], Scalar(0), Scalar(0)));
+  store_lanes(M + 247, make_lanes(t9[2], t11[2], Scalar(0), Scalar(0)));
+  M[305] = t11[3];
   const Lane t12 = t0 * sin_lanes_hip_joint;
   const Lane t13 = t0 * cos_lanes_hip_joint;
   const Lane t14 = (t1 * sin_lanes_hip_joint) + t13;
   const Lane t15 = (t1 * cos_lanes_hip_joint) - t12;
+  M[71] = t15[3];
   const Lane t16 = lane_c[4] * t14;
-  store_lanes(M + 116, make_lanes(t16[0], Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 204, make_lanes(Scalar(0), Scalar(0), Scalar(0), t16[1]));
-  store_lanes(M + 264, make_lanes(t16[2], t11[2], Scalar(0.000486144), Scalar(0)));
-  store_lanes(M + 320, make_lanes(Scalar(0), t16[3], t11[3], Scalar(0.000486144)));
   const Lane t17 = lane_c[4] * t15;
   const Lane t18 = t14 * sin_lanes_abad_joint;
   const Lane t19 = -t18;
   const Lane t20 = t14 * cos_lanes_abad_joint;
-  store_lanes(M + 148, make_lanes(t19[0], t20[0], t16[0], t11[0]));
-  store_lanes(M + 256, make_lanes(t19[2], t20[2], Scalar(0), Scalar(0)));
   const Lane t21 = t16 + (lane_c[6] * t20);
   const Lane t22 = ((t17 * sin_lanes_abad_joint) - (t11 * cos_lanes_abad_joint)) - (lane_c[5] * t20);
-  store_lanes(M + 196, make_lanes(Scalar(0), Scalar(0), t21[1], t22[1]));
-  store_lanes(M + 304, make_lanes(t9[3], t11[3], t21[3], t22[3]));
   const Lane t23 = -(((t11 * sin_lanes_abad_joint) + (t17 * cos_lanes_abad_joint)) + ((lane_c[5] * t18) + (t15 * lane_c[6])));
-  store_lanes(M + 144, make_lanes(t21[0], t22[0], t23[0], t15[0]));
-  store_lanes(M + 200, make_lanes(t23[1], t15[1], t19[1], t20[1]));
-  store_lanes(M + 252, make_lanes(t21[2], t22[2], t23[2], t15[2]));
-  store_lanes(M + 308, make_lanes(t23[3], t15[3], t19[3], t20[3]));
   // inward pass, composite inertias (CRBA): body 2 LF_hip/RF_hip/LH_hip/RH_hip
   const Lane t24 = t6 * sin_lanes_hip_joint;
   const Lane t25 = t12 + (t6 * cos_lanes_hip_joint);
@@ -117,48 +122,31 @@ RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexc
   const Lane t32 = (t10 * cos_lanes_hip_joint) - t26;
   const Lane t33 = t13 - t24;
   const Lane t34 = -t25;
-  store_lanes(M + 60, make_lanes(Scalar(0), t34[0], t15[0], Scalar(0)));
-  store_lanes(M + 64, make_lanes(t34[1], t15[1], Scalar(0), t34[2]));
-  store_lanes(M + 68, make_lanes(t15[2], Scalar(0), t34[3], t15[3]));
+  store_lanes(M + 61, make_lanes(t34[0], t15[0], Scalar(0), t34[1]));
+  store_lanes(M + 65, make_lanes(t15[1], Scalar(0), t34[2], t15[2]));
+  M[70] = t34[3];
   const Lane t35 = lane_c[4] * t33;
   const Lane t36 = lane_c[4] * t25;
   const Lane t37 = Scalar(0.00108084) + (((cos_lanes_hip_joint * ((t7 * cos_lanes_hip_joint) + t26)) + (sin_lanes_hip_joint * (t27 + (t10 * sin_lanes_hip_joint)))) + Scalar(0.0014252559999999997));
-  store_lanes(M + 168, make_lanes(Scalar(0), Scalar(0), Scalar(0), t37[1]));
   const Lane t38 = lane_c[0] + (t29 - t35);
   const Lane t39 = Scalar(4.5e-07) - ((cos_lanes_hip_joint * t28) + (sin_lanes_hip_joint * t32));
   const Lane t40 = Scalar(0.00056) + t9;
   const Lane t41 = lane_c[1] + ((t30 - t31) - t36);
   const Lane t42 = Scalar(0.00114384) + (((cos_lanes_hip_joint * t32) - (sin_lanes_hip_joint * t28)) + Scalar(0.0014252559999999997));
   const Lane t43 = t35 - t29;
-  store_lanes(M + 132, make_lanes(t43[0], t9[0], t11[0], Scalar(0)));
-  store_lanes(M + 172, make_lanes(t43[1], t16[1], Scalar(0), Scalar(0)));
-  store_lanes(M + 188, make_lanes(Scalar(0), t43[1], t9[1], t11[1]));
-  store_lanes(M + 228, make_lanes(t37[2], t43[2], t16[2], Scalar(0)));
-  store_lanes(M + 244, make_lanes(Scalar(0), Scalar(0), t43[2], t9[2]));
-  store_lanes(M + 284, make_lanes(Scalar(0), t37[3], t43[3], t16[3]));
-  store_lanes(M + 300, make_lanes(Scalar(0), Scalar(0), Scalar(0), t43[3]));
+  store_transposed_lanes<3>({M + 114, M + 171, M + 228, M + 285}, {t37, t43, t16});
   const Lane t44 = (t31 - t30) + t36;
   const Lane t45 = sin_lanes_abad_joint * t33;
   const Lane t46 = -t45;
   const Lane t47 = cos_lanes_abad_joint * t33;
-  store_lanes(M + 184, make_lanes(t46[1], t47[1], Scalar(0), Scalar(0)));
-  store_lanes(M + 292, make_lanes(t46[3], t47[3], Scalar(0), Scalar(0)));
   const Lane t48 = t43 + (lane_c[6] * t47);
   const Lane t49 = -(((t9 * cos_lanes_abad_joint) + (sin_lanes_abad_joint * t44)) + (lane_c[5] * t47));
-  store_lanes(M + 124, make_lanes(Scalar(0), Scalar(0), t48[0], t49[0]));
-  store_lanes(M + 232, make_lanes(Scalar(0), Scalar(0), t48[2], t49[2]));
   const Lane t50 = ((cos_lanes_abad_joint * t44) - (t9 * sin_lanes_abad_joint)) + ((lane_c[6] * t25) - (lane_c[5] * t45));
-  store_lanes(M + 128, make_lanes(t50[0], t34[0], t46[0], t47[0]));
-  store_lanes(M + 180, make_lanes(t48[1], t49[1], t50[1], t34[1]));
-  store_lanes(M + 236, make_lanes(t50[2], t34[2], t46[2], t47[2]));
-  store_lanes(M + 288, make_lanes(t48[3], t49[3], t50[3], t34[3]));
   // inward pass, composite inertias (CRBA): body 1 LF_abad/RF_abad/LH_abad/RH_abad
   const Lane t51 = cos_lanes_abad_joint * lane_c[7];
   const Lane t52 = sin_lanes_abad_joint * t25;
   const Lane t53 = t51 - t52;
-  store_lanes(M + 96, make_lanes(t53[0], t47[0], t20[0], t53[1]));
-  store_lanes(M + 100, make_lanes(t47[1], t20[1], t53[2], t47[2]));
-  store_lanes(M + 104, make_lanes(t20[2], t53[3], t47[3], t20[3]));
+  store_transposed_lanes<3>({M + 96, M + 99, M + 102, M + 105}, {t53, t47, t20});
   const Lane t54 = (sin_lanes_abad_joint * lane_c[7]) + (cos_lanes_abad_joint * t25);
   const Lane t55 = (cos_lanes_abad_joint * t38) - (sin_lanes_abad_joint * t39);
   const Lane t56 = (sin_lanes_abad_joint * t38) + (cos_lanes_abad_joint * t39);
@@ -168,50 +156,26 @@ RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexc
   const Lane t60 = t57 + (cos_lanes_abad_joint * t42);
   const Lane t61 = t33 + lane_c[8];
   const Lane t62 = t53 + lane_c[9];
+  store_lanes(M + 0, make_lanes(Scalar(0.011253) + lane_sum(t37 - ((lane_c[6] * (t52 - t51)) + (t62 * lane_c[11]))), lane_sum(t55 - ((lane_c[6] * t33) + (lane_c[5] * t62))), lane_sum(t56 + (t54 * lane_c[10])), Scalar(0)));
   const Lane t63 = -t54;
-  store_lanes(M + 76, make_lanes(Scalar(8.251999999999999), Scalar(0), t63[0], t46[0]));
-  store_lanes(M + 80, make_lanes(t19[0], t63[1], t46[1], t19[1]));
-  store_lanes(M + 84, make_lanes(t63[2], t46[2], t19[2], t63[3]));
-  store_lanes(M + 112, make_lanes(t63[0], t53[0], t37[0], t43[0]));
-  store_lanes(M + 220, make_lanes(t63[2], t53[2], Scalar(0), Scalar(0)));
+  store_transposed_lanes<3>({M + 78, M + 81, M + 84, M + 87}, {t63, t46, t19});
   const Lane t64 = t56 - (lane_c[5] * t54);
-  store_lanes(M + 44, make_lanes(t23[0], t64[1], t50[1], t23[1]));
-  store_lanes(M + 48, make_lanes(t64[2], t50[2], t23[2], t64[3]));
-  store_lanes(M + 164, make_lanes(t64[1], Scalar(0), t63[1], t53[1]));
-  store_lanes(M + 272, make_lanes(t64[3], Scalar(0), t63[3], t53[3]));
+  store_transposed_lanes<3>({M + 42, M + 45, M + 48, M + 51}, {t64, t50, t23});
   const Lane t65 = ((sin_lanes_abad_joint * t59) + (cos_lanes_abad_joint * t60)) - (((t53 * lane_c[11]) + (lane_c[5] * (t24 - t13))) + ((t61 * lane_c[10]) - (lane_c[6] * t62)));
   const Scalar t66 = lane_sum(t61);
-  store_lanes(M + 40, make_lanes(t66, Scalar(0), t64[0], t50[0]));
+  M[23] = -t66;
   const Scalar t67 = lane_sum(t62);
+  M[5] = t67;
+  store_lanes(M + 38, make_lanes(Scalar(0.042673) + lane_sum(t65), -t67, t66, Scalar(0)));
   const Scalar t68 = lane_sum(t54);
-  store_lanes(M + 52, make_lanes(t50[3], t23[3], Scalar(0), t68));
-  const Scalar t69 = lane_sum(t55 - ((lane_c[6] * t33) + (lane_c[5] * t62)));
-  const Scalar t70 = lane_sum(t56 + (t54 * lane_c[10]));
-  store_lanes(M + 0, make_lanes(Scalar(0.011253) + lane_sum(t37 - ((lane_c[6] * (t52 - t51)) + (t62 * lane_c[11]))), t69, t70, Scalar(0)));
-  const Scalar t71 = lane_sum(((cos_lanes_abad_joint * ((cos_lanes_abad_joint * t40) - t57)) - (sin_lanes_abad_joint * (t58 - (sin_lanes_abad_joint * t42)))) - ((t33 * lane_c[10]) - (lane_c[5] * t61)));
-  store_lanes(M + 16, make_lanes(t48[3], t21[3], t69, Scalar(0.036203) + t71));
-  const Scalar t72 = lane_sum(((cos_lanes_abad_joint * t59) - (sin_lanes_abad_joint * t60)) - (lane_c[6] * t54));
-  const Lane t73 = t37 + (lane_c[6] * t53);
-  store_lanes(M + 8, make_lanes(t21[0], t73[1], t48[1], t21[1]));
-  store_lanes(M + 12, make_lanes(t73[2], t48[2], t21[2], t73[3]));
-  const Lane t74 = t55 - (lane_c[5] * t53);
-  store_lanes(M + 24, make_lanes(t74[0], t49[0], t22[0], t74[1]));
-  store_lanes(M + 28, make_lanes(t49[1], t22[1], t74[2], t49[2]));
-  store_lanes(M + 32, make_lanes(t22[2], t74[3], t49[3], t22[3]));
-  store_lanes(M + 108, make_lanes(t73[0], t74[0], t64[0], Scalar(0)));
-  store_lanes(M + 160, make_lanes(Scalar(0), Scalar(0), t73[1], t74[1]));
-  store_lanes(M + 216, make_lanes(t73[2], t74[2], t64[2], Scalar(0)));
-  store_lanes(M + 268, make_lanes(Scalar(0), Scalar(0), t73[3], t74[3]));
-  const Scalar t75 = -t68;
-  store_lanes(M + 4, make_lanes(t75, t67, t73[0], t48[0]));
-  store_lanes(M + 72, make_lanes(t75, Scalar(0), t66, Scalar(0)));
-  const Scalar t76 = -t66;
-  store_lanes(M + 20, make_lanes(t72, t68, Scalar(0), t76));
-  store_lanes(M + 88, make_lanes(t46[3], t19[3], t67, t76));
-  const Scalar t77 = -t67;
+  M[4] = -t68;
+  const Scalar t69 = lane_sum(((cos_lanes_abad_joint * ((cos_lanes_abad_joint * t40) - t57)) - (sin_lanes_abad_joint * (t58 - (sin_lanes_abad_joint * t42)))) - ((t33 * lane_c[10]) - (lane_c[5] * t61)));
+  store_lanes(M + 19, make_lanes(Scalar(0.036203) + t69, lane_sum(((cos_lanes_abad_joint * t59) - (sin_lanes_abad_joint * t60)) - (lane_c[6] * t54)), t68, Scalar(0)));
+  const Lane t70 = t37 + (lane_c[6] * t53);
+  store_transposed_lanes<3>({M + 6, M + 9, M + 12, M + 15}, {t70, t48, t21});
+  const Lane t71 = t55 - (lane_c[5] * t53);
   // outputs
-  store_lanes(M + 36, make_lanes(t70, t72, Scalar(0.042673) + lane_sum(t65), t77));
-  store_lanes(M + 56, make_lanes(t77, Scalar(8.251999999999999), Scalar(0), Scalar(0)));
+  store_transposed_lanes<3>({M + 24, M + 27, M + 30, M + 33}, {t71, t49, t22});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_lanes_c24842f6cad7
+}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_lanes_e441483767ae

@@ -2,18 +2,20 @@
 // input: robots/mini_cheetah.urdf (sha256 b23f00116f98e183b9f7166a74175cc628a8919051c201a68bfa170439e8eeca)
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// osc_open_chain for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
+// osc_open_chain_lanes for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
 // folded, shared subexpressions computed once, only what reaches the outputs kept. The file is named
-// by a hash of its content: every scene whose osc_open_chain is this code includes this one file
-// and brings the function into its namespace (<scene>/osc_open_chain.hpp).
+// by a hash of its content: every scene whose osc_open_chain_lanes is this code includes this one file
+// and brings the function into its namespace (<scene>/osc_open_chain_lanes.hpp).
 #pragma once
 
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::osc_open_chain_ea113d686854 {
+namespace rbdc_gen::mini_cheetah::common::osc_open_chain_lanes_652bd33bd1ce {
 
-/// Trunk operational-space Λ, J̄ᵀ, b with measured foot forces (paper 001 Table 1).
+/// Trunk operational-space Λ, J̄ᵀ, b with measured foot forces (paper 001 Table 1), the four
+/// isomorphic limbs' inward passes evaluated together in SIMD lanes, the trunk scalar; equals
+/// osc_open_chain.
 ///
 /// @param q in  19x1: configuration (position, quaternion w x y z, joints)
 /// @param v in  18x1: velocity (trunk ω, v in trunk coordinates, joint rates)
@@ -24,11 +26,8 @@ namespace rbdc_gen::mini_cheetah::common::osc_open_chain_ea113d686854 {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2392  1821    8     0    24   28   4273
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1195 arithmetic
-///   instructions, scalar tree 4233 (cost 5399), looped operational-space columns 7027
-///   (cost 9543)
 template <class Scalar>
-RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, const Scalar* f, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
+RBDC_HOST_DEVICE inline void osc_open_chain_lanes(const Scalar* q, const Scalar* v, const Scalar* f, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_f[3] = {transposed_lanes<3, 0>(f + 0),
@@ -385,12 +384,8 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Lane t296 = (lane_c[1] * t294) - ((cos_lanes_abad_joint * t201) - (sin_lanes_abad_joint * t202));
   const Lane t297 = ((lane_c[2] * t203) - (lane_c[1] * (t292 - t293))) - ((sin_lanes_abad_joint * t201) + (cos_lanes_abad_joint * t202));
   const Lane t298 = -t203;
-  store_lanes(JbarT + 0, make_lanes(t295[0], t296[0], t297[0], t298[0]));
-  store_lanes(JbarT + 36, make_lanes(t295[2], t296[2], t297[2], t298[2]));
   const Lane t299 = t293 - t292;
   const Lane t300 = -t294;
-  store_lanes(JbarT + 20, make_lanes(t297[1], t298[1], t299[1], t300[1]));
-  store_lanes(JbarT + 56, make_lanes(t297[3], t298[3], t299[3], t300[3]));
   const Lane t301 = t191 * t204;
   const Lane t302 = t121 - (t191 * t201);
   const Lane t303 = (((cos_lanes_hip_joint * t122) - (sin_lanes_hip_joint * t120)) + (lane_c[3] * t188)) + (t191 * t202);
@@ -401,13 +396,7 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Lane t308 = (cos_lanes_abad_joint * t305) - (sin_lanes_abad_joint * t301);
   const Lane t309 = (t191 - (t191 * t200)) + (lane_c[2] * t308);
   const Lane t310 = ((cos_lanes_abad_joint * t302) + (sin_lanes_abad_joint * t303)) - (lane_c[1] * t308);
-  store_lanes(JbarT + 4, make_lanes(t299[0], t300[0], t309[0], t310[0]));
-  store_lanes(JbarT + 40, make_lanes(t299[2], t300[2], t309[2], t310[2]));
   const Lane t311 = ((sin_lanes_abad_joint * t302) - (cos_lanes_abad_joint * t303)) - ((lane_c[1] * t306) + (lane_c[2] * t304));
-  store_lanes(JbarT + 8, make_lanes(t311[0], t304[0], t307[0], t308[0]));
-  store_lanes(JbarT + 24, make_lanes(t309[1], t310[1], t311[1], t304[1]));
-  store_lanes(JbarT + 44, make_lanes(t311[2], t304[2], t307[2], t308[2]));
-  store_lanes(JbarT + 60, make_lanes(t309[3], t310[3], t311[3], t304[3]));
   const Lane t312 = t198 * t204;
   const Lane t313 = (t118 - (t118 * t121)) - (t198 * t201);
   const Lane t314 = (((cos_lanes_hip_joint * t193) - (sin_lanes_hip_joint * t192)) + (lane_c[3] * t196)) - (t198 * t202);
@@ -417,17 +406,10 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Lane t318 = (cos_lanes_abad_joint * t312) + (sin_lanes_abad_joint * t317);
   const Lane t319 = -t318;
   const Lane t320 = (cos_lanes_abad_joint * t317) - (sin_lanes_abad_joint * t312);
-  store_lanes(JbarT + 16, make_lanes(t319[0], t320[0], t295[1], t296[1]));
-  store_lanes(JbarT + 52, make_lanes(t319[2], t320[2], t295[3], t296[3]));
   const Lane t321 = (t198 - (t198 * t200)) + (lane_c[2] * t320);
   const Lane t322 = ((cos_lanes_abad_joint * t313) - (sin_lanes_abad_joint * t314)) - (lane_c[1] * t320);
-  store_lanes(JbarT + 28, make_lanes(t307[1], t308[1], t321[1], t322[1]));
-  store_lanes(JbarT + 64, make_lanes(t307[3], t308[3], t321[3], t322[3]));
   const Lane t323 = ((sin_lanes_abad_joint * t313) + (cos_lanes_abad_joint * t314)) + ((lane_c[2] * t315) - (lane_c[1] * t318));
-  store_lanes(JbarT + 12, make_lanes(t321[0], t322[0], t323[0], t316[0]));
-  store_lanes(JbarT + 32, make_lanes(t323[1], t316[1], t319[1], t320[1]));
-  store_lanes(JbarT + 48, make_lanes(t321[2], t322[2], t323[2], t316[2]));
-  store_lanes(JbarT + 68, make_lanes(t323[3], t316[3], t319[3], t320[3]));
+  store_transposed_lanes<18>({JbarT + 0, JbarT + 18, JbarT + 36, JbarT + 54}, {t295, t296, t297, t298, t299, t300, t309, t310, t311, t304, t307, t308, t321, t322, t323, t316, t319, t320});
   // trunk task
   const Scalar t324 = ((v[1] * v[5]) - (v[2] * v[4])) - (Scalar(9.81) * (t58 - t61));
   const Scalar t325 = ((v[2] * v[3]) - (v[0] * v[5])) - (Scalar(9.81) * t68);
@@ -438,4 +420,4 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   b[5] = (((v[0] * t26) - (v[1] * t25)) + lane_sum(t288)) - (((t277 * t324) + (t278 * t325)) + (t281 * t326));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::osc_open_chain_ea113d686854
+}  // namespace rbdc_gen::mini_cheetah::common::osc_open_chain_lanes_652bd33bd1ce

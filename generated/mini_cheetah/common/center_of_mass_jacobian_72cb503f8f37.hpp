@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_6008a5a7afb5 {
+namespace rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_72cb503f8f37 {
 
 /// Centre-of-mass Jacobian J_c, ċ = J_c v, world frame.
 ///
@@ -62,10 +62,12 @@ RBDC_HOST_DEVICE inline void center_of_mass_jacobian(const Scalar* q, Scalar* J_
   const Scalar t16 = t6 + t11;
   const Scalar t17 = Scalar(1) - (t3 + t5);
   const Scalar t18 = t8 - t9;
+  J_c[16] = t18;
   const Scalar t19 = t7 - t10;
   const Scalar t20 = t8 + t9;
   store_lanes(J_c + 12, make_lanes(t14, t17, t20, t15));
   const Scalar t21 = Scalar(1) - (t3 + t4);
+  J_c[17] = t21;
   // world frames: body 1 LF_abad/RF_abad/LH_abad/RH_abad
   const Lane t22 = q[0] + ((t13 * lane_c[0]) + (t14 * lane_c[1]));
   const Lane t23 = q[1] + ((t16 * lane_c[0]) + (t17 * lane_c[1]));
@@ -110,33 +112,23 @@ RBDC_HOST_DEVICE inline void center_of_mass_jacobian(const Scalar* q, Scalar* J_
   const Lane t56 = t50 - (Scalar(1.238) * t24);
   const Lane t57 = Scalar(0.12118274357731461) * ((t16 * t56) - (t19 * t55));
   const Lane t58 = Scalar(0.12118274357731461) * ((t19 * t54) - (t13 * t56));
-  store_lanes(J_c + 16, make_lanes(t18, t21, t57[0], t58[0]));
   const Lane t59 = Scalar(0.12118274357731461) * ((t13 * t55) - (t16 * t54));
   // centre of mass Jacobian: body 2 LF_hip/RF_hip/LH_hip/RH_hip
   const Lane t60 = t45 - (Scalar(0.698) * t31);
   const Lane t61 = t46 - (Scalar(0.698) * t32);
   const Lane t62 = t47 - (Scalar(0.698) * t33);
   const Lane t63 = Scalar(0.12118274357731461) * ((t29 * t61) - (t27 * t62));
-  store_lanes(J_c + 36, make_lanes(t57[2], t58[2], t59[2], t63[2]));
   const Lane t64 = Scalar(0.12118274357731461) * ((t25 * t62) - (t29 * t60));
-  store_lanes(J_c + 28, make_lanes(t58[1], t59[1], t63[1], t64[1]));
   const Lane t65 = Scalar(0.12118274357731461) * ((t27 * t60) - (t25 * t61));
-  store_lanes(J_c + 20, make_lanes(t59[0], t63[0], t64[0], t65[0]));
   // centre of mass Jacobian: body 3 LF_knee/RF_knee/LH_knee/RH_knee
   const Lane t66 = t42 - t39;
   const Lane t67 = t43 - t40;
   const Lane t68 = t44 - t41;
   const Lane t69 = Scalar(0.12118274357731461) * ((t29 * t67) - (t27 * t68));
-  store_lanes(J_c + 48, make_lanes(t63[3], t64[3], t65[3], t69[3]));
   const Lane t70 = Scalar(0.12118274357731461) * ((t25 * t68) - (t29 * t66));
-  store_lanes(J_c + 40, make_lanes(t64[2], t65[2], t69[2], t70[2]));
-  J_c[52] = t70[3];
   const Lane t71 = Scalar(0.12118274357731461) * ((t27 * t66) - (t25 * t67));
   // outputs
-  store_lanes(J_c + 24, make_lanes(t69[0], t70[0], t71[0], t57[1]));
-  store_lanes(J_c + 32, make_lanes(t65[1], t69[1], t70[1], t71[1]));
-  store_lanes(J_c + 44, make_lanes(t71[2], t57[3], t58[3], t59[3]));
-  J_c[53] = t71[3];
+  store_transposed_lanes<9>({J_c + 18, J_c + 27, J_c + 36, J_c + 45}, {t57, t58, t59, t63, t64, t65, t69, t70, t71});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_6008a5a7afb5
+}  // namespace rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_72cb503f8f37

@@ -2,27 +2,29 @@
 // input: robots/mini_cheetah.urdf (sha256 b23f00116f98e183b9f7166a74175cc628a8919051c201a68bfa170439e8eeca)
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// mass_matrix_lower_lanes for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
+// mass_matrix_lower for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
 // folded, shared subexpressions computed once, only what reaches the outputs kept. The file is named
-// by a hash of its content: every scene whose mass_matrix_lower_lanes is this code includes this one file
-// and brings the function into its namespace (<scene>/mass_matrix_lower_lanes.hpp).
+// by a hash of its content: every scene whose mass_matrix_lower is this code includes this one file
+// and brings the function into its namespace (<scene>/mass_matrix_lower.hpp).
 #pragma once
 
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_lanes_828942d5cb38 {
+namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_df57aef74858 {
 
-/// The lower triangle of M (CRBA, paper 000 Alg. 5), the four isomorphic limbs' passes evaluated
-/// together in SIMD lanes, the trunk scalar; equals mass_matrix_lower.
+/// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5), its lower triangle only (n(n+1)/2 stores
+/// instead of n²): for Eigen's M.selfadjointView<Eigen::Lower>() and its LDLᵀ/LLᵀ.
 ///
 /// @param q in  19x1: configuration (position, quaternion w x y z, joints)
 /// @param M out 18x18: mass matrix, lower triangle (row ≥ column); the entries above the diagonal are not written
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             388  366    0     0    24   27    805
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 217 arithmetic
+///   instructions, scalar tree 781, looped CRBA 2252 (cost 3137)
 template <class Scalar>
-RBDC_HOST_DEVICE inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M) noexcept {
+RBDC_HOST_DEVICE inline void mass_matrix_lower(const Scalar* q, Scalar* M) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_c[12] = {make_lanes(Scalar(5.8e-05), Scalar(-5.8e-05), Scalar(5.8e-05), Scalar(-5.8e-05)),
@@ -51,8 +53,12 @@ RBDC_HOST_DEVICE inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M)
   const Lane cos_lanes_knee_joint = load_lanes(joint_trig.cos + 8);
   store_lanes(M + 57, make_lanes(Scalar(8.251999999999999), Scalar(0), Scalar(0), Scalar(0)));
   M[69] = Scalar(0);
-  store_lanes(M + 118, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 122, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  M[76] = Scalar(8.251999999999999);
+  M[77] = Scalar(0);
+  M[95] = Scalar(8.251999999999999);
+  store_lanes(M + 117, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(M + 121, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  M[125] = Scalar(0);
   store_lanes(M + 137, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   M[141] = Scalar(0);
   M[142] = Scalar(0);
@@ -61,13 +67,15 @@ RBDC_HOST_DEVICE inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M)
   store_lanes(M + 156, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   M[160] = Scalar(0);
   M[161] = Scalar(0);
-  store_lanes(M + 175, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(M + 174, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  M[178] = Scalar(0);
   M[179] = Scalar(0);
   store_lanes(M + 194, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(M + 209, make_lanes(Scalar(0.000486144), Scalar(0), Scalar(0), Scalar(0)));
   M[213] = Scalar(0);
   M[214] = Scalar(0);
   M[215] = Scalar(0);
+  M[231] = Scalar(0);
   M[232] = Scalar(0);
   M[233] = Scalar(0);
   M[251] = Scalar(0);
@@ -97,17 +105,12 @@ RBDC_HOST_DEVICE inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M)
   const Lane t15 = (t1 * cos_lanes_hip_joint) - t12;
   M[71] = t15[3];
   const Lane t16 = lane_c[4] * t14;
-  M[287] = t16[3];
   const Lane t17 = lane_c[4] * t15;
   const Lane t18 = t14 * sin_lanes_abad_joint;
   const Lane t19 = -t18;
-  M[89] = t19[3];
   const Lane t20 = t14 * cos_lanes_abad_joint;
-  M[107] = t20[3];
   const Lane t21 = t16 + (lane_c[6] * t20);
-  M[17] = t21[3];
   const Lane t22 = ((t17 * sin_lanes_abad_joint) - (t11 * cos_lanes_abad_joint)) - (lane_c[5] * t20);
-  M[35] = t22[3];
   const Lane t23 = -(((t11 * sin_lanes_abad_joint) + (t17 * cos_lanes_abad_joint)) + ((lane_c[5] * t18) + (t15 * lane_c[6])));
   // inward pass, composite inertias (CRBA): body 2 LF_hip/RF_hip/LH_hip/RH_hip
   const Lane t24 = t6 * sin_lanes_hip_joint;
@@ -127,33 +130,25 @@ RBDC_HOST_DEVICE inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M)
   const Lane t35 = lane_c[4] * t33;
   const Lane t36 = lane_c[4] * t25;
   const Lane t37 = Scalar(0.00108084) + (((cos_lanes_hip_joint * ((t7 * cos_lanes_hip_joint) + t26)) + (sin_lanes_hip_joint * (t27 + (t10 * sin_lanes_hip_joint)))) + Scalar(0.0014252559999999997));
-  M[285] = t37[3];
   const Lane t38 = lane_c[0] + (t29 - t35);
   const Lane t39 = Scalar(4.5e-07) - ((cos_lanes_hip_joint * t28) + (sin_lanes_hip_joint * t32));
   const Lane t40 = Scalar(0.00056) + t9;
   const Lane t41 = lane_c[1] + ((t30 - t31) - t36);
   const Lane t42 = Scalar(0.00114384) + (((cos_lanes_hip_joint * t32) - (sin_lanes_hip_joint * t28)) + Scalar(0.0014252559999999997));
   const Lane t43 = t35 - t29;
-  store_lanes(M + 114, make_lanes(t37[0], t43[0], t16[0], Scalar(0)));
-  store_lanes(M + 171, make_lanes(t37[1], t43[1], t16[1], Scalar(0)));
-  store_lanes(M + 228, make_lanes(t37[2], t43[2], t16[2], Scalar(0)));
-  M[286] = t43[3];
+  store_transposed_lanes<3>({M + 114, M + 171, M + 228, M + 285}, {t37, t43, t16});
   const Lane t44 = (t31 - t30) + t36;
   const Lane t45 = sin_lanes_abad_joint * t33;
   const Lane t46 = -t45;
-  M[88] = t46[3];
   const Lane t47 = cos_lanes_abad_joint * t33;
   const Lane t48 = t43 + (lane_c[6] * t47);
-  M[16] = t48[3];
   const Lane t49 = -(((t9 * cos_lanes_abad_joint) + (sin_lanes_abad_joint * t44)) + (lane_c[5] * t47));
   const Lane t50 = ((cos_lanes_abad_joint * t44) - (t9 * sin_lanes_abad_joint)) + ((lane_c[6] * t25) - (lane_c[5] * t45));
   // inward pass, composite inertias (CRBA): body 1 LF_abad/RF_abad/LH_abad/RH_abad
   const Lane t51 = cos_lanes_abad_joint * lane_c[7];
   const Lane t52 = sin_lanes_abad_joint * t25;
   const Lane t53 = t51 - t52;
-  store_lanes(M + 95, make_lanes(Scalar(8.251999999999999), t53[0], t47[0], t20[0]));
-  store_lanes(M + 99, make_lanes(t53[1], t47[1], t20[1], t53[2]));
-  store_lanes(M + 103, make_lanes(t47[2], t20[2], t53[3], t47[3]));
+  store_transposed_lanes<3>({M + 96, M + 99, M + 102, M + 105}, {t53, t47, t20});
   const Lane t54 = (sin_lanes_abad_joint * lane_c[7]) + (cos_lanes_abad_joint * t25);
   const Lane t55 = (cos_lanes_abad_joint * t38) - (sin_lanes_abad_joint * t39);
   const Lane t56 = (sin_lanes_abad_joint * t38) + (cos_lanes_abad_joint * t39);
@@ -165,29 +160,24 @@ RBDC_HOST_DEVICE inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M)
   const Lane t62 = t53 + lane_c[9];
   store_lanes(M + 0, make_lanes(Scalar(0.011253) + lane_sum(t37 - ((lane_c[6] * (t52 - t51)) + (t62 * lane_c[11]))), lane_sum(t55 - ((lane_c[6] * t33) + (lane_c[5] * t62))), lane_sum(t56 + (t54 * lane_c[10])), Scalar(0)));
   const Lane t63 = -t54;
-  store_lanes(M + 76, make_lanes(Scalar(8.251999999999999), Scalar(0), t63[0], t46[0]));
-  store_lanes(M + 80, make_lanes(t19[0], t63[1], t46[1], t19[1]));
-  store_lanes(M + 84, make_lanes(t63[2], t46[2], t19[2], t63[3]));
+  store_transposed_lanes<3>({M + 78, M + 81, M + 84, M + 87}, {t63, t46, t19});
   const Lane t64 = t56 - (lane_c[5] * t54);
-  store_lanes(M + 42, make_lanes(t64[0], t50[0], t23[0], t64[1]));
-  store_lanes(M + 46, make_lanes(t50[1], t23[1], t64[2], t50[2]));
-  store_lanes(M + 50, make_lanes(t23[2], t64[3], t50[3], t23[3]));
+  store_transposed_lanes<3>({M + 42, M + 45, M + 48, M + 51}, {t64, t50, t23});
   const Lane t65 = ((sin_lanes_abad_joint * t59) + (cos_lanes_abad_joint * t60)) - (((t53 * lane_c[11]) + (lane_c[5] * (t24 - t13))) + ((t61 * lane_c[10]) - (lane_c[6] * t62)));
   const Scalar t66 = lane_sum(t61);
+  M[23] = -t66;
   const Scalar t67 = lane_sum(t62);
+  M[5] = t67;
   store_lanes(M + 38, make_lanes(Scalar(0.042673) + lane_sum(t65), -t67, t66, Scalar(0)));
   const Scalar t68 = lane_sum(t54);
+  M[4] = -t68;
   const Scalar t69 = lane_sum(((cos_lanes_abad_joint * ((cos_lanes_abad_joint * t40) - t57)) - (sin_lanes_abad_joint * (t58 - (sin_lanes_abad_joint * t42)))) - ((t33 * lane_c[10]) - (lane_c[5] * t61)));
   store_lanes(M + 19, make_lanes(Scalar(0.036203) + t69, lane_sum(((cos_lanes_abad_joint * t59) - (sin_lanes_abad_joint * t60)) - (lane_c[6] * t54)), t68, Scalar(0)));
   const Lane t70 = t37 + (lane_c[6] * t53);
-  store_lanes(M + 4, make_lanes(-t68, t67, t70[0], t48[0]));
-  store_lanes(M + 8, make_lanes(t21[0], t70[1], t48[1], t21[1]));
-  store_lanes(M + 12, make_lanes(t70[2], t48[2], t21[2], t70[3]));
+  store_transposed_lanes<3>({M + 6, M + 9, M + 12, M + 15}, {t70, t48, t21});
   const Lane t71 = t55 - (lane_c[5] * t53);
   // outputs
-  store_lanes(M + 23, make_lanes(-t66, t71[0], t49[0], t22[0]));
-  store_lanes(M + 27, make_lanes(t71[1], t49[1], t22[1], t71[2]));
-  store_lanes(M + 31, make_lanes(t49[2], t22[2], t71[3], t49[3]));
+  store_transposed_lanes<3>({M + 24, M + 27, M + 30, M + 33}, {t71, t49, t22});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_lanes_828942d5cb38
+}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_df57aef74858

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_e983d184ece4 {
+namespace rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_8fa61f3e8f39 {
 
 /// Centroidal momentum matrix A_G (Orin, Goswami & Lee 2013): h_G = A_G v.
 ///
@@ -214,10 +214,6 @@ RBDC_HOST_DEVICE inline void centroidal_momentum_matrix(const Scalar* q, Scalar*
   const Lane t142 = (((t13 * t70) + (t25 * t71)) + (t26 * t72)) + ((t138 * t140) - (t137 * t141));
   const Lane t143 = (((t16 * t70) + (t27 * t71)) + (t28 * t72)) + ((t136 * t141) - (t138 * t139));
   const Lane t144 = (((t19 * t70) + (t29 * t71)) + (t30 * t72)) + ((t137 * t139) - (t136 * t140));
-  store_lanes(A_G + 36, make_lanes(t142[0], t143[0], t144[0], t136[0]));
-  store_lanes(A_G + 56, make_lanes(t144[1], t136[1], t137[1], t138[1]));
-  store_lanes(A_G + 72, make_lanes(t142[2], t143[2], t144[2], t136[2]));
-  store_lanes(A_G + 92, make_lanes(t144[3], t136[3], t137[3], t138[3]));
   // centroidal momentum matrix: body 2 LF_hip/RF_hip/LH_hip/RH_hip
   const Lane t145 = (t36 * t57) + (t37 * t51);
   const Lane t146 = (t39 * t51) - (t38 * t57);
@@ -227,34 +223,21 @@ RBDC_HOST_DEVICE inline void centroidal_momentum_matrix(const Scalar* q, Scalar*
   const Lane t150 = t33 - t50;
   const Lane t151 = (((t36 * lane_c[7]) - (t25 * t60)) + (t37 * lane_c[8])) + ((t147 * t149) - (t146 * t150));
   const Lane t152 = ((t39 * lane_c[8]) - ((t38 * lane_c[7]) + (t27 * t60))) + ((t145 * t150) - (t147 * t148));
-  store_lanes(A_G + 40, make_lanes(t137[0], t138[0], t151[0], t152[0]));
-  store_lanes(A_G + 76, make_lanes(t137[2], t138[2], t151[2], t152[2]));
   const Lane t153 = (((t40 * lane_c[7]) - (t29 * t60)) + (t41 * lane_c[8])) + ((t146 * t148) - (t145 * t149));
-  store_lanes(A_G + 44, make_lanes(t153[0], t145[0], t146[0], t147[0]));
-  store_lanes(A_G + 60, make_lanes(t151[1], t152[1], t153[1], t145[1]));
-  store_lanes(A_G + 80, make_lanes(t153[2], t145[2], t146[2], t147[2]));
-  store_lanes(A_G + 96, make_lanes(t151[3], t152[3], t153[3], t145[3]));
   // centroidal momentum matrix: body 3 LF_knee/RF_knee/LH_knee/RH_knee
   const Lane t154 = Scalar(0.003904) * ((t36 * cos_lanes_knee_joint) - (t37 * sin_lanes_knee_joint));
   const Lane t155 = -t154;
   const Lane t156 = Scalar(0.003904) * ((t38 * cos_lanes_knee_joint) + (t39 * sin_lanes_knee_joint));
   const Lane t157 = Scalar(0.003904) * ((t40 * cos_lanes_knee_joint) - (t41 * sin_lanes_knee_joint));
   const Lane t158 = -t157;
-  store_lanes(A_G + 52, make_lanes(t156[0], t158[0], t142[1], t143[1]));
-  store_lanes(A_G + 88, make_lanes(t156[2], t158[2], t142[3], t143[3]));
   const Lane t159 = t42 - t48;
   const Lane t160 = t43 - t49;
   const Lane t161 = t44 - t50;
   const Lane t162 = (Scalar(-0.000486144) * t25) - ((t157 * t160) + (t156 * t161));
   const Lane t163 = ((t157 * t159) - (t154 * t161)) - (Scalar(0.000486144) * t27);
-  store_lanes(A_G + 64, make_lanes(t146[1], t147[1], t162[1], t163[1]));
-  store_lanes(A_G + 100, make_lanes(t146[3], t147[3], t162[3], t163[3]));
   const Lane t164 = ((t156 * t159) + (t154 * t160)) - (Scalar(0.000486144) * t29);
   // outputs
-  store_lanes(A_G + 48, make_lanes(t162[0], t163[0], t164[0], t155[0]));
-  store_lanes(A_G + 68, make_lanes(t164[1], t155[1], t156[1], t158[1]));
-  store_lanes(A_G + 84, make_lanes(t162[2], t163[2], t164[2], t155[2]));
-  store_lanes(A_G + 104, make_lanes(t164[3], t155[3], t156[3], t158[3]));
+  store_transposed_lanes<18>({A_G + 36, A_G + 54, A_G + 72, A_G + 90}, {t142, t143, t144, t136, t137, t138, t151, t152, t153, t145, t146, t147, t162, t163, t164, t155, t156, t158});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_e983d184ece4
+}  // namespace rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_8fa61f3e8f39

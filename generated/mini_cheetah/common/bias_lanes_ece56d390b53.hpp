@@ -2,18 +2,19 @@
 // input: robots/mini_cheetah.urdf (sha256 b23f00116f98e183b9f7166a74175cc628a8919051c201a68bfa170439e8eeca)
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// bias for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
+// bias_lanes for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
 // folded, shared subexpressions computed once, only what reaches the outputs kept. The file is named
-// by a hash of its content: every scene whose bias is this code includes this one file
-// and brings the function into its namespace (<scene>/bias.hpp).
+// by a hash of its content: every scene whose bias_lanes is this code includes this one file
+// and brings the function into its namespace (<scene>/bias_lanes.hpp).
 #pragma once
 
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::bias_f0e600561520 {
+namespace rbdc_gen::mini_cheetah::common::bias_lanes_ece56d390b53 {
 
-/// Bias c + g in one pass (inverse dynamics at a = 0, without the acceleration terms).
+/// Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes evaluated
+/// together in SIMD lanes, the trunk scalar; equals bias.
 ///
 /// @param q in  19x1: configuration (position, quaternion w x y z, joints)
 /// @param v in  18x1: velocity (trunk ω, v in trunk coordinates, joint rates)
@@ -21,10 +22,8 @@ namespace rbdc_gen::mini_cheetah::common::bias_f0e600561520 {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             995  780    0     0    24    0   1799
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 515 arithmetic
-///   instructions, scalar tree 1775
 template <class Scalar>
-RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
+RBDC_HOST_DEVICE inline void bias_lanes(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_v[3] = {transposed_lanes<3, 0>(v + 6),
@@ -130,7 +129,6 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Lane t72 = ((t63 * t67) - (t59 * t68)) + ((t58 * t70) - (t61 * t71));
   const Lane t73 = ((Scalar(0.000483144) * t64) + (Scalar(0.003904) * t56)) + (((t63 * t66) - (t60 * t68)) + ((t62 * t71) - (t58 * t69)));
   const Lane t74 = (((t59 * t66) - (t60 * t67)) + ((t62 * t70) - (t61 * t69))) - ((Scalar(0.000486144) * t21) + (Scalar(0.003904) * t65));
-  cg[17] = t74[3];
   const Lane t75 = (Scalar(6e-06) * (((t41 * sin_lanes_knee_joint) - (t42 * cos_lanes_knee_joint)) - (t59 * lane_v[2]))) + t72;
   const Lane t76 = ((Scalar(0.064) * t65) + (Scalar(0.003904) * t21)) + ((t63 * t69) + (t60 * t71));
   const Lane t77 = ((Scalar(0.064) * t56) + (Scalar(0.003904) * t64)) + ((t60 * t70) + (t59 * t69));
@@ -139,7 +137,6 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Lane t79 = (cos_lanes_knee_joint * t76) + (sin_lanes_knee_joint * t78);
   const Lane t80 = t54 + (((cos_lanes_knee_joint * t73) + (sin_lanes_knee_joint * t75)) + (Scalar(0.209) * t77));
   const Lane t81 = (t46 + (((t37 * t48) + (t36 * t50)) + ((t39 * t51) - (t38 * t53)))) + (t74 - (Scalar(0.209) * t79));
-  cg[16] = t81[3];
   const Lane t82 = (t47 + (((t18 * t51) - (t38 * t52)) - ((t36 * t49) + (t40 * t48)))) + ((cos_lanes_knee_joint * t75) - (sin_lanes_knee_joint * t73));
   const Lane t83 = ((((t42 * lane_c[6]) + (Scalar(0.01268) * t21)) - (Scalar(0.634) * t43)) + ((t40 * t53) + (t37 * t52))) + t79;
   const Lane t84 = (((Scalar(0.01268) * t41) - (Scalar(0.634) * t23)) + ((t37 * t51) + (t36 * t53))) + t77;
@@ -148,8 +145,7 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Lane t86 = (cos_lanes_hip_joint * t83) + (sin_lanes_hip_joint * t85);
   const Lane t87 = (cos_lanes_hip_joint * t85) - (sin_lanes_hip_joint * t83);
   const Lane t88 = ((((t21 * lane_c[3]) - (Scalar(4.5e-07) * t22)) + (t24 * lane_c[2])) + t31) + ((lane_c[5] * t87) - ((cos_lanes_hip_joint * t80) + (sin_lanes_hip_joint * t82)));
-  store_lanes(cg + 8, make_lanes(t74[0], t88[1], t81[1], t74[1]));
-  store_lanes(cg + 12, make_lanes(t88[2], t81[2], t74[2], t88[3]));
+  store_transposed_lanes<3>({cg + 6, cg + 9, cg + 12, cg + 15}, {t88, t81, t74});
   const Lane t89 = (((Scalar(0.00056) * t21) - (t22 * lane_c[4])) + (((t17 * t26) - (t20 * t27)) + ((t19 * t29) - (t13 * t30)))) - t81;
   const Lane t90 = ((((t21 * lane_c[4]) - (Scalar(0.00114384) * t22)) - (t3 * lane_c[2])) + t32) + (((cos_lanes_hip_joint * t82) - (sin_lanes_hip_joint * t80)) + (lane_c[5] * t86));
   const Lane t91 = (((Scalar(0.54) * t3) + (t22 * lane_c[2])) + ((t16 * t30) - (t17 * t28))) - t86;
@@ -157,11 +153,12 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Lane t93 = ((Scalar(0.54) * t24) + ((t20 * t28) - (t16 * t29))) + t87;
   // inward pass: body 1 LF_abad/RF_abad/LH_abad/RH_abad
   const Lane t94 = (cos_lanes_abad_joint * t92) - (sin_lanes_abad_joint * t93);
+  cg[4] = ((Scalar(3.3) * t4) + ((v[2] * t9) - (v[0] * t11))) + lane_sum(t94);
   const Lane t95 = (sin_lanes_abad_joint * t92) + (cos_lanes_abad_joint * t93);
-  store_lanes(cg + 4, make_lanes(((Scalar(3.3) * t4) + ((v[2] * t9) - (v[0] * t11))) + lane_sum(t94), ((Scalar(3.3) * t5) + ((v[0] * t10) - (v[1] * t9))) + lane_sum(t95), t88[0], t81[0]));
+  cg[5] = ((Scalar(3.3) * t5) + ((v[0] * t10) - (v[1] * t9))) + lane_sum(t95);
   const Scalar t96 = lane_sum(((sin_lanes_abad_joint * t89) + (cos_lanes_abad_joint * t90)) + ((lane_c[0] * t94) - (lane_c[1] * t91)));
   // outputs
   store_lanes(cg + 0, make_lanes((((v[1] * t8) - (v[2] * t7)) + ((v[4] * t11) - (v[5] * t10))) + lane_sum(t88 + (lane_c[1] * t95)), t12 + lane_sum(((cos_lanes_abad_joint * t89) - (sin_lanes_abad_joint * t90)) - (lane_c[0] * t95)), (((v[0] * t7) - (v[1] * t6)) + ((v[3] * t10) - (v[4] * t9))) + t96, ((Scalar(3.3) * t3) + ((v[1] * t11) - (v[2] * t10))) + lane_sum(t91)));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::bias_f0e600561520
+}  // namespace rbdc_gen::mini_cheetah::common::bias_lanes_ece56d390b53

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_e8ecfc6f3351 {
+namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_2f2fa92eea3d {
 
 /// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3), the four isomorphic limbs' passes
 /// evaluated together in SIMD lanes, the trunk scalar; equals inverse_dynamics.
@@ -145,7 +145,6 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_lanes(const Scalar* q, const Scala
   const Lane t84 = ((t74 * t79) - (t70 * t80)) + ((t69 * t82) - (t72 * t83));
   const Lane t85 = (((t74 * t78) - (t71 * t80)) + ((t73 * t83) - (t69 * t81))) - ((Scalar(0.000483144) * t75) + (Scalar(0.003904) * t67));
   const Lane t86 = ((Scalar(0.000486144) * t77) - (Scalar(0.003904) * t76)) + (((t70 * t78) - (t71 * t79)) + ((t73 * t82) - (t72 * t81)));
-  tau[17] = t86[3];
   const Lane t87 = (Scalar(6e-06) * (((t52 * cos_lanes_knee_joint) - (t51 * sin_lanes_knee_joint)) - (t70 * lane_v[2]))) + t84;
   const Lane t88 = ((Scalar(0.064) * t76) - (Scalar(0.003904) * t77)) + ((t74 * t81) + (t71 * t83));
   const Lane t89 = ((t71 * t82) + (t70 * t81)) - ((Scalar(0.064) * t67) + (Scalar(0.003904) * t75));
@@ -154,7 +153,6 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_lanes(const Scalar* q, const Scala
   const Lane t91 = (cos_lanes_knee_joint * t88) + (sin_lanes_knee_joint * t90);
   const Lane t92 = t65 + (((cos_lanes_knee_joint * t85) + (sin_lanes_knee_joint * t87)) + (Scalar(0.209) * t89));
   const Lane t93 = (t57 + (((t47 * t59) + (t46 * t61)) + ((t49 * t62) - (t48 * t64)))) + (t86 - (Scalar(0.209) * t91));
-  tau[16] = t93[3];
   const Lane t94 = (t58 + (((t23 * t62) - (t48 * t63)) - ((t46 * t60) + (t50 * t59)))) + ((cos_lanes_knee_joint * t87) - (sin_lanes_knee_joint * t85));
   const Lane t95 = (((Scalar(0.634) * t53) - ((t52 * lane_c[6]) + (Scalar(0.01268) * t55))) + ((t50 * t64) + (t47 * t63))) + t91;
   const Lane t96 = (((t47 * t62) + (t46 * t64)) - ((Scalar(0.634) * t28) + (Scalar(0.01268) * t51))) + t89;
@@ -163,8 +161,7 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_lanes(const Scalar* q, const Scala
   const Lane t98 = (cos_lanes_hip_joint * t95) + (sin_lanes_hip_joint * t97);
   const Lane t99 = (cos_lanes_hip_joint * t97) - (sin_lanes_hip_joint * t95);
   const Lane t100 = t40 + ((lane_c[5] * t99) - ((cos_lanes_hip_joint * t92) + (sin_lanes_hip_joint * t94)));
-  store_lanes(tau + 8, make_lanes(t86[0], t100[1], t93[1], t86[1]));
-  store_lanes(tau + 12, make_lanes(t100[2], t93[2], t86[2], t100[3]));
+  store_transposed_lanes<3>({tau + 6, tau + 9, tau + 12, tau + 15}, {t100, t93, t86});
   const Lane t101 = ((((t30 * lane_c[3]) + (Scalar(0.00056) * t26)) + (t27 * lane_c[4])) + t39) - t93;
   const Lane t102 = t41 + (((cos_lanes_hip_joint * t94) - (sin_lanes_hip_joint * t92)) + (lane_c[5] * t98));
   const Lane t103 = (((Scalar(0.54) * t15) - (t27 * lane_c[2])) + ((t21 * t38) - (t22 * t36))) - t98;
@@ -172,10 +169,11 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_lanes(const Scalar* q, const Scala
   const Lane t105 = (((Scalar(0.54) * t29) + (t30 * lane_c[2])) + ((t25 * t36) - (t21 * t37))) + t99;
   // inward pass: body 1 LF_abad/RF_abad/LH_abad/RH_abad
   const Lane t106 = (cos_lanes_abad_joint * t104) - (sin_lanes_abad_joint * t105);
+  tau[4] = ((Scalar(3.3) * t4) + ((v[2] * t9) - (v[0] * t11))) + lane_sum(t106);
   const Lane t107 = (sin_lanes_abad_joint * t104) + (cos_lanes_abad_joint * t105);
   // outputs
   store_lanes(tau + 0, make_lanes(t12 + lane_sum(t100 + (lane_c[1] * t107)), t13 + lane_sum(((cos_lanes_abad_joint * t101) - (sin_lanes_abad_joint * t102)) - (lane_c[0] * t107)), t14 + lane_sum(((sin_lanes_abad_joint * t101) + (cos_lanes_abad_joint * t102)) + ((lane_c[0] * t106) - (lane_c[1] * t103))), ((Scalar(3.3) * t3) + ((v[1] * t11) - (v[2] * t10))) + lane_sum(t103)));
-  store_lanes(tau + 4, make_lanes(((Scalar(3.3) * t4) + ((v[2] * t9) - (v[0] * t11))) + lane_sum(t106), ((Scalar(3.3) * t5) + ((v[0] * t10) - (v[1] * t9))) + lane_sum(t107), t100[0], t93[0]));
+  tau[5] = ((Scalar(3.3) * t5) + ((v[0] * t10) - (v[1] * t9))) + lane_sum(t107);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_e8ecfc6f3351
+}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_2f2fa92eea3d

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_b585e1d20d21 {
+namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_4ed7c3eed34f {
 
 /// Impulse dynamics of a touchdown of the scene's contact feet: v⁺ and Λ of M (v⁺ − v) = JᵀΛ, J v⁺
 /// = −e J v (docs/runtime.md).
@@ -831,8 +831,10 @@ RBDC_HOST_DEVICE inline void impulse_dynamics(const Scalar* q, const Scalar* v, 
   store_lanes(v_plus + 0, make_lanes(v[0] + t748, v[1] + t749, v[2] + t750, v[3] + t751));
   const Scalar t752 = ((lane_sum(((t255 * t745) + (t264 * t746)) + (t273 * t747)) + (t124 * t751)) - (t128 * t750)) + (t130 * t749);
   const Scalar t753 = t752 - (t131 * t748);
+  v_plus[4] = v[4] + t753;
   const Scalar t754 = ((lane_sum(((t256 * t745) + (t265 * t746)) + (t274 * t747)) + (t110 * t753)) + (t115 * t751)) + (t119 * t750);
   const Scalar t755 = (t754 + (t120 * t749)) - (t122 * t748);
+  v_plus[5] = v[5] + t755;
   const Lane t756 = (((((t257 * t745) + (t266 * t746)) + (t275 * t747)) - (t96 * t755)) - (t102 * t753)) - (t103 * t751);
   const Lane t757 = ((t756 - (t105 * t750)) - (t107 * t749)) - (t108 * t748);
   const Lane t758 = (((((t258 * t745) + (t267 * t746)) + (t276 * t747)) - (t80 * t757)) - (t87 * t755)) - (t88 * t753);
@@ -840,13 +842,9 @@ RBDC_HOST_DEVICE inline void impulse_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t760 = (((((t259 * t745) + (t268 * t746)) + (t277 * t747)) - (t62 * t759)) - (t70 * t757)) - (t71 * t755);
   const Lane t761 = lane_v[0] + t757;
   const Lane t762 = lane_v[1] + t759;
-  store_lanes(v_plus + 4, make_lanes(v[4] + t753, v[5] + t755, t761[0], t762[0]));
-  v_plus[16] = t762[3];
   const Lane t763 = lane_v[2] + (((((t760 + (t72 * t753)) - (t73 * t751)) + (t74 * t750)) - (t76 * t749)) - (t77 * t748));
   // outputs
-  store_lanes(v_plus + 8, make_lanes(t763[0], t761[1], t762[1], t763[1]));
-  store_lanes(v_plus + 12, make_lanes(t761[2], t762[2], t763[2], t761[3]));
-  v_plus[17] = t763[3];
+  store_transposed_lanes<3>({v_plus + 6, v_plus + 9, v_plus + 12, v_plus + 15}, {t761, t762, t763});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_b585e1d20d21
+}  // namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_4ed7c3eed34f

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_4e51b0e44419 {
+namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_0cf18e6676f7 {
 
 /// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3).
 ///
@@ -86,7 +86,6 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* a, 
   const Lane t29 = Scalar(6e-06) * ((t19 * cos_lanes_knee_joint) - (t18 * sin_lanes_knee_joint));
   const Lane t30 = (Scalar(0.000483144) * t26) + (Scalar(0.003904) * t25);
   const Lane t31 = (Scalar(0.000486144) * t28) - (Scalar(0.003904) * t27);
-  tau[17] = t31[3];
   const Lane t32 = Scalar(0.064) * ((sin_lanes_knee_joint * t24) + (t21 * cos_lanes_knee_joint));
   const Lane t33 = (Scalar(0.064) * t27) - (Scalar(0.003904) * t28);
   const Lane t34 = (Scalar(0.064) * t25) + (Scalar(0.003904) * t26);
@@ -94,7 +93,6 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* a, 
   const Lane t35 = (cos_lanes_knee_joint * t33) + (sin_lanes_knee_joint * t32);
   const Lane t36 = t23 + (((sin_lanes_knee_joint * t29) - (cos_lanes_knee_joint * t30)) - (Scalar(0.209) * t34));
   const Lane t37 = ((((Scalar(0.0023566) * t22) - (t18 * lane_c[7])) + (t19 * lane_c[8])) - (Scalar(0.01268) * t20)) + (t31 - (Scalar(0.209) * t35));
-  tau[16] = t37[3];
   const Lane t38 = ((((t22 * lane_c[8]) - (Scalar(1.3e-05) * t18)) + (Scalar(0.000570304) * t19)) - (t20 * lane_c[6])) + ((sin_lanes_knee_joint * t30) + (cos_lanes_knee_joint * t29));
   const Lane t39 = ((Scalar(0.634) * t20) - ((t19 * lane_c[6]) + (Scalar(0.01268) * t22))) + t35;
   const Lane t40 = ((Scalar(0.634) * t21) - (t18 * lane_c[6])) + ((cos_lanes_knee_joint * t32) - (sin_lanes_knee_joint * t33));
@@ -102,8 +100,7 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* a, 
   const Lane t41 = (cos_lanes_hip_joint * t39) + (sin_lanes_hip_joint * t40);
   const Lane t42 = (cos_lanes_hip_joint * t40) - (sin_lanes_hip_joint * t39);
   const Lane t43 = t14 + ((lane_c[5] * t42) - ((cos_lanes_hip_joint * t36) + (sin_lanes_hip_joint * t38)));
-  store_lanes(tau + 8, make_lanes(t31[0], t43[1], t37[1], t31[1]));
-  store_lanes(tau + 12, make_lanes(t43[2], t37[2], t31[2], t43[3]));
+  store_transposed_lanes<3>({tau + 6, tau + 9, tau + 12, tau + 15}, {t43, t37, t31});
   const Lane t44 = (((t13 * lane_c[3]) + (Scalar(0.00056) * t9)) + (t10 * lane_c[4])) - t37;
   const Lane t45 = t15 + (((cos_lanes_hip_joint * t38) - (sin_lanes_hip_joint * t36)) + (lane_c[5] * t41));
   const Lane t46 = ((Scalar(0.54) * t6) - (t10 * lane_c[2])) - t41;
@@ -111,10 +108,11 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* a, 
   const Lane t48 = ((Scalar(0.54) * t12) + (t13 * lane_c[2])) + t42;
   // inward pass: body 1 LF_abad/RF_abad/LH_abad/RH_abad
   const Lane t49 = (cos_lanes_abad_joint * t47) - (sin_lanes_abad_joint * t48);
+  tau[4] = (Scalar(3.3) * t4) + lane_sum(t49);
   const Lane t50 = (sin_lanes_abad_joint * t47) + (cos_lanes_abad_joint * t48);
   // outputs
   store_lanes(tau + 0, make_lanes((Scalar(0.011253) * a[0]) + lane_sum(t43 + (lane_c[1] * t50)), (Scalar(0.036203) * a[1]) + lane_sum(((cos_lanes_abad_joint * t44) - (sin_lanes_abad_joint * t45)) - (lane_c[0] * t50)), (Scalar(0.042673) * a[2]) + lane_sum(((sin_lanes_abad_joint * t44) + (cos_lanes_abad_joint * t45)) + ((lane_c[0] * t49) - (lane_c[1] * t46))), (Scalar(3.3) * t3) + lane_sum(t46)));
-  store_lanes(tau + 4, make_lanes((Scalar(3.3) * t4) + lane_sum(t49), (Scalar(3.3) * t5) + lane_sum(t50), t43[0], t37[0]));
+  tau[5] = (Scalar(3.3) * t5) + lane_sum(t50);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_4e51b0e44419
+}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_0cf18e6676f7

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_54455bff0c60 {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_9a6c07e4d26e {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
 /// algorithm where that is cheaper: the schedule line says which).
@@ -377,7 +377,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t296 = t295 - (t285 * t294);
   const Scalar t297 = (((t260 * t266) - (((v[0] * t40) - (v[1] * t39)) + lane_sum(t257))) - (t275 * t292)) - (t282 * t293);
   const Scalar t298 = (Scalar(1) / t291) * ((t297 - (t287 * t294)) - (t290 * t296));
+  a[5] = t298 - (((v[1] * v[3]) - (v[0] * v[4])) + (Scalar(9.81) * t18));
   const Scalar t299 = (t288 * t296) - (t290 * t298);
+  a[4] = t299 - (((v[0] * v[5]) - (v[2] * v[3])) + (Scalar(9.81) * t17));
   const Scalar t300 = ((t283 * t294) - (t285 * t299)) - (t287 * t298);
   const Scalar t301 = (((t276 * t293) - (t278 * t300)) - (t280 * t299)) - (t282 * t298);
   const Scalar t302 = ((((t267 * t292) - (t269 * t301)) - (t271 * t300)) - (t273 * t299)) - (t275 * t298);
@@ -400,15 +402,11 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t316 = t73 + ((sin_lanes_hip_joint * t314) + (cos_lanes_hip_joint * t312));
   const Lane t317 = (lane_c[9] * (((cos_lanes_hip_joint * t313) - (sin_lanes_hip_joint * t308)) - t70)) - (t115 * t307);
   const Lane t318 = t122 * (t123 - (((t317 + (lane_c[10] * (((sin_lanes_hip_joint * t313) + (cos_lanes_hip_joint * t308)) - t71))) + (t116 * t315)) + (t114 * t316)));
-  store_lanes(a + 4, make_lanes(t299 - (((v[0] * v[5]) - (v[2] * v[3])) + (Scalar(9.81) * t17)), t298 - (((v[1] * v[3]) - (v[0] * v[4])) + (Scalar(9.81) * t18)), t311[0], t318[0]));
-  a[16] = t318[3];
   const Lane t319 = t318 - t307;
   // ABA: outward pass, accelerations: body 3 LF_knee/RF_knee/LH_knee/RH_knee
   const Lane t320 = Scalar(2057.0036861506055) * (t99 - ((Scalar(0.000486144) * t319) - (Scalar(0.003904) * (((cos_lanes_knee_joint * (t315 - (Scalar(0.209) * t319))) - (sin_lanes_knee_joint * t316)) - t90))));
   // outputs
-  store_lanes(a + 8, make_lanes(t320[0], t311[1], t318[1], t320[1]));
-  store_lanes(a + 12, make_lanes(t311[2], t318[2], t320[2], t311[3]));
-  a[17] = t320[3];
+  store_transposed_lanes<3>({a + 6, a + 9, a + 12, a + 15}, {t311, t318, t320});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_54455bff0c60
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_9a6c07e4d26e

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::feet_bias_accelerations_227f580abca1 {
+namespace rbdc_gen::mini_cheetah::common::feet_bias_accelerations_ca59269eb5ea {
 
 /// J̇v of the feet: each foot point's classical acceleration at a = 0, world frame.
 ///
@@ -131,9 +131,7 @@ RBDC_HOST_DEVICE inline void feet_bias_accelerations(const Scalar* q, const Scal
   const Lane t73 = (((t28 * cos_lanes_knee_joint) - (t29 * sin_lanes_knee_joint)) * t66) - (((t17 * cos_lanes_abad_joint) + (t18 * sin_lanes_abad_joint)) * t67);
   const Lane t74 = t73 + (((t28 * sin_lanes_knee_joint) + (t29 * cos_lanes_knee_joint)) * t68);
   // outputs
-  store_lanes(Jdot_v + 0, make_lanes(t70[0], t72[0], t74[0], t70[1]));
-  store_lanes(Jdot_v + 4, make_lanes(t72[1], t74[1], t70[2], t72[2]));
-  store_lanes(Jdot_v + 8, make_lanes(t74[2], t70[3], t72[3], t74[3]));
+  store_transposed_lanes<3>({Jdot_v + 0, Jdot_v + 3, Jdot_v + 6, Jdot_v + 9}, {t70, t72, t74});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::feet_bias_accelerations_227f580abca1
+}  // namespace rbdc_gen::mini_cheetah::common::feet_bias_accelerations_ca59269eb5ea

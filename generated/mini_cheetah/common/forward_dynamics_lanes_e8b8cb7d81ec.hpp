@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_b22a47705929 {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_e8b8cb7d81ec {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ), the four isomorphic
 /// limbs' passes and their rows of the factorisation evaluated together in SIMD lanes, the trunk
@@ -380,19 +380,17 @@ RBDC_HOST_DEVICE inline void forward_dynamics_lanes(const Scalar* q, const Scala
   const Scalar t297 = (((t266 * t289) + (t267 * t296)) + (t270 * t295)) + (t271 * t294);
   store_lanes(a + 0, make_lanes(t294, t295, t296, -t297));
   const Scalar t298 = ((t264 * t295) - (((t257 * t287) + (t258 * t297)) + (t262 * t296))) - (t265 * t294);
+  a[4] = t298;
   const Scalar t299 = (((((t244 * t298) - (t243 * t286)) - (t249 * t297)) + (t253 * t296)) + (t254 * t295)) - (t256 * t294);
+  a[5] = t299;
   const Lane t300 = (((((t229 * t285) - (t230 * t299)) - (t236 * t298)) + (t237 * t297)) - (t239 * t296)) - (t241 * t295);
   const Lane t301 = t300 - (t242 * t294);
   const Lane t302 = (((((t213 * t279) - (t214 * t301)) - (t221 * t299)) - (t222 * t298)) - (t223 * t297)) - (t224 * t296);
   const Lane t303 = (t302 + (t226 * t295)) - (t228 * t294);
-  store_lanes(a + 4, make_lanes(t298, t299, t301[0], t303[0]));
-  a[16] = t303[3];
   const Lane t304 = (((((Scalar(2057.0036861506055) * t133) - (t196 * t303)) - (t204 * t301)) - (t205 * t299)) + (t206 * t298)) + (t207 * t297);
   const Lane t305 = ((t304 + (t208 * t296)) - (t210 * t295)) - (t211 * t294);
   // outputs
-  store_lanes(a + 8, make_lanes(t305[0], t301[1], t303[1], t305[1]));
-  store_lanes(a + 12, make_lanes(t301[2], t303[2], t305[2], t301[3]));
-  a[17] = t305[3];
+  store_transposed_lanes<3>({a + 6, a + 9, a + 12, a + 15}, {t301, t303, t305});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_b22a47705929
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_e8b8cb7d81ec

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_5c53127207e3 {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_32e1a8f94b88 {
 
 /// Rigid-contact dynamics of the scene's contact feet: a and λ of M a − Jᵀλ = Sᵀτ − c − g, J a =
 /// −J̇v (Schur complement, damped proximal Delassus solve; docs/runtime.md).
@@ -1000,8 +1000,10 @@ RBDC_HOST_DEVICE inline void contact_dynamics(const Scalar* q, const Scalar* v, 
   store_lanes(a + 0, make_lanes(t290 + t900, t291 + t901, t292 + t902, t903 - t293));
   const Scalar t904 = ((lane_sum(((t395 * t897) + (t404 * t898)) + (t413 * t899)) + (t254 * t903)) - (t258 * t902)) + (t260 * t901);
   const Scalar t905 = t904 - (t261 * t900);
+  a[4] = t294 + t905;
   const Scalar t906 = ((lane_sum(((t396 * t897) + (t405 * t898)) + (t414 * t899)) + (t240 * t905)) + (t245 * t903)) + (t249 * t902);
   const Scalar t907 = (t906 + (t250 * t901)) - (t252 * t900);
+  a[5] = t295 + t907;
   const Lane t908 = (((((t397 * t897) + (t406 * t898)) + (t415 * t899)) - (t226 * t907)) - (t232 * t905)) - (t233 * t903);
   const Lane t909 = ((t908 - (t235 * t902)) - (t237 * t901)) - (t238 * t900);
   const Lane t910 = (((((t398 * t897) + (t407 * t898)) + (t416 * t899)) - (t210 * t909)) - (t217 * t907)) - (t218 * t905);
@@ -1009,13 +1011,9 @@ RBDC_HOST_DEVICE inline void contact_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t912 = (((((t399 * t897) + (t408 * t898)) + (t417 * t899)) - (t192 * t911)) - (t200 * t909)) - (t201 * t907);
   const Lane t913 = t297 + t909;
   const Lane t914 = t299 + t911;
-  store_lanes(a + 4, make_lanes(t294 + t905, t295 + t907, t913[0], t914[0]));
-  a[16] = t914[3];
   const Lane t915 = t301 + (((((t912 + (t202 * t905)) - (t203 * t903)) + (t204 * t902)) - (t206 * t901)) - (t207 * t900));
   // outputs
-  store_lanes(a + 8, make_lanes(t915[0], t913[1], t914[1], t915[1]));
-  store_lanes(a + 12, make_lanes(t913[2], t914[2], t915[2], t913[3]));
-  a[17] = t915[3];
+  store_transposed_lanes<3>({a + 6, a + 9, a + 12, a + 15}, {t913, t914, t915});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_5c53127207e3
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_32e1a8f94b88

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::frame_velocities_66cf3a0d55f6 {
+namespace rbdc_gen::mini_cheetah::common::frame_velocities_d35692076ffd {
 
 /// Spatial velocities (ω; v) of the scene's frames at their origins.
 ///
@@ -48,6 +48,8 @@ RBDC_HOST_DEVICE inline void frame_velocities(const Scalar* q, const Scalar* v, 
   const Lane sin_lanes_knee_joint = load_lanes(joint_trig.sin + 8);
   const Lane cos_lanes_knee_joint = load_lanes(joint_trig.cos + 8);
   store_lanes(v_local + 0, make_lanes(v[0], v[1], v[2], v[3]));
+  v_local[4] = v[4];
+  v_local[5] = v[5];
   const Scalar t0 = q[4] + q[4];
   const Scalar t1 = q[5] + q[5];
   const Scalar t2 = q[6] + q[6];
@@ -67,10 +69,12 @@ RBDC_HOST_DEVICE inline void frame_velocities(const Scalar* q, const Scalar* v, 
   const Scalar t16 = t6 + t11;
   const Scalar t17 = Scalar(1) - (t3 + t5);
   const Scalar t18 = t8 - t9;
+  v_world[4] = ((t16 * v[3]) + (t17 * v[4])) + (t18 * v[5]);
   const Scalar t19 = t7 - t10;
   const Scalar t20 = t8 + t9;
   const Scalar t21 = Scalar(1) - (t3 + t4);
   store_lanes(v_world + 0, make_lanes(((t13 * v[0]) + (t14 * v[1])) + (t15 * v[2]), ((t16 * v[0]) + (t17 * v[1])) + (t18 * v[2]), ((t19 * v[0]) + (t20 * v[1])) + (t21 * v[2]), ((t13 * v[3]) + (t14 * v[4])) + (t15 * v[5])));
+  v_world[5] = ((t19 * v[3]) + (t20 * v[4])) + (t21 * v[5]);
   // world frames: body 1 LF_abad/RF_abad/LH_abad/RH_abad
   const Lane t22 = (t14 * cos_lanes_abad_joint) + (t15 * sin_lanes_abad_joint);
   const Lane t23 = (t15 * cos_lanes_abad_joint) - (t14 * sin_lanes_abad_joint);
@@ -112,34 +116,20 @@ RBDC_HOST_DEVICE inline void frame_velocities(const Scalar* q, const Scalar* v, 
   const Lane t54 = -t53;
   const Lane t55 = (cos_lanes_knee_joint * t49) - (sin_lanes_knee_joint * t48);
   const Lane t56 = t51 + lane_v[2];
-  store_lanes(v_local + 4, make_lanes(v[4], v[5], t54[0], t56[0]));
   // velocity of frame LF_foot/RF_foot/LH_foot/RH_foot
   const Lane t57 = ((cos_lanes_knee_joint * t52) - (sin_lanes_knee_joint * t50)) - ((Scalar(0.195) * t56) + (lane_c[0] * t55));
-  store_lanes(v_local + 12, make_lanes(t54[1], t56[1], t55[1], t57[1]));
-  store_lanes(v_local + 24, make_lanes(t54[3], t56[3], t55[3], t57[3]));
   const Lane t58 = (((cos_lanes_abad_joint * t42) + (sin_lanes_abad_joint * t43)) + (Scalar(0.209) * t48)) + (Scalar(0.195) * t53);
   const Lane t59 = -t58;
-  v_local[28] = t59[3];
   const Lane t60 = ((sin_lanes_knee_joint * t52) + (cos_lanes_knee_joint * t50)) - (lane_c[0] * t53);
-  store_lanes(v_local + 8, make_lanes(t55[0], t57[0], t59[0], t60[0]));
-  store_lanes(v_local + 16, make_lanes(t59[1], t60[1], t54[2], t56[2]));
-  store_lanes(v_local + 20, make_lanes(t55[2], t57[2], t59[2], t60[2]));
-  v_local[29] = t60[3];
+  store_transposed_lanes<6>({v_local + 6, v_local + 12, v_local + 18, v_local + 24}, {t54, t56, t55, t57, t59, t60});
   const Lane t61 = (t37 * t55) - ((t36 * t53) + (t22 * t56));
   const Lane t62 = ((t38 * t53) - (t24 * t56)) + (t39 * t55);
-  store_lanes(v_world + 4, make_lanes(((t16 * v[3]) + (t17 * v[4])) + (t18 * v[5]), ((t19 * v[3]) + (t20 * v[4])) + (t21 * v[5]), t61[0], t62[0]));
   const Lane t63 = (t41 * t55) - ((t40 * t53) + (t26 * t56));
   const Lane t64 = ((t36 * t57) + (t22 * t58)) + (t37 * t60);
-  store_lanes(v_world + 12, make_lanes(t61[1], t62[1], t63[1], t64[1]));
-  store_lanes(v_world + 24, make_lanes(t61[3], t62[3], t63[3], t64[3]));
   const Lane t65 = ((t24 * t58) - (t38 * t57)) + (t39 * t60);
-  v_world[28] = t65[3];
   const Lane t66 = ((t40 * t57) + (t26 * t58)) + (t41 * t60);
   // outputs
-  store_lanes(v_world + 8, make_lanes(t63[0], t64[0], t65[0], t66[0]));
-  store_lanes(v_world + 16, make_lanes(t65[1], t66[1], t61[2], t62[2]));
-  store_lanes(v_world + 20, make_lanes(t63[2], t64[2], t65[2], t66[2]));
-  v_world[29] = t66[3];
+  store_transposed_lanes<6>({v_world + 6, v_world + 12, v_world + 18, v_world + 24}, {t61, t62, t63, t64, t65, t66});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::frame_velocities_66cf3a0d55f6
+}  // namespace rbdc_gen::mini_cheetah::common::frame_velocities_d35692076ffd

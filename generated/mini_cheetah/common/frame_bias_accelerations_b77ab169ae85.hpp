@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::frame_bias_accelerations_f1f54cb1fe14 {
+namespace rbdc_gen::mini_cheetah::common::frame_bias_accelerations_b77ab169ae85 {
 
 /// J̇v of the scene's frames: their accelerations at a = 0.
 ///
@@ -122,7 +122,9 @@ RBDC_HOST_DEVICE inline void frame_bias_accelerations(const Scalar* q, const Sca
   const Scalar t66 = t61 - t60;
   store_lanes(spatial + 0, make_lanes(Scalar(0), Scalar(0), Scalar(0), t66));
   const Scalar t67 = t63 - t62;
+  spatial[4] = t67;
   const Scalar t68 = t65 - t64;
+  spatial[5] = t68;
   // outward pass, velocity-product accelerations: body 1 LF_abad/RF_abad/LH_abad/RH_abad
   const Lane t69 = t43 * lane_v[0];
   const Lane t70 = t42 * lane_v[0];
@@ -136,24 +138,19 @@ RBDC_HOST_DEVICE inline void frame_bias_accelerations(const Scalar* q, const Sca
   // outward pass, velocity-product accelerations: body 3 LF_knee/RF_knee/LH_knee/RH_knee
   const Lane t77 = (Scalar(0.209) * t69) - (((cos_lanes_hip_joint * t72) + (sin_lanes_hip_joint * t71)) + (t52 * lane_v[1]));
   const Lane t78 = ((cos_lanes_knee_joint * t74) + (sin_lanes_knee_joint * t75)) - (t56 * lane_v[2]);
-  store_lanes(spatial + 4, make_lanes(t67, t68, t78[0], t73[0]));
   const Lane t79 = ((sin_lanes_knee_joint * t74) - (cos_lanes_knee_joint * t75)) - (t55 * lane_v[2]);
   // J̇v of frame trunk
   const Scalar t80 = (t60 - t61) + t66;
   const Scalar t81 = (t62 - t63) + t67;
   const Scalar t82 = (t64 - t65) + t68;
   store_lanes(classical + 0, make_lanes(Scalar(0), Scalar(0), Scalar(0), (((Scalar(1) - t12) * t80) + (t13 * t81)) + (t14 * t82)));
+  classical[4] = ((t15 * t80) + (t16 * t81)) + (t17 * t82);
+  classical[5] = (((t7 - t10) * t80) + (t18 * t81)) + (t19 * t82);
   // J̇v of frame LF_foot/RF_foot/LH_foot/RH_foot
   const Lane t83 = (((cos_lanes_knee_joint * t77) - (sin_lanes_knee_joint * t76)) - (t58 * lane_v[2])) + ((Scalar(0.195) * t69) - (lane_c[0] * t79));
-  store_lanes(spatial + 12, make_lanes(t78[1], t73[1], t79[1], t83[1]));
-  store_lanes(spatial + 24, make_lanes(t78[3], t73[3], t79[3], t83[3]));
   const Lane t84 = ((Scalar(0.209) * t74) - (((cos_lanes_abad_joint * t67) + (sin_lanes_abad_joint * t68)) + (t45 * lane_v[0]))) + (Scalar(0.195) * t78);
-  spatial[28] = t84[3];
   const Lane t85 = (((sin_lanes_knee_joint * t77) + (cos_lanes_knee_joint * t76)) + (t57 * lane_v[2])) + (lane_c[0] * t78);
-  store_lanes(spatial + 8, make_lanes(t79[0], t83[0], t84[0], t85[0]));
-  store_lanes(spatial + 16, make_lanes(t84[1], t85[1], t78[2], t73[2]));
-  store_lanes(spatial + 20, make_lanes(t79[2], t83[2], t84[2], t85[2]));
-  spatial[29] = t85[3];
+  store_transposed_lanes<6>({spatial + 6, spatial + 12, spatial + 18, spatial + 24}, {t78, t73, t79, t83, t84, t85});
   const Lane t86 = t57 - ((Scalar(0.195) * t59) + (lane_c[0] * t56));
   const Lane t87 = (t44 + (Scalar(0.209) * t49)) + (Scalar(0.195) * t55);
   const Lane t88 = t58 - (lane_c[0] * t55);
@@ -162,19 +159,12 @@ RBDC_HOST_DEVICE inline void frame_bias_accelerations(const Scalar* q, const Sca
   const Lane t91 = t85 + ((t55 * t87) - (t59 * t86));
   const Lane t92 = ((t34 * t78) + (t20 * t69)) + (t35 * t79);
   const Lane t93 = ((t22 * t69) - (t36 * t78)) + (t37 * t79);
-  store_lanes(classical + 4, make_lanes(((t15 * t80) + (t16 * t81)) + (t17 * t82), (((t7 - t10) * t80) + (t18 * t81)) + (t19 * t82), t92[0], t93[0]));
   const Lane t94 = ((t38 * t78) + (t24 * t69)) + (t39 * t79);
   const Lane t95 = ((t34 * t89) - (t20 * t90)) + (t35 * t91);
-  store_lanes(classical + 12, make_lanes(t92[1], t93[1], t94[1], t95[1]));
-  store_lanes(classical + 24, make_lanes(t92[3], t93[3], t94[3], t95[3]));
   const Lane t96 = (t37 * t91) - ((t36 * t89) + (t22 * t90));
-  classical[28] = t96[3];
   const Lane t97 = ((t38 * t89) - (t24 * t90)) + (t39 * t91);
   // outputs
-  store_lanes(classical + 8, make_lanes(t94[0], t95[0], t96[0], t97[0]));
-  store_lanes(classical + 16, make_lanes(t96[1], t97[1], t92[2], t93[2]));
-  store_lanes(classical + 20, make_lanes(t94[2], t95[2], t96[2], t97[2]));
-  classical[29] = t97[3];
+  store_transposed_lanes<6>({classical + 6, classical + 12, classical + 18, classical + 24}, {t92, t93, t94, t95, t96, t97});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::frame_bias_accelerations_f1f54cb1fe14
+}  // namespace rbdc_gen::mini_cheetah::common::frame_bias_accelerations_b77ab169ae85
