@@ -26,6 +26,8 @@ of several lane values (a leg's column of M) transposed, `store_transposed_lanes
 
 from __future__ import annotations
 
+import itertools
+
 from ..graph import expr as ex
 
 _BINARY_SYMBOL = {"add": "+", "sub": "-", "mul": "*", "div": "/"}
@@ -350,12 +352,12 @@ def _transposed_stores(arg_name, values):
         return (node.args[0], node.value) if node is not None and node.op == "lane_get" else (None, None)
 
     candidates = []
-    for k, node in enumerate(values):
+    for k in range(len(values)):
         value, lane = lane_of(k)
         if value is None or lane != 0:
             continue
         others = [places.get((value.id, l), [])[:TRANSPOSED_PLACES] for l in range(1, ex.LANES)]
-        for starts in _combinations([k], others):
+        for starts in itertools.product([k], *others):
             run = []
             while True:
                 step = [lane_of(s + len(run)) for s in starts]
@@ -372,14 +374,6 @@ def _transposed_stores(arg_name, values):
             chosen.append(TransposedStore(arg_name, starts, run,
                                           [(arg_name, e, values[e]) for e in sorted(entries)]))
     return chosen, covered
-
-
-def _combinations(prefix, choices):
-    if not choices:
-        yield prefix
-        return
-    for choice in choices[0]:
-        yield from _combinations(prefix + [choice], choices[1:])
 
 
 def _disjoint(starts, length):
