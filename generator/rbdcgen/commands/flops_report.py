@@ -1,8 +1,10 @@
-"""Operation counts of a compilation, generated vs generic, as a readable table or as JSON.
+"""Operation counts of a compilation, generated vs generic, as a readable table or as JSON, with the
+generated code's critical path (graph/latency.py: the cycles no schedule of it can beat in one call).
 A derivative quantity is also compared with its primal function (derivatives.PRIMAL, traced for the
 same robot and scene): the targets of issue 12 are ratios to one primal call."""
 from ..passes.differentiate import PRIMAL
 from ..graph.flops import count_ops, generic_ops
+from ..graph.latency import critical_path
 from ..passes.trace import trace_function
 
 KINDS = ("mul", "add", "div", "sqrt", "trig", "neg", "total")
@@ -12,7 +14,8 @@ def rows(compilation) -> list[dict]:
     result = []
     primal_counts = {}
     for f in compilation.functions:
-        row = {"function": f.name, "generated": count_ops(f),
+        row = {"function": f.name, "generated": count_ops(f), "critical_path": critical_path(f),
+               "looped": f.solve is not None,
                "generic": generic_ops(compilation.robot, compilation.scene, f.computes)}
         if f.name in PRIMAL:
             name = PRIMAL[f.name]
@@ -26,7 +29,8 @@ def rows(compilation) -> list[dict]:
 def as_json(compilation, table_rows) -> dict:
     def entry(r):
         out = {"generated": {k: r["generated"][k] for k in KINDS},
-               "generic": {k: r["generic"][k] for k in KINDS}}
+               "generic": {k: r["generic"][k] for k in KINDS},
+               "critical_path": {"cycles": r["critical_path"], "traced_part_only": r["looped"]}}
         if "primal" in r:
             out["primal"] = {"function": r["primal"]["function"],
                              **{k: r["primal"]["ops"][k] for k in KINDS}}
@@ -40,7 +44,7 @@ def table(compilation, table_rows) -> str:
     width = max([len("function")] + [len(r["function"]) for r in table_rows])
     counts = "".join(f"{k:>8}" for k in KINDS)
     lines = [f"{compilation.robot_name}, scene {compilation.scene.name}: operations per call",
-             f"{'function':<{width}}  {'':<9}{counts}  {'generic/generated':>17}"]
+             f"{'function':<{width}}  {'':<9}{counts}  {'path':>6}  {'generic/generated':>17}"]
     for r in table_rows:
         ratio = f"{r['generic']['total'] / max(1, r['generated']['total']):>16.1f}x"
         compared = [("generated", r["generated"], ""), ("generic", r["generic"], ratio)]
@@ -51,7 +55,10 @@ def table(compilation, table_rows) -> str:
         for label, ops, ratio in compared:
             values = "".join(f"{ops[k]:>8}" for k in KINDS)
             name = r["function"] if label == "generated" else ""
-            lines.append(f"{name:<{width}}  {label:<9}{values}  {ratio}")
+            path = f"{r['critical_path']}{'+' if r['looped'] else ''}" if label == "generated" else ""
+            lines.append(f"{name:<{width}}  {label:<9}{values}  {path:>6}  {ratio}")
+    lines.append("path: the generated code's critical path in cycles (graph/latency.py), a lower bound on one "
+                 "call's latency; +: a looped form, its traced part only")
     if any("primal" in r for r in table_rows):
         lines.append("ratio: generic/generated; on a primal row, derivative/primal (both generated)")
     return "\n".join(lines)

@@ -181,6 +181,15 @@ class SceneTest(unittest.TestCase):
         for name, counts in self.flops("full").items():
             self.assertLess(counts["generated"]["total"], counts["generic"]["total"], name)
 
+    def test_each_function_has_its_critical_path(self):
+        functions = self.flops("full")
+        path = {name: counts["critical_path"]["cycles"] for name, counts in functions.items()}
+        for name, cycles in path.items():
+            self.assertGreater(cycles, 0, name)
+            self.assertLess(cycles, functions[name]["generated"]["total"] * 15, name)  # ≤ a division per operation
+        self.assertLess(path["mass_matrix"], path["forward_dynamics"])  # forward dynamics goes through M
+        self.assertFalse(functions["inverse_dynamics"]["critical_path"]["traced_part_only"])
+
     def test_flops_table_lists_every_function(self):
         result = run_rbdc("flops", MINI_CHEETAH)
         self.assertEqual(result.returncode, 0, result.stderr)

@@ -1,0 +1,54 @@
+"""The critical path of a traced function: the longest chain of dependent operations from its inputs
+to an output, in cycles of a current x86 core. No schedule of the same operations, by any compiler or
+out-of-order core, computes one call in less: it bounds the latency of a call as the operation count
+bounds its throughput (docs/performance.md, "The critical path").
+
+The model (AMD Zen 4 and Zen 5, Intel from Skylake on, double and float alike): an addition,
+subtraction or multiplication takes LATENCY cycles; an addition or subtraction of a product may be
+one FMA, FMA cycles from the product's operands (g++ contracts `a * b + c` across statements, even
+where the product has other uses); a negation is free (folded into the FMA's sign or an xor off the
+path); a division and a square root take theirs; a joint angle's sine and cosine come from
+`joint_sincos`'s polynomial (JOINT_SINCOS). Lane operations take their scalar latency; a lane's
+extraction a shuffle; the sum over the lanes two additions and two shuffles. The loops of a looped
+form (fn.solve and the other loop kernels) are not traced, so for those forms this is the bound of the
+traced part alone."""
+
+from __future__ import annotations
+
+from . import expr as ex
+
+LATENCY = {"add": 3, "sub": 3, "mul": 3, "div": 13, "sqrt": 15, "neg": 0,
+           "lane_get": 1, "lane_rotate": 1, "lane_sum": 8}
+FMA = 4
+# Range reduction (a multiply-add and a rounding) and two polynomials of degree 6-7 by Horner's rule.
+JOINT_SINCOS = 40
+
+
+def critical_path(fn):
+    """Cycles of the longest dependent chain of fn's traced DAG (fn.output_exprs())."""
+    return critical_path_of(fn.output_exprs())
+
+
+def critical_path_of(outputs):
+    order = ex.reachable(outputs)
+    ready = {}     # node id -> cycle its value is ready
+    operands = {}  # a product's id -> cycle its operands are ready (an FMA's start)
+    for node in order:
+        if node.op in ("const", "sym"):
+            ready[node.id] = 0
+        elif node.op in ("sin", "cos"):
+            ready[node.id] = (0 if node.args[0].op == "sym" else ready[node.args[0].id]) + JOINT_SINCOS
+        elif node.op in ("add", "sub") and any(a.op == "mul" for a in node.args):
+            ready[node.id] = min(_fma_ready(node, product, ready, operands)
+                                 for product in node.args if product.op == "mul")
+        else:
+            ready[node.id] = max([ready[a.id] for a in node.args], default=0) + LATENCY.get(node.op, 0)
+            if node.op == "mul":
+                operands[node.id] = ready[node.id] - LATENCY["mul"]
+    return max([ready[o.id] for o in outputs], default=0)
+
+
+def _fma_ready(node, product, ready, operands):
+    """When `node` (x ± y) is ready as an FMA of `product` with the other operand's value."""
+    other = node.args[1] if node.args[0] is product else node.args[0]
+    return max(operands[product.id], ready[other.id]) + FMA
