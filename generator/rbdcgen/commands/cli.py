@@ -73,7 +73,9 @@ def build_parser() -> argparse.ArgumentParser:
         "flops", help="operation counts per function, generated vs generic",
         description="Counts multiplications, additions, divisions, square roots and trig calls of each "
                     "generated function (from its expression DAG) and of the generic runtime algorithm "
-                    "(dense 6x6 arithmetic, counted analytically).")
+                    "(dense 6x6 arithmetic, counted analytically), and gives each generated function's "
+                    "critical path: the cycles of its longest chain of dependent operations on a current "
+                    "x86 core, a lower bound on one call's latency.")
     _robot_arguments(flops)
     flops.add_argument("--json", action="store_true", help="print JSON instead of a table")
 
