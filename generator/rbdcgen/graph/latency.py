@@ -4,14 +4,14 @@ out-of-order core, computes one call in less: it bounds the latency of a call as
 bounds its throughput (docs/performance.md, "The critical path").
 
 The model (AMD Zen 4 and Zen 5, Intel from Skylake on, double and float alike): an addition,
-subtraction or multiplication takes LATENCY cycles; an addition or subtraction of a product may be
-one FMA, FMA cycles from the product's operands (g++ contracts `a * b + c` across statements, even
-where the product has other uses); a negation is free (folded into the FMA's sign or an xor off the
-path); a division and a square root take theirs; a joint angle's sine and cosine come from
-`joint_sincos`'s polynomial (JOINT_SINCOS). Lane operations take their scalar latency; a lane's
-extraction a shuffle; the sum over the lanes two additions and two shuffles. The loops of a looped
-form (fn.solve and the other loop kernels) are not traced, so for those forms this is the bound of the
-traced part alone."""
+subtraction or multiplication takes LATENCY cycles; an addition or subtraction of a product may
+instead be one FMA, FMA cycles from the product's operands, whichever is sooner (g++ contracts
+`a * b + c` across statements, even where the product has other uses); a negation is free (folded into
+the FMA's sign or an xor off the path); a division and a square root take theirs; a joint angle's
+sine and cosine come from `joint_sincos`'s polynomial (JOINT_SINCOS). Lane operations take their
+scalar latency; a lane's extraction a shuffle; the sum over the lanes two additions and two
+shuffles. The loops of a looped form (fn.solve and the other loop kernels) are not traced, so for
+those forms this is the bound of the traced part alone."""
 
 from __future__ import annotations
 
@@ -39,8 +39,9 @@ def critical_path_of(outputs):
         elif node.op in ("sin", "cos"):
             ready[node.id] = (0 if node.args[0].op == "sym" else ready[node.args[0].id]) + JOINT_SINCOS
         elif node.op in ("add", "sub") and any(a.op == "mul" for a in node.args):
-            ready[node.id] = min(_fma_ready(node, product, ready, operands)
-                                 for product in node.args if product.op == "mul")
+            plain = max(ready[a.id] for a in node.args) + LATENCY[node.op]  # two products side by side
+            ready[node.id] = min([plain] + [_fma_ready(node, product, ready, operands)
+                                            for product in node.args if product.op == "mul"])
         else:
             ready[node.id] = max([ready[a.id] for a in node.args], default=0) + LATENCY.get(node.op, 0)
             if node.op == "mul":

@@ -23,8 +23,11 @@ class SmallGraphs(unittest.TestCase):
         x, y, z, w = self.x, self.y, self.z, self.w
         self.assertEqual(critical_path_of([x * y + z]), FMA)
         self.assertEqual(critical_path_of([z - x * y]), FMA)
-        # two products: one is fused, the other a multiplication of its own before it
-        self.assertEqual(critical_path_of([x * y + z * w]), LATENCY["mul"] + FMA)
+        # two products side by side, then their sum: sooner than either product fused after the other
+        self.assertEqual(critical_path_of([x * y + z * w]), LATENCY["mul"] + LATENCY["add"])
+        # a product whose other operand comes late: the FMA waits for that operand
+        late = ((z + w) + w) + w
+        self.assertEqual(critical_path_of([x * y + late]), 3 * LATENCY["add"] + LATENCY["add"])
 
     def test_a_product_used_twice_fuses_into_each_addition(self):
         x, y, z, w = self.x, self.y, self.z, self.w
