@@ -1,12 +1,14 @@
 """Building and running the benchmark programs for bench/report: configure and build a build
 directory, run a Google Benchmark program, count FLOPs (`rbdc flops`) and instructions (callgrind), and
 describe the machine."""
+import atexit
 import glob
 import json
 import os
 import pathlib
 import platform
 import re
+import shutil
 import subprocess
 import sys
 
@@ -47,15 +49,32 @@ def run_bench(build_dir, repetitions, min_time, filter_, program="rbdc-bench", i
               statistic="median"):
     """Runs a bench program (its console output is the progress) and returns {name: cpu ns}, the
     median (or min) over repetitions; with `interleave` the repetitions of all cases are randomly
-    interleaved instead of run back to back."""
+    interleaved instead of run back to back. Each call runs a fresh copy of the program: its code in
+    other physical pages than the last run's, which moves the long generated functions by up to 170 %
+    (docs/benchmarks.md, "Long straight-line functions and the binary's pages"), so that several
+    runs sample several placements."""
     out = build_dir / f"{program}.json"
-    command = [build_dir / "bin" / program, f"--benchmark_repetitions={repetitions}",
+    command = [fresh_copy(build_dir / "bin" / program), f"--benchmark_repetitions={repetitions}",
                f"--benchmark_min_time={min_time}", f"--benchmark_filter={filter_}",
                f"--benchmark_out={out}", "--benchmark_out_format=json"]
     command += ["--benchmark_enable_random_interleaving=true"] if interleave else \
         ["--benchmark_report_aggregates_only=true"]
     run(command)
     return bench_statistics(json.loads(out.read_text()), statistic)
+
+
+_copies = []
+
+
+def fresh_copy(program):
+    """A new copy of `program` beside it, removed when the report exits. The copies stay until then,
+    so that no copy's pages are the ones an earlier copy just gave back."""
+    if not _copies:
+        atexit.register(lambda: [copy.unlink(missing_ok=True) for copy in _copies])
+    copy = program.with_name(f".{program.name}.run{len(_copies)}.{os.getpid()}")
+    shutil.copy2(program, copy)
+    _copies.append(copy)
+    return copy
 
 
 def bench_statistics(results, statistic):
