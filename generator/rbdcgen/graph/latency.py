@@ -39,7 +39,7 @@ def critical_path_of(outputs):
         elif node.op in ("sin", "cos"):
             ready[node.id] = (0 if node.args[0].op == "sym" else ready[node.args[0].id]) + JOINT_SINCOS
         elif node.op in ("add", "sub") and any(a.op == "mul" for a in node.args):
-            plain = max(ready[a.id] for a in node.args) + LATENCY[node.op]  # two products side by side
+            plain = max(ready[a.id] for a in node.args) + LATENCY[node.op]  # the products computed first
             ready[node.id] = min([plain] + [_fma_ready(node, product, ready, operands)
                                             for product in node.args if product.op == "mul"])
         else:

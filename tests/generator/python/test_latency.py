@@ -1,6 +1,5 @@
-"""The critical path of a traced function (rbdcgen.graph.latency): exact on small graphs, FMAs fused
-as the compilers contract them, and on a serial chain it grows by the same cycles per link, where the
-operation count grows too but a tree of independent limbs would not lengthen it."""
+"""The critical path of a traced function (rbdcgen.graph.latency): exact on small graphs, a sum of a
+product an FMA where that is sooner, and on a serial chain it grows by the same cycles per link."""
 
 import unittest
 
@@ -25,7 +24,7 @@ class SmallGraphs(unittest.TestCase):
         self.assertEqual(critical_path_of([z - x * y]), FMA)
         # two products side by side, then their sum: sooner than either product fused after the other
         self.assertEqual(critical_path_of([x * y + z * w]), LATENCY["mul"] + LATENCY["add"])
-        # a product whose other operand comes late: the FMA waits for that operand
+        # a product whose other operand comes late: the plain sum after that operand beats the FMA
         late = ((z + w) + w) + w
         self.assertEqual(critical_path_of([x * y + late]), 3 * LATENCY["add"] + LATENCY["add"])
 
