@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_32f40400e738.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_15678ff70b4b.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_32f40400e738.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_15678ff70b4b.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -32,9 +32,9 @@ namespace rbdc_gen::mini_cheetah::contact {
 ///             50190  48572   26     0    24  1625  100437
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 27687 arithmetic
-///   instructions (cost 34120), scalar tree 100802 (cost 237165), looped solve 40577 (cost
+///   instructions (cost 34228), scalar tree 100802 (cost 237165), looped solve 40577 (cost
 ///   65056)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_32f40400e738::contact_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_15678ff70b4b::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

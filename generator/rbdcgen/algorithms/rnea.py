@@ -4,6 +4,7 @@ dynamics M a + c + g, all one outward and one inward pass with different inputs.
 
 from __future__ import annotations
 
+from ..graph import expr as ex
 from ..graph import spatial as sp
 from .kinematics import body_velocity, world_frames
 
@@ -76,32 +77,73 @@ def rnea(m, base_acceleration, joint_accelerations, with_velocity, external=None
         a_i = X_λ(i)^i a_λ(i) + v_i × S_i q̇_i + S_i q̈_i,   f_i = I_i a_i + v_i ×* I_i v_i − f_i^ext.
     `base_acceleration` is a₀ (bias and gravity included), `joint_accelerations[i]` q̈_i or None,
     `with_velocity` enables the velocity product terms, `external` the body wrenches. Rotors take
-    part as bodies of their own (rotor_wrenches)."""
+    part as bodies of their own (rotor_wrenches). A limb pair's bodies carry a and v in one lane
+    value (pair_step)."""
     nb = m.robot.nb
     velocities = [m.base_velocity()] if with_velocity else None
     accelerations = [base_acceleration]
+    packed = {}  # pair body → its motion (a_i | v_i), pair_step
     forces = []
     for i in range(nb):  # body by body, so that a body's velocity and acceleration die with its children's
         m.mark("outward pass", i)
-        if i > 0:
+        if i > 0 and with_velocity and m.spare_lanes(i):
             j = m.robot.parent[i]
-            S = m.motion_subspace(i)
-            a_i = m.X_up(i).motion(accelerations[j])
+            parent = packed[j] if j in packed else pack_pair(accelerations[j], velocities[j])
+            q_dd = None if joint_accelerations is None else joint_accelerations[i]
+            packed[i], f_i = pair_step(m, i, parent, q_dd)
+            velocities.append(None)  # read by no rotor: limbs in lanes have none
+            accelerations.append(None)
+        else:
+            if i > 0:
+                j = m.robot.parent[i]
+                S = m.motion_subspace(i)
+                a_i = m.X_up(i).motion(accelerations[j])
+                if with_velocity:
+                    velocities.append(body_velocity(m, i, velocities[j]))
+                    a_i = sp.vadd(a_i, sp.crm(velocities[i], sp.vscale(m.vi(i), S)))
+                if joint_accelerations is not None:
+                    a_i = sp.vadd(a_i, sp.vscale(joint_accelerations[i], S))
+                accelerations.append(a_i)
+            inertia = m.inertia(i)
+            f_i = inertia.apply(accelerations[i])
             if with_velocity:
-                velocities.append(body_velocity(m, i, velocities[j]))
-                a_i = sp.vadd(a_i, sp.crm(velocities[i], sp.vscale(m.vi(i), S)))
-            if joint_accelerations is not None:
-                a_i = sp.vadd(a_i, sp.vscale(joint_accelerations[i], S))
-            accelerations.append(a_i)
-        inertia = m.inertia(i)
-        f_i = inertia.apply(accelerations[i])
-        if with_velocity:
-            f_i = sp.vadd(f_i, sp.crf(velocities[i], inertia.apply(velocities[i])))
+                f_i = sp.vadd(f_i, sp.crf(velocities[i], inertia.apply(velocities[i])))
         if external is not None and external[i] is not None:
             f_i = sp.vsub(f_i, external[i])
         forces.append(f_i)
     return inward_pass(m, forces, rotor_wrenches(m, velocities, accelerations, joint_accelerations),
                        root_wrench)
+
+
+# A limb pair fills lanes 2 and 3 with lanes 0 and 1 again (views/limbs.py); its outward pass puts
+# v_i there instead, so that one transform and one inertia product serve a_i and v_i.
+_LOW = (1.0, 1.0, 0.0, 0.0)
+_HIGH = (0.0, 0.0, 1.0, 1.0)
+
+
+def pack_pair(a, v):
+    """(a | v): a spine body's a in lanes 0 and 1, its v in lanes 2 and 3."""
+    low, high = ex.lane_const(_LOW), ex.lane_const(_HIGH)
+    return tuple(x * low + y * high for x, y in zip(a, v))
+
+
+def pair_step(m, i, parent, q_dd):
+    """Pair body i's outward step and wrench on (a | v) values (lanes 0-1 the pair's a, 2-3 its v):
+        (a_i | v_i) = X (a_λ(i) | v_λ(i)) + S (q̈_i | q̇_i) + swap(0 | v_i × S q̇_i),
+        f_i = I (a_i | v_i) + swap(· | v_i ×* I v_i),
+    swap exchanging the halves (lane_rotate by 2), the cross products taken of the whole value and
+    kept in the half where they are right. Returns (a_i | v_i) and f_i, good in lanes 0 and 1."""
+    S = m.motion_subspace(i)
+    rates = m.vi(i) * ex.lane_const(_HIGH)  # (0 | q̇_i)
+    steps = rates if q_dd is None else rates + q_dd * ex.lane_const(_LOW)
+    carried = m.X_up(i).motion(parent)  # v_i × S q̇_i = (X v_λ(i)) × S q̇_i: S × S = 0
+    motion = sp.vadd(sp.vadd(carried, sp.vscale(steps, S)), _swap(sp.crm(carried, sp.vscale(rates, S))))
+    momentum = m.inertia(i).apply(motion)
+    return motion, sp.vadd(momentum, _swap(sp.crf(motion, momentum)))
+
+
+def _swap(vector):
+    return tuple(ex.lane_rotate(x, ex.LANES // 2) for x in vector)
 
 
 def velocity_bias(m):

@@ -380,6 +380,8 @@ def lane_rotate(x, shift):
     values = constant_lanes(x)
     if values is not None:
         return lane_const(values[(k + shift) % LANES] for k in range(LANES))
+    if x.op == "neg":  # outside, where a sum can take it as a subtraction
+        return neg(lane_rotate(x.args[0], shift))
     return x.graph.intern("lane_rotate", (x,), shift)
 
 

@@ -37,8 +37,13 @@ INVERSE = {"mass_matrix_inverse": lambda m: {"M_inv": _columns(forward_dynamics.
 CONTACT_TERMS = {"contact_dynamics_derivative_terms": lane_contact_derivatives.contact_dynamics_derivative_terms}
 # the same for forward_dynamics_derivatives' looped solve: its right-hand sides and M's factor
 SOLVE_TERMS = {"forward_dynamics_derivative_terms": lane_derivatives.forward_dynamics_derivative_terms}
+# function → its lane function with a limb pair's a and v in one lane value (rnea.pair_step). Not for
+# the derivatives: their tangents are non-zero where either one's is, so packed they cost more
+# (humanoid32's ∂q̈ terms: 54 804 → 55 444 instructions).
+PAIRED = {"bias": "bias_paired_lanes", "inverse_dynamics": "inverse_dynamics_paired_lanes"}
 # lane function → the function it equals
-SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
+SCALAR = {**{lanes: name for name, lanes in PAIRED.items()},
+          "bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
           "mass_matrix_lanes": "mass_matrix", "mass_matrix_lower_lanes": "mass_matrix_lower",
           "forward_dynamics_lanes": "forward_dynamics", "forward_dynamics_aba_lanes": "forward_dynamics_aba",
           "osc_open_chain_lanes": "osc_open_chain",
@@ -47,7 +52,7 @@ SCALAR = {"bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
           **{name + "_lanes": name for name in INVERSE},
           **{name + "_lanes": name for name in CONTACT_TERMS}, **{name + "_lanes": name for name in SOLVE_TERMS}}
 # function → its lane function
-LANE_NAME = {scalar: lanes for lanes, scalar in SCALAR.items()}
+LANE_NAME = {scalar: lanes for lanes, scalar in SCALAR.items() if lanes not in PAIRED.values()}
 # lane functions with the foot forces as lane inputs
 WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_aba_lanes", "forward_dynamics_derivatives_lanes", "osc_open_chain_lanes",
              "contact_dynamics_lanes", "impulse_dynamics_lanes", "feet_bias_accelerations_lanes",
@@ -63,7 +68,8 @@ ANY_GROUPS = ("bias", "inverse_dynamics", "mass_matrix", "mass_matrix_lower", "f
 def model(robot, scene, zero_inputs, name):
     """The traced model of lane function `name`: the spine and one lane limb per group."""
     groups = limb_groups(robot) if SCALAR[name] in ANY_GROUPS else quadruped_groups(robot)
-    return LaneModel(robot, scene, groups, zero_inputs, feet=name in WITH_FEET, frames=SCALAR[name] in FRAMES)
+    return LaneModel(robot, scene, groups, zero_inputs, feet=name in WITH_FEET, frames=SCALAR[name] in FRAMES,
+                     pair_streams=name in PAIRED.values())
 
 
 def available(robot, scene, name):
@@ -92,7 +98,7 @@ def spec(robot, scalar_specs):
     """trace.py's function table for the lane functions (same shape as trace._spec); `scalar_specs`:
     the scalar functions' table (derivatives included) the lane functions take their signatures from."""
     nv = robot.nv
-    return {
+    table = {
         **_in_lanes(scalar_specs, DERIVATIVES),
         **_in_lanes(centroidal.specs(nv), CENTROIDAL),
         **_in_lanes(scalar_specs, {name: scalar_specs[name][3] for name in FRAMES + FEET}),
@@ -140,6 +146,10 @@ def spec(robot, scalar_specs):
             osc.output_specs(robot.n_joints),
             lambda m: _osc_outputs(m, osc.osc_open_chain(m))),
     }
+    for name, paired in PAIRED.items():  # the same trace on a model with pair_streams
+        doc, inputs, outputs, trace = table[LANE_NAME[name]]
+        table[paired] = (doc + " A limb pair's a and v share one lane value.", inputs, outputs, trace)
+    return table
 
 
 def _in_lanes(specs, traces):

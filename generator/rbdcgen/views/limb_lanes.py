@@ -51,10 +51,12 @@ class LaneModel(TracedModel):
     robot. With `feet`, the scene's feet on the limbs become lane feet (the same number on each limb
     of a group, at the same bodies of the limb) with the lane input lane_f, those on the spine stay
     scalar feet with their input f; without, the traced function uses no feet. Frames, contacts and
-    the solves of limb columns need the quadruped's one group of the trunk (limbs)."""
+    the solves of limb columns need the quadruped's one group of the trunk (limbs). With
+    `pair_streams`, a pair's spare lanes may carry a second quantity (spare_lanes)."""
 
-    def __init__(self, robot, scene, groups, zero_inputs=(), feet=False, frames=False):
+    def __init__(self, robot, scene, groups, zero_inputs=(), feet=False, frames=False, pair_streams=False):
         super().__init__(robot, scene, zero_inputs)
+        self.pair_streams = pair_streams  # spare_lanes
         self.full = self.robot
         self.groups = groups
         self.limbs = groups[0].lanes
@@ -242,6 +244,10 @@ class LaneModel(TracedModel):
         if group is None or self._group[self.robot.parent[i]] is not None:
             return value
         return _sum_lanes(value, self.groups[group])
+
+    def spare_lanes(self, i):
+        group = self._group[i]
+        return self.pair_streams and group is not None and 2 * len(self.groups[group].limbs) == ex.LANES
 
     # --- outputs --------------------------------------------------------------------------------
     def full_index(self, x, lane):

@@ -171,6 +171,11 @@ class TracedModel:
         here; summed over the lanes where a lane limb meets the trunk (views/limb_lanes.LaneModel)."""
         return value
 
+    def spare_lanes(self, i):
+        """Whether body i's lanes 2 and 3 only repeat lanes 0 and 1 (a limb pair's), so that a pass
+        may carry a second quantity there (algorithms/rnea.py): never here."""
+        return False
+
     def into_dof(self, k, i, term):
         """Dof k's term as it updates dof i's entries in the LᵀDL factorisation and solve: unchanged
         here; summed over the lanes where a lane limb meets the trunk (views/limb_lanes.LaneModel)."""

@@ -46,6 +46,14 @@ class Folding(unittest.TestCase):
         self.assertIs(-(x - y), y - x)
         self.assertIs((-2.0) * x, -(2.0 * x))
 
+    def test_a_rotated_negation_stays_a_subtraction(self):
+        """lane_rotate takes a negation outside, so that the sum it joins folds it in."""
+        x, y = ex.symbol("lane_v", 0), ex.symbol("lane_v", 1)
+        rotated = ex.lane_rotate(-y, 2)
+        self.assertEqual(rotated.op, "neg")
+        self.assertEqual((x + rotated).op, "sub")
+        self.assertIs(ex.lane_rotate(ex.lane_const([1.0, 2.0, 3.0, 4.0]), 2), ex.lane_const([3.0, 4.0, 1.0, 2.0]))
+
     def test_constant_factors_combine(self):
         x = self.x
         node = 3.0 * (2.0 * x)

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_4ed7c3eed34f {
+namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_93f81ef3bfbc {
 
 /// Impulse dynamics of a touchdown of the scene's contact feet: v⁺ and Λ of M (v⁺ − v) = JᵀΛ, J v⁺
 /// = −e J v (docs/runtime.md).
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_4ed7c3eed34f {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             4084  3562   26     0    24   76   7772
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4187 arithmetic
-///   instructions (cost 5289), scalar tree 7375 (cost 12940)
+///   instructions (cost 5397), scalar tree 7375 (cost 12940)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void impulse_dynamics(const Scalar* q, const Scalar* v, const Scalar* restitution, Scalar* v_plus, Scalar* impulse) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -847,4 +847,4 @@ RBDC_HOST_DEVICE inline void impulse_dynamics(const Scalar* q, const Scalar* v, 
   store_transposed_lanes<3>({v_plus + 6, v_plus + 9, v_plus + 12, v_plus + 15}, {t761, t762, t763});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_4ed7c3eed34f
+}  // namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_93f81ef3bfbc

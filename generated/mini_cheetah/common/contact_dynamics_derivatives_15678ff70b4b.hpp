@@ -12,7 +12,7 @@
 #include "rbdc_gen/lanes.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_32f40400e738 {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_15678ff70b4b {
 
 /// The traced part of contact_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -2385,7 +2385,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
 ///             50190  48572   26     0    24  1625  100437
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 27687 arithmetic
-///   instructions (cost 34120), scalar tree 100802 (cost 237165), looped solve 40577 (cost
+///   instructions (cost 34228), scalar tree 100802 (cost 237165), looped solve 40577 (cost
 ///   65056)
 /// emission: looped solve: contact_dynamics_derivatives_terms writes the 48 right-hand sides, Z =
 ///   L⁻ᵀJᵀ and the factors; loops solve them all at once (M⁻¹'s halves with J M⁻¹ and M⁻¹Jᵀ
@@ -2421,4 +2421,4 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 12, 48>(solve_R2, solve_R2_out);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_32f40400e738
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_15678ff70b4b

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_32e1a8f94b88 {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_920c7ab3e486 {
 
 /// Rigid-contact dynamics of the scene's contact feet: a and λ of M a − Jᵀλ = Sᵀτ − c − g, J a =
 /// −J̇v (Schur complement, damped proximal Delassus solve; docs/runtime.md).
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::common::contact_dynamics_32e1a8f94b88 {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             5441  4708   26     0    24   80  10279
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4954 arithmetic
-///   instructions (cost 7130), scalar tree 9854 (cost 18890)
+///   instructions (cost 7238), scalar tree 9854 (cost 18890)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void contact_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, Scalar* a, Scalar* lambda) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -1016,4 +1016,4 @@ RBDC_HOST_DEVICE inline void contact_dynamics(const Scalar* q, const Scalar* v, 
   store_transposed_lanes<3>({a + 6, a + 9, a + 12, a + 15}, {t913, t914, t915});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_32e1a8f94b88
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_920c7ab3e486
