@@ -17,6 +17,7 @@ def mass_matrix(m):
     zero = ex.const(0.0)
     H = [[zero] * nv for _ in range(nv)]
     composite = [m.inertia(i) for i in range(robot.nb)]        # I_ci ← I_i
+    waiting = {}  # pair body → (a child's F in its coordinates, the child's column)
     for i in range(1, robot.nb):                               # rotor i rides on λ(i)
         if m.rotor(i) is not None:
             X_rot, _, rotor_inertia = m.rotor(i)
@@ -45,18 +46,30 @@ def mass_matrix(m):
             F = m.X_up(body).force_T(F)
             return sp.vadd(F, rotor_force) if body == i and rotor_force is not None else F
 
+        # a pair body's column and its child's share the walk from here (pair_columns)
+        columns = [(col, lambda x: x)] + ([(waiting[i][1], _high)] if i in waiting else [])
+        if i in waiting:
+            F = pair_columns(F, waiting.pop(i)[0])
+        j = robot.parent[i]
+        if m.spare_lanes(i) and m.spare_lanes(j) and j not in waiting and len(columns) == 1:
+            F = to_parent(i, F)                                   # one step alone, then the parent's walk
+            waiting[j] = (F, col)
+            row = m.joint(j).v_index
+            H[row][col] = H[col][row] = sp.dot(m.motion_subspace(j), F)
+            continue
         body = i
         while robot.parent[body] != 0:                            # Eq. 27, j ∈ κ(i)
             F = to_parent(body, F)
             body = robot.parent[body]
             row = m.joint(body).v_index
-            H[row][col] = sp.dot(m.motion_subspace(body), F)
-            H[col][row] = H[row][col]
+            entry = sp.dot(m.motion_subspace(body), F)
+            for c, lanes in columns:
+                H[row][c] = H[c][row] = lanes(entry)
         if robot.floating_base:
             F = to_parent(body, F)                                # F_i in trunk coordinates
             for r in range(6):
-                H[r][col] = F[r]
-                H[col][r] = F[r]
+                for c, lanes in columns:
+                    H[r][c] = H[c][r] = lanes(F[r])
     if robot.floating_base:
         I0 = composite[0].dense()                                 # H_00 = I_c0 (Eq. 29)
         for r in range(6):
@@ -102,3 +115,20 @@ def lower_triangle(entries, n):
     """The column-major n × n `entries` with those above the diagonal (row < column) marked None:
     not written (mass_matrix_lower, whose callers read M through its lower triangle)."""
     return tuple(None if k % n < k // n else e for k, e in enumerate(entries))
+
+
+# A limb pair fills lanes 2 and 3 with lanes 0 and 1 again (views/limbs.py); there a pair body's walk
+# towards the root also carries its child's column, which joins it one step up.
+_LOW = (1.0, 1.0, 0.0, 0.0)
+_HIGH = (0.0, 0.0, 1.0, 1.0)
+
+
+def pair_columns(F, F_child):
+    """(F | F_child): the body's F_i in lanes 0-1, its child's (already in its coordinates) in 2-3."""
+    low, high = ex.lane_const(_LOW), ex.lane_const(_HIGH)
+    return tuple(x * low + y * high for x, y in zip(F, F_child))
+
+
+def _high(x):
+    """Lanes 2-3 of x in lanes 0-1, where the outputs read a pair (ex.lane_get of a rotation: no shuffle)."""
+    return ex.lane_rotate(x, ex.LANES // 2)

@@ -368,7 +368,12 @@ def lane_sum(x):
 
 
 def lane_get(x, lane):
-    """Lane `lane` of x as a scalar (x itself when it is no lane value)."""
+    """Lane `lane` of x as a scalar (x itself when it is no lane value); of a rotated value, the lane
+    it came from (no shuffle)."""
+    if x.op == "lane_rotate":
+        return lane_get(x.args[0], (lane + x.value) % LANES)
+    if x.op == "neg" and x.args[0].op == "lane_rotate":
+        return neg(lane_get(x.args[0], lane))
     return x.graph.intern("lane_get", (x,), int(lane)) if x.lane else x
 
 

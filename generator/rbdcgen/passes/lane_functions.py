@@ -37,10 +37,14 @@ INVERSE = {"mass_matrix_inverse": lambda m: {"M_inv": _columns(forward_dynamics.
 CONTACT_TERMS = {"contact_dynamics_derivative_terms": lane_contact_derivatives.contact_dynamics_derivative_terms}
 # the same for forward_dynamics_derivatives' looped solve: its right-hand sides and M's factor
 SOLVE_TERMS = {"forward_dynamics_derivative_terms": lane_derivatives.forward_dynamics_derivative_terms}
-# function → its lane function with a limb pair's a and v in one lane value (rnea.pair_step). Not for
-# the derivatives: their tangents are non-zero where either one's is, so packed they cost more
-# (humanoid32's ∂q̈ terms: 54 804 → 55 444 instructions).
-PAIRED = {"bias": "bias_paired_lanes", "inverse_dynamics": "inverse_dynamics_paired_lanes"}
+# function → its lane function whose limb pairs carry a second quantity in their spare lanes 2-3, and
+# what it is. Not the derivatives: their tangents are non-zero where either quantity's is, so
+# packed they cost more (humanoid32's ∂q̈ terms with rnea.pair_step: 54 804 → 55 444 instructions).
+PAIRED = {"bias": "bias_paired_lanes", "inverse_dynamics": "inverse_dynamics_paired_lanes",
+          "mass_matrix": "mass_matrix_paired_lanes", "mass_matrix_lower": "mass_matrix_lower_paired_lanes"}
+_MOTION = "a pair's accelerations in lanes 0-1, its velocities in 2-3, so that one transform and one inertia product serve both"
+_COLUMNS = "a pair body's column of M in lanes 0-1, a child's in 2-3, so that one walk to the root serves both"
+PAIRED_WORDS = {"bias": _MOTION, "inverse_dynamics": _MOTION, "mass_matrix": _COLUMNS, "mass_matrix_lower": _COLUMNS}
 # lane function → the function it equals
 SCALAR = {**{lanes: name for name, lanes in PAIRED.items()},
           "bias_lanes": "bias", "inverse_dynamics_lanes": "inverse_dynamics",
@@ -148,7 +152,7 @@ def spec(robot, scalar_specs):
     }
     for name, paired in PAIRED.items():  # the same trace on a model with pair_streams
         doc, inputs, outputs, trace = table[LANE_NAME[name]]
-        table[paired] = (doc + " A limb pair's a and v share one lane value.", inputs, outputs, trace)
+        table[paired] = (doc + " In a limb pair, %s." % PAIRED_WORDS[name], inputs, outputs, trace)
     return table
 
 

@@ -177,7 +177,7 @@ _UNROLLED_PARTS = (
 # terms looped as well, as in ∂q̈'s looped solve).
 _FORCED = {"limb_lanes": ("limb_lanes", "lanes_looped_solve"), "looped_rnea": ("looped_rnea", "looped_feet")}
 
-_SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "paired_lanes": "limb lanes with the pairs' a and v together",
+_SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "paired_lanes": "limb lanes with the pairs' spare lanes used",
           "looped_solve": "looped solve",
           "lanes_looped_solve": "limb lanes and a looped solve",
           "aba": "articulated-body algorithm", "aba_lanes": "articulated-body algorithm in limb lanes", "looped_factor": "looped factor", "looped_crba": "looped CRBA",
@@ -200,8 +200,7 @@ _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes,
 
 # The lane forms' words for a robot whose limbs in lanes are not the quadruped's (limbs.groups_in_words).
 _LANE_FORMS = {"limb_lanes": " (%s; the rest scalar)", "aba_lanes": " (%s; the rest scalar)",
-               "paired_lanes": " (%s; the rest scalar; a pair's accelerations in lanes 0-1, its velocities in "
-                               "2-3, so that one transform and one inertia product serve both)",
+               "paired_lanes": " (%s; the rest scalar; %s)",
                "lanes_looped_solve": " (the terms traced with %s, the solve's right-hand sides in SIMD across columns)"}
 
 
@@ -235,15 +234,18 @@ def scheduled_function(robot, scene, name):
     others = ", ".join(["%s %s" % (_SHORT[form], _figures(*figures[form])) for form in figures if form != best]
                        + untraced)
     count, weighted = figures[best]
-    detail = _detail(robot, best)
+    detail = _detail(robot, best, name)
     return replace(traced[best], doc=signature(robot, scene, name)[0], schedule="%s%s: %d arithmetic instructions%s, %s"
                    % (_SHORT[best], detail, count, _cost(count, weighted), others))
 
 
-def _detail(robot, form):
-    """The schedule line's words on `form`: the lane forms say which limbs are in lanes."""
+def _detail(robot, form, name):
+    """The schedule line's words on `form`: the lane forms say which limbs are in lanes (the paired
+    form also what the pairs' spare lanes carry)."""
     groups = limbs.groups_in_words(robot) if form in _LANE_FORMS else None
-    return _DETAIL[form] if groups is None else _LANE_FORMS[form] % groups
+    if groups is None:
+        return _DETAIL[form]
+    return _LANE_FORMS[form] % ((groups, lane_functions.PAIRED_WORDS[name]) if form == "paired_lanes" else groups)
 
 
 def _figures(count, weighted):

@@ -54,6 +54,11 @@ class Folding(unittest.TestCase):
         self.assertEqual((x + rotated).op, "sub")
         self.assertIs(ex.lane_rotate(ex.lane_const([1.0, 2.0, 3.0, 4.0]), 2), ex.lane_const([3.0, 4.0, 1.0, 2.0]))
 
+    def test_a_lane_of_a_rotated_value_is_read_where_it_came_from(self):
+        x = ex.symbol("lane_v", 0) * ex.symbol("lane_v", 1)
+        self.assertIs(ex.lane_get(ex.lane_rotate(x, 2), 1), ex.lane_get(x, 3))
+        self.assertIs(ex.lane_get(ex.lane_rotate(-x, 2), 0), -ex.lane_get(x, 2))
+
     def test_constant_factors_combine(self):
         x = self.x
         node = 3.0 * (2.0 * x)

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::inverse_dynamics_74b72c54ebae {
+namespace rbdc_gen::humanoid32::common::inverse_dynamics_11a04975a9ef {
 
 /// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3).
 ///
@@ -24,8 +24,8 @@ namespace rbdc_gen::humanoid32::common::inverse_dynamics_74b72c54ebae {
 ///             4263  3306    0     0    64    0   7633
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 2603 arithmetic
-///   instructions, scalar tree 4283 (cost 5519), limb lanes with the pairs' a and v
-///   together 2392 (cost 2782)
+///   instructions, scalar tree 4283 (cost 5519), limb lanes with the pairs' spare lanes
+///   used 2392 (cost 2782)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -735,4 +735,4 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   store_lanes(tau + 0, make_lanes((t12 + (((cos_waist_yaw * t528) - (sin_waist_yaw * t529)) - (Scalar(0.1) * t535))) + (t571[0] + t571[1]), (t13 + (((sin_waist_yaw * t528) + (cos_waist_yaw * t529)) + (Scalar(0.1) * t534))) + (t572[0] + t572[1]), (((Scalar(0.0866666667) * a[2]) + (((v[0] * t7) - (v[1] * t6)) + ((v[3] * t10) - (v[4] * t9)))) + t530) + (t573[0] + t573[1]), (((Scalar(8) * t3) + ((v[1] * t11) - (v[2] * t10))) + t534) + (t569[0] + t569[1])));
 }
 
-}  // namespace rbdc_gen::humanoid32::common::inverse_dynamics_74b72c54ebae
+}  // namespace rbdc_gen::humanoid32::common::inverse_dynamics_11a04975a9ef

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::bias_5f40dff57d9e {
+namespace rbdc_gen::humanoid32::common::bias_4047c1a15451 {
 
 /// Bias c + g in one pass (inverse dynamics at a = 0, without the acceleration terms).
 ///
@@ -23,8 +23,8 @@ namespace rbdc_gen::humanoid32::common::bias_5f40dff57d9e {
 ///             4210  3192    0     0    64    0   7466
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 2535 arithmetic
-///   instructions, scalar tree 4184 (cost 5282), limb lanes with the pairs' a and v
-///   together 2327 (cost 2717)
+///   instructions, scalar tree 4184 (cost 5282), limb lanes with the pairs' spare lanes
+///   used 2327 (cost 2717)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -696,4 +696,4 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   store_lanes(cg + 0, make_lanes((t12 + (((cos_waist_yaw * t503) - (sin_waist_yaw * t504)) - (Scalar(0.1) * t510))) + (t546[0] + t546[1]), (t13 + (((sin_waist_yaw * t503) + (cos_waist_yaw * t504)) + (Scalar(0.1) * t509))) + (t547[0] + t547[1]), ((((v[0] * t7) - (v[1] * t6)) + ((v[3] * t10) - (v[4] * t9))) + t505) + (t548[0] + t548[1]), (((Scalar(8) * t3) + ((v[1] * t11) - (v[2] * t10))) + t509) + (t544[0] + t544[1])));
 }
 
-}  // namespace rbdc_gen::humanoid32::common::bias_5f40dff57d9e
+}  // namespace rbdc_gen::humanoid32::common::bias_4047c1a15451
