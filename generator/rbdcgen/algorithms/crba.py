@@ -46,10 +46,12 @@ def mass_matrix(m):
             F = m.X_up(body).force_T(F)
             return sp.vadd(F, rotor_force) if body == i and rotor_force is not None else F
 
-        # a pair body's column and its child's share the walk from here (pair_columns)
-        columns = [(col, lambda x: x)] + ([(waiting[i][1], _high)] if i in waiting else [])
+        # A limb pair fills lanes 2 and 3 with lanes 0 and 1 again (views/limbs.py): there a pair
+        # body's walk to the root carries a child's F, which joins it one step up; the child's
+        # entries are read from lanes 2-3 where they are stored (lane_get of a rotation: no shuffle).
+        columns = [(col, lambda x: x)] + ([(waiting[i][1], ex.swap_lane_halves)] if i in waiting else [])
         if i in waiting:
-            F = pair_columns(F, waiting.pop(i)[0])
+            F = sp.pack_halves(F, waiting.pop(i)[0])
         j = robot.parent[i]
         if m.spare_lanes(i) and m.spare_lanes(j) and j not in waiting and len(columns) == 1:
             F = to_parent(i, F)                                   # one step alone, then the parent's walk
@@ -115,20 +117,3 @@ def lower_triangle(entries, n):
     """The column-major n × n `entries` with those above the diagonal (row < column) marked None:
     not written (mass_matrix_lower, whose callers read M through its lower triangle)."""
     return tuple(None if k % n < k // n else e for k, e in enumerate(entries))
-
-
-# A limb pair fills lanes 2 and 3 with lanes 0 and 1 again (views/limbs.py); there a pair body's walk
-# towards the root also carries its child's column, which joins it one step up.
-_LOW = (1.0, 1.0, 0.0, 0.0)
-_HIGH = (0.0, 0.0, 1.0, 1.0)
-
-
-def pair_columns(F, F_child):
-    """(F | F_child): the body's F_i in lanes 0-1, its child's (already in its coordinates) in 2-3."""
-    low, high = ex.lane_const(_LOW), ex.lane_const(_HIGH)
-    return tuple(x * low + y * high for x, y in zip(F, F_child))
-
-
-def _high(x):
-    """Lanes 2-3 of x in lanes 0-1, where the outputs read a pair (ex.lane_get of a rotation: no shuffle)."""
-    return ex.lane_rotate(x, ex.LANES // 2)

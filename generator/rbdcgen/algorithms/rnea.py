@@ -78,7 +78,7 @@ def rnea(m, base_acceleration, joint_accelerations, with_velocity, external=None
     `base_acceleration` is a₀ (bias and gravity included), `joint_accelerations[i]` q̈_i or None,
     `with_velocity` enables the velocity product terms, `external` the body wrenches. Rotors take
     part as bodies of their own (rotor_wrenches). A limb pair's bodies carry a and v in one lane
-    value (pair_step)."""
+    value (pair_step, sp.pack_halves)."""
     nb = m.robot.nb
     velocities = [m.base_velocity()] if with_velocity else None
     accelerations = [base_acceleration]
@@ -88,7 +88,7 @@ def rnea(m, base_acceleration, joint_accelerations, with_velocity, external=None
         m.mark("outward pass", i)
         if i > 0 and with_velocity and m.spare_lanes(i):
             j = m.robot.parent[i]
-            parent = packed[j] if j in packed else pack_pair(accelerations[j], velocities[j])
+            parent = packed[j] if j in packed else sp.pack_halves(accelerations[j], velocities[j])
             q_dd = None if joint_accelerations is None else joint_accelerations[i]
             packed[i], f_i = pair_step(m, i, parent, q_dd)
             velocities.append(None)  # read by no rotor: limbs in lanes have none
@@ -117,33 +117,20 @@ def rnea(m, base_acceleration, joint_accelerations, with_velocity, external=None
 
 # A limb pair fills lanes 2 and 3 with lanes 0 and 1 again (views/limbs.py); its outward pass puts
 # v_i there instead, so that one transform and one inertia product serve a_i and v_i.
-_LOW = (1.0, 1.0, 0.0, 0.0)
-_HIGH = (0.0, 0.0, 1.0, 1.0)
-
-
-def pack_pair(a, v):
-    """(a | v): a spine body's a in lanes 0 and 1, its v in lanes 2 and 3."""
-    low, high = ex.lane_const(_LOW), ex.lane_const(_HIGH)
-    return tuple(x * low + y * high for x, y in zip(a, v))
-
-
 def pair_step(m, i, parent, q_dd):
     """Pair body i's outward step and wrench on (a | v) values (lanes 0-1 the pair's a, 2-3 its v):
         (a_i | v_i) = X (a_λ(i) | v_λ(i)) + S (q̈_i | q̇_i) + swap(0 | v_i × S q̇_i),
         f_i = I (a_i | v_i) + swap(· | v_i ×* I v_i),
-    swap exchanging the halves (lane_rotate by 2), the cross products taken of the whole value and
+    swap exchanging the halves (sp.swap_halves), the cross products taken of the whole value and
     kept in the half where they are right. Returns (a_i | v_i) and f_i, good in lanes 0 and 1."""
     S = m.motion_subspace(i)
-    rates = m.vi(i) * ex.lane_const(_HIGH)  # (0 | q̇_i)
-    steps = rates if q_dd is None else rates + q_dd * ex.lane_const(_LOW)
+    zero = ex.const(0.0)
+    rates = sp.pack_halves((zero,), (m.vi(i),))[0]  # (0 | q̇_i)
+    steps = rates if q_dd is None else sp.pack_halves((q_dd,), (m.vi(i),))[0]
     carried = m.X_up(i).motion(parent)  # v_i × S q̇_i = (X v_λ(i)) × S q̇_i: S × S = 0
-    motion = sp.vadd(sp.vadd(carried, sp.vscale(steps, S)), _swap(sp.crm(carried, sp.vscale(rates, S))))
+    motion = sp.vadd(sp.vadd(carried, sp.vscale(steps, S)), sp.swap_halves(sp.crm(carried, sp.vscale(rates, S))))
     momentum = m.inertia(i).apply(motion)
-    return motion, sp.vadd(momentum, _swap(sp.crf(motion, momentum)))
-
-
-def _swap(vector):
-    return tuple(ex.lane_rotate(x, ex.LANES // 2) for x in vector)
+    return motion, sp.vadd(momentum, sp.swap_halves(sp.crf(motion, momentum)))
 
 
 def velocity_bias(m):

@@ -390,6 +390,11 @@ def lane_rotate(x, shift):
     return x.graph.intern("lane_rotate", (x,), shift)
 
 
+def swap_lane_halves(x):
+    """x with lanes 0-1 and 2-3 exchanged (a limb pair's spare lanes, views/limb_lanes.spare_lanes)."""
+    return lane_rotate(x, LANES // 2)
+
+
 def reachable(outputs):
     """Nodes reaching `outputs` (dead-code elimination), in a deterministic topological order:
     depth-first post-order, operands before users, outputs visited in the given order. Kept per

@@ -46,6 +46,17 @@ def vneg(a):
     return tuple(-x for x in a)
 
 
+def pack_halves(low, high):
+    """Vectors low and high in one vector of lane values: low's lanes 0-1, high's 2-3 (a limb pair's
+    spare lanes, views/limb_lanes.spare_lanes)."""
+    first, second = ex.lane_const((1.0, 1.0, 0.0, 0.0)), ex.lane_const((0.0, 0.0, 1.0, 1.0))
+    return tuple(x * first + y * second for x, y in zip(low, high))
+
+
+def swap_halves(a):
+    return tuple(ex.swap_lane_halves(x) for x in a)
+
+
 def dot(a, b):
     total = ex.const(0.0)
     for x, y in zip(a, b):

@@ -49,13 +49,19 @@ def instructions(fn):
 
 def straight_line_instructions(fn):
     """Arithmetic instructions of fn's traced, straight-line part."""
-    count = 0
+    return _straight_line_counts(fn)[0]
+
+
+def _straight_line_counts(fn):
+    """(arithmetic instructions, lane rotations among them) of fn's traced, straight-line part."""
+    count = rotations = 0
     for node in ex.reachable(fn.output_exprs()):
         if node.op == "lane_sum":
             count += _LANE_SUM_INSTRUCTIONS
         elif node.op not in ("const", "sym", "lane_get"):
             count += 1
-    return count
+            rotations += node.op == "lane_rotate"
+    return count, rotations
 
 
 # Straight-line code runs from the op cache while it is short; past FRONT_END_LIMIT arithmetic
@@ -74,27 +80,27 @@ LANE_CODE_LIMIT = 32000
 FRONT_END_PENALTY = 1.4
 
 
-# A lane rotation is a shuffle across the vector's halves, 4 cycles on Zen 4 and 5, and the pairs'
-# (rnea.pair_step) sit on each body's chain: humanoid32's ID with them, 8 % fewer instructions, took
-# 4 % longer (clang 14, Zen 5); TALOS's, 19 % fewer and the code back near the op cache, 37 % less.
+# A lane rotation stands for the chain it lengthens: the pairs' velocity products (rnea.pair_step)
+# cross the vector's halves on every body's chain. humanoid32's ID paired, 8 % fewer instructions,
+# took 4 % longer (clang 14, Zen 5; as long with an in-half swap in the rotation's place, so not the
+# shuffle itself); TALOS's, 19 % fewer and its code back near FRONT_END_LIMIT, 37 % less.
 LANE_ROTATE_EXTRA = 3
 
 
-def cost(fn, straight_line=None):
+def cost(fn, counts=None):
     """What `auto` minimises, in units of one short straight-line instruction: the straight-line part
-    (its instructions `straight_line`, counted here if not given) with the front-end penalty and its
-    lane rotations' latency, the loops weighted by what each of their instructions was measured to
-    cost (their `cost()`)."""
-    n = straight_line_instructions(fn) if straight_line is None else straight_line
+    (`counts`: its instructions and lane rotations, _straight_line_counts, counted here if not given)
+    with the front-end penalty and LANE_ROTATE_EXTRA a rotation, the loops weighted by what each of
+    their instructions was measured to cost (their `cost()`)."""
+    n, rotations = _straight_line_counts(fn) if counts is None else counts
     loops = fn.solve.cost() if fn.solve is not None else 0
-    rotations = sum(1 for node in ex.reachable(fn.output_exprs()) if node.op == "lane_rotate")
     return round(n + FRONT_END_PENALTY * max(0, n - FRONT_END_LIMIT) + LANE_ROTATE_EXTRA * rotations + loops)
 
 
 def _instructions_and_cost(fn):
     """(instructions(fn), cost(fn)), the DAG walked once."""
-    n = straight_line_instructions(fn)
-    return n + (fn.solve.instructions() if fn.solve is not None else 0), cost(fn, n)
+    counts = _straight_line_counts(fn)
+    return counts[0] + (fn.solve.instructions() if fn.solve is not None else 0), cost(fn, counts)
 
 
 def _forms(robot, scene, name):
