@@ -7,11 +7,11 @@
 // forward_dynamics for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   humanoid32/common/forward_dynamics_d61db493c0c0.hpp
+//   humanoid32/common/forward_dynamics_921af2ea4633.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/forward_dynamics_d61db493c0c0.hpp"
+#include "humanoid32/common/forward_dynamics_921af2ea4633.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -24,13 +24,13 @@ namespace rbdc_gen::humanoid32::full {
 /// @param f in  3x5: foot forces, world frame, one column per foot
 /// @param a out 38x1: acceleration
 ///
-/// operations    mul   add  div  sqrt  trig  neg  total
-///             11495  8748   55     0    64    1  20363
+/// operations   mul   add  div  sqrt  trig  neg  total
+///             9951  7267   55     0    64    1  17338
 /// schedule: articulated-body algorithm in limb lanes (the isomorphic limbs in SIMD lanes: 2 of
 ///   pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes); the rest
-///   scalar): 6864 arithmetic instructions (cost 11714), scalar tree 13701 (cost 28122),
-///   limb lanes 8558 (cost 15779), articulated-body algorithm 11351 (cost 22482)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_d61db493c0c0::forward_dynamics;
+///   scalar): 5930 arithmetic instructions (cost 9472), scalar tree 13701 (cost 28122),
+///   limb lanes 8558 (cost 15779), articulated-body algorithm 9718 (cost 18563)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_921af2ea4633::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -6,10 +6,11 @@ included) by generator_verify_random_aba (tests/generator/CMakeLists.txt)."""
 
 import os
 import unittest
+from dataclasses import replace
 
 from numeric_check import DATA, chain, evaluate, random_state
 
-from rbdcgen.frontend.ir import load_ir
+from rbdcgen.frontend.ir import Actuator, load_ir
 from rbdcgen.frontend.scene import scene_from_dict
 from rbdcgen.graph.flops import generic_ops
 from rbdcgen.passes.schedule import scheduled_function
@@ -40,6 +41,15 @@ class ArticulatedBodyAlgorithm(unittest.TestCase):
 
     def test_equals_the_factor_on_a_chain(self):
         self.assert_same_acceleration(chain(12))
+
+    def test_equals_the_factor_with_armature_on_some_joints(self):
+        """Iᵃ's row and column along S = ±e_k are zero only without armature (aba.py): a chain with
+        axis-aligned joints, armature on every other one."""
+        robot = chain(8)
+        joints = list(robot.joints)
+        for i in range(1, len(joints), 2):
+            joints[i] = replace(joints[i], actuator=Actuator(armature=0.05, rotor=None))
+        self.assert_same_acceleration(replace(robot, joints=tuple(joints)))
 
     def test_auto_keeps_the_factor_for_a_short_tree_and_takes_aba_for_a_long_chain(self):
         short = scheduled_function(chain(4), scene("auto"), "forward_dynamics")
