@@ -7,11 +7,11 @@
 // forward_dynamics for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   humanoid32/common/forward_dynamics_921af2ea4633.hpp
+//   humanoid32/common/forward_dynamics_0f27f7448317.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_921af2ea4633.hpp"
+#include "humanoid32/common/forward_dynamics_0f27f7448317.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -25,12 +25,12 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param a out 38x1: acceleration
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             9951  7267   55     0    64    1  17338
+///             9845  7209   55     0    64    1  17174
 /// schedule: articulated-body algorithm in limb lanes (the isomorphic limbs in SIMD lanes: 2 of
 ///   pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes); the rest
-///   scalar): 5930 arithmetic instructions (cost 9472), scalar tree 13701 (cost 28122),
-///   limb lanes 8558 (cost 15779), articulated-body algorithm 9718 (cost 18563)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_921af2ea4633::forward_dynamics;
+///   scalar): 5877 arithmetic instructions (cost 9345), scalar tree 13701 (cost 28122),
+///   limb lanes 8558 (cost 15779), articulated-body algorithm 9628 (cost 18347)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_0f27f7448317::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah/common/forward_dynamics_2c62ddecda90.hpp
+//   mini_cheetah/common/forward_dynamics_13ef5fbbb59c.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_2c62ddecda90.hpp"
+#include "mini_cheetah/common/forward_dynamics_13ef5fbbb59c.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -25,11 +25,11 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param a out 18x1: acceleration
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2176  1679   14     0    24   13   3906
+///             2156  1667   14     0    24   13   3874
 /// schedule: articulated-body algorithm in limb lanes (the 4 isomorphic limbs in SIMD lanes, the
-///   trunk scalar): 1197 arithmetic instructions, scalar tree 4123 (cost 5135), limb lanes
-///   1425, articulated-body algorithm 3844 (cost 4466)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_2c62ddecda90::forward_dynamics;
+///   trunk scalar): 1189 arithmetic instructions, scalar tree 4123 (cost 5135), limb lanes
+///   1425, articulated-body algorithm 3812 (cost 4389)
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_13ef5fbbb59c::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -82,6 +82,8 @@ def forward_dynamics_aba(m):
         # which fold through the congruence below
         Ia = sp.symmetric_of(6, lambda r, c: ex.const(0.0) if k in (r, c) else IA[i][r][c] - U[i][r] * scaled[c])
         pa = sp.vadd(sp.vadd(pA[i], _apply(Ia, bias_acc[i])), sp.vscale(u[i], scaled))
+        if k is not None:  # and Sᵀ pᵃ = Sᵀ pᴬ + 0 + u = τ_i
+            pa = pa[:k] + (S[i][k] * m.tau[i - 1],) + pa[k + 1:]
         X = m.X_up(i)
         carried = m.into_parent(i, X.congruence6(Ia))
         IA[j] = sp.symmetric_of(6, lambda r, c: IA[j][r][c] + carried[r][c])

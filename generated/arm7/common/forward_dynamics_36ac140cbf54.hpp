@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_dd87122a3a49 {
+namespace rbdc_gen::arm7::common::forward_dynamics_36ac140cbf54 {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
 /// algorithm where that is cheaper: the schedule line says which).
@@ -23,7 +23,7 @@ namespace rbdc_gen::arm7::common::forward_dynamics_dd87122a3a49 {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             859  657    6     0    14    0   1536
-/// schedule: scalar tree: 1536 arithmetic instructions, articulated-body algorithm 1739
+/// schedule: scalar tree: 1536 arithmetic instructions, articulated-body algorithm 1726
 template <class Scalar>
 RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
   // sines and cosines of the joint angles
@@ -453,4 +453,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[6] = (((((Scalar(2000) * t203) - (t322 * t372)) + (t323 * t371)) - (t325 * t370)) - (t326 * t369)) - (t327 * t368);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_dd87122a3a49
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_36ac140cbf54
