@@ -33,13 +33,6 @@ def _unit(k):
     return sp.vec([1.0 if r == k else 0.0 for r in range(6)])
 
 
-def _unit_entry(S):
-    """k when the motion subspace S is ±e_k (a joint along a coordinate axis), else None."""
-    values = [x.value if x.op == "const" else None for x in S]
-    nonzero = [k for k, x in enumerate(values) if x != 0.0]
-    return nonzero[0] if len(nonzero) == 1 and values[nonzero[0]] in (1.0, -1.0) else None
-
-
 def _apply(rows, x):
     return sp.vec([sp.dot(row, x) for row in rows])
 
@@ -77,7 +70,8 @@ def forward_dynamics_aba(m):
         if j == 0 and not floating:
             continue  # the fixed base takes no load
         scaled = sp.vscale(inv_D[i], U[i])
-        k = None if m.armature(i) else _unit_entry(S[i])
+        constant = all(x.op == "const" for x in S[i])
+        k = sp.unit_axis_index([x.value for x in S[i]]) if constant and not m.armature(i) else None
         # Iᵃ S = U − U (Sᵀ U)/D = 0 without armature: for S = ±e_k, Iᵃ's row and column k are zeros,
         # which fold through the congruence below
         Ia = sp.symmetric_of(6, lambda r, c: ex.const(0.0) if k in (r, c) else IA[i][r][c] - U[i][r] * scaled[c])

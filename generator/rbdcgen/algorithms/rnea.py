@@ -124,9 +124,8 @@ def pair_step(m, i, parent, q_dd):
     swap exchanging the halves (sp.swap_halves), the cross products taken of the whole value and
     kept in the half where they are right. Returns (a_i | v_i) and f_i, good in lanes 0 and 1."""
     S = m.motion_subspace(i)
-    zero = ex.const(0.0)
-    rates = sp.pack_halves((zero,), (m.vi(i),))[0]  # (0 | q̇_i)
-    steps = rates if q_dd is None else sp.pack_halves((q_dd,), (m.vi(i),))[0]
+    rates = ex.pack_lane_halves(ex.const(0.0), m.vi(i))  # (0 | q̇_i)
+    steps = rates if q_dd is None else ex.pack_lane_halves(q_dd, m.vi(i))
     carried = m.X_up(i).motion(parent)  # v_i × S q̇_i = (X v_λ(i)) × S q̇_i: S × S = 0
     motion = sp.vadd(sp.vadd(carried, sp.vscale(steps, S)), sp.swap_halves(sp.crm(carried, sp.vscale(rates, S))))
     momentum = m.inertia(i).apply(motion)

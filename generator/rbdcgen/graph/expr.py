@@ -390,6 +390,11 @@ def lane_rotate(x, shift):
     return x.graph.intern("lane_rotate", (x,), shift)
 
 
+def pack_lane_halves(low, high):
+    """low's lanes 0-1 and high's lanes 2-3 in one lane value (a limb pair's spare lanes)."""
+    return low * lane_const((1.0, 1.0, 0.0, 0.0)) + high * lane_const((0.0, 0.0, 1.0, 1.0))
+
+
 def swap_lane_halves(x):
     """x with lanes 0-1 and 2-3 exchanged (a limb pair's spare lanes, views/limb_lanes.spare_lanes)."""
     return lane_rotate(x, LANES // 2)

@@ -49,8 +49,7 @@ def vneg(a):
 def pack_halves(low, high):
     """Vectors low and high in one vector of lane values: low's lanes 0-1, high's 2-3 (a limb pair's
     spare lanes, views/limb_lanes.spare_lanes)."""
-    first, second = ex.lane_const((1.0, 1.0, 0.0, 0.0)), ex.lane_const((0.0, 0.0, 1.0, 1.0))
-    return tuple(x * first + y * second for x, y in zip(low, high))
+    return tuple(ex.pack_lane_halves(x, y) for x, y in zip(low, high))
 
 
 def swap_halves(a):
@@ -124,7 +123,7 @@ def crf(v, f):
 
 # --- rotations --------------------------------------------------------------------------------
 
-def _unit_axis_index(axis):
+def unit_axis_index(axis):
     """Index k when axis = ±e_k exactly, else None."""
     nonzero = [k for k, a in enumerate(axis) if a != 0.0]
     if len(nonzero) == 1 and abs(axis[nonzero[0]]) == 1.0:
@@ -138,7 +137,7 @@ def coordinate_rotation(axis, c, s):
     a = [float(x) for x in axis]
     norm = math.sqrt(sum(x * x for x in a))
     a = [x / norm for x in a]
-    k = _unit_axis_index(a)
+    k = unit_axis_index(a)
     one, zero = ex.const(1.0), ex.const(0.0)
     if k is not None:
         sign = a[k]

@@ -109,7 +109,7 @@ def _forms(robot, scene, name):
     lane_name = lane_functions.LANE_NAME.get(name)
     if lane_name is not None and _lanes_apply(robot, scene, name):
         forms["limb_lanes"] = lambda: _as(trace_function(robot, scene, lane_name), name)
-        if name in lane_functions.PAIRED and any(len(g.limbs) == 2 for g in limbs.limb_groups(robot)):
+        if name in lane_functions.PAIRED and any(g.spare_lanes for g in limbs.limb_groups(robot)):
             forms["paired_lanes"] = lambda: _as(trace_function(robot, scene, lane_functions.PAIRED[name]), name)
     if looped_solve.has_looped_form(robot, name):
         forms["looped_solve"] = lambda: looped_solve.looped_function(robot, scene, name)
@@ -183,8 +183,8 @@ _UNROLLED_PARTS = (
 # terms looped as well, as in ∂q̈'s looped solve).
 _FORCED = {"limb_lanes": ("limb_lanes", "lanes_looped_solve"), "looped_rnea": ("looped_rnea", "looped_feet")}
 
-_SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes", "paired_lanes": "limb lanes with the pairs' spare lanes used",
-          "looped_solve": "looped solve",
+_SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes",
+          "paired_lanes": "limb lanes with the pairs' spare lanes used", "looped_solve": "looped solve",
           "lanes_looped_solve": "limb lanes and a looped solve",
           "aba": "articulated-body algorithm", "aba_lanes": "articulated-body algorithm in limb lanes", "looped_factor": "looped factor", "looped_crba": "looped CRBA",
           "looped_rnea": "looped RNEA derivatives", "looped_feet": "looped feet force terms",

@@ -247,7 +247,7 @@ class LaneModel(TracedModel):
 
     def spare_lanes(self, i):
         group = self._group[i]
-        return self.pair_streams and group is not None and 2 * len(self.groups[group].limbs) == ex.LANES
+        return self.pair_streams and group is not None and self.groups[group].spare_lanes
 
     # --- outputs --------------------------------------------------------------------------------
     def full_index(self, x, lane):

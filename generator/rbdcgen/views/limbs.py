@@ -36,6 +36,11 @@ class LimbGroup:
         return tuple(self.limbs[k % len(self.limbs)] for k in range(ex.LANES))
 
     @property
+    def spare_lanes(self):
+        """Whether lanes 2-3 only repeat lanes 0-1 (a pair), free to carry a second quantity."""
+        return 2 * len(self.limbs) == ex.LANES
+
+    @property
     def live(self):
         """The lanes whose values are the limbs' own (the others repeat them)."""
         return range(len(self.limbs))
