@@ -98,14 +98,16 @@ def body_transforms(m):
     """X_λ(i)^i = X_J(q_i) X_T(i) of every body i ≥ 1 as one transform, E row-major then r, the
     bodies in depth_first_order: what the looped CRBA (rbdc_gen/crba.hpp, passes/looped_crba.py)
     reads."""
-    values = []
-    for i in depth_first_order(m.robot)[1:]:
-        m.mark("body transforms", i)
-        X = m.X_tree(i).then(m.X_joint(i))
-        E = sp.identity3() if X.E is None else X.E
-        r = sp.zeros(3) if X.r is None else X.r
-        values += [e for row in E for e in row] + list(r)
-    return tuple(values)
+    return tuple(x for i in depth_first_order(m.robot)[1:] for x in body_transform(m, i))
+
+
+def body_transform(m, i):
+    """Body i's X_λ(i)^i as body_transforms stores it: 12 values, E row-major then r."""
+    m.mark("body transforms", i)
+    X = m.X_tree(i).then(m.X_joint(i))
+    E = sp.identity3() if X.E is None else X.E
+    r = sp.zeros(3) if X.r is None else X.r
+    return tuple(e for row in E for e in row) + tuple(r)
 
 
 # The doc of the output M of mass_matrix_lower and its lane version.

@@ -78,7 +78,7 @@ def axes_and_moments(m):
         for y in range(m.robot.nv):
             column = tuple(J[3 * k + r][y] for r in range(3))
             if not all(x.is_const(0.0) for x in column):
-                moments[y] = sp.vadd(moments[y], sp.cross(column, f))
+                moments[y] = sp.vadd(moments[y], m.into_spine(k, y, y, sp.cross(column, f)))
     return {"feet_axes": tuple(x for axis in axes for x in (axis if axis is not None else (zero,) * 3)),
             "feet_moments": tuple(x for moment in moments for x in moment)}
 

@@ -299,11 +299,16 @@ def _forward_dynamics_columns(m, looped_rnea=False):
         dq, dv = residual_derivatives(m)
         columns = {"da_dq": [[-dq[r][c] for r in range(nv)] for c in range(nv)],
                    "da_dv": [[-dv[r][c] for r in range(nv)] for c in range(nv)]}
-    columns["da_dtau"] = [[ex.const(1.0 if r == robot.joints[i].v_index else 0.0)
-                           for r in range(nv)] for i in range(1, robot.nb)]       # Sᵀ
+    columns["da_dtau"] = selection_columns(robot)
     J = jacobian.feet_jacobian(m) if m.feet else []
     columns["da_df"] = [[J[row][c] for c in range(nv)] for row in range(len(J))]  # Jᵀ
     return columns
+
+
+def selection_columns(robot, sign=1.0):
+    """Sᵀ's columns (sign·Sᵀ), one nv-column per joint."""
+    return [[ex.const(sign if r == robot.joints[i].v_index else 0.0) for r in range(robot.nv)]
+            for i in range(1, robot.nb)]
 
 
 def forward_dynamics_derivatives(m):
@@ -374,8 +379,7 @@ def contact_columns(robot, dq, dv, r2_q, r2_v):
     from the forward-dynamics residual's derivatives dq, dv (rows) at placeholder a and f and r₂'s
     columns along q and v: r₁ = −Sᵀ and r₂ = 0 for τ."""
     nv = robot.nv
-    selection = [[ex.const(-1.0 if r == robot.joints[i].v_index else 0.0) for r in range(nv)]
-                 for i in range(1, robot.nb)]                                     # −Sᵀ
+    selection = selection_columns(robot, -1.0)
     r1 = ([[dq[r][c] for r in range(nv)] for c in range(nv)]
           + [[dv[r][c] for r in range(nv)] for c in range(nv)] + selection)
     return r1, r2_q + r2_v + [sp.zeros(len(r2_q[0])) for _ in selection]

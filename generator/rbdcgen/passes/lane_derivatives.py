@@ -14,8 +14,8 @@ from ..graph import expr as ex
 from ..views.limb_lanes import lane_column_order
 from ..views.limbs import LimbError, isomorphic_limbs
 from ..algorithms import forward_dynamics as fd
-from ..algorithms import jacobian
-from ..algorithms.crba import mass_matrix
+from ..algorithms import feet_force_derivatives, jacobian
+from ..algorithms.crba import body_transform, depth_first_order, mass_matrix
 
 
 def forward_dynamics_derivatives(m):
@@ -64,8 +64,7 @@ def forward_dynamics_derivative_terms(m):
     nv = full.nv
     # negated in the lanes, so that a whole lane value reaches its place in rhs (one vector store)
     dq, dv = (m.scatter_matrix([[-x for x in row] for row in rows]) for rows in differentiate.residual_derivatives(m))
-    selection = [[ex.const(1.0 if r == full.joints[i].v_index else 0.0) for r in range(nv)]
-                 for i in range(1, full.nb)]                                       # Sᵀ
+    selection = differentiate.selection_columns(full)
     J = m.place_rows(jacobian.feet_jacobian(m), m.foot_places, 3) if m.feet else []
     columns = ([[dq[r][c] for r in range(nv)] for c in range(nv)] + [[dv[r][c] for r in range(nv)] for c in range(nv)]
                + selection + [list(row) for row in J])                           # the order of FORWARD_DYNAMICS_COLUMNS
@@ -73,6 +72,31 @@ def forward_dynamics_derivative_terms(m):
     L, inv_diag = fd.ltdl(mass_matrix(m), fd.dof_parents(m.robot), m.into_dof)
     terms = {"rhs": differentiate.right_hand_side_rows(columns, nv),
              "L": fd.packed_factor(m.scatter_matrix(L), fd.dof_parents(full)), "D_inv": m.scatter(inv_diag)}
+    return differentiate.replace_symbols(terms, m.tree_acceleration, fd.forward_dynamics(m))
+
+
+def forward_dynamics_derivative_loop_terms(m):
+    """differentiate.forward_dynamics_derivative_terms with looped_rnea (rhs without the RNEA's part,
+    L, D_inv, the bodies' transforms X, gravity g, the acceleration a and the feet's axes and
+    moments: what the looped solve and the looped RNEA derivatives read) traced on the lane model m
+    (feet=True), in the full robot's layout: M's factor, a through it, the transforms and the feet's
+    rows by the lane recursions, scattered. The columns keep their plain order (the loop subtracts ∂τ
+    from the first 2 nv)."""
+    full = m.full
+    nv = full.nv
+    zero = ex.const(0.0)
+    J = m.place_rows(jacobian.feet_jacobian(m), m.foot_places, 3) if m.feet else []
+    columns = [[zero] * nv] * (2 * nv) + differentiate.selection_columns(full) + [list(row) for row in J]
+    L, inv_diag = fd.ltdl(mass_matrix(m), fd.dof_parents(m.robot), m.into_dof)
+    transforms = m.scatter_bodies({i: body_transform(m, i) for i in range(1, m.robot.nb)})
+    terms = {"rhs": differentiate.right_hand_side_rows(columns, nv),
+             "L": fd.packed_factor(m.scatter_matrix(L), fd.dof_parents(full)), "D_inv": m.scatter(inv_diag),
+             "X": tuple(x for body in depth_first_order(full)[1:] for x in transforms[body]),
+             "g": m.gravity_in_base(), "a": m.scatter(m.tree_acceleration)}
+    if m.feet:
+        for name, rows in feet_force_derivatives.axes_and_moments(m).items():  # 3 per reduced dof
+            scattered = [m.scatter(rows[c::3]) for c in range(3)]
+            terms[name] = tuple(scattered[c][y] for y in range(nv) for c in range(3))
     return differentiate.replace_symbols(terms, m.tree_acceleration, fd.forward_dynamics(m))
 
 

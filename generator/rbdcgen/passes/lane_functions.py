@@ -36,7 +36,8 @@ INVERSE = {"mass_matrix_inverse": lambda m: {"M_inv": _columns(forward_dynamics.
 # per limb as CONTACT
 CONTACT_TERMS = {"contact_dynamics_derivative_terms": lane_contact_derivatives.contact_dynamics_derivative_terms}
 # the same for forward_dynamics_derivatives' looped solve: its right-hand sides and M's factor
-SOLVE_TERMS = {"forward_dynamics_derivative_terms": lane_derivatives.forward_dynamics_derivative_terms}
+SOLVE_TERMS = {"forward_dynamics_derivative_terms": lane_derivatives.forward_dynamics_derivative_terms,
+               "forward_dynamics_derivative_loop_terms": lane_derivatives.forward_dynamics_derivative_loop_terms}
 # function → its lane function whose limb pairs carry a second quantity in their spare lanes 2-3, and
 # what it is. Not the derivatives: their tangents are non-zero where either quantity's is, so
 # packed they cost more (humanoid32's ∂q̈ terms with rnea.pair_step: 54 804 → 55 444 instructions).
@@ -60,13 +61,15 @@ LANE_NAME = {scalar: lanes for lanes, scalar in SCALAR.items() if lanes not in P
 # lane functions with the foot forces as lane inputs
 WITH_FEET = ("forward_dynamics_lanes", "forward_dynamics_aba_lanes", "forward_dynamics_derivatives_lanes", "osc_open_chain_lanes",
              "contact_dynamics_lanes", "impulse_dynamics_lanes", "feet_bias_accelerations_lanes",
-             "contact_dynamics_derivative_terms_lanes", "forward_dynamics_derivative_terms_lanes")
+             "contact_dynamics_derivative_terms_lanes", "forward_dynamics_derivative_terms_lanes",
+             "forward_dynamics_derivative_loop_terms_lanes")
 
 
 # functions whose lane form takes any groups of isomorphic limbs (views/limbs.limb_groups: a humanoid's
 # legs and arms in pairs, the spine scalar); the others need the quadruped's four limbs of the trunk
 ANY_GROUPS = ("bias", "inverse_dynamics", "mass_matrix", "mass_matrix_lower", "forward_dynamics", "forward_dynamics_aba",
-              "inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives", "forward_dynamics_derivative_terms")
+              "inverse_dynamics_derivatives", "bias_derivatives", "gravity_derivatives", "forward_dynamics_derivative_terms",
+              "forward_dynamics_derivative_loop_terms")
 
 
 def model(robot, scene, zero_inputs, name):

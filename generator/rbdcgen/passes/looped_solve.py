@@ -383,11 +383,11 @@ def has_looped_form(robot, name):
 
 
 def looped_function(robot, scene, name, terms_name=None, rnea=False, factor=False, low_rank=False):
-    """`name` in its looped form: the traced terms (function TERMS[name], or `terms_name`: its lane
-    function; with `rnea` LOOP_TERMS[name], with `factor` (or `low_rank`) too TREE_TERMS[name]), with
-    the loops as a LoopedSolve."""
+    """`name` in its looped form: the traced terms (function TERMS[name]; with `rnea` LOOP_TERMS[name],
+    with `factor` (or `low_rank`) too TREE_TERMS[name]; or `terms_name`, the lane function of one of
+    them), with the loops as a LoopedSolve."""
     factor = factor or low_rank
-    terms_name = TREE_TERMS[name] if factor else LOOP_TERMS[name] if rnea else terms_name or TERMS[name]
+    terms_name = terms_name or (TREE_TERMS[name] if factor else LOOP_TERMS[name] if rnea else TERMS[name])
     function = with_loop(robot, scene, name, terms_name,
                          lambda terms, outputs: _solve(robot, scene, name, terms, outputs, rnea or factor, factor,
                                                        low_rank))
@@ -432,7 +432,8 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False, low_ran
         from .looped_factor import LoopedFactor  # it imports this module's loops' header
         columns = differentiate.padded(sum(width for _, width in blocks))
         rhs, width = terms.outputs[0].name, sum(width for _, width in blocks)
-        lane_order = lane_derivatives.column_order(robot, feet_rows) if terms.lanes is not None else ()
+        # the lane terms of the looped RNEA form keep the plain order (its loop subtracts from the first 2 nv)
+        lane_order = lane_derivatives.column_order(robot, feet_rows) if terms.lanes is not None and not rnea else ()
         # a quadruped's lane order keeps each lane value's columns together, every limb in each run
         support = None if robot.couplings or lane_order != tuple(range(len(lane_order))) else \
             column_support.planned(parents, _column_rows(parents, terms.values[rhs], columns, width), columns)

@@ -20,7 +20,7 @@ the unrolled RNEA derivatives past looped_rnea_derivatives.UNROLL_LIMIT, the fee
 terms past looped_feet_forces.UNROLL_LIMIT, or the OSC's unrolled columns past looped_osc.UNROLL_LIMIT,
 `auto` does not trace the forms that unroll it (tracing them alone would take minutes) when another
 form exists. A scene may force a form (`schedule: scalar`, `limb_lanes`, `looped_solve`, `aba`,
-`looped_factor`, `looped_crba`, `looped_rnea`, `looped_feet`, `looped_osc` or `low_rank`) where the
+`looped_factor`, `looped_crba`, `looped_rnea`, `lanes_looped_rnea`, `looped_feet`, `looped_osc` or `low_rank`) where the
 function has it."""
 
 from __future__ import annotations
@@ -134,6 +134,10 @@ def _forms(robot, scene, name):
         forms["looped_osc"] = lambda: looped_osc.looped_function(robot, scene, name)
     if name in looped_solve.LOOP_TERMS and body_tree.applies(tree_view(robot)):  # coupled: projected
         forms["looped_rnea"] = lambda: looped_solve.looped_function(robot, scene, name, rnea=True)
+        loop_terms = looped_solve.LOOP_TERMS[name]
+        if not robot.couplings and _lanes_apply(robot, scene, loop_terms):
+            forms["lanes_looped_rnea"] = lambda: looped_solve.looped_function(
+                robot, scene, name, lane_functions.LANE_NAME[loop_terms], rnea=True)
     if name in looped_solve.LOOP_TERMS and body_tree.applies(robot):
         forms["looped_crba"] = lambda: looped_solve.looped_function(robot, scene, name, factor=True)
     if looped_solve.low_rank_applies(robot, scene, name):
@@ -160,12 +164,12 @@ _UNROLLED_PARTS = (
     (looped_factor.unrolled_too_large,
      lambda robot: "its factorisation alone: %d multiply-adds" % looped_factor.factor_multiply_adds(dof_parents(robot)),
      {"mass_matrix_factor": ("scalar",), "forward_dynamics": ("scalar",),
-      "forward_dynamics_derivatives": ("scalar", "looped_solve", "lanes_looped_solve", "looped_rnea")}),
+      "forward_dynamics_derivatives": ("scalar", "looped_solve", "lanes_looped_solve", "looped_rnea", "lanes_looped_rnea")}),
     (looped_crba.unrolled_too_large,
      lambda robot: "its CRBA: %d body-ancestor steps" % looped_crba.ancestor_steps(robot),
      {"mass_matrix": ("scalar",), "mass_matrix_lower": ("scalar",), "mass_matrix_factor": ("scalar", "looped_factor"),
       "forward_dynamics": ("scalar",),
-      "forward_dynamics_derivatives": ("scalar", "looped_solve", "lanes_looped_solve", "looped_rnea")}),
+      "forward_dynamics_derivatives": ("scalar", "looped_solve", "lanes_looped_solve", "looped_rnea", "lanes_looped_rnea")}),
     (looped_rnea_derivatives.unrolled_too_large,
      lambda robot: "its recursion: %d body-ancestor steps" % looped_rnea_derivatives.ancestor_steps(robot),
      {**{name: ("scalar", "limb_lanes") for name in looped_rnea_derivatives.TERMS},
@@ -186,6 +190,7 @@ _FORCED = {"limb_lanes": ("limb_lanes", "lanes_looped_solve"), "looped_rnea": ("
 _SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes",
           "paired_lanes": "limb lanes with the pairs' spare lanes used", "looped_solve": "looped solve",
           "lanes_looped_solve": "limb lanes and a looped solve",
+          "lanes_looped_rnea": "limb lanes and looped RNEA derivatives",
           "aba": "articulated-body algorithm", "aba_lanes": "articulated-body algorithm in limb lanes", "looped_factor": "looped factor", "looped_crba": "looped CRBA",
           "looped_rnea": "looped RNEA derivatives", "looped_feet": "looped feet force terms",
           "looped_osc": "looped operational-space columns", "low_rank": "low-rank product"}
@@ -194,6 +199,8 @@ _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes,
            "looped_solve": " (the solve's right-hand sides in SIMD across columns)",
            "lanes_looped_solve": " (the terms traced with the %d isomorphic limbs in SIMD lanes, the "
                                  "solve's right-hand sides in SIMD across columns)" % ex.LANES,
+           "lanes_looped_rnea": " (M's factor and the terms traced with the %d isomorphic limbs in SIMD lanes, "
+                                "∂τ a loop over the bodies, the solve's right-hand sides in SIMD across columns)" % ex.LANES,
            "aba": " (O(n); the scalar tree is CRBA + the sparse LᵀDL factor)",
            "aba_lanes": " (the %d isomorphic limbs in SIMD lanes, the trunk scalar)" % ex.LANES,
            "looped_factor": " (the sparse LᵀDL factorisation a loop)",
@@ -207,7 +214,9 @@ _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes,
 # The lane forms' words for a robot whose limbs in lanes are not the quadruped's (limbs.groups_in_words).
 _LANE_FORMS = {"limb_lanes": " (%s; the rest scalar)", "aba_lanes": " (%s; the rest scalar)",
                "paired_lanes": " (%s; the rest scalar; %s)",
-               "lanes_looped_solve": " (the terms traced with %s, the solve's right-hand sides in SIMD across columns)"}
+               "lanes_looped_solve": " (the terms traced with %s, the solve's right-hand sides in SIMD across columns)",
+               "lanes_looped_rnea": " (M's factor and the terms traced with %s, ∂τ a loop over the bodies, the "
+                                    "solve's right-hand sides in SIMD across columns)"}
 
 
 def scheduled_function(robot, scene, name):

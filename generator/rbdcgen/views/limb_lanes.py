@@ -292,6 +292,15 @@ class LaneModel(TracedModel):
                 full[self.full_index(x, k)] = ex.lane_get(value, k)
         return tuple(full)
 
+    def scatter_bodies(self, values):
+        """Per reduced body i ≥ 1 its values (values[i], a tuple) as per full robot body: lane k of a
+        lane body's values for the full robot's body in lane k, a spine body's as they are."""
+        full = [None] * self.full.nb
+        for i in range(1, self.robot.nb):
+            for k, body in enumerate(self._live_bodies(i)):
+                full[body] = tuple(ex.lane_get(x, k) for x in values[i])
+        return full
+
     def feet_values(self, values):
         """Per lane foot values as the kept feet's: lane k of lane foot n for the foot on limb k."""
         return _places(values, self.foot_places)

@@ -182,8 +182,9 @@ class TracedModel:
         return term
 
     def into_spine(self, k, row, col, term):
-        """Foot k's term in the entry (row, col) of ∂(Jᵀf)/∂q: unchanged here; a lane foot's summed
-        over its lanes where both dofs are the spine's (views/limb_lanes.LaneModel)."""
+        """Foot k's term in the entry (row, col) of ∂(Jᵀf)/∂q, or (row = col) in dof row's moment χ:
+        unchanged here; a lane foot's summed over its lanes where both dofs are the spine's
+        (views/limb_lanes.LaneModel)."""
         return term
 
     def into_root(self, term):
