@@ -10,6 +10,8 @@
 // where unrolling it would not pay, and M⁻¹'s rows from it are in rbdc_gen/factor.hpp.
 #pragma once
 
+#include <utility>
+
 #include "rbdc_gen/support.hpp"
 
 namespace rbdc_gen {
@@ -515,17 +517,54 @@ RBDC_HOST_DEVICE inline void proximal_step_sum(const Scalar* U, const Scalar* DL
   }
 }
 
+#if defined(__GNUC__) && !defined(__CUDACC__) && (defined(__clang__) || __GNUC__ >= 12)
+/// copy_out_columns' four rows of W columns: column K's entries are the (row 0, row 1) pair at 2⌊K/2⌋ of
+/// pairs[0] (even K) or pairs[2] (odd K) beside the (row 2, row 3) pair there in pairs[1] or pairs[3].
+template <int W, class V, class Scalar, int... K>
+RBDC_HOST_DEVICE inline void store_columns_of_four(const V (&pairs)[4], Scalar* const* out, int r, Scalar* unused,
+                                                   std::integer_sequence<int, K...>) noexcept {
+  ((void)[&] {
+     const auto column = __builtin_shufflevector(pairs[2 * (K % 2)], pairs[2 * (K % 2) + 1], 2 * (K / 2),
+                                                 2 * (K / 2) + 1, W + 2 * (K / 2), W + 2 * (K / 2) + 1);
+     std::memcpy(out[K] ? out[K] + r : unused, &column, 4 * sizeof(Scalar));
+   }(), ...);
+}
+#endif
+
 /// The row-major NV × NC right-hand sides B into their column-major outputs: column p's NV rows go to
-/// out[p] (nullptr: a padding column). For double in vector runs two rows at a time: unpacking their
-/// runs puts each column's two entries side by side, one 16-byte store for both. One entry at a time,
-/// these copies were 12 % of the Mini Cheetah's contact derivatives (docs/performance.md); clang 14
-/// vectorised that plain loop with AVX-512 gathers and scatters, twice as slow again.
+/// out[p] (nullptr: a padding column). For double in vector runs of 4 or 8 columns, four rows at a
+/// time: two rounds of shuffles turn the four rows' runs into each column's four entries, one 32-byte
+/// store for them (TALOS's ∂q̈, 9 200 entries: 1.50 → 1.34 µs by perf); the rows left, or runs of 2,
+/// two rows at a time and a 16-byte store. One entry at a time, these copies were 12 % of the Mini Cheetah's contact
+/// derivatives (docs/performance.md); clang 14 vectorised that plain loop with AVX-512 gathers and
+/// scatters, twice as slow again.
 template <class Scalar, int NV, int NC>
 RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void copy_out_columns(const Scalar* B, Scalar* const (&out)[NC]) noexcept {
   int r = 0;
 #if defined(__GNUC__) && !defined(__CUDACC__) && (defined(__clang__) || __GNUC__ >= 12)  // __builtin_shufflevector
   using R = ColumnRun<Scalar, NC>;
   constexpr int W = R::size;
+  if constexpr (sizeof(Scalar) == 8 && (W == 4 || W == 8)) {
+    Scalar unused[4];
+    for (; r + 4 <= NV; r += 4)
+      for (int c = 0; c < NC; c += W) {
+        typename R::type x[4];
+        for (int h = 0; h < 4; ++h) x[h] = R::load(B + (r + h) * NC + c);
+        typename R::type pairs[4];  // (x0, x1) and (x2, x3) of the even columns, then of the odd ones
+        if constexpr (W == 8) {
+          pairs[0] = __builtin_shufflevector(x[0], x[1], 0, 8, 2, 10, 4, 12, 6, 14);
+          pairs[1] = __builtin_shufflevector(x[2], x[3], 0, 8, 2, 10, 4, 12, 6, 14);
+          pairs[2] = __builtin_shufflevector(x[0], x[1], 1, 9, 3, 11, 5, 13, 7, 15);
+          pairs[3] = __builtin_shufflevector(x[2], x[3], 1, 9, 3, 11, 5, 13, 7, 15);
+        } else {
+          pairs[0] = __builtin_shufflevector(x[0], x[1], 0, 4, 2, 6);
+          pairs[1] = __builtin_shufflevector(x[2], x[3], 0, 4, 2, 6);
+          pairs[2] = __builtin_shufflevector(x[0], x[1], 1, 5, 3, 7);
+          pairs[3] = __builtin_shufflevector(x[2], x[3], 1, 5, 3, 7);
+        }
+        store_columns_of_four<W>(pairs, out + c, r, unused, std::make_integer_sequence<int, W>{});
+      }
+  }
   if constexpr (sizeof(Scalar) == 8 && (W == 2 || W == 4 || W == 8)) {
     Scalar unused[2];
     for (; r + 2 <= NV; r += 2)

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_a6dea4804de6.hpp
+//   arm7/common/forward_dynamics_derivatives_3f6fcc922c08.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_a6dea4804de6.hpp"
+#include "arm7/common/forward_dynamics_derivatives_3f6fcc922c08.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -31,8 +31,8 @@ namespace rbdc_gen::arm7::derivatives {
 ///             3538  3058    6     0    14   15   6631
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4993 arithmetic
 ///   instructions (cost 6459), scalar tree 6236 (cost 10206), looped RNEA derivatives 6520
-///   (cost 8678), looped CRBA 8391 (cost 11691)
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_a6dea4804de6::forward_dynamics_derivatives;
+///   (cost 7466), looped CRBA 8391 (cost 10479)
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_3f6fcc922c08::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_08cbd52e71ce.hpp
+//   humanoid32/common/forward_dynamics_derivatives_ffa9920ca12a.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_08cbd52e71ce.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_ffa9920ca12a.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -33,9 +33,9 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///   lanes: 2 of pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes),
 ///   the solve's right-hand sides in SIMD across columns): 54804 arithmetic instructions
 ///   (cost 80603), scalar tree 131228 (cost 310187), looped solve 69368 (cost 115557),
-///   looped RNEA derivatives 72416 (cost 104658), limb lanes and looped RNEA derivatives
-///   66731 (cost 91014), looped CRBA 80246 (cost 120510)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_08cbd52e71ce::forward_dynamics_derivatives;
+///   looped RNEA derivatives 72416 (cost 98231), limb lanes and looped RNEA derivatives
+///   66731 (cost 84587), looped CRBA 80246 (cost 114083)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_ffa9920ca12a::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

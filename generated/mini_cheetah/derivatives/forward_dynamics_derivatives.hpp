@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_cf8216be7e37.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_ceaa6d125ab7.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_cf8216be7e37.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_ceaa6d125ab7.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -32,9 +32,9 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 9848 arithmetic
 ///   instructions, scalar tree 25981 (cost 57594), limb lanes 7721 (cost 13770), looped
-///   solve 16380 (cost 26690), looped RNEA derivatives 19073 (cost 26483), limb lanes and
-///   looped RNEA derivatives 15803 (cost 21064), looped CRBA 22087 (cost 32745)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_cf8216be7e37::forward_dynamics_derivatives;
+///   solve 16380 (cost 26690), looped RNEA derivatives 19073 (cost 24191), limb lanes and
+///   looped RNEA derivatives 15803 (cost 18772), looped CRBA 22087 (cost 30453)
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_ceaa6d125ab7::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

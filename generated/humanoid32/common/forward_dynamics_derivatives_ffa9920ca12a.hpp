@@ -12,7 +12,7 @@
 #include "rbdc_gen/lanes.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_08cbd52e71ce {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_ffa9920ca12a {
 
 /// Block 0 of forward_dynamics_derivatives_terms (below).
 template <class Scalar>
@@ -17954,8 +17954,8 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 ///   lanes: 2 of pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes),
 ///   the solve's right-hand sides in SIMD across columns): 54804 arithmetic instructions
 ///   (cost 80603), scalar tree 131228 (cost 310187), looped solve 69368 (cost 115557),
-///   looped RNEA derivatives 72416 (cost 104658), limb lanes and looped RNEA derivatives
-///   66731 (cost 91014), looped CRBA 80246 (cost 120510)
+///   looped RNEA derivatives 72416 (cost 98231), limb lanes and looped RNEA derivatives
+///   66731 (cost 84587), looped CRBA 80246 (cost 114083)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 123 right-hand sides and
 ///   the factor, the columns sorted into 6 blocks, ltdl_solve_column_range solves each, its
 ///   L⁻ᵀ over its columns' non-zero rows only (20512 multiply-adds against 43008 over the
@@ -17984,4 +17984,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 38, 128>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_08cbd52e71ce
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_ffa9920ca12a

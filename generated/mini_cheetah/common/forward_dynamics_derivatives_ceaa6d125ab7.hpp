@@ -12,7 +12,7 @@
 #include "rbdc_gen/lanes.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_cf8216be7e37 {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_ceaa6d125ab7 {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -1288,8 +1288,8 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 9848 arithmetic
 ///   instructions, scalar tree 25981 (cost 57594), limb lanes 7721 (cost 13770), looped
-///   solve 16380 (cost 26690), looped RNEA derivatives 19073 (cost 26483), limb lanes and
-///   looped RNEA derivatives 15803 (cost 21064), looped CRBA 22087 (cost 32745)
+///   solve 16380 (cost 26690), looped RNEA derivatives 19073 (cost 24191), limb lanes and
+///   looped RNEA derivatives 15803 (cost 18772), looped CRBA 22087 (cost 30453)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 60 right-hand sides and
 ///   the factor, ltdl_solve_columns solves them all at once, one SIMD row update per factor
 ///   entry (99)
@@ -1305,4 +1305,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 18, 64>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_cf8216be7e37
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_ceaa6d125ab7

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_a6dea4804de6 {
+namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_3f6fcc922c08 {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -1456,7 +1456,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 ///             3538  3058    6     0    14   15   6631
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4993 arithmetic
 ///   instructions (cost 6459), scalar tree 6236 (cost 10206), looped RNEA derivatives 6520
-///   (cost 8678), looped CRBA 8391 (cost 11691)
+///   (cost 7466), looped CRBA 8391 (cost 10479)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 24 right-hand sides and
 ///   the factor, ∂a/∂τ solved with the rest (as M⁻¹'s rows Zᵀ D⁻¹ Z, 928 multiply-adds
 ///   against the solve's 0 for Sᵀ's columns), ltdl_solve_columns solves them all at once,
@@ -1473,4 +1473,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 7, 24>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_a6dea4804de6
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_3f6fcc922c08
