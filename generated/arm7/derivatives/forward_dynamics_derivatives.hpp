@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_3f6fcc922c08.hpp
+//   arm7/common/forward_dynamics_derivatives_336534aeb0be.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_3f6fcc922c08.hpp"
+#include "arm7/common/forward_dynamics_derivatives_336534aeb0be.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -28,11 +28,11 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param da_df out 7x3: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             3538  3058    6     0    14   15   6631
-/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4993 arithmetic
-///   instructions (cost 6459), scalar tree 6236 (cost 10206), looped RNEA derivatives 6520
-///   (cost 7466), looped CRBA 8391 (cost 10479)
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_3f6fcc922c08::forward_dynamics_derivatives;
+///             3543  3059    6     0    14   15   6637
+/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4999 arithmetic
+///   instructions (cost 6473), scalar tree 6242 (cost 10221), looped RNEA derivatives 6526
+///   (cost 7472), looped CRBA 8397 (cost 10485)
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_336534aeb0be::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   humanoid32/common/forward_dynamics_0f27f7448317.hpp
+//   humanoid32/common/forward_dynamics_e51db70a847b.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_0f27f7448317.hpp"
+#include "humanoid32/common/forward_dynamics_e51db70a847b.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -25,12 +25,12 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param a out 38x1: acceleration
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             9845  7209   55     0    64    1  17174
+///             9415  6985   55     0    64    1  16520
 /// schedule: articulated-body algorithm in limb lanes (the isomorphic limbs in SIMD lanes: 2 of
 ///   pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes); the rest
-///   scalar): 5877 arithmetic instructions (cost 9345), scalar tree 13701 (cost 28122),
-///   limb lanes 8558 (cost 15779), articulated-body algorithm 9628 (cost 18347)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_0f27f7448317::forward_dynamics;
+///   scalar): 5655 arithmetic instructions (cost 8812), scalar tree 13341 (cost 27258),
+///   limb lanes 8336 (cost 15246), articulated-body algorithm 9268 (cost 17483)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_e51db70a847b::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

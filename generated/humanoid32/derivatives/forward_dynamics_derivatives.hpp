@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_ffa9920ca12a.hpp
+//   humanoid32/common/forward_dynamics_derivatives_49db802a928d.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_ffa9920ca12a.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_49db802a928d.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -28,14 +28,14 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param da_df out 38x15: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations     mul    add  div  sqrt  trig  neg   total
-///             104216  92425   55     0    64  417  197177
+///             104284  92459   55     0    64  417  197279
 /// schedule: limb lanes and a looped solve (the terms traced with the isomorphic limbs in SIMD
 ///   lanes: 2 of pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes),
-///   the solve's right-hand sides in SIMD across columns): 54804 arithmetic instructions
-///   (cost 80603), scalar tree 131228 (cost 310187), looped solve 69368 (cost 115557),
-///   looped RNEA derivatives 72416 (cost 98231), limb lanes and looped RNEA derivatives
-///   66731 (cost 84587), looped CRBA 80246 (cost 114083)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_ffa9920ca12a::forward_dynamics_derivatives;
+///   the solve's right-hand sides in SIMD across columns): 54816 arithmetic instructions
+///   (cost 80632), scalar tree 131270 (cost 310288), looped solve 69410 (cost 115658),
+///   looped RNEA derivatives 72557 (cost 98569), limb lanes and looped RNEA derivatives
+///   66806 (cost 84767), looped CRBA 80387 (cost 114422)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_49db802a928d::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

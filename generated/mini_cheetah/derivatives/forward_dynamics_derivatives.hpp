@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_ceaa6d125ab7.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_7ef3156cd626.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_ceaa6d125ab7.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_7ef3156cd626.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -28,13 +28,13 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param da_df out 18x12: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
-///             19403  17747   14     0    24  149  37337
+///             19427  17759   14     0    24  149  37373
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
-///   lanes, the solve's right-hand sides in SIMD across columns): 9848 arithmetic
-///   instructions, scalar tree 25981 (cost 57594), limb lanes 7721 (cost 13770), looped
-///   solve 16380 (cost 26690), looped RNEA derivatives 19073 (cost 24191), limb lanes and
-///   looped RNEA derivatives 15803 (cost 18772), looped CRBA 22087 (cost 30453)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_ceaa6d125ab7::forward_dynamics_derivatives;
+///   lanes, the solve's right-hand sides in SIMD across columns): 9857 arithmetic
+///   instructions, scalar tree 26017 (cost 57681), limb lanes 7730 (cost 13792), looped
+///   solve 16416 (cost 26776), looped RNEA derivatives 19109 (cost 24277), limb lanes and
+///   looped RNEA derivatives 15812 (cost 18781), looped CRBA 22123 (cost 30540)
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_7ef3156cd626::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

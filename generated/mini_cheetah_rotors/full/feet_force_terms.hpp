@@ -8,11 +8,11 @@
 // feet_force_terms for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_terms is the same code:
-//   mini_cheetah_rotors/common/feet_force_terms_0182a192f396.hpp
+//   mini_cheetah_rotors/common/feet_force_terms_d934e074c51c.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/feet_force_terms_0182a192f396.hpp"
+#include "mini_cheetah_rotors/common/feet_force_terms_d934e074c51c.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// @param tau_e out 18x1: τ_e = Jᵀ f
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             333  213    0     0    24    9    579
-using ::rbdc_gen::mini_cheetah_rotors::common::feet_force_terms_0182a192f396::feet_force_terms;
+///             237  169    0     0    24    3    433
+using ::rbdc_gen::mini_cheetah_rotors::common::feet_force_terms_d934e074c51c::feet_force_terms;
 
 /// feet_force_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

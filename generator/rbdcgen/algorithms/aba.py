@@ -20,7 +20,7 @@ from __future__ import annotations
 from ..graph import expr as ex
 from ..graph import spatial as sp
 from .contact_dynamics import dense_ldlt, ldlt_solve
-from .kinematics import body_velocity, world_frames
+from .kinematics import body_velocity
 from .rnea import base_acceleration, foot_wrenches
 from .rnea_derivatives import has_rotors
 
@@ -42,7 +42,7 @@ def forward_dynamics_aba(m):
     robot = m.robot
     nb = robot.nb
     velocities = [m.base_velocity()] + [None] * (nb - 1)
-    external = foot_wrenches(m, world_frames(m)) if m.feet else [None] * nb
+    external = foot_wrenches(m) if m.feet else [None] * nb
     S = [None] + [m.motion_subspace(i) for i in range(1, nb)]
     floating = robot.floating_base
     bias_acc, IA, pA = [sp.zeros(6)] * nb, [None] * nb, [None] * nb

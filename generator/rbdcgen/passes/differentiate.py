@@ -27,7 +27,7 @@ from ..graph import expr as ex
 from ..graph import spatial as sp
 from ..algorithms import forward_dynamics as fd
 from ..algorithms import contact_dynamics as cd
-from ..algorithms import aba, crba, feet_force_derivatives, feet_motion_derivatives, jacobian, kinematics, rnea
+from ..algorithms import aba, crba, feet_force_derivatives, feet_motion_derivatives, jacobian, rnea
 from ..algorithms.rnea_derivatives import has_rotors, rnea_derivatives
 from ..graph.manifold import configuration_seeds, q_direction, v_direction, velocity_seeds
 from ..views.coupled import tree_view
@@ -228,7 +228,7 @@ def residual_derivatives(m):
     nv = m.robot.nv
     base = rnea.base_acceleration(m, _trunk_acceleration(m))
     if has_rotors(m.robot):
-        external = rnea.foot_wrenches(m, kinematics.world_frames(m)) if m.feet else None
+        external = rnea.foot_wrenches(m) if m.feet else None
         residual = rnea.rnea(m, base, rnea.joint_accelerations(m), True, external)
         maps = propagate(list(residual), _state_seeds(m))
         zero = ex.const(0.0)

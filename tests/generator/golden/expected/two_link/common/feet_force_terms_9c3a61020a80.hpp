@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::two_link::common::feet_force_terms_3d581dcc78e2 {
+namespace rbdc_gen::two_link::common::feet_force_terms_9c3a61020a80 {
 
 /// Generalised forces of the world foot forces (paper 000 Alg. 4).
 ///
@@ -27,16 +27,18 @@ RBDC_HOST_DEVICE inline void feet_force_terms(const Scalar* q, const Scalar* f, 
   const auto joint_trig = joint_sincos(joint_angle);
   const Scalar sin_shoulder = joint_trig.sin[0];
   const Scalar cos_shoulder = joint_trig.cos[0];
-  // world frames: body 1 upper
-  const Scalar t0 = Scalar(1) - cos_shoulder;
   // force of foot tip
-  const Scalar t1 = ((cos_shoulder * f[0]) + ((Scalar(0.8) * sin_shoulder) * f[1])) - ((Scalar(0.6) * sin_shoulder) * f[2]);
+  const Scalar t0 = Scalar(1) - cos_shoulder;
+  const Scalar t1 = Scalar(0.8) * sin_shoulder;
+  const Scalar t2 = Scalar(0.6) * sin_shoulder;
+  const Scalar t3 = Scalar(0.48) * t0;
+  const Scalar t4 = ((f[0] * cos_shoulder) + (f[1] * t1)) - (f[2] * t2);
+  const Scalar t5 = Scalar(0.4794255386042031) * (((f[1] * (cos_shoulder + (Scalar(0.36) * t0))) - (f[0] * t1)) + (f[2] * t3));
+  tau_e[1] = t5 - (Scalar(0.8775825618903726) * (((f[0] * t2) + (f[1] * t3)) + (f[2] * (cos_shoulder + (Scalar(0.6400000000000001) * t0)))));
   // inward pass: body 2 slider
-  const Scalar t2 = (f[0] * ((Scalar(-0.38354043088336254) * sin_shoulder) - (Scalar(0.5265495371342236) * sin_shoulder))) - (((Scalar(0.4212396297073789) * t0) - (Scalar(0.4794255386042031) * (cos_shoulder + (Scalar(0.36) * t0)))) * f[1]);
-  tau_e[1] = t2 - (((Scalar(0.8775825618903726) * (cos_shoulder + (Scalar(0.6400000000000001) * t0))) - (Scalar(0.2301242585300175) * t0)) * f[2]);
-  const Scalar t3 = (Scalar(0.05) * t1) - (q[1] * t1);
+  const Scalar t6 = (Scalar(0.05) * t4) - (q[1] * t4);
   // outputs
-  tau_e[0] = (Scalar(0.6) * ((Scalar(0.8775825618903726) * t3) + (Scalar(0.3) * t1))) + (Scalar(0.38354043088336254) * t3);
+  tau_e[0] = (Scalar(0.6) * ((Scalar(0.8775825618903726) * t6) + (Scalar(0.3) * t4))) + (Scalar(0.38354043088336254) * t6);
 }
 
-}  // namespace rbdc_gen::two_link::common::feet_force_terms_3d581dcc78e2
+}  // namespace rbdc_gen::two_link::common::feet_force_terms_9c3a61020a80
