@@ -30,8 +30,12 @@ def in_body(m, body, vector):
     path (R_i = R_λ(i) E_1ᵀ E_2ᵀ for X_up(i)'s factors 1, 2): a matrix-vector product a rotation,
     where world_frames composes matrices (forward dynamics: humanoid32 5 877 → 5 655 instructions,
     arm7 1 536 → 1 461)."""
+    path = []
+    while body > 0:
+        path.append(body)
+        body = m.robot.parent[body]
     x = sp.mat_tmatvec(m.base_rotation(), vector)
-    for i in m.robot.support[body]:
+    for i in reversed(path):
         for factor in m.X_up(i).factors:
             if factor.E is not None:
                 x = sp.matvec(factor.E, x)
