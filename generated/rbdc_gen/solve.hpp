@@ -518,6 +518,22 @@ RBDC_HOST_DEVICE inline void proximal_step_sum(const Scalar* U, const Scalar* DL
 }
 
 #if defined(__GNUC__) && !defined(__CUDACC__) && (defined(__clang__) || __GNUC__ >= 12)
+/// Two rows' runs x and y of W columns side by side: (x_c, y_c) for the even columns c in `even`, for
+/// the odd ones in `odd`.
+template <int W, class V>
+RBDC_HOST_DEVICE inline void pair_rows(const V& x, const V& y, V& even, V& odd) noexcept {
+  if constexpr (W == 8) {
+    even = __builtin_shufflevector(x, y, 0, 8, 2, 10, 4, 12, 6, 14);
+    odd = __builtin_shufflevector(x, y, 1, 9, 3, 11, 5, 13, 7, 15);
+  } else if constexpr (W == 4) {
+    even = __builtin_shufflevector(x, y, 0, 4, 2, 6);
+    odd = __builtin_shufflevector(x, y, 1, 5, 3, 7);
+  } else {
+    even = __builtin_shufflevector(x, y, 0, 2);
+    odd = __builtin_shufflevector(x, y, 1, 3);
+  }
+}
+
 /// copy_out_columns' four rows of W columns: column K's entries are the (row 0, row 1) pair at 2⌊K/2⌋ of
 /// pairs[0] (even K) or pairs[2] (odd K) beside the (row 2, row 3) pair there in pairs[1] or pairs[3].
 template <int W, class V, class Scalar, int... K>
@@ -535,9 +551,9 @@ RBDC_HOST_DEVICE inline void store_columns_of_four(const V (&pairs)[4], Scalar* 
 /// out[p] (nullptr: a padding column). For double in vector runs of 4 or 8 columns, four rows at a
 /// time: two rounds of shuffles turn the four rows' runs into each column's four entries, one 32-byte
 /// store for them (TALOS's ∂q̈, 9 200 entries: 1.50 → 1.34 µs by perf); the rows left, or runs of 2,
-/// two rows at a time and a 16-byte store. One entry at a time, these copies were 12 % of the Mini Cheetah's contact
-/// derivatives (docs/performance.md); clang 14 vectorised that plain loop with AVX-512 gathers and
-/// scatters, twice as slow again.
+/// two rows at a time and a 16-byte store. One entry at a time, these copies were 12 % of the Mini
+/// Cheetah's contact derivatives (docs/performance.md); clang 14 vectorised that plain loop with
+/// AVX-512 gathers and scatters, twice as slow again.
 template <class Scalar, int NV, int NC>
 RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void copy_out_columns(const Scalar* B, Scalar* const (&out)[NC]) noexcept {
   int r = 0;
@@ -551,17 +567,8 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void copy_out_columns(const Scalar* B, Sc
         typename R::type x[4];
         for (int h = 0; h < 4; ++h) x[h] = R::load(B + (r + h) * NC + c);
         typename R::type pairs[4];  // (x0, x1) and (x2, x3) of the even columns, then of the odd ones
-        if constexpr (W == 8) {
-          pairs[0] = __builtin_shufflevector(x[0], x[1], 0, 8, 2, 10, 4, 12, 6, 14);
-          pairs[1] = __builtin_shufflevector(x[2], x[3], 0, 8, 2, 10, 4, 12, 6, 14);
-          pairs[2] = __builtin_shufflevector(x[0], x[1], 1, 9, 3, 11, 5, 13, 7, 15);
-          pairs[3] = __builtin_shufflevector(x[2], x[3], 1, 9, 3, 11, 5, 13, 7, 15);
-        } else {
-          pairs[0] = __builtin_shufflevector(x[0], x[1], 0, 4, 2, 6);
-          pairs[1] = __builtin_shufflevector(x[2], x[3], 0, 4, 2, 6);
-          pairs[2] = __builtin_shufflevector(x[0], x[1], 1, 5, 3, 7);
-          pairs[3] = __builtin_shufflevector(x[2], x[3], 1, 5, 3, 7);
-        }
+        pair_rows<W>(x[0], x[1], pairs[0], pairs[2]);
+        pair_rows<W>(x[2], x[3], pairs[1], pairs[3]);
         store_columns_of_four<W>(pairs, out + c, r, unused, std::make_integer_sequence<int, W>{});
       }
   }
@@ -571,16 +578,7 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void copy_out_columns(const Scalar* B, Sc
       for (int c = 0; c < NC; c += W) {
         const typename R::type x = R::load(B + r * NC + c), y = R::load(B + (r + 1) * NC + c);
         typename R::type even, odd;  // (x, y) of columns c, c + 2, … and of c + 1, c + 3, …
-        if constexpr (W == 8) {
-          even = __builtin_shufflevector(x, y, 0, 8, 2, 10, 4, 12, 6, 14);
-          odd = __builtin_shufflevector(x, y, 1, 9, 3, 11, 5, 13, 7, 15);
-        } else if constexpr (W == 4) {
-          even = __builtin_shufflevector(x, y, 0, 4, 2, 6);
-          odd = __builtin_shufflevector(x, y, 1, 5, 3, 7);
-        } else {
-          even = __builtin_shufflevector(x, y, 0, 2);
-          odd = __builtin_shufflevector(x, y, 1, 3);
-        }
+        pair_rows<W>(x, y, even, odd);
         for (int k = 0; k < W / 2; ++k) {
           Scalar* to_even = out[c + 2 * k] ? out[c + 2 * k] + r : unused;
           Scalar* to_odd = out[c + 2 * k + 1] ? out[c + 2 * k + 1] + r : unused;
