@@ -305,6 +305,12 @@ RBDC_HOST_DEVICE inline CompositeInertia<Scalar> inertia_rate(const CompositeIne
   return out;
 }
 
+/// x · y_i for the 3-vectors y_k = rows[k][i] stored component by component: 3 multiplications, 2 additions.
+template <class Scalar, int NP>
+RBDC_HOST_DEVICE inline Scalar dot3(const Scalar* x, const Scalar (*rows)[NP], int i) noexcept {
+  return (x[0] * rows[0][i] + x[1] * rows[1][i]) + x[2] * rows[2][i];
+}
+
 /// x · y_i for the 6-vectors y_k = rows[k][i] stored component by component: 6 multiplications, 5 additions.
 template <class Scalar, int NP>
 RBDC_HOST_DEVICE inline Scalar dot(const Scalar* x, const Scalar (*rows)[NP], int i) noexcept {
@@ -312,6 +318,20 @@ RBDC_HOST_DEVICE inline Scalar dot(const Scalar* x, const Scalar (*rows)[NP], in
 }
 
 }  // namespace rnea_derivatives_detail
+
+/// rnea_derivatives_loop without the feet's force terms.
+struct NoFeetForces {};
+
+/// The feet's ∂(Jᵀf)/∂q at fixed world foot forces, for rnea_derivatives_loop to add to its entries
+/// (looped_feet_forces.py; what add_feet_force_term_derivatives adds on its own): entry (y, x) and
+/// (x, y) is ω_x·χ_y for each dof x above y, (y, y) ω_y·χ_y, the trunk's block (r, c) ω_c·χ_r for c
+/// over its rotations. axis ω: each dof's world axis (zero for a translation), moment
+/// χ = Σ_k J_k × f_k (zero off the feet's paths), both NV × 3 row-major over the loop's dofs.
+template <class Scalar>
+struct FeetForceTerms {
+  const Scalar* axis;
+  const Scalar* moment;
+};
 
 /// ∂τ/∂q and ∂τ/∂v of τ = RNEA(q, v, a) (Velocity: v's terms, Acceleration: a's; gravity always) in
 /// the root body's coordinates. With u_j = v_j × S_j, c_j = a_λ × S_j + v_λ × u_j, the composites
@@ -322,10 +342,14 @@ RBDC_HOST_DEVICE inline Scalar dot(const Scalar* x, const Scalar (*rows)[NP], in
 /// A floating trunk is the 6-dof joint of body 0 whose parent is the world (v = 0, a = gravity's
 /// fictitious acceleration), S₀ = 1 in its own coordinates; its acceleration input is the classical one,
 /// a₀ = a − (0, ω × v) (docs/conventions.md). X: the bodies' transforms (as root_frames reads
-/// them), g: gravity in root coordinates, v and a: the inputs (a null without Acceleration).
-template <class Scalar, int NB, int NV, bool Floating, bool Velocity, bool Acceleration, class Out>
+/// them), g: gravity in root coordinates, v and a: the inputs (a null without Acceleration). With
+/// FeetForceTerms, each ∂τ/∂q entry written is ∂τ − ∂(Jᵀf)/∂q: the feet's terms ride on the entries'
+/// blocks instead of a second pass over the written entries.
+template <class Scalar, int NB, int NV, bool Floating, bool Velocity, bool Acceleration, class Out,
+          class Feet = NoFeetForces>
 RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, const Scalar* X, const Scalar* g,
-                                                   const Scalar* v, const Scalar* a, const Out& out) noexcept {
+                                                   const Scalar* v, const Scalar* a, const Out& out,
+                                                   const Feet& feet = Feet{}) noexcept {
   using namespace tree_detail;
   using namespace rnea_derivatives_detail;
   // Every per-body quantity component by component (x[k][i]: component k of body i), so that the
@@ -455,12 +479,24 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
     store(columns_G, i, G);
     store(columns_D, i, D);
   }
+  constexpr bool kFeet = !std::is_same_v<Feet, NoFeetForces>;
   if constexpr (TakesVectors<Out>::value) {  // InverseTimesVectors: the vectors, no entries
     static_assert(!Floating && Velocity && Acceleration, "the low-rank product is for a fixed-base ∂q̈");
+    static_assert(!kFeet, "InverseTimesVectors takes the feet's axes and moments itself");
     out.vectors(tree, S, C, U, rows_I, rows_B, columns_G, columns_D);
     return;
   }
   out.clear(tree);
+  // With the feet: χ component by component like the loop's rows (zero at the root and the padding),
+  // and ω_x·χ_y, which the ∂τ/∂q entry being written loses.
+  Scalar chi[3][kFeet ? NP : 1];
+  const auto feet_axis = [&](int x, Scalar* axis) {  // dof x's ω
+    if constexpr (kFeet)
+      for (int k = 0; k < 3; ++k) axis[k] = feet.axis[3 * x + k];
+  };
+  if constexpr (kFeet)
+    for (int i = 0; i < NP; ++i)
+      for (int k = 0; k < 3; ++k) chi[k][i] = i == 0 || i >= NB ? Scalar(0) : feet.moment[3 * tree.dof[i] + k];
   Scalar w[3], trunk_v[3];
   for (int k = 0; k < 3; ++k) w[k] = V[k][0], trunk_v[k] = V[3 + k][0];
   if (Floating)
@@ -473,6 +509,14 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
       load(columns_D, i, D);
       Scalar g_x_rho[3];
       cross(g, rho_I + 3, g_x_rho);  // ρ·c_k for c_k = (0, e_k × g)
+      if constexpr (kFeet)
+        for (int k = 0; k < 3; ++k) {  // the trunk's rotations above dof di
+          Scalar axis[3];
+          feet_axis(k, axis);
+          const Scalar term = dot3(axis, chi, i);
+          G[k] = G[k] - term;
+          g_x_rho[k] = g_x_rho[k] - term;
+        }
       for (int k = 0; k < 6; ++k) out.q(k, di, G[k]);
       for (int k = 0; k < 3; ++k) out.q(di, k, g_x_rho[k]);
       if (Velocity) {
@@ -488,10 +532,11 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
   // (ρ_i·c_j + …) and, below the diagonal, column i's in row j (S_j·G_i, S_j·D_i).
   Scalar q_row[NP], v_row[NP], q_column[NP], v_column[NP];
   for (int j = 1; j < NB; ++j) {
-    Scalar c[6], u[6] = {}, s[6];
+    Scalar c[6], u[6] = {}, s[6], axis[3];
     load(C, j, c);
     if (Velocity) load(U, j, u);
     load(S, j, s);
+    feet_axis(tree.dof[j], axis);
     const int first = j / kBlock * kBlock;
     RBDC_SCALAR_LOOP  // the block, not the loop over blocks, is the vector
     for (int block = first; block < tree.end[j]; block += kBlock)
@@ -505,6 +550,11 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
           q_row[i] = cI;
         }
         q_column[i] = sG;
+        if constexpr (kFeet) {
+          const Scalar term = dot3(axis, chi, i);
+          q_row[i] = q_row[i] - term;
+          q_column[i] = q_column[i] - term;
+        }
       }
     out.subtree(tree, j, q_row, Velocity ? v_row : nullptr, q_column, Velocity ? v_column : nullptr);
   }
@@ -515,6 +565,12 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
       e[k] = Scalar(1);
       cross(e, g, c + 3);
       apply(I, c, f);
+      if constexpr (kFeet) {  // − ω_k·χ_r
+        Scalar axis[3];
+        feet_axis(k, axis);
+        for (int r = 0; r < 6; ++r)
+          f[r] = f[r] - ((axis[0] * feet.moment[3 * r] + axis[1] * feet.moment[3 * r + 1]) + axis[2] * feet.moment[3 * r + 2]);
+      }
       for (int r = 0; r < 6; ++r) out.q(r, k, f[r]);
     }
     if (Velocity) {

@@ -450,29 +450,25 @@ RBDC_HOST_DEVICE inline void multiply_sparse_minus(const RowSparsity<M, NNZ>& sp
 }
 
 /// Adds ∂(Jᵀf)/∂q at fixed world foot forces (generator algorithms/feet_force_derivatives.py) to B,
-/// entry (y, x) at B[y · RowStride + x · ColumnStride] (the right-hand sides' first NV columns, or the
-/// column-major NV × NV derivative itself): entry (y, x) and (x, y) is
+/// entry (y, x) at B[y · RowStride + x · ColumnStride] (the column-major NV × NV derivative
+/// feet_force_term_derivatives: RowStride 1; a looped ∂q̈'s RNEA loop adds the same terms to its
+/// entries, FeetForceTerms in rbdc_gen/rnea_derivatives.hpp): entry (y, x) and (x, y) is
 /// ω_x · χ_y for each dof x above y in the dof tree, (y, y) ω_y · χ_y, for the dofs y in `rows`
 /// (those with a foot below them); the floating trunk's block (r, c) is ω_c · χ_r, c over its three
 /// rotations (its first Root dofs are one body). ω: each dof's world axis (zero for a translation),
 /// χ = Σ_k J_k × f_k, both NV × 3 row-major. Projected: the dofs are a mimic-coupled robot's tree
-/// dofs, entry (y, x) going to (column[y], column[x]) times weight[y] weight[x] (Gᵀ X G). Placed: the
-/// right-hand sides' column x is at place[x] (passes/column_support.py). The table's sizes NV and NE
-/// are deduced from it.
-template <class Scalar, int RowStride, int ColumnStride, int Root, int NR, bool Projected = false,
-          bool Placed = false, int NV, int NE>
+/// dofs, entry (y, x) going to (column[y], column[x]) times weight[y] weight[x] (Gᵀ X G). The table's
+/// sizes NV and NE are deduced from it.
+template <class Scalar, int RowStride, int ColumnStride, int Root, int NR, bool Projected = false, int NV, int NE>
 RBDC_HOST_DEVICE inline void add_feet_force_term_derivatives(const DofTree<NV, NE>& tree, const int* rows,
                                                              const Scalar* axis, const Scalar* moment, Scalar* B,
                                                              const int* column = nullptr,
-                                                             const double* weight = nullptr,
-                                                             const int* place = nullptr) noexcept {
+                                                             const double* weight = nullptr) noexcept {
   const auto dot = [&](int x, int y) {
     return axis[3 * x] * moment[3 * y] + axis[3 * x + 1] * moment[3 * y + 1] + axis[3 * x + 2] * moment[3 * y + 2];
   };
   const auto add = [&](int y, int x, const Scalar& entry) {
-    if constexpr (Placed)
-      B[y * RowStride + place[x] * ColumnStride] += entry;
-    else if constexpr (Projected)
+    if constexpr (Projected)
       B[column[y] * RowStride + column[x] * ColumnStride] += Scalar(weight[y] * weight[x]) * entry;
     else
       B[y * RowStride + x * ColumnStride] += entry;

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_336534aeb0be.hpp
+//   arm7/common/forward_dynamics_derivatives_39ef485875fd.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_336534aeb0be.hpp"
+#include "arm7/common/forward_dynamics_derivatives_39ef485875fd.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -30,9 +30,9 @@ namespace rbdc_gen::arm7::derivatives {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             3543  3059    6     0    14   15   6637
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4999 arithmetic
-///   instructions (cost 6473), scalar tree 6242 (cost 10221), looped RNEA derivatives 6526
-///   (cost 7472), looped CRBA 8397 (cost 10485)
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_336534aeb0be::forward_dynamics_derivatives;
+///   instructions (cost 6473), scalar tree 6242 (cost 10221), looped RNEA derivatives 6351
+///   (cost 6759), looped CRBA 8222 (cost 9772)
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_39ef485875fd::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_7ef3156cd626.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_b0cfb155d222.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_7ef3156cd626.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_b0cfb155d222.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -32,9 +32,9 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 9857 arithmetic
 ///   instructions, scalar tree 26017 (cost 57681), limb lanes 7730 (cost 13792), looped
-///   solve 16416 (cost 26776), looped RNEA derivatives 19109 (cost 24277), limb lanes and
-///   looped RNEA derivatives 15812 (cost 18781), looped CRBA 22123 (cost 30540)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_7ef3156cd626::forward_dynamics_derivatives;
+///   solve 16416 (cost 26776), looped RNEA derivatives 18467 (cost 21454), limb lanes and
+///   looped RNEA derivatives 15170 (cost 15958), looped CRBA 21481 (cost 27717)
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b0cfb155d222::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -1,13 +1,13 @@
 """The feet's force-term derivatives ∂(Jᵀf)/∂q as a loop over the dof tree's ancestor pairs: the
-looped form of feet_force_term_derivatives, and part of forward_dynamics_derivatives' looped solves
-whose RNEA derivatives are a loop too (looped_solve.py). A mimic-coupled robot's loop runs on its
+looped form of feet_force_term_derivatives (forward_dynamics_derivatives' looped solves whose RNEA
+derivatives are a loop take the same terms on that loop's entries: looped_rnea_derivatives.py). A mimic-coupled robot's loop runs on its
 tree, each entry projected as it is written (Gᵀ X G, as the looped RNEA derivatives').
 
 Unrolled (algorithms/feet_force_derivatives.py), the term is one straight-line dot product per
 (dof, ancestor) pair of each foot's path: O(n·depth) statements, 54 553 for a 100-body chain with a
 foot at its tip, which took its ∂q̈ header past 20 s of g++. Each entry is ω_x · χ_y, so the traced
 part writes the dofs' world axes ω and the force moments χ (O(n)), and add_feet_force_term_derivatives
-(rbdc_gen/solve.hpp) forms the entries in the right-hand sides' ∂q columns. It folds nothing (the
+(rbdc_gen/solve.hpp) forms the entries. It folds nothing (the
 trunk's translations, whose ω is zero, are multiplied too); what it saves is code."""
 
 from __future__ import annotations
@@ -19,6 +19,7 @@ from ..algorithms.feet_force_derivatives import rows_with_feet
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents
 from ..views.coupled import tree_view, velocity_columns
 from . import body_tree
+from .looped_solve import dof_tree
 from .trace import Argument, with_loop
 
 NAME = "feet_force_term_derivatives"
@@ -39,19 +40,17 @@ UNROLL_LIMIT = 8000
 @dataclass(frozen=True)
 class LoopedFeetForces:
     """add_feet_force_term_derivatives over `parents` (the tree's dof tree), for the dofs `rows`, from
-    the terms' feet_axes and feet_moments into `target`: row-major right-hand sides `stride` wide,
-    or (`stride` 0) the column-major `columns` × `columns` output, cleared first, whose terms are
-    `terms`. `coupling`, for a coupled robot, G as per tree dof (independent dof, multiplier): each
-    entry is then projected; `place`: the right-hand sides' column x is at place[x]."""
+    the terms' feet_axes and feet_moments into `target`, the column-major `columns` × `columns`
+    output, cleared first, whose terms are `terms`. `coupling`, for a coupled robot, G as per tree
+    dof (independent dof, multiplier): each entry is then projected. (In a looped ∂q̈ the RNEA loop
+    takes the same terms from its entries: looped_rnea_derivatives.py.)"""
     parents: Tuple[int, ...]
     root_dofs: int
     rows: Tuple[int, ...]
     target: str
     columns: int
-    stride: int = 0
     terms: Tuple[Argument, ...] = ()
     coupling: Tuple[Tuple[int, float], ...] = ()
-    place: str = ""  # right-hand sides whose columns are sorted (column_support.py): the table of places
     headers: ClassVar[Tuple[str, ...]] = ("rbdc_gen/solve.hpp",)
 
     def _pairs(self):
@@ -77,25 +76,19 @@ class LoopedFeetForces:
         return LOOP_WEIGHT * self.instructions()
 
     def loops(self):
-        """The C++ statements; in a solve of an uncoupled robot, after its declaration of the same dof
-        tree's table `dof_tree`."""
-        from .looped_solve import dof_tree  # it imports this module
+        """The C++ statements."""
         n, rows, columns = len(self.parents), self.rows, self.columns
-        strides = f"{self.stride}, 1" if self.stride else f"1, {columns}"
-        table = "dof_tree" if self.stride and not self.coupling else "feet_dof_tree"
-        own = [] if table == "dof_tree" else [dof_tree(self.parents, table)]
-        own += [] if self.stride else [f"for (int k = 0; k < {columns * columns}; ++k) {self.target}[k] = Scalar(0);"]
-        own.append(f"RBDC_TABLE int feet_rows[{max(1, len(rows))}] = {{{', '.join(map(str, rows)) or '0'}}};")
+        own = [dof_tree(self.parents, "feet_dof_tree"),
+               f"for (int k = 0; k < {columns * columns}; ++k) {self.target}[k] = Scalar(0);",
+               f"RBDC_TABLE int feet_rows[{max(1, len(rows))}] = {{{', '.join(map(str, rows)) or '0'}}};"]
         projection = ""
         if self.coupling:
             own += [f"RBDC_TABLE int feet_column[{n}] = {{{', '.join(str(k) for k, _ in self.coupling)}}};",
                     f"RBDC_TABLE double feet_weight[{n}] = {{{', '.join(repr(w) for _, w in self.coupling)}}};"]
             projection = ", feet_column, feet_weight"
-        flags = ", false, true" if self.place else ", true" if self.coupling else ""
-        projection += f", nullptr, nullptr, {self.place}" if self.place else ""
-        return own + [f"add_feet_force_term_derivatives<Scalar, {strides}, "
-                      f"{self.root_dofs}, {len(rows)}{flags}>({table}, feet_rows, "
-                      f"solve_feet_axes, solve_feet_moments, {self.target}{projection});"]
+        flags = ", true" if self.coupling else ""
+        return own + [f"add_feet_force_term_derivatives<Scalar, 1, {columns}, {self.root_dofs}, {len(rows)}{flags}>("
+                      f"feet_dof_tree, feet_rows, solve_feet_axes, solve_feet_moments, {self.target}{projection});"]
 
     def emission(self, terms_name):
         return ("looped feet force terms: %s writes each dof's world axis and force moment, "

@@ -35,6 +35,9 @@ INERTIA_RATE = (43, 38)   # İ = v ×* I − I v×
 MASSLESS_ACCUMULATE = (0, 9)
 SUBTREE_LANE = (37, 32)   # per descendant of a body: its row's two entries and its column's two
 SUBTREE_LANE_AT_REST = (12, 10)  # without velocity: one each
+FEET_LANE = (3, 4)        # with the feet's force terms: ω_j·χ_i, taken from the row's entry and the column's
+FEET_TRUNK_ROW = (9, 12)  # per body below a floating trunk: ω_k·χ_i for its three rotations, from two entries
+FEET_TRUNK_BLOCK = (54, 54)  # the trunk's block: ω_k·χ_r for its rotations k and six dofs r
 PRODUCT_BLOCK = 8         # the entries run in blocks of 8 descendants (kBlock)
 # What one counted instruction of the loop costs (schedule.py's units) where it subtracts ∂τ from a
 # looped solve's right-hand sides, not body_tree.LOOP_WEIGHT: by perf inside ∂q̈ (Zen 5, clang 14),
@@ -73,6 +76,7 @@ class LoopedRneaDerivatives:
     subtracting: bool = False
     coupling: Tuple[Tuple[int, float], ...] = ()
     low_rank: bool = False  # the writer takes the per-body vectors (InverseTimesVectors, looped_solve.low_rank_applies)
+    feet: bool = False  # the feet's ∂(Jᵀf)/∂q taken from the ∂τ/∂q entries (the terms' feet axes and moments)
     headers: ClassVar[Tuple[str, ...]] = (body_tree.HEADER, HEADER)
 
     def _counts(self, vector_width=1):
@@ -101,9 +105,12 @@ class LoopedRneaDerivatives:
             pieces.append(tuple(n // vector_width for n in low_rank_counts(robot)))  # SIMD along M⁻¹'s rows
             return sum(m for m, _ in pieces), sum(a for _, a in pieces)
         # the entries along each body's subtree, blocks of PRODUCT_BLOCK bodies, padding included
-        pieces.append(_times(SUBTREE_LANE if velocity else SUBTREE_LANE_AT_REST, subtree_lanes(robot) // vector_width))
+        lane = SUBTREE_LANE if velocity else SUBTREE_LANE_AT_REST
+        lane = tuple(x + y for x, y in zip(lane, FEET_LANE)) if self.feet else lane
+        pieces.append(_times(lane, subtree_lanes(robot) // vector_width))
         if floating:  # the trunk's block
             pieces += [_times(CROSS, 3), _times(APPLY, 3)]
+            pieces += [_times(FEET_TRUNK_ROW, robot.nb - 1), FEET_TRUNK_BLOCK] if self.feet else []
             if velocity:
                 pieces += [_times(APPLY, 6), _times(SPATIAL_CROSS, 6), (0, 36),
                            _times(CROSS, 6), (9, 0), _times(APPLY, 3), (0, 18)]
@@ -154,8 +161,9 @@ class LoopedRneaDerivatives:
                 statements += [f"Scalar {name}_tree[{robot.nv}];",
                                f"expand_coordinates<Scalar, {robot.nv}>(tree_column, tree_weight, {source}, {name}_tree);"] * used
             v, a = expanded["v"], expanded["a"]
+        feet = ", FeetForceTerms<Scalar>{solve_feet_axes, solve_feet_moments}" if self.feet else ""
         return statements + [f"const {self.writer};",
-                             f"rnea_derivatives_loop<Scalar, {robot.nb}, {robot.nv}, {flags}>(tree, solve_X, solve_g, {v}, {a}, out);"]
+                             f"rnea_derivatives_loop<Scalar, {robot.nb}, {robot.nv}, {flags}>(tree, solve_X, solve_g, {v}, {a}, out{feet});"]
 
     def emission(self, terms_name):
         return ("looped RNEA derivatives: %s writes the %d bodies' transforms and gravity, "
@@ -209,16 +217,17 @@ def looped_function(robot, scene, name):
     return with_loop(robot, scene, name, TERMS[name], loop)
 
 
-def subtracted_from(robot, terms, rhs, columns, place=""):
+def subtracted_from(robot, terms, rhs, columns, place="", feet=False):
     """The loop that subtracts ∂τ/∂q and ∂τ/∂v at the terms' acceleration `a` from the right-hand
     sides `rhs` (row-major, `columns` wide, ∂/∂q and ∂/∂v in its first 2 nv columns, or with `place`
-    where that table puts them): a looped solve's (looped_solve.py)."""
+    where that table puts them): a looped solve's (looped_solve.py); with `feet`, ∂τ/∂q less the
+    feet's ∂(Jᵀf)/∂q."""
     placed = (f"SubtractedFromColumns<Scalar, {robot.nv}, {columns}, true>", f"{rhs}, {place}") if place else \
         (f"SubtractedFromColumns<Scalar, {robot.nv}, {columns}>", rhs)
     writer, coupling = _writer(robot, placed)
     return LoopedRneaDerivatives(robot=tree_view(robot), terms=terms, writer=writer, velocity=True,
                                  acceleration=True, acceleration_source="solve_a", subtracting=True,
-                                 coupling=coupling)
+                                 coupling=coupling, feet=feet)
 
 
 def inverse_times_vectors(robot, terms, feet):

@@ -20,7 +20,7 @@ from ..algorithms.crba import depth_first_order
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
 from ..graph import expr as ex
 from . import (body_tree, column_support, differentiate, lane_contact_derivatives, lane_derivatives, looped_crba,
-               looped_feet_forces, looped_inverse, looped_rnea_derivatives)
+               looped_inverse, looped_rnea_derivatives)
 from .column_support import ColumnSupport
 from .looped_inverse import LoopedInverse
 from .looped_rnea_derivatives import LoopedRneaDerivatives
@@ -46,8 +46,8 @@ class LoopedSolve:
     output blocks[k][0], blocks[k][1] columns wide, B's rows zero-padded to `columns`
     (differentiate.padded). `terms`: the local arrays the traced part writes (rhs, L, D_inv of
     differentiate.forward_dynamics_derivative_terms). `rnea`: the looped RNEA derivatives that
-    complete the right-hand sides first, if any, and `feet` the feet's force-term derivatives
-    (looped_feet_forces.py) with them; `factor`: the looped CRBA and factor (a
+    complete the right-hand sides first, if any (with the feet's force-term derivatives on its
+    entries); `factor`: the looped CRBA and factor (a
     looped_factor.LoopedFactor, packed) that write solve_L and solve_D_inv first, if the terms do not;
     `inverse`: ∂a/∂τ as M⁻¹'s rows (looped_inverse.py) where that is possible, taken where it pays (B
     then leaves Sᵀ out), its counts in the banner either way; `support`: B's columns sorted so that
@@ -58,7 +58,6 @@ class LoopedSolve:
     terms: Tuple[Argument, ...]
     rnea: Optional[LoopedRneaDerivatives] = None
     factor: object = None
-    feet: Optional[looped_feet_forces.LoopedFeetForces] = None
     inverse: Optional[LoopedInverse] = None
     support: Optional[ColumnSupport] = None
     # per terms output whose entries a lane function keeps elsewhere than row-major (lane_places): where
@@ -91,7 +90,7 @@ class LoopedSolve:
         return self.inverse if self.inverse is not None and self.inverse.pays else None
 
     def _parts(self):
-        return [part for part in (self.factor, self.rnea, self.feet, self.taken_inverse) if part is not None]
+        return [part for part in (self.factor, self.rnea, self.taken_inverse) if part is not None]
 
     @property
     def headers(self):
@@ -176,7 +175,7 @@ class LoopedSolve:
                     + _copies(self.blocks[2:], "solve_rhs", self.nv, self.columns, first=2 * self.nv))
         body += [] if self.support is None else [self.support.place_table(column_support.PLACE)]
         body += [] if self.rnea is None else self.rnea.loops(with_table=self.factor is None)
-        body += [dof_tree(self.parents)] + ([] if self.feet is None else self.feet.loops())
+        body += [dof_tree(self.parents)]
         body += (self._tree_solve("solve_rhs") if self.support is None
                  else self.support.loops(self.nv, self.columns, "solve_rhs"))
         body += [] if self.taken_inverse is None else self.taken_inverse.loops()
@@ -191,10 +190,9 @@ class LoopedSolve:
                     % (terms_name, self.inverse.comparison[0], self.solved_columns, self.first_solved))
         factor = (" and the factor" if self.factor is None else
                   ", crba_loop and ltdl_factor M's factor over a table of the tree (the looped CRBA and factor)")
-        rnea = ("" if self.rnea is None else ", rnea_derivatives_loop subtracts ∂τ/∂(q, v) over the table "
-                "(the RNEA's derivatives as a loop)")
-        rnea += ("" if self.feet is None else ", add_feet_force_term_derivatives adds ∂(Jᵀf)/∂q over the "
-                 "dof tree's ancestor pairs")
+        feet = " less the feet's ∂(Jᵀf)/∂q" if self.rnea is not None and self.rnea.feet else ""
+        rnea = ("" if self.rnea is None else ", rnea_derivatives_loop subtracts ∂τ/∂(q, v)%s over the table "
+                "(the RNEA's derivatives as a loop)" % feet)
         if self.taken_inverse is not None:
             rnea += (", ltdl_inverse writes ∂a/∂τ as M⁻¹'s rows Zᵀ D⁻¹ Z (%d multiply-adds where solving "
                      "Sᵀ's columns would take %d)" % self.inverse.comparison)
@@ -438,21 +436,21 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False, low_ran
         support = None if robot.couplings or lane_order != tuple(range(len(lane_order))) else \
             column_support.planned(parents, _column_rows(parents, terms.values[rhs], columns, width), columns)
         place = column_support.PLACE if support else ""
-        subtract = looped_rnea_derivatives.subtracted_from(robot, terms.outputs, "solve_rhs", columns, place)
+        # the feet's ∂(Jᵀf)/∂q rides on the RNEA loop's ∂τ/∂q entries
+        subtract = looped_rnea_derivatives.subtracted_from(robot, terms.outputs, "solve_rhs", columns, place,
+                                                           feet=bool(scene.feet_for(robot)))
         packed = LoopedFactor(parents=parents, terms=terms.outputs, unpack=False,
                               crba=looped_crba.LoopedCrba(robot=robot, terms=terms.outputs, packed=True))
-        feet = (looped_feet_forces.on_tree(robot, scene, "solve_rhs", stride=columns, place=place)
-                if rnea and scene.feet_for(robot) else None)
         order = support.order if support else lane_order
         places = ((rhs, support.entry_places(len(parents), columns)),) if support else ()
         if low_rank:  # the traced part leaves ∂/∂q and ∂/∂v to the loop on a fixed base
             assert not any(_non_zero(e) for r in range(robot.nv)
                            for e in terms.values[rhs][r * columns:r * columns + 2 * robot.nv])
-            subtract, feet, support, order, places = (
+            subtract, support, order, places = (
                 looped_rnea_derivatives.inverse_times_vectors(robot, terms.outputs, bool(scene.feet_for(robot))),
-                None, None, (), ())
+                None, (), ())
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs,
-                            rnea=subtract if rnea else None, factor=packed if factor else None, feet=feet,
+                            rnea=subtract if rnea else None, factor=packed if factor else None,
                             inverse=inverse, support=support, column_order=order, places=places,
                             low_rank=low_rank)
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)

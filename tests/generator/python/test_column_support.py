@@ -76,7 +76,7 @@ class ColumnSupportTest(unittest.TestCase):
         loops = "\n".join(function.solve.loops())
         self.assertIn("SubtractedFromColumns<Scalar, %d, %d, true> out{solve_rhs, solve_rhs_place}"
                       % (robot.nv, function.solve.columns), loops)
-        self.assertIn("solve_feet_moments, solve_rhs, nullptr, nullptr, solve_rhs_place);", loops)
+        self.assertIn("out, FeetForceTerms<Scalar>{solve_feet_axes, solve_feet_moments});", loops)
         self.assertEqual(loops.count("ltdl_solve_column_range"), len(support.blocks))
         self.assertEqual(function.solve.column_order, support.order)
         self.assertIn("blocks, ltdl_solve_column_range solves each, its L⁻ᵀ over its columns' non-zero rows only",

@@ -124,8 +124,9 @@ class LoopedForwardDynamicsDerivatives(unittest.TestCase):
 
     def test_auto_picks_by_cost_and_says_so(self):
         fn = scheduled_function(FLOATING, scene("auto"), NAME)
-        self.assertRegex(fn.schedule, r"^(looped solve|scalar tree)\b.*\d+ arithmetic instructions( \(cost \d+\))?, "
-                                      r"(scalar tree|looped solve) \d+( \(cost \d+\))?, looped RNEA derivatives \d+")
+        forms = r"(looped solve|scalar tree|looped RNEA derivatives|looped CRBA)"
+        self.assertRegex(fn.schedule, r"^%s\b.*\d+ arithmetic instructions( \(cost \d+\))?, (%s \d+( \(cost \d+\))?(, )?){3}$"
+                         % (forms, forms))
 
     @unittest.skipIf(skip_reason(), skip_reason())
     def test_a_coupled_robot_solves_in_its_independent_coordinates(self):

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_336534aeb0be {
+namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_39ef485875fd {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -1460,8 +1460,8 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             3543  3059    6     0    14   15   6637
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4999 arithmetic
-///   instructions (cost 6473), scalar tree 6242 (cost 10221), looped RNEA derivatives 6526
-///   (cost 7472), looped CRBA 8397 (cost 10485)
+///   instructions (cost 6473), scalar tree 6242 (cost 10221), looped RNEA derivatives 6351
+///   (cost 6759), looped CRBA 8222 (cost 9772)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 24 right-hand sides and
 ///   the factor, ∂a/∂τ solved with the rest (as M⁻¹'s rows Zᵀ D⁻¹ Z, 928 multiply-adds
 ///   against the solve's 0 for Sᵀ's columns), ltdl_solve_columns solves them all at once,
@@ -1478,4 +1478,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 7, 24>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_336534aeb0be
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_39ef485875fd

@@ -12,7 +12,7 @@
 #include "rbdc_gen/lanes.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_7ef3156cd626 {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b0cfb155d222 {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -1287,8 +1287,8 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 9857 arithmetic
 ///   instructions, scalar tree 26017 (cost 57681), limb lanes 7730 (cost 13792), looped
-///   solve 16416 (cost 26776), looped RNEA derivatives 19109 (cost 24277), limb lanes and
-///   looped RNEA derivatives 15812 (cost 18781), looped CRBA 22123 (cost 30540)
+///   solve 16416 (cost 26776), looped RNEA derivatives 18467 (cost 21454), limb lanes and
+///   looped RNEA derivatives 15170 (cost 15958), looped CRBA 21481 (cost 27717)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 60 right-hand sides and
 ///   the factor, ltdl_solve_columns solves them all at once, one SIMD row update per factor
 ///   entry (99)
@@ -1304,4 +1304,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 18, 64>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_7ef3156cd626
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b0cfb155d222
