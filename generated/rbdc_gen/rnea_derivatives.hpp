@@ -489,11 +489,7 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
   out.clear(tree);
   // With the feet: χ component by component like the loop's rows (zero at the root and the padding),
   // and ω_x·χ_y, which the ∂τ/∂q entry being written loses.
-  Scalar chi[3][kFeet ? NP : 1];
-  const auto feet_axis = [&](int x, Scalar* axis) {  // dof x's ω
-    if constexpr (kFeet)
-      for (int k = 0; k < 3; ++k) axis[k] = feet.axis[3 * x + k];
-  };
+  [[maybe_unused]] Scalar chi[3][kFeet ? NP : 1];
   if constexpr (kFeet)
     for (int i = 0; i < NP; ++i)
       for (int k = 0; k < 3; ++k) chi[k][i] = i == 0 || i >= NB ? Scalar(0) : feet.moment[3 * tree.dof[i] + k];
@@ -511,9 +507,7 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
       cross(g, rho_I + 3, g_x_rho);  // ρ·c_k for c_k = (0, e_k × g)
       if constexpr (kFeet)
         for (int k = 0; k < 3; ++k) {  // the trunk's rotations above dof di
-          Scalar axis[3];
-          feet_axis(k, axis);
-          const Scalar term = dot3(axis, chi, i);
+          const Scalar term = dot3(feet.axis + 3 * k, chi, i);
           G[k] = G[k] - term;
           g_x_rho[k] = g_x_rho[k] - term;
         }
@@ -532,11 +526,12 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
   // (ρ_i·c_j + …) and, below the diagonal, column i's in row j (S_j·G_i, S_j·D_i).
   Scalar q_row[NP], v_row[NP], q_column[NP], v_column[NP];
   for (int j = 1; j < NB; ++j) {
-    Scalar c[6], u[6] = {}, s[6], axis[3];
+    Scalar c[6], u[6] = {}, s[6];
     load(C, j, c);
     if (Velocity) load(U, j, u);
     load(S, j, s);
-    feet_axis(tree.dof[j], axis);
+    [[maybe_unused]] const Scalar* axis = nullptr;  // dof j's ω
+    if constexpr (kFeet) axis = feet.axis + 3 * tree.dof[j];
     const int first = j / kBlock * kBlock;
     RBDC_SCALAR_LOOP  // the block, not the loop over blocks, is the vector
     for (int block = first; block < tree.end[j]; block += kBlock)
@@ -566,8 +561,7 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
       cross(e, g, c + 3);
       apply(I, c, f);
       if constexpr (kFeet) {  // − ω_k·χ_r
-        Scalar axis[3];
-        feet_axis(k, axis);
+        const Scalar* axis = feet.axis + 3 * k;
         for (int r = 0; r < 6; ++r)
           f[r] = f[r] - ((axis[0] * feet.moment[3 * r] + axis[1] * feet.moment[3 * r + 1]) + axis[2] * feet.moment[3 * r + 2]);
       }
