@@ -28,6 +28,12 @@ from ..graph import expr as ex
 # 1500 40.6 s, 500 28.5 s, 250 16.9 s, 120 19.5 s (docs/performance.md, "Smaller blocks"); run
 # time unchanged (g++ 24.0 → 23.1 µs, clang 20.4 → 19.8 µs).
 SPLIT_ABOVE = 6500
+# Lane code takes g++ longer per statement (vector types, shuffles): TALOS's ∂q̈ terms in lanes (5 500
+# statements) took 17.7-19.3 s alone as one function, 10.0 s in 22 blocks, and held its full +
+# derivatives translation unit at 60 s, issue 20's limit; the blocks ran its ∂q̈ about 3 % slower
+# (docs/performance.md, "The feet's force terms on the RNEA loop's entries"). humanoid32's (3 500)
+# stays whole, at 8.7 s.
+LANE_SPLIT_ABOVE = 4500
 MAX_STATEMENTS = 250
 SCRATCH = "rbdc_scratch"
 LANE_TYPE = "using Lane = Lanes<Scalar>;"  # a lane function's first statement
@@ -49,7 +55,7 @@ def _references(statement):
 def split(body, parameters, function_name, max_statements=MAX_STATEMENTS):
     """`body` (emit_body's statements) as Blocks, or None when it is short enough to stay one
     function. `parameters`: the function's parameter names, in order."""
-    if len(body) <= SPLIT_ABOVE:
+    if len(body) <= (LANE_SPLIT_ABOVE if LANE_TYPE in body else SPLIT_ABOVE):
         return None
     body, repeated = _lane_setup(body)
     first = _after_joint_trig(body)

@@ -8,7 +8,7 @@ import re
 import unittest
 
 import numeric_check  # noqa: F401  (puts the generator on sys.path)
-from rbdcgen.backend.blocks import LANE_TYPE, SCRATCH, SPLIT_ABOVE, split
+from rbdcgen.backend.blocks import LANE_SPLIT_ABOVE, LANE_TYPE, SCRATCH, SPLIT_ABOVE, split
 from rbdcgen.graph import expr as ex
 
 LANE_ARRAYS = ["const Lane lane_c[1] = {make_lanes(Scalar(1), Scalar(2), Scalar(3), Scalar(4))};",
@@ -54,6 +54,17 @@ class LaneBlocks(unittest.TestCase):
         for part in blocks.parts:
             self.assertNotIn(LANE_TYPE, part)
         self.assertEqual(blocks.scratch_size, 1)
+
+
+class Threshold(unittest.TestCase):
+    def test_lane_code_is_cut_sooner_than_scalar_code(self):
+        """Between the two thresholds a lane body is cut into blocks and a scalar body of the same
+        length stays one function (g++'s time per lane statement is the higher)."""
+        self.assertLess(LANE_SPLIT_ABOVE, SPLIT_ABOVE)
+        filler = ["const Scalar f%d = v[0] * Scalar(%d);" % (i, i) for i in range(LANE_SPLIT_ABOVE + 1)]
+        self.assertIsNotNone(split([LANE_TYPE, *LANE_ARRAYS, *filler], ["v", "out"], "f"))
+        self.assertIsNone(split(filler, ["v", "out"], "f"))
+        self.assertIsNone(split([LANE_TYPE, *LANE_ARRAYS, *filler[:LANE_SPLIT_ABOVE - 3]], ["v", "out"], "f"))
 
 
 if __name__ == "__main__":
