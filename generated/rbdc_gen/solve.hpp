@@ -450,16 +450,16 @@ RBDC_HOST_DEVICE inline void multiply_sparse_minus(const RowSparsity<M, NNZ>& sp
 }
 
 /// Adds ∂(Jᵀf)/∂q at fixed world foot forces (generator algorithms/feet_force_derivatives.py) to B,
-/// entry (y, x) at B[y · RowStride + x · ColumnStride] (the column-major NV × NV derivative
-/// feet_force_term_derivatives: RowStride 1; a looped ∂q̈'s RNEA loop adds the same terms to its
-/// entries, FeetForceTerms in rbdc_gen/rnea_derivatives.hpp): entry (y, x) and (x, y) is
+/// column-major with leading dimension LD, entry (y, x) at B[y + x · LD] (feet_force_term_derivatives;
+/// a looped ∂q̈'s RNEA loop adds the same terms to its entries, FeetForceTerms in
+/// rbdc_gen/rnea_derivatives.hpp): entry (y, x) and (x, y) is
 /// ω_x · χ_y for each dof x above y in the dof tree, (y, y) ω_y · χ_y, for the dofs y in `rows`
 /// (those with a foot below them); the floating trunk's block (r, c) is ω_c · χ_r, c over its three
 /// rotations (its first Root dofs are one body). ω: each dof's world axis (zero for a translation),
 /// χ = Σ_k J_k × f_k, both NV × 3 row-major. Projected: the dofs are a mimic-coupled robot's tree
 /// dofs, entry (y, x) going to (column[y], column[x]) times weight[y] weight[x] (Gᵀ X G). The table's
 /// sizes NV and NE are deduced from it.
-template <class Scalar, int RowStride, int ColumnStride, int Root, int NR, bool Projected = false, int NV, int NE>
+template <class Scalar, int LD, int Root, int NR, bool Projected = false, int NV, int NE>
 RBDC_HOST_DEVICE inline void add_feet_force_term_derivatives(const DofTree<NV, NE>& tree, const int* rows,
                                                              const Scalar* axis, const Scalar* moment, Scalar* B,
                                                              const int* column = nullptr,
@@ -469,9 +469,9 @@ RBDC_HOST_DEVICE inline void add_feet_force_term_derivatives(const DofTree<NV, N
   };
   const auto add = [&](int y, int x, const Scalar& entry) {
     if constexpr (Projected)
-      B[column[y] * RowStride + column[x] * ColumnStride] += Scalar(weight[y] * weight[x]) * entry;
+      B[column[y] + column[x] * LD] += Scalar(weight[y] * weight[x]) * entry;
     else
-      B[y * RowStride + x * ColumnStride] += entry;
+      B[y + x * LD] += entry;
   };
   for (int r = 0; r < Root; ++r)
     for (int c = 0; c < 3; ++c) add(r, c, dot(c, r));

@@ -1,14 +1,15 @@
 """The feet's force-term derivatives ∂(Jᵀf)/∂q as a loop over the dof tree's ancestor pairs: the
 looped form of feet_force_term_derivatives (forward_dynamics_derivatives' looped solves whose RNEA
-derivatives are a loop take the same terms on that loop's entries: looped_rnea_derivatives.py). A mimic-coupled robot's loop runs on its
-tree, each entry projected as it is written (Gᵀ X G, as the looped RNEA derivatives').
+derivatives are a loop take the same terms on that loop's entries: looped_rnea_derivatives.py). A
+mimic-coupled robot's loop runs on its tree, each entry projected as it is written (Gᵀ X G, as the
+looped RNEA derivatives').
 
 Unrolled (algorithms/feet_force_derivatives.py), the term is one straight-line dot product per
 (dof, ancestor) pair of each foot's path: O(n·depth) statements, 54 553 for a 100-body chain with a
 foot at its tip, which took its ∂q̈ header past 20 s of g++. Each entry is ω_x · χ_y, so the traced
 part writes the dofs' world axes ω and the force moments χ (O(n)), and add_feet_force_term_derivatives
-(rbdc_gen/solve.hpp) forms the entries. It folds nothing (the
-trunk's translations, whose ω is zero, are multiplied too); what it saves is code."""
+(rbdc_gen/solve.hpp) forms the entries. It folds nothing (the trunk's translations, whose ω is zero,
+are multiplied too); what it saves is code."""
 
 from __future__ import annotations
 
@@ -87,7 +88,7 @@ class LoopedFeetForces:
                     f"RBDC_TABLE double feet_weight[{n}] = {{{', '.join(repr(w) for _, w in self.coupling)}}};"]
             projection = ", feet_column, feet_weight"
         flags = ", true" if self.coupling else ""
-        return own + [f"add_feet_force_term_derivatives<Scalar, 1, {columns}, {self.root_dofs}, {len(rows)}{flags}>("
+        return own + [f"add_feet_force_term_derivatives<Scalar, {columns}, {self.root_dofs}, {len(rows)}{flags}>("
                       f"feet_dof_tree, feet_rows, solve_feet_axes, solve_feet_moments, {self.target}{projection});"]
 
     def emission(self, terms_name):
