@@ -10,17 +10,24 @@ fewer instructions, not with better scheduling (docs/performance.md, "What bound
 With --paths, also the latency side: the function's critical path (`rbdc flops --json`, graph/latency.py)
 in ns and the most the peer's time over it allows; a path longer than the target's time means no
 schedule of the same operations reaches the target (docs/performance.md, "The critical path").
+With --code, also the front end's side: the bytes of the function's straight-line code in the
+harness's binary, and the most the peer's time over their streaming through the decoders would
+allow: a bound for the functions whose code streams, which tools/code_fetch_test.py shows
+(docs/performance.md, "Code that streams").
 
 Usage: tools/instruction_rates.py SUMMARY GENERATED [GHZ [PEAK]] [--paths ROBOT=FLOPS_JSON ...]
+                                  [--code ROBOT=BINARY ...]
   SUMMARY    the peer benchmark's summary.md (rows "| robot | pair | peer min / median | rbdc min /
              median | ratio× |", pairs named "peer_function → rbdc_function")
   GENERATED  the directory holding <robot>/full/*.hpp and <robot>/derivatives/*.hpp
   GHZ        the core's clock (default 3.65: the Zen 4 of 5 December, by a dependent-add loop)
   PEAK       FMAs and additions a cycle, half and half (default 4.05: tools/machine_peak on Zen 5)
   --paths    `rbdc flops ROBOT --scene S --json` outputs, robot by robot (one per scene, any number)
+  --code     the harness's benchmark binaries, robot by robot (read with `nm`)
 """
 import json
 import re
+import subprocess
 import sys
 from pathlib import Path
 
@@ -30,6 +37,7 @@ TARGETS = {"ID": ("inverse_dynamics", "full", 10), "c+g": ("bias", "full", 10),
            "∂ID": ("inverse_dynamics_derivatives", "derivatives", 8),
            "∂FD": ("forward_dynamics_derivatives", "derivatives", 5)}
 FMA_PIPES = 2  # multiplications and FMAs a cycle: both AMD cores measured (tools/machine_peak.cpp)
+STREAMED_BYTES_PER_NS = 64  # straight-line code through the decoders: tools/machine_peak on Zen 5
 # numbers with thousands separators, the ratio bold where the harness's summary marks it
 ROW = re.compile(r"\| (\S+) \| \S+ → (\w+) \| [\d.,]+ / ([\d.,]+) \| [\d.,]+ / ([\d.,]+) \| \**([\d.]+)×")
 
@@ -68,6 +76,35 @@ def critical_paths(options):
     return paths
 
 
+def code_sizes(options):
+    """{robot: {namespace: bytes}} from ROBOT=BINARY options: each generated function's namespace
+    (rbdc_gen::ROBOT::common::FUNCTION_HASH) and the bytes of the functions defined in it, which are
+    its straight-line code (the loops it calls are shared templates outside it)."""
+    sizes = {}
+    for option in options:
+        robot, _, binary = option.partition("=")
+        listing = subprocess.run(["nm", "-S", "-C", binary], capture_output=True, text=True, check=True).stdout
+        for line in listing.splitlines():
+            fields = line.split(maxsplit=3)  # address, size, type, name; code is of type t, T, w or W
+            code = len(fields) == 4 and fields[2] in "tTwW"
+            namespace = re.match(r"(?:void )?(rbdc_gen::\w+::common::\w+)::", fields[3]) if code else None
+            if namespace:
+                sizes.setdefault(robot, {}).setdefault(namespace.group(1), 0)
+                sizes[robot][namespace.group(1)] += int(fields[1], 16)
+    return sizes
+
+
+def code_columns(header, robot, sizes, peer):
+    """The function's straight-line KB, and the most the peer's time over its streaming would allow
+    ('–' without the binary)."""
+    included = re.search(r'#include "(\w+)/common/(\w+)\.hpp"', header.read_text())
+    size = sizes.get(robot, {}).get("rbdc_gen::%s::common::%s" % included.groups()) if included else None
+    if size is None:
+        return " – | – |"
+    streamed = size / STREAMED_BYTES_PER_NS
+    return " %.1f | %.1f× |" % (size / 1024, peer / streamed)
+
+
 def latency_columns(path, peer, ghz):
     """The critical path in ns and the most the peer's time over it allows ('+': a looped form's
     traced part only, so the true bound is tighter)."""
@@ -79,21 +116,26 @@ def latency_columns(path, peer, ghz):
 
 
 def main():
-    args = sys.argv[1:]
-    path_options = args[args.index("--paths") + 1:] if "--paths" in args else []
-    args = args[:args.index("--paths")] if "--paths" in args else args
+    args, options, flag = [], {"--paths": [], "--code": []}, None
+    for arg in sys.argv[1:]:
+        if arg in options:
+            flag = arg
+        else:
+            (options[flag] if flag else args).append(arg)
     if len(args) not in (2, 3, 4) or args[0] in ("-h", "--help"):
         print(__doc__.strip())
         return 0 if args and args[0] in ("-h", "--help") else 2
     summary, generated = Path(args[0]), Path(args[1])
     ghz = float(args[2]) if len(args) >= 3 else 3.65
     peak = float(args[3]) if len(args) == 4 else 4.05
-    paths = critical_paths(path_options)
+    paths, sizes = critical_paths(options["--paths"]), code_sizes(options["--code"])
     measured = {(m.group(1), m.group(2)): tuple(float(m.group(k).replace(",", "")) for k in (3, 4, 5))
                 for m in map(ROW.match, summary.read_text().splitlines()) if m}
     print("| robot | quantity | rbdc ns | instructions | per cycle | ratio | target | per cycle needed "
-          "| multiplications | most per cycle |" + (" critical path ns | most by latency |" if paths else ""))
-    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|" + ("---:|---:|" if paths else ""))
+          "| multiplications | most per cycle |" + (" critical path ns | most by latency |" if paths else "")
+          + (" code KB | most if it streams |" if sizes else ""))
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|" + ("---:|---:|" if paths else "")
+          + ("---:|---:|" if sizes else ""))
     for robot in dict.fromkeys(robot for robot, _ in measured):
         for quantity, (function, scene, target) in TARGETS.items():
             if (robot, function) not in measured:
@@ -107,7 +149,8 @@ def main():
             print("| %s | %s | %.0f | %d | %.2f | %.2f× | %d× | %s | %s | %s |"
                   % (robot, quantity, ours, n, n / (ours * ghz), ratio, target, needed,
                      "%.0f %%" % (100 * share) if share else "–", most)
-                  + (latency_columns(paths.get((robot, function)), peer, ghz) if paths else ""))
+                  + (latency_columns(paths.get((robot, function)), peer, ghz) if paths else "")
+                  + (code_columns(header, robot, sizes, peer) if sizes else ""))
     return 0
 
 

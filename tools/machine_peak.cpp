@@ -1,7 +1,9 @@
 // What one core sustains, for reading an instruction count against a time (tools/instruction_rates.py,
 // docs/performance.md, "What bounds each remaining gap"): the clock, by a chain of dependent integer
 // additions (one a cycle), then independent floating-point chains: scalar FMAs, 512-bit FMAs, scalar
-// additions, and FMAs and additions half and half (the two kinds go to different pipes).
+// additions, and FMAs and additions half and half (the two kinds go to different pipes); last, how
+// fast the front end feeds straight-line code that its op cache holds and code that it does not
+// (eight-byte no-ops, which nothing behind the decoders holds up).
 //
 //   g++ -O2 -march=native tools/machine_peak.cpp -o /tmp/machine_peak && taskset -c 1 /tmp/machine_peak
 //
@@ -16,10 +18,10 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 // Each loop iteration runs `per_iteration` instructions of its kind on independent registers.
-#define RBDC_TIMED_LOOP(body, ...)                                                                   \
+#define RBDC_TIMED_LOOP(iterations, body, ...)                                                       \
   [&] {                                                                                             \
     const auto start = std::chrono::steady_clock::now();                                            \
-    asm volatile("mov %0, %%rcx\n1:\n" body "dec %%rcx\njnz 1b\n" ::"r"(kIterations) : "rcx", __VA_ARGS__); \
+    asm volatile("mov %0, %%rcx\n1:\n" body "dec %%rcx\njnz 1b\n" ::"r"(iterations) : "rcx", __VA_ARGS__); \
     return seconds_since(start);                                                                    \
   }()
 
@@ -42,15 +44,24 @@ constexpr long kIterations = 100000000;
 #define RBDC_ADD_REGISTERS \
   "xmm16", "xmm17", "xmm18", "xmm19", "xmm20", "xmm21", "xmm22", "xmm23", "xmm24", "xmm25", "xmm26", "xmm27"
 
+// `count` eight-byte no-ops in a row: a loop body of count × 8 bytes of straight-line code.
+#define RBDC_NOPS(count) ".rept " #count "\n.byte 0x0f,0x1f,0x84,0x00,0x00,0x00,0x00,0x00\n.endr\n"
+constexpr long kCodeIterations = 200000;
+
 int main() {
-  const double clock_seconds = RBDC_TIMED_LOOP("add $1, %%rax\n", "rax");
+  const double clock_seconds = RBDC_TIMED_LOOP(kIterations, "add $1, %%rax\n", "rax");
   const double ghz = kIterations / clock_seconds / 1e9;  // the dependent additions: one a cycle
   std::printf("clock: %.2f GHz\n", ghz);
   const auto rate = [&](double seconds, int per_iteration) { return per_iteration * kIterations / seconds / 1e9 / ghz; };
-  std::printf("scalar FMAs: %.2f a cycle\n", rate(RBDC_TIMED_LOOP(RBDC_FMA12("sd", xmm), RBDC_FMA_REGISTERS), 12));
-  std::printf("512-bit FMAs: %.2f a cycle\n", rate(RBDC_TIMED_LOOP(RBDC_FMA12("pd", zmm), RBDC_FMA_REGISTERS), 12));
-  std::printf("scalar additions: %.2f a cycle\n", rate(RBDC_TIMED_LOOP(RBDC_ADD12, RBDC_ADD_REGISTERS), 12));
+  std::printf("scalar FMAs: %.2f a cycle\n", rate(RBDC_TIMED_LOOP(kIterations, RBDC_FMA12("sd", xmm), RBDC_FMA_REGISTERS), 12));
+  std::printf("512-bit FMAs: %.2f a cycle\n", rate(RBDC_TIMED_LOOP(kIterations, RBDC_FMA12("pd", zmm), RBDC_FMA_REGISTERS), 12));
+  std::printf("scalar additions: %.2f a cycle\n", rate(RBDC_TIMED_LOOP(kIterations, RBDC_ADD12, RBDC_ADD_REGISTERS), 12));
   std::printf("scalar FMAs and additions, half and half: %.2f a cycle\n",
-              rate(RBDC_TIMED_LOOP(RBDC_FMA12("sd", xmm) RBDC_ADD12, RBDC_FMA_REGISTERS, RBDC_ADD_REGISTERS), 24));
+              rate(RBDC_TIMED_LOOP(kIterations, RBDC_FMA12("sd", xmm) RBDC_ADD12, RBDC_FMA_REGISTERS, RBDC_ADD_REGISTERS), 24));
+  // Zen 5's op cache holds 5 500-6 000 of these; code beyond it goes through the decoders, about 16
+  // bytes a cycle whether it comes from the level-1 instruction cache or level 2.
+  const auto bytes_a_ns = [&](double seconds, int nops) { return 8.0 * nops * kCodeIterations / seconds / 1e9; };
+  std::printf("straight-line code, 16 KB: %.0f bytes a ns\n", bytes_a_ns(RBDC_TIMED_LOOP(kCodeIterations, RBDC_NOPS(2048), "memory"), 2048));
+  std::printf("straight-line code, 64 KB: %.0f bytes a ns\n", bytes_a_ns(RBDC_TIMED_LOOP(kCodeIterations, RBDC_NOPS(8192), "memory"), 8192));
   return 0;
 }

@@ -29,10 +29,11 @@ SUMMARY = ("| robot | crba → mass_matrix | 500 / 547.5 | 70 / 73 | 7.50× |\n"
            "| robot | rnea → inverse_dynamics | 900.0 / 1,000.0 | 90.0 / 100.0 | **10.00×** | 21 / 21 |\n")
 
 
-def run_tool(scratch, *options):
-    """The tool's output lines on HEADERS and SUMMARY written into `scratch`, clock 3.65 GHz."""
+def run_tool(scratch, *options, headers=None):
+    """The tool's output lines on `headers` (default HEADERS) and SUMMARY written into `scratch`,
+    clock 3.65 GHz."""
     os.makedirs(os.path.join(scratch, "robot", "full"))
-    for name, text in HEADERS.items():
+    for name, text in (headers or HEADERS).items():
         with open(os.path.join(scratch, "robot", "full", name + ".hpp"), "w", encoding="utf-8") as handle:
             handle.write(text)
     summary = os.path.join(scratch, "summary.md")
@@ -64,6 +65,24 @@ class InstructionRatesTest(unittest.TestCase):
         # 730 cycles at 3.65 GHz: 200 ns, the peer's 1 000 over it 5x (a looped form: +); M's 365: 100 ns
         self.assertTrue(rows[2].endswith("| 200+ | 5.0×+ |"), rows[2])
         self.assertTrue(rows[3].endswith("| 100 | 5.5× |"), rows[3])
+
+    def test_code_bytes_bound_the_ratio_when_the_code_streams(self):
+        with tempfile.TemporaryDirectory() as scratch:
+            # M's header includes its code's file; the binary holds 6 400 one-byte no-ops and a ret in
+            # that file's namespace (a naked function: no prologue), and 3 201 bytes outside it
+            headers = dict(HEADERS, mass_matrix=HEADERS["mass_matrix"] + '#include "robot/common/mass_matrix_0123abcd.hpp"\n')
+            source = os.path.join(scratch, "code.cpp")
+            with open(source, "w", encoding="utf-8") as handle:
+                handle.write('namespace rbdc_gen::robot::common::mass_matrix_0123abcd {\n'
+                             '__attribute__((naked)) void mass_matrix() { asm(".rept 6400\\nnop\\n.endr\\nret"); }\n}\n'
+                             '__attribute__((naked)) void elsewhere() { asm(".rept 3200\\nnop\\n.endr\\nret"); }\n')
+            binary = os.path.join(scratch, "code.o")
+            subprocess.run(["c++", "-c", source, "-o", binary], check=True)
+            rows = run_tool(scratch, "--code", "robot=" + binary, headers=headers)
+        self.assertTrue(rows[0].endswith("| code KB | most if it streams |"))
+        # 6 401 bytes at 64 a ns: 100.0 ns, the peer's 547.5 over it 5.5x; ID's code is not in the binary
+        self.assertTrue(rows[3].endswith("| 6.3 | 5.5× |"), rows[3])
+        self.assertTrue(rows[2].endswith("| – | – |"), rows[2])
 
 
 if __name__ == "__main__":
