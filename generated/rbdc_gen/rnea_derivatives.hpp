@@ -530,8 +530,11 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
     load(C, j, c);
     if (Velocity) load(U, j, u);
     load(S, j, s);
-    [[maybe_unused]] const Scalar* axis = nullptr;  // dof j's ω
-    if constexpr (kFeet) axis = feet.axis + 3 * tree.dof[j];
+    // dof j's ω, copied: read through the caller's pointer inside the block, clang 14 could not
+    // prove it apart from the rows (they escape to `out`) and left small trees' blocks scalar
+    [[maybe_unused]] Scalar axis[3] = {};
+    if constexpr (kFeet)
+      for (int k = 0; k < 3; ++k) axis[k] = feet.axis[3 * tree.dof[j] + k];
     const int first = j / kBlock * kBlock;
     RBDC_SCALAR_LOOP  // the block, not the loop over blocks, is the vector
     for (int block = first; block < tree.end[j]; block += kBlock)
