@@ -25,7 +25,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-STREAMED_BYTES_PER_NS = 64  # tools/machine_peak on Zen 5: 64 KB of no-ops
+from instruction_rates import STREAMED_BYTES_PER_NS, code_namespace, code_sizes
 PARAM = re.compile(r"^/// @param (\w+) (in|out) +(\d+)x(\d+): (.*)$", re.M)
 
 DRIVER = """#include "{robot}/{scene}/{function}.hpp"
@@ -95,12 +95,6 @@ def padded(assembly, namespace, pad):
     return "\n".join(lines) + "\n"
 
 
-def code_bytes(binary, namespace):
-    listing = subprocess.run(["nm", "-S", str(binary)], capture_output=True, text=True, check=True).stdout
-    return sum(int(fields[1], 16) for fields in map(str.split, listing.splitlines())
-               if len(fields) == 4 and fields[2] in "tTwW" and namespace in fields[3])  # code only
-
-
 def timed(binary, work):
     """ns per call from a fresh copy of the binary (a copy gets its own physical pages)."""
     path = work / f"{binary.name}.copy"
@@ -136,7 +130,7 @@ def main():
         work = Path(tmp)
         for function in args.functions:
             header = args.generated / args.robot / args.scene / f"{function}.hpp"
-            namespace = re.search(r'#include "\w+/common/(\w+)\.hpp"', header.read_text()).group(1)
+            namespace = code_namespace(header)
             source = work / f"{function}.cpp"
             source.write_text(driver(header, args.robot, args.scene, function))
             subprocess.run([args.cxx, "-std=c++17", "-O3", "-march=native", "-DNDEBUG", f"-I{args.generated}",
@@ -144,10 +138,11 @@ def main():
             assembly = (work / "plain.s").read_text()
             binaries = []
             for pad in (0, args.pad):
-                (work / f"{function}_{pad}.s").write_text(padded(assembly, namespace, pad))
+                # the mangled symbols hold the namespace's last name (FUNCTION_HASH)
+                (work / f"{function}_{pad}.s").write_text(padded(assembly, namespace.rsplit("::", 1)[1], pad))
                 binaries.append(work / f"{function}_{pad}")
                 subprocess.run([args.cxx, str(work / f"{function}_{pad}.s"), "-o", str(binaries[-1])], check=True)
-            sizes = [code_bytes(binary, namespace) for binary in binaries]
+            sizes = [code_sizes([f"{args.robot}={binary}"])[args.robot][namespace] for binary in binaries]
             times = [1e300, 1e300]
             for _ in range(args.copies):  # the two binaries in turn
                 times = [min(t, timed(binary, work)) for t, binary in zip(times, binaries)]

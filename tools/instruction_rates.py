@@ -94,11 +94,17 @@ def code_sizes(options):
     return sizes
 
 
+def code_namespace(header):
+    """The namespace of the code a generated function's header includes (rbdc_gen::ROBOT::common::
+    FUNCTION_HASH), or None for a header without one."""
+    included = re.search(r'#include "(\w+)/common/(\w+)\.hpp"', header.read_text())
+    return "rbdc_gen::%s::common::%s" % included.groups() if included else None
+
+
 def code_columns(header, robot, sizes, peer):
     """The function's straight-line KB, and the most the peer's time over its streaming would allow
     ('–' without the binary)."""
-    included = re.search(r'#include "(\w+)/common/(\w+)\.hpp"', header.read_text())
-    size = sizes.get(robot, {}).get("rbdc_gen::%s::common::%s" % included.groups()) if included else None
+    size = sizes.get(robot, {}).get(code_namespace(header))
     if size is None:
         return " – | – |"
     streamed = size / STREAMED_BYTES_PER_NS
