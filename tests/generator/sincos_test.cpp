@@ -152,6 +152,30 @@ TEST(JointSincos, EveryBlockSizeMatchesTheBlockOfTwelve) {
     EXPECT_EQ(trig_five.cos[i], full.cos[i]);
   }
 }
+
+TEST(JointSincos, EightLanesGiveTheBitsOfFour) {
+  // With AVX-512 the angles go eight to a vector (kAngleLanes); this build may lack it, so the
+  // eight-lane polynomial is compared here directly: lane for lane the same operations.
+  using rbdc_gen::simd::Vector;
+  std::vector<double> angles = uniform_angles(1e3, 4000, 13);
+  const std::vector<double> hard = near_multiples_of_half_pi(200);
+  angles.insert(angles.end(), hard.begin(), hard.end());
+  for (size_t first = 0; first + 8 <= angles.size(); first += 8) {
+    Vector<double, 8> x8, s8, c8;
+    Vector<double, 4> low, high, s_low, c_low, s_high, c_high;
+    for (int k = 0; k < 8; ++k) x8[k] = angles[first + k];
+    for (int k = 0; k < 4; ++k) low[k] = x8[k], high[k] = x8[k + 4];
+    rbdc_gen::simd::sincos<8>(x8, s8, c8);
+    rbdc_gen::simd::sincos<4>(low, s_low, c_low);
+    rbdc_gen::simd::sincos<4>(high, s_high, c_high);
+    for (int k = 0; k < 4; ++k) {
+      EXPECT_EQ(s8[k], s_low[k]) << x8[k];
+      EXPECT_EQ(c8[k], c_low[k]) << x8[k];
+      EXPECT_EQ(s8[k + 4], s_high[k]) << x8[k + 4];
+      EXPECT_EQ(c8[k + 4], c_high[k]) << x8[k + 4];
+    }
+  }
+}
 #endif
 
 TEST(JointSincos, LongDoubleTakesLibm) {
