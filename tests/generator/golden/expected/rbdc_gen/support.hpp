@@ -107,14 +107,26 @@ struct VectorOf {
 template <class T, int W>
 using Vector = typename VectorOf<T, W>::type;
 
-/// Lanes per vector for joint angles: 8 doubles with AVX-512 (one register; 12 angles in two
-/// vectors, not three: the Mini Cheetah's M 6 % faster on Zen 5, docs/performance.md, "The joint
-/// angles' sines eight at a time"), else 4 (one AVX register; SSE splits it in two).
+/// Lanes per vector for joint angles: 8 doubles with AVX-512 (one register; a quadruped's 12 angles
+/// in two vectors, not three: its M 6 % faster on Zen 5, docs/performance.md, "The joint angles'
+/// sines eight at a time"), else 4 (one AVX register; SSE splits it in two). Up to 8 angles (an
+/// arm's) stay four to a vector (joint_sincos_inline).
 #if defined(__AVX512F__)
 constexpr int kAngleLanes = 8;
 #else
 constexpr int kAngleLanes = 4;
 #endif
+
+/// x = W lanes from W / 4 consecutive four-lane vectors (by reference, as sincos: a vector returned
+/// by value changes the ABI without AVX, and g++ and clang warn).
+template <int W>
+inline void join(const Vector<double, 4>* quarter, Vector<double, W>& x) noexcept {
+  if constexpr (W == 8) {
+    x = __builtin_shufflevector(quarter[0], quarter[1], 0, 1, 2, 3, 4, 5, 6, 7);
+  } else {
+    x = quarter[0];
+  }
+}
 
 /// Largest |x| the polynomial below takes; angles beyond it (and inf, NaN) go through libm, so the
 /// result for an angle never depends on its neighbours. Max error over |x| <= kMaxAngle: 0.89 ulp
@@ -186,19 +198,28 @@ inline void sincos_checked(const Vector<double, W>& x, Vector<double, W>& s, Vec
 
 }  // namespace simd
 
-/// double: the angles in vectors of kAngleLanes (the last one zero-padded), the polynomial on every
-/// vector in one unrolled run (their dependency chains overlap; g++ kept a loop), then one test
-/// of all angles and libm for those out of its range (inf, NaN, |x| > kMaxAngle).
+/// double: the angles in vectors of kAngleLanes, or of 4 for up to 8 angles (the last one
+/// zero-padded), the polynomial on every vector in one unrolled run (their dependency chains
+/// overlap; g++ kept a loop), then one test of all angles and libm for those out of its range (inf,
+/// NaN, |x| > kMaxAngle).
 template <int N>
 RBDC_ALWAYS_INLINE JointTrig<double, N> joint_sincos_inline(const double (&angle)[N]) noexcept {
-  using V = simd::Vector<double, simd::kAngleLanes>;
-  constexpr int n_vectors = (N + simd::kAngleLanes - 1) / simd::kAngleLanes;
-  V x[n_vectors] = {};
+  // An arm's 7 angles in one vector of eight made g++ 12's arm7 ID 13 % slower: up to 8, four lanes.
+  constexpr int kLanes = N > 8 ? simd::kAngleLanes : 4;
+  using V = simd::Vector<double, kLanes>;
+  constexpr int n_vectors = (N + kLanes - 1) / kLanes;
+  // The angles read four at a time, as the lane code stores them (store_lanes), then joined: an
+  // eight-wide load across two four-wide stores waits for both to retire (g++ 12 kept that round
+  // trip through memory: Solo12's M 8 % slower).
+  using Quarter = simd::Vector<double, 4>;
+  Quarter quarter[n_vectors * kLanes / 4] = {};
+  std::memcpy(quarter, angle, sizeof angle);
+  V x[n_vectors];
+  for (int i = 0; i < n_vectors; ++i) simd::join<kLanes>(quarter + i * kLanes / 4, x[i]);
   V s[n_vectors];
   V c[n_vectors];
-  std::memcpy(x, angle, sizeof angle);
 #pragma GCC unroll 16
-  for (int i = 0; i < n_vectors; ++i) simd::sincos<simd::kAngleLanes>(x[i], s[i], c[i]);
+  for (int i = 0; i < n_vectors; ++i) simd::sincos<kLanes>(x[i], s[i], c[i]);
   JointTrig<double, N> trig;
   std::memcpy(trig.sin, s, sizeof trig.sin);
   std::memcpy(trig.cos, c, sizeof trig.cos);
