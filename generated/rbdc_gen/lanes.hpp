@@ -65,6 +65,10 @@ struct LanesOf {
     for (int k = 0; k < K; ++k)
       for (int l = 0; l < 4; ++l) p[l][k] = x[k].v[l];
   }
+  template <int K>
+  static RBDC_HOST_DEVICE void store_interleaved(T* p, const type (&x)[K]) noexcept {
+    store_transposed<K>({p, p + K, p + 2 * K, p + 3 * K}, x);
+  }
 };
 #if defined(RBDC_HAS_VECTOR_SINCOS)
 /// A vector literal, so that constant lanes become one vector constant; one vector load or store.
@@ -108,6 +112,23 @@ struct PackLanesOf {
                          __builtin_shufflevector(ab_even, cd_even, 2, 3, 6, 7),
                          __builtin_shufflevector(ab_odd, cd_odd, 2, 3, 6, 7)};
       for (int l = 0; l < 4; ++l) std::memcpy(p[l] + k, &limb[l], n * sizeof(T));
+    }
+  }
+  /// Three lane values (a three-joint leg's) interleaved by two eight-wide two-source shuffles, then
+  /// two stores, one of eight entries and one of four: stored limb by limb with store_transposed,
+  /// the twelve entries took eight shuffles and eight part-vector stores.
+  template <int K>
+  static void store_interleaved(T* p, const type (&x)[K]) noexcept {
+    if constexpr (K == 3) {
+      using Wide = simd::Vector<T, 8>;
+      const Wide ab = __builtin_shufflevector(x[0].v, x[1].v, 0, 1, 2, 3, 4, 5, 6, 7);
+      const Wide cc = __builtin_shufflevector(x[2].v, x[2].v, 0, 1, 2, 3, 4, 5, 6, 7);
+      const Wide first = __builtin_shufflevector(ab, cc, 0, 4, 8, 1, 5, 9, 2, 6);
+      const typename type::Vector last = __builtin_shufflevector(ab, cc, 10, 3, 7, 11);
+      std::memcpy(p, &first, sizeof first);
+      std::memcpy(p + 8, &last, sizeof last);
+    } else {
+      store_transposed<K>({p, p + K, p + 2 * K, p + 3 * K}, x);
     }
   }
 };
@@ -158,6 +179,13 @@ RBDC_HOST_DEVICE inline void store_lanes(T* p, const Lanes<T>& x) noexcept {
 template <int K, class T>
 RBDC_HOST_DEVICE inline void store_transposed_lanes(T* const (&p)[4], const Lanes<T> (&x)[K]) noexcept {
   LanesOf<T>::template store_transposed<K>(p, x);
+}
+
+/// p[K·l + k] = x_k[l] for the limbs l < 4 and k < K: store_transposed_lanes with the limbs' runs
+/// one after the other (a trunk dof's column of M at four three-joint legs' rows: twelve entries).
+template <int K, class T>
+RBDC_HOST_DEVICE inline void store_interleaved_lanes(T* p, const Lanes<T> (&x)[K]) noexcept {
+  LanesOf<T>::template store_interleaved<K>(p, x);
 }
 
 /// The lanes rotated: lane k of the result is lane (k + Shift) mod 4 of x (one shuffle).

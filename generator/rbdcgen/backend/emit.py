@@ -21,7 +21,8 @@ its lane inputs and constants as arrays `lane_v[…]`, `lane_c[…]` of make_lan
 of a lane angle from ex.LANES consecutive joint_trig entries, declares lane temporaries `const Lane`,
 reads lane k of a lane value as `t7[k]`, writes the runs where each limb's entries are the same lanes
 of several lane values (a leg's column of M) transposed, `store_transposed_lanes<6>({M + 144, …},
-{t21, …});`, and each other run of ex.LANES consecutive output entries with one vector store,
+{t21, …});` (`store_interleaved_lanes<3>(M + 6, {t73, …})` where the limbs' runs follow one
+another), and each other run of ex.LANES consecutive output entries with one vector store,
 `store_lanes(M + 8, make_lanes(…));` (of the lane value itself where the run holds its lanes in order)."""
 
 from __future__ import annotations
@@ -261,9 +262,14 @@ def emit_body(fn, angle_names=None):
         if position == tail:
             lines.append("// outputs")
         if isinstance(item, TransposedStore):
-            lines.append("store_transposed_lanes<%d>({%s}, {%s});" % (
-                len(item.values), ", ".join("%s + %d" % (item.arg_name, s) for s in item.starts),
-                ", ".join(text(v, False) for v in item.values)))
+            values = ", ".join(ZERO_LANES if v.op == "const" else text(v, False) for v in item.values)
+            if item.interleaved():
+                lines.append("store_interleaved_lanes<%d>(%s + %d, {%s});" % (
+                    len(item.values), item.arg_name, item.starts[0], values))
+            else:
+                lines.append("store_transposed_lanes<%d>({%s}, {%s});" % (
+                    len(item.values), ", ".join("%s + %d" % (item.arg_name, s) for s in item.starts),
+                    values))
             continue
         if isinstance(item, list):  # output entries, stored as soon as their values are computed
             arg_name, k, node = item[0]
@@ -284,6 +290,10 @@ def emit_body(fn, angle_names=None):
         lines.append("const %s %s = %s;" % ("Lane" if node.lane else "Scalar", name, text(node, False)))
         names[node.id] = name
     return lines
+
+
+# A lane value of zeros in an interleaved run (_zero_padded).
+ZERO_LANES = "make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0))"
 
 
 def _whole_lane_value(entries):
@@ -331,9 +341,16 @@ class TransposedStore(list):
         super().__init__(entries)
         self.arg_name, self.starts, self.values = arg_name, starts, values
 
+    def interleaved(self):
+        """Whether the limbs' runs follow one another (a trunk dof's column of M at the legs' rows):
+        then one run of K·4 entries, stored by store_interleaved_lanes."""
+        return all(b - a == len(self.values) for a, b in zip(self.starts, self.starts[1:]))
+
 
 # A run of fewer lane values stays in the 4-wide stores: two transposed cost about what they save.
 TRANSPOSED_MIN = 3
+# Fewest lane values of an interleaved run padded with zeros (_zero_padded).
+INTERLEAVED_MIN = 2
 # Candidate places per lane of a lane value stored more than once (M's symmetric entries): the first few.
 TRANSPOSED_PLACES = 3
 
@@ -364,6 +381,7 @@ def _transposed_stores(arg_name, values):
                 if not all(v is not None and v is step[0][0] and l == i for i, (v, l) in enumerate(step)):
                     break
                 run.append(step[0][0])
+            starts, run = _zero_padded(values, starts, run)
             if len(run) >= TRANSPOSED_MIN and _disjoint(starts, len(run)):
                 candidates.append((starts, run))
     chosen, covered = [], set()
@@ -374,6 +392,29 @@ def _transposed_stores(arg_name, values):
             chosen.append(TransposedStore(arg_name, starts, run,
                                           [(arg_name, e, values[e]) for e in sorted(entries)]))
     return chosen, covered
+
+
+def _zero_padded(values, starts, run):
+    """(starts, run) with the zero entries around each limb's run taken in, as lane values of zeros,
+    where that makes the limbs' runs follow one another (a trunk dof's column of M at legs' rows, one
+    of the three zero at every leg): one interleaved store then writes them with the rest."""
+    stride = starts[1] - starts[0]
+    missing = stride - len(run)
+    if (len(run) < INTERLEAVED_MIN or missing <= 0
+            or any(b - a != stride for a, b in zip(starts, starts[1:]))):
+        return starts, run
+
+    def zero(k):
+        return 0 <= k < len(values) and values[k] is not None and values[k].is_const(0.0)
+
+    lead = 0
+    while lead < missing and all(zero(s - lead - 1) for s in starts):
+        lead += 1
+    trail = missing - lead
+    if not all(zero(s + len(run) + k) for s in starts for k in range(trail)):
+        return starts, run
+    zeros = values[starts[0] - 1] if lead else values[starts[0] + len(run)]
+    return [s - lead for s in starts], [zeros] * lead + run + [zeros] * trail
 
 
 def _disjoint(starts, length):

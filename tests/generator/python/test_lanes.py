@@ -15,7 +15,7 @@ import mini_cheetah
 from numeric_check import evaluate, max_relative_error, random_state
 
 from rbdcgen.graph import expr as ex
-from rbdcgen.backend.emit import emit_body
+from rbdcgen.backend.emit import ZERO_LANES, emit_body
 from rbdcgen.graph.flops import count_ops
 from rbdcgen.frontend.ir import Actuator
 from rbdcgen.passes import lane_derivatives, schedule
@@ -158,7 +158,7 @@ class MiniCheetahLanes(unittest.TestCase):
             lines = emit_body(fn)
             defined = set()
             written = {arg.name: [] for arg in fn.outputs}
-            vector_stores, transposed = 0, set()
+            vector_stores, transposed, interleaved = 0, set(), {}
             for line in (l for l in lines if not l.startswith("//")):
                 declared = re.match(r"const (?:Scalar|Lane) (t\d+) = ", line)
                 if declared:
@@ -173,6 +173,20 @@ class MiniCheetahLanes(unittest.TestCase):
                     written[arg] += entries
                     transposed |= {(arg, k) for k in entries}
                     self.assertLessEqual(set(re.findall(r"\bt\d+\b", values)), defined, line)
+                    continue
+                block = re.match(r"store_interleaved_lanes<(\d+)>\((\w+) \+ (\d+), \{(.*)\}\);$", line)
+                if block:  # the limbs' runs one after the other: 4·K entries from the start
+                    size, arg, start = int(block.group(1)), block.group(2), int(block.group(3))
+                    values = block.group(4).replace(ZERO_LANES, "zeros").split(", ")
+                    self.assertEqual(len(values), size, line)
+                    entries = list(range(start, start + 4 * size))
+                    for k, value in enumerate(values):  # zero lanes only where the output is zero
+                        if value == "zeros":
+                            self.assertTrue(all(fn.values[arg][e].is_const(0.0) for e in entries[k::size]), line)
+                    written[arg] += entries
+                    transposed |= {(arg, k) for k in entries}
+                    interleaved[name] = interleaved.get(name, 0) + 1
+                    self.assertLessEqual(set(re.findall(r"\bt\d+\b", block.group(4))), defined, line)
                     continue
                 vector = re.match(r"store_lanes\((\w+) \+ (\d+), make_lanes\((.*)\)\);$", line)
                 scalar = re.match(r"(\w+)\[(\d+)\] = (.*);$", line)
@@ -191,8 +205,13 @@ class MiniCheetahLanes(unittest.TestCase):
             vector_entries = sum(len(e) - len(e) % ex.LANES for e in _written_runs(fn, transposed))
             self.assertEqual(vector_stores * ex.LANES, vector_entries if fn.lanes else 0, name)
             self.assertEqual(bool(transposed), fn.lanes is not None, name)
+            # interleaved: τ's twelve leg entries; M's six trunk columns at the legs' rows (column 3
+            # with its zero at every leg's abduction row), in M and in its lower triangle
+            self.assertEqual(interleaved.get(name, 0), {"mass_matrix_lanes": 6, "mass_matrix_lower_lanes": 6,
+                                                        "inverse_dynamics_lanes": 1}.get(name, 0), name)
         scalar_lines = emit_body(trace_function(robot, default_scene(), "mass_matrix"))
-        self.assertFalse(any(line.startswith(("store_lanes(", "store_transposed_lanes")) for line in scalar_lines))
+        self.assertFalse(any(line.startswith(("store_lanes(", "store_transposed_lanes", "store_interleaved_lanes"))
+                             for line in scalar_lines))
 
     def test_lane_angle_names_unique(self):
         """The lanes' sin/cos are named by what the limbs' joint names share (prefix and suffix);

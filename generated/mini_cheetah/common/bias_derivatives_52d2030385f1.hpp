@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::bias_derivatives_a3b5f5a53228 {
+namespace rbdc_gen::mini_cheetah::common::bias_derivatives_52d2030385f1 {
 
 /// Derivatives of the bias c + g (inverse dynamics at a = 0).
 ///
@@ -704,9 +704,9 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Lane t457 = -((t8 * t284) + (t7 * t285));
   const Lane t458 = -(t289 + ((((v[2] * t287) + (v[1] * t288)) + (t284 * t453)) + (t285 * t454)));
   const Lane t459 = -((t8 * t299) + (t7 * t300));
-  store_transposed_lanes<3>({dbias_dq + 6, dbias_dq + 9, dbias_dq + 12, dbias_dq + 15}, {t455, t457, t459});
+  store_interleaved_lanes<3>(dbias_dq + 6, {t455, t457, t459});
   const Lane t460 = t307 + ((((v[2] * t302) + (v[1] * t303)) - (t299 * t453)) - (t300 * t454));
-  store_transposed_lanes<3>({dbias_dv + 6, dbias_dv + 9, dbias_dv + 12, dbias_dv + 15}, {t456, t458, t460});
+  store_interleaved_lanes<3>(dbias_dv + 6, {t456, t458, t460});
   const Scalar t461 = t7 * t221;
   const Scalar t462 = t8 * t222;
   store_lanes(dbias_dq + 0, make_lanes(-(t461 + t462), t7 * t220, t8 * t220, Scalar(0)));
@@ -733,9 +733,9 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Lane t478 = (t8 * t167) + (t6 * t285);
   const Lane t479 = ((cos_lanes_abad_joint * t198) - (sin_lanes_abad_joint * t290)) + ((((v[0] * t288) - (v[2] * t286)) + (t167 * t453)) + (t285 * t475));
   const Lane t480 = (t6 * t300) - (t8 * t296);
-  store_transposed_lanes<3>({dbias_dq + 24, dbias_dq + 27, dbias_dq + 30, dbias_dq + 33}, {t476, t478, t480});
+  store_interleaved_lanes<3>(dbias_dq + 24, {t476, t478, t480});
   const Lane t481 = ((cos_lanes_abad_joint * t117) - (sin_lanes_abad_joint * t306)) + ((t300 * t475) - (((v[2] * t301) + (v[0] * t303)) + (t296 * t453)));
-  store_transposed_lanes<3>({dbias_dv + 24, dbias_dv + 27, dbias_dv + 30, dbias_dv + 33}, {t477, t479, t481});
+  store_interleaved_lanes<3>(dbias_dv + 24, {t477, t479, t481});
   const Scalar t482 = t6 * t220;
   store_lanes(dbias_dq + 18, make_lanes(t6 * t221, -(t462 + t482), t8 * t221, -t463));
   store_lanes(dbias_dq + 36, make_lanes(t6 * t222, t7 * t222, -(t461 + t482), t464));
@@ -758,10 +758,10 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Lane t491 = (t6 * t284) - (t7 * t167);
   const Lane t492 = ((sin_lanes_abad_joint * t198) + (cos_lanes_abad_joint * t290)) + ((((v[1] * t286) + (v[0] * t287)) - (t167 * t454)) + (t284 * t475));
   const Lane t493 = (t7 * t296) + (t6 * t299);
-  store_transposed_lanes<3>({dbias_dq + 42, dbias_dq + 45, dbias_dq + 48, dbias_dq + 51}, {t489, t491, t493});
+  store_interleaved_lanes<3>(dbias_dq + 42, {t489, t491, t493});
   const Lane t494 = ((sin_lanes_abad_joint * t117) + (cos_lanes_abad_joint * t306)) + ((((v[1] * t301) - (v[0] * t302)) + (t296 * t454)) + (t299 * t475));
   // outputs
-  store_transposed_lanes<3>({dbias_dv + 42, dbias_dv + 45, dbias_dv + 48, dbias_dv + 51}, {t490, t492, t494});
+  store_interleaved_lanes<3>(dbias_dv + 42, {t490, t492, t494});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::bias_derivatives_a3b5f5a53228
+}  // namespace rbdc_gen::mini_cheetah::common::bias_derivatives_52d2030385f1

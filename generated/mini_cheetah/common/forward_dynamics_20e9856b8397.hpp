@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_2f540a4fdeb9 {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_20e9856b8397 {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
 /// algorithm where that is cheaper: the schedule line says which).
@@ -369,7 +369,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   // ABA: outward pass, accelerations: body 3 LF_knee/RF_knee/LH_knee/RH_knee
   const Lane t285 = Scalar(2057.0036861506055) * (t85 - ((Scalar(0.000486144) * t284) - (Scalar(0.003904) * (((cos_lanes_knee_joint * (t280 - (Scalar(0.209) * t284))) - (sin_lanes_knee_joint * t281)) - t77))));
   // outputs
-  store_transposed_lanes<3>({a + 6, a + 9, a + 12, a + 15}, {t276, t283, t285});
+  store_interleaved_lanes<3>(a + 6, {t276, t283, t285});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_2f540a4fdeb9
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_20e9856b8397

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_72cb503f8f37 {
+namespace rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_bc9173161343 {
 
 /// Centre-of-mass Jacobian J_c, ċ = J_c v, world frame.
 ///
@@ -128,7 +128,7 @@ RBDC_HOST_DEVICE inline void center_of_mass_jacobian(const Scalar* q, Scalar* J_
   const Lane t70 = Scalar(0.12118274357731461) * ((t25 * t68) - (t29 * t66));
   const Lane t71 = Scalar(0.12118274357731461) * ((t27 * t66) - (t25 * t67));
   // outputs
-  store_transposed_lanes<9>({J_c + 18, J_c + 27, J_c + 36, J_c + 45}, {t57, t58, t59, t63, t64, t65, t69, t70, t71});
+  store_interleaved_lanes<9>(J_c + 18, {t57, t58, t59, t63, t64, t65, t69, t70, t71});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_72cb503f8f37
+}  // namespace rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_bc9173161343

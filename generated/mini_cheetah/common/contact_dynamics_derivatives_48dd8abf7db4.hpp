@@ -12,7 +12,7 @@
 #include "rbdc_gen/lanes.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_15678ff70b4b {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_48dd8abf7db4 {
 
 /// The traced part of contact_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -395,7 +395,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t118 = ((t68 - lane_sum(-(t21 * t87))) - lane_sum(-(t80 * t103))) - lane_sum(t97 * t117);
   const Lane t119 = t97 * t107;
   const Lane t120 = t98 * t107;
-  store_transposed_lanes<21>({L + 15, L + 36, L + 57, L + 78}, {t108, t114, t115, t117, t119, t120, t92, t99, t100, t102, t103, t105, t106, t74, t82, t83, t85, t86, t88, t89, t90});
+  store_interleaved_lanes<21>(L + 15, {t108, t114, t115, t117, t119, t120, t92, t99, t100, t102, t103, t105, t106, t74, t82, t83, t85, t86, t88, t89, t90});
   const Scalar t121 = Scalar(1) / (((Scalar(8.251999999999999) - lane_sum(t19 * t83)) - lane_sum(t76 * t99)) - lane_sum(t93 * t108));
   const Scalar t122 = t109 * t121;
   const Scalar t123 = ((lane_sum(-(t15 * t84)) + lane_sum(-(t78 * t100))) + lane_sum(t95 * t114)) + (t110 * t122);
@@ -2421,4 +2421,4 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 12, 48>(solve_R2, solve_R2_out);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_15678ff70b4b
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_48dd8abf7db4

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_lanes_e441483767ae {
+namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_lanes_813285c20fa3 {
 
 /// The lower triangle of M (CRBA, paper 000 Alg. 5), the four isomorphic limbs' passes evaluated
 /// together in SIMD lanes, the trunk scalar; equals mass_matrix_lower.
@@ -49,8 +49,9 @@ RBDC_HOST_DEVICE inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M)
   const Lane cos_lanes_hip_joint = load_lanes(joint_trig.cos + 4);
   const Lane sin_lanes_knee_joint = load_lanes(joint_trig.sin + 8);
   const Lane cos_lanes_knee_joint = load_lanes(joint_trig.cos + 8);
-  store_lanes(M + 57, make_lanes(Scalar(8.251999999999999), Scalar(0), Scalar(0), Scalar(0)));
-  M[69] = Scalar(0);
+  M[57] = Scalar(8.251999999999999);
+  M[58] = Scalar(0);
+  M[59] = Scalar(0);
   M[76] = Scalar(8.251999999999999);
   M[77] = Scalar(0);
   M[95] = Scalar(8.251999999999999);
@@ -101,7 +102,6 @@ RBDC_HOST_DEVICE inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M)
   const Lane t13 = t0 * cos_lanes_hip_joint;
   const Lane t14 = (t1 * sin_lanes_hip_joint) + t13;
   const Lane t15 = (t1 * cos_lanes_hip_joint) - t12;
-  M[71] = t15[3];
   const Lane t16 = lane_c[4] * t14;
   const Lane t17 = lane_c[4] * t15;
   const Lane t18 = t14 * sin_lanes_abad_joint;
@@ -122,9 +122,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M)
   const Lane t32 = (t10 * cos_lanes_hip_joint) - t26;
   const Lane t33 = t13 - t24;
   const Lane t34 = -t25;
-  store_lanes(M + 61, make_lanes(t34[0], t15[0], Scalar(0), t34[1]));
-  store_lanes(M + 65, make_lanes(t15[1], Scalar(0), t34[2], t15[2]));
-  M[70] = t34[3];
+  store_interleaved_lanes<3>(M + 60, {make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)), t34, t15});
   const Lane t35 = lane_c[4] * t33;
   const Lane t36 = lane_c[4] * t25;
   const Lane t37 = Scalar(0.00108084) + (((cos_lanes_hip_joint * ((t7 * cos_lanes_hip_joint) + t26)) + (sin_lanes_hip_joint * (t27 + (t10 * sin_lanes_hip_joint)))) + Scalar(0.0014252559999999997));
@@ -146,7 +144,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M)
   const Lane t51 = cos_lanes_abad_joint * lane_c[7];
   const Lane t52 = sin_lanes_abad_joint * t25;
   const Lane t53 = t51 - t52;
-  store_transposed_lanes<3>({M + 96, M + 99, M + 102, M + 105}, {t53, t47, t20});
+  store_interleaved_lanes<3>(M + 96, {t53, t47, t20});
   const Lane t54 = (sin_lanes_abad_joint * lane_c[7]) + (cos_lanes_abad_joint * t25);
   const Lane t55 = (cos_lanes_abad_joint * t38) - (sin_lanes_abad_joint * t39);
   const Lane t56 = (sin_lanes_abad_joint * t38) + (cos_lanes_abad_joint * t39);
@@ -158,9 +156,9 @@ RBDC_HOST_DEVICE inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M)
   const Lane t62 = t53 + lane_c[9];
   store_lanes(M + 0, make_lanes(Scalar(0.011253) + lane_sum(t37 - ((lane_c[6] * (t52 - t51)) + (t62 * lane_c[11]))), lane_sum(t55 - ((lane_c[6] * t33) + (lane_c[5] * t62))), lane_sum(t56 + (t54 * lane_c[10])), Scalar(0)));
   const Lane t63 = -t54;
-  store_transposed_lanes<3>({M + 78, M + 81, M + 84, M + 87}, {t63, t46, t19});
+  store_interleaved_lanes<3>(M + 78, {t63, t46, t19});
   const Lane t64 = t56 - (lane_c[5] * t54);
-  store_transposed_lanes<3>({M + 42, M + 45, M + 48, M + 51}, {t64, t50, t23});
+  store_interleaved_lanes<3>(M + 42, {t64, t50, t23});
   const Lane t65 = ((sin_lanes_abad_joint * t59) + (cos_lanes_abad_joint * t60)) - (((t53 * lane_c[11]) + (lane_c[5] * (t24 - t13))) + ((t61 * lane_c[10]) - (lane_c[6] * t62)));
   const Scalar t66 = lane_sum(t61);
   M[23] = -t66;
@@ -172,10 +170,10 @@ RBDC_HOST_DEVICE inline void mass_matrix_lower_lanes(const Scalar* q, Scalar* M)
   const Scalar t69 = lane_sum(((cos_lanes_abad_joint * ((cos_lanes_abad_joint * t40) - t57)) - (sin_lanes_abad_joint * (t58 - (sin_lanes_abad_joint * t42)))) - ((t33 * lane_c[10]) - (lane_c[5] * t61)));
   store_lanes(M + 19, make_lanes(Scalar(0.036203) + t69, lane_sum(((cos_lanes_abad_joint * t59) - (sin_lanes_abad_joint * t60)) - (lane_c[6] * t54)), t68, Scalar(0)));
   const Lane t70 = t37 + (lane_c[6] * t53);
-  store_transposed_lanes<3>({M + 6, M + 9, M + 12, M + 15}, {t70, t48, t21});
+  store_interleaved_lanes<3>(M + 6, {t70, t48, t21});
   const Lane t71 = t55 - (lane_c[5] * t53);
   // outputs
-  store_transposed_lanes<3>({M + 24, M + 27, M + 30, M + 33}, {t71, t49, t22});
+  store_interleaved_lanes<3>(M + 24, {t71, t49, t22});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_lanes_e441483767ae
+}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_lanes_813285c20fa3

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_5229f09cd8ec {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_6869dec545c9 {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ), the four isomorphic
 /// limbs' passes and their rows of the factorisation evaluated together in SIMD lanes, the trunk
@@ -376,7 +376,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_lanes(const Scalar* q, const Scala
   const Lane t292 = (((((Scalar(2057.0036861506055) * t121) - (t184 * t291)) - (t192 * t289)) - (t193 * t287)) + (t194 * t286)) + (t195 * t285);
   const Lane t293 = ((t292 + (t196 * t284)) - (t198 * t283)) - (t199 * t282);
   // outputs
-  store_transposed_lanes<3>({a + 6, a + 9, a + 12, a + 15}, {t289, t291, t293});
+  store_interleaved_lanes<3>(a + 6, {t289, t291, t293});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_5229f09cd8ec
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_6869dec545c9

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_8fa61f3e8f39 {
+namespace rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_e81067fa84da {
 
 /// Centroidal momentum matrix A_G (Orin, Goswami & Lee 2013): h_G = A_G v.
 ///
@@ -237,7 +237,7 @@ RBDC_HOST_DEVICE inline void centroidal_momentum_matrix(const Scalar* q, Scalar*
   const Lane t163 = ((t157 * t159) - (t154 * t161)) - (Scalar(0.000486144) * t27);
   const Lane t164 = ((t156 * t159) + (t154 * t160)) - (Scalar(0.000486144) * t29);
   // outputs
-  store_transposed_lanes<18>({A_G + 36, A_G + 54, A_G + 72, A_G + 90}, {t142, t143, t144, t136, t137, t138, t151, t152, t153, t145, t146, t147, t162, t163, t164, t155, t156, t158});
+  store_interleaved_lanes<18>(A_G + 36, {t142, t143, t144, t136, t137, t138, t151, t152, t153, t145, t146, t147, t162, t163, t164, t155, t156, t158});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_8fa61f3e8f39
+}  // namespace rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_e81067fa84da

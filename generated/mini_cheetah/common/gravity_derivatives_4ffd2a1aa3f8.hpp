@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::gravity_derivatives_7c435d747521 {
+namespace rbdc_gen::mini_cheetah::common::gravity_derivatives_4ffd2a1aa3f8 {
 
 /// Derivative of the gravity terms g.
 ///
@@ -251,7 +251,7 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   const Lane t103 = -((t8 * t39) + (t7 * t38));
   const Lane t104 = -((t8 * t45) + (t7 * t46));
   const Lane t105 = -((t8 * t49) + (t7 * t50));
-  store_transposed_lanes<3>({dg_dq + 6, dg_dq + 9, dg_dq + 12, dg_dq + 15}, {t103, t104, t105});
+  store_interleaved_lanes<3>(dg_dq + 6, {t103, t104, t105});
   const Scalar t106 = t7 * t41;
   const Scalar t107 = t8 * t42;
   store_lanes(dg_dq + 0, make_lanes(-(t106 + t107), t7 * t40, t8 * t40, Scalar(0)));
@@ -262,7 +262,7 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   const Lane t110 = t6 * t38;
   const Lane t111 = (t8 * t36) + (t6 * t46);
   const Lane t112 = (t6 * t50) - (t8 * t48);
-  store_transposed_lanes<3>({dg_dq + 24, dg_dq + 27, dg_dq + 30, dg_dq + 33}, {t110, t111, t112});
+  store_interleaved_lanes<3>(dg_dq + 24, {t110, t111, t112});
   const Scalar t113 = t6 * t40;
   store_lanes(dg_dq + 18, make_lanes(t6 * t41, -(t107 + t113), t8 * t41, -t108));
   store_lanes(dg_dq + 36, make_lanes(t6 * t42, t7 * t42, -(t106 + t113), t109));
@@ -273,7 +273,7 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   const Lane t116 = (t6 * t45) - (t7 * t36);
   const Lane t117 = (t7 * t48) + (t6 * t49);
   // outputs
-  store_transposed_lanes<3>({dg_dq + 42, dg_dq + 45, dg_dq + 48, dg_dq + 51}, {t115, t116, t117});
+  store_interleaved_lanes<3>(dg_dq + 42, {t115, t116, t117});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::gravity_derivatives_7c435d747521
+}  // namespace rbdc_gen::mini_cheetah::common::gravity_derivatives_4ffd2a1aa3f8

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::feet_bias_accelerations_ca59269eb5ea {
+namespace rbdc_gen::mini_cheetah::common::feet_bias_accelerations_d4b9dfe56bf0 {
 
 /// J̇v of the feet: each foot point's classical acceleration at a = 0, world frame.
 ///
@@ -131,7 +131,7 @@ RBDC_HOST_DEVICE inline void feet_bias_accelerations(const Scalar* q, const Scal
   const Lane t73 = (((t28 * cos_lanes_knee_joint) - (t29 * sin_lanes_knee_joint)) * t66) - (((t17 * cos_lanes_abad_joint) + (t18 * sin_lanes_abad_joint)) * t67);
   const Lane t74 = t73 + (((t28 * sin_lanes_knee_joint) + (t29 * cos_lanes_knee_joint)) * t68);
   // outputs
-  store_transposed_lanes<3>({Jdot_v + 0, Jdot_v + 3, Jdot_v + 6, Jdot_v + 9}, {t70, t72, t74});
+  store_interleaved_lanes<3>(Jdot_v + 0, {t70, t72, t74});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::feet_bias_accelerations_ca59269eb5ea
+}  // namespace rbdc_gen::mini_cheetah::common::feet_bias_accelerations_d4b9dfe56bf0

@@ -12,7 +12,7 @@
 #include "rbdc_gen/lanes.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b0cfb155d222 {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b995f13b26fe {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -748,15 +748,15 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Lane t428 = (t19 * t427) - (t22 * t426);
   const Lane t429 = (t22 * t425) - (t16 * t427);
   const Lane t430 = (t16 * t426) - (t19 * t425);
-  store_transposed_lanes<3>({rhs + 48, rhs + 51, rhs + 54, rhs + 57}, {t428, t429, t430});
+  store_interleaved_lanes<3>(rhs + 48, {t428, t429, t430});
   const Lane t431 = (t20 * t427) - (t23 * t426);
   const Lane t432 = (t23 * t425) - (t17 * t427);
   const Lane t433 = (t17 * t426) - (t20 * t425);
-  store_transposed_lanes<3>({rhs + 112, rhs + 115, rhs + 118, rhs + 121}, {t431, t432, t433});
+  store_interleaved_lanes<3>(rhs + 112, {t431, t432, t433});
   const Lane t434 = (t21 * t427) - (t24 * t426);
   const Lane t435 = (t24 * t425) - (t18 * t427);
   const Lane t436 = (t18 * t426) - (t21 * t425);
-  store_transposed_lanes<3>({rhs + 176, rhs + 179, rhs + 182, rhs + 185}, {t434, t435, t436});
+  store_interleaved_lanes<3>(rhs + 176, {t434, t435, t436});
   const Lane t437 = t422 - t402;
   const Lane t438 = t423 - t403;
   const Lane t439 = t424 - t404;
@@ -947,7 +947,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t571 = ((t232 - lane_sum(-(t298 * t540))) - lane_sum(-(t533 * t556))) - lane_sum(t550 * t570);
   const Lane t572 = t550 * t560;
   const Lane t573 = t551 * t560;
-  store_transposed_lanes<21>({L + 15, L + 36, L + 57, L + 78}, {t561, t567, t568, t570, t572, t573, t545, t552, t553, t555, t556, t558, t559, t527, t535, t536, t538, t539, t541, t542, t543});
+  store_interleaved_lanes<21>(L + 15, {t561, t567, t568, t570, t572, t573, t545, t552, t553, t555, t556, t558, t559, t527, t535, t536, t538, t539, t541, t542, t543});
   const Scalar t574 = Scalar(1) / (((Scalar(8.251999999999999) - lane_sum(t296 * t536)) - lane_sum(t529 * t552)) - lane_sum(t546 * t561));
   const Scalar t575 = t562 * t574;
   const Scalar t576 = ((lane_sum(-(t292 * t537)) + lane_sum(-(t531 * t553))) + lane_sum(t548 * t567)) + (t563 * t575);
@@ -1304,4 +1304,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 18, 64>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b0cfb155d222
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b995f13b26fe

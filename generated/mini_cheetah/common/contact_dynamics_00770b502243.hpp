@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_920c7ab3e486 {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_00770b502243 {
 
 /// Rigid-contact dynamics of the scene's contact feet: a and λ of M a − Jᵀλ = Sᵀτ − c − g, J a =
 /// −J̇v (Schur complement, damped proximal Delassus solve; docs/runtime.md).
@@ -1013,7 +1013,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t914 = t299 + t911;
   const Lane t915 = t301 + (((((t912 + (t202 * t905)) - (t203 * t903)) + (t204 * t902)) - (t206 * t901)) - (t207 * t900));
   // outputs
-  store_transposed_lanes<3>({a + 6, a + 9, a + 12, a + 15}, {t913, t914, t915});
+  store_interleaved_lanes<3>(a + 6, {t913, t914, t915});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_920c7ab3e486
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_00770b502243

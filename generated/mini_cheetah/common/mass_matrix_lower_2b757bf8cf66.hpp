@@ -2,27 +2,29 @@
 // input: robots/mini_cheetah.urdf (sha256 b23f00116f98e183b9f7166a74175cc628a8919051c201a68bfa170439e8eeca)
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// mass_matrix_lanes for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
+// mass_matrix_lower for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
 // folded, shared subexpressions computed once, only what reaches the outputs kept. The file is named
-// by a hash of its content: every scene whose mass_matrix_lanes is this code includes this one file
-// and brings the function into its namespace (<scene>/mass_matrix_lanes.hpp).
+// by a hash of its content: every scene whose mass_matrix_lower is this code includes this one file
+// and brings the function into its namespace (<scene>/mass_matrix_lower.hpp).
 #pragma once
 
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::mass_matrix_lanes_e8e7e5a2ac94 {
+namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_2b757bf8cf66 {
 
-/// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5), the four isomorphic limbs' passes
-/// evaluated together in SIMD lanes, the trunk scalar; equals mass_matrix.
+/// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5), its lower triangle only (n(n+1)/2 stores
+/// instead of n²): for Eigen's M.selfadjointView<Eigen::Lower>() and its LDLᵀ/LLᵀ.
 ///
 /// @param q in  19x1: configuration (position, quaternion w x y z, joints)
-/// @param M out 18x18: mass matrix, full symmetric
+/// @param M out 18x18: mass matrix, lower triangle (row ≥ column); the entries above the diagonal are not written
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             388  366    0     0    24   27    805
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 217 arithmetic
+///   instructions, scalar tree 781, looped CRBA 2252 (cost 3137)
 template <class Scalar>
-RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexcept {
+RBDC_HOST_DEVICE inline void mass_matrix_lower(const Scalar* q, Scalar* M) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_c[12] = {make_lanes(Scalar(5.8e-05), Scalar(-5.8e-05), Scalar(5.8e-05), Scalar(-5.8e-05)),
@@ -49,51 +51,37 @@ RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexc
   const Lane cos_lanes_hip_joint = load_lanes(joint_trig.cos + 4);
   const Lane sin_lanes_knee_joint = load_lanes(joint_trig.sin + 8);
   const Lane cos_lanes_knee_joint = load_lanes(joint_trig.cos + 8);
-  M[22] = Scalar(0);
-  M[41] = Scalar(0);
-  M[94] = Scalar(0);
+  M[57] = Scalar(8.251999999999999);
+  M[58] = Scalar(0);
+  M[59] = Scalar(0);
+  M[76] = Scalar(8.251999999999999);
+  M[77] = Scalar(0);
   M[95] = Scalar(8.251999999999999);
-  M[111] = Scalar(0);
   store_lanes(M + 117, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(M + 121, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   M[125] = Scalar(0);
-  store_lanes(M + 135, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 139, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(M + 137, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  M[141] = Scalar(0);
+  M[142] = Scalar(0);
   M[143] = Scalar(0);
-  store_lanes(M + 154, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 158, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  M[169] = Scalar(0);
-  M[170] = Scalar(0);
+  store_lanes(M + 152, make_lanes(Scalar(0.000486144), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(M + 156, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  M[160] = Scalar(0);
+  M[161] = Scalar(0);
   store_lanes(M + 174, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   M[178] = Scalar(0);
   M[179] = Scalar(0);
-  M[186] = Scalar(0);
-  M[187] = Scalar(0);
-  M[188] = Scalar(0);
-  store_lanes(M + 192, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  M[196] = Scalar(0);
-  M[197] = Scalar(0);
-  store_lanes(M + 212, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 223, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  M[227] = Scalar(0);
+  store_lanes(M + 194, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  store_lanes(M + 209, make_lanes(Scalar(0.000486144), Scalar(0), Scalar(0), Scalar(0)));
+  M[213] = Scalar(0);
+  M[214] = Scalar(0);
+  M[215] = Scalar(0);
   M[231] = Scalar(0);
   M[232] = Scalar(0);
   M[233] = Scalar(0);
-  store_lanes(M + 240, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  M[244] = Scalar(0);
-  M[245] = Scalar(0);
-  M[249] = Scalar(0);
-  M[250] = Scalar(0);
   M[251] = Scalar(0);
-  store_lanes(M + 258, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   store_lanes(M + 266, make_lanes(Scalar(0.000486144), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 277, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 281, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 294, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 298, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  M[302] = Scalar(0);
-  store_lanes(M + 312, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
-  store_lanes(M + 316, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
+  M[323] = Scalar(0.000486144);
   // inward pass, composite inertias (CRBA): body 3 LF_knee/RF_knee/LH_knee/RH_knee
   const Lane t0 = Scalar(0.003904) * sin_lanes_knee_joint;
   const Lane t1 = Scalar(0.003904) * cos_lanes_knee_joint;
@@ -105,18 +93,18 @@ RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexc
   const Lane t7 = Scalar(0.002398904) + (((cos_lanes_knee_joint * (Scalar(0.000483144) * cos_lanes_knee_joint)) + (sin_lanes_knee_joint * (Scalar(6e-06) * sin_lanes_knee_joint))) + (t5 + (Scalar(0.209) * (t1 + Scalar(0.013375999999999999)))));
   const Lane t8 = Scalar(1.3e-05) + (((sin_lanes_knee_joint * t3) - (cos_lanes_knee_joint * t2)) - (Scalar(0.000815936) * sin_lanes_knee_joint));
   const Lane t9 = Scalar(0.0023566) + (Scalar(0.000486144) - ((Scalar(0.209) * t4) - t5));
+  M[304] = t9[3];
   const Lane t10 = Scalar(0.000570304) + ((sin_lanes_knee_joint * t2) + (cos_lanes_knee_joint * t3));
   const Lane t11 = Scalar(0.000486144) + t5;
-  store_lanes(M + 208, make_lanes(t11[1], Scalar(0.000486144), Scalar(0), Scalar(0)));
+  store_lanes(M + 133, make_lanes(t9[0], t11[0], Scalar(0), Scalar(0)));
+  store_lanes(M + 190, make_lanes(t9[1], t11[1], Scalar(0), Scalar(0)));
+  store_lanes(M + 247, make_lanes(t9[2], t11[2], Scalar(0), Scalar(0)));
+  M[305] = t11[3];
   const Lane t12 = t0 * sin_lanes_hip_joint;
   const Lane t13 = t0 * cos_lanes_hip_joint;
   const Lane t14 = (t1 * sin_lanes_hip_joint) + t13;
   const Lane t15 = (t1 * cos_lanes_hip_joint) - t12;
   const Lane t16 = lane_c[4] * t14;
-  store_lanes(M + 150, make_lanes(t16[0], t11[0], Scalar(0.000486144), Scalar(0)));
-  store_lanes(M + 204, make_lanes(Scalar(0), Scalar(0), Scalar(0), t16[1]));
-  store_lanes(M + 262, make_lanes(Scalar(0), Scalar(0), t16[2], t11[2]));
-  store_lanes(M + 320, make_lanes(Scalar(0), t16[3], t11[3], Scalar(0.000486144)));
   const Lane t17 = lane_c[4] * t15;
   const Lane t18 = t14 * sin_lanes_abad_joint;
   const Lane t19 = -t18;
@@ -124,7 +112,6 @@ RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexc
   const Lane t21 = t16 + (lane_c[6] * t20);
   const Lane t22 = ((t17 * sin_lanes_abad_joint) - (t11 * cos_lanes_abad_joint)) - (lane_c[5] * t20);
   const Lane t23 = -(((t11 * sin_lanes_abad_joint) + (t17 * cos_lanes_abad_joint)) + ((lane_c[5] * t18) + (t15 * lane_c[6])));
-  store_transposed_lanes<6>({M + 144, M + 198, M + 252, M + 306}, {t21, t22, t23, t15, t19, t20});
   // inward pass, composite inertias (CRBA): body 2 LF_hip/RF_hip/LH_hip/RH_hip
   const Lane t24 = t6 * sin_lanes_hip_joint;
   const Lane t25 = t12 + (t6 * cos_lanes_hip_joint);
@@ -137,9 +124,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexc
   const Lane t32 = (t10 * cos_lanes_hip_joint) - t26;
   const Lane t33 = t13 - t24;
   const Lane t34 = -t25;
-  store_lanes(M + 58, make_lanes(Scalar(0), Scalar(0), Scalar(0), t34[0]));
-  store_lanes(M + 62, make_lanes(t15[0], Scalar(0), t34[1], t15[1]));
-  store_lanes(M + 66, make_lanes(Scalar(0), t34[2], t15[2], Scalar(0)));
+  store_interleaved_lanes<3>(M + 60, {make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)), t34, t15});
   const Lane t35 = lane_c[4] * t33;
   const Lane t36 = lane_c[4] * t25;
   const Lane t37 = Scalar(0.00108084) + (((cos_lanes_hip_joint * ((t7 * cos_lanes_hip_joint) + t26)) + (sin_lanes_hip_joint * (t27 + (t10 * sin_lanes_hip_joint)))) + Scalar(0.0014252559999999997));
@@ -150,7 +135,6 @@ RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexc
   const Lane t42 = Scalar(0.00114384) + (((cos_lanes_hip_joint * t32) - (sin_lanes_hip_joint * t28)) + Scalar(0.0014252559999999997));
   const Lane t43 = t35 - t29;
   store_transposed_lanes<3>({M + 114, M + 171, M + 228, M + 285}, {t37, t43, t16});
-  store_transposed_lanes<3>({M + 132, M + 189, M + 246, M + 303}, {t43, t9, t11});
   const Lane t44 = (t31 - t30) + t36;
   const Lane t45 = sin_lanes_abad_joint * t33;
   const Lane t46 = -t45;
@@ -158,13 +142,11 @@ RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexc
   const Lane t48 = t43 + (lane_c[6] * t47);
   const Lane t49 = -(((t9 * cos_lanes_abad_joint) + (sin_lanes_abad_joint * t44)) + (lane_c[5] * t47));
   const Lane t50 = ((cos_lanes_abad_joint * t44) - (t9 * sin_lanes_abad_joint)) + ((lane_c[6] * t25) - (lane_c[5] * t45));
-  store_transposed_lanes<6>({M + 126, M + 180, M + 234, M + 288}, {t48, t49, t50, t34, t46, t47});
   // inward pass, composite inertias (CRBA): body 1 LF_abad/RF_abad/LH_abad/RH_abad
   const Lane t51 = cos_lanes_abad_joint * lane_c[7];
   const Lane t52 = sin_lanes_abad_joint * t25;
   const Lane t53 = t51 - t52;
-  store_transposed_lanes<3>({M + 96, M + 99, M + 102, M + 105}, {t53, t47, t20});
-  M[113] = t53[0];
+  store_interleaved_lanes<3>(M + 96, {t53, t47, t20});
   const Lane t54 = (sin_lanes_abad_joint * lane_c[7]) + (cos_lanes_abad_joint * t25);
   const Lane t55 = (cos_lanes_abad_joint * t38) - (sin_lanes_abad_joint * t39);
   const Lane t56 = (sin_lanes_abad_joint * t38) + (cos_lanes_abad_joint * t39);
@@ -174,42 +156,26 @@ RBDC_HOST_DEVICE inline void mass_matrix_lanes(const Scalar* q, Scalar* M) noexc
   const Lane t60 = t57 + (cos_lanes_abad_joint * t42);
   const Lane t61 = t33 + lane_c[8];
   const Lane t62 = t53 + lane_c[9];
+  store_lanes(M + 0, make_lanes(Scalar(0.011253) + lane_sum(t37 - ((lane_c[6] * (t52 - t51)) + (t62 * lane_c[11]))), lane_sum(t55 - ((lane_c[6] * t33) + (lane_c[5] * t62))), lane_sum(t56 + (t54 * lane_c[10])), Scalar(0)));
   const Lane t63 = -t54;
-  store_transposed_lanes<3>({M + 78, M + 81, M + 84, M + 87}, {t63, t46, t19});
-  M[112] = t63[0];
-  store_lanes(M + 165, make_lanes(Scalar(0), t63[1], t53[1], Scalar(0)));
-  store_lanes(M + 219, make_lanes(Scalar(0), t63[2], t53[2], Scalar(0)));
-  store_lanes(M + 273, make_lanes(Scalar(0), t63[3], t53[3], Scalar(0)));
+  store_interleaved_lanes<3>(M + 78, {t63, t46, t19});
   const Lane t64 = t56 - (lane_c[5] * t54);
-  store_transposed_lanes<3>({M + 42, M + 45, M + 48, M + 51}, {t64, t50, t23});
+  store_interleaved_lanes<3>(M + 42, {t64, t50, t23});
   const Lane t65 = ((sin_lanes_abad_joint * t59) + (cos_lanes_abad_joint * t60)) - (((t53 * lane_c[11]) + (lane_c[5] * (t24 - t13))) + ((t61 * lane_c[10]) - (lane_c[6] * t62)));
   const Scalar t66 = lane_sum(t61);
-  M[40] = t66;
-  store_lanes(M + 74, make_lanes(t66, Scalar(0), Scalar(8.251999999999999), Scalar(0)));
+  M[23] = -t66;
   const Scalar t67 = lane_sum(t62);
   M[5] = t67;
+  store_lanes(M + 38, make_lanes(Scalar(0.042673) + lane_sum(t65), -t67, t66, Scalar(0)));
   const Scalar t68 = lane_sum(t54);
-  const Scalar t69 = lane_sum(t55 - ((lane_c[6] * t33) + (lane_c[5] * t62)));
-  const Scalar t70 = lane_sum(t56 + (t54 * lane_c[10]));
-  store_lanes(M + 0, make_lanes(Scalar(0.011253) + lane_sum(t37 - ((lane_c[6] * (t52 - t51)) + (t62 * lane_c[11]))), t69, t70, Scalar(0)));
-  const Scalar t71 = lane_sum(((cos_lanes_abad_joint * ((cos_lanes_abad_joint * t40) - t57)) - (sin_lanes_abad_joint * (t58 - (sin_lanes_abad_joint * t42)))) - ((t33 * lane_c[10]) - (lane_c[5] * t61)));
-  const Scalar t72 = lane_sum(((cos_lanes_abad_joint * t59) - (sin_lanes_abad_joint * t60)) - (lane_c[6] * t54));
-  store_lanes(M + 18, make_lanes(t69, Scalar(0.036203) + t71, t72, t68));
-  const Lane t73 = t37 + (lane_c[6] * t53);
-  store_transposed_lanes<3>({M + 6, M + 9, M + 12, M + 15}, {t73, t48, t21});
-  const Lane t74 = t55 - (lane_c[5] * t53);
-  store_transposed_lanes<3>({M + 24, M + 27, M + 30, M + 33}, {t74, t49, t22});
-  store_transposed_lanes<3>({M + 108, M + 162, M + 216, M + 270}, {t73, t74, t64});
-  const Scalar t75 = -t68;
-  M[4] = t75;
-  store_lanes(M + 70, make_lanes(t34[3], t15[3], t75, Scalar(0)));
-  const Scalar t76 = -t66;
-  M[23] = t76;
-  store_lanes(M + 90, make_lanes(t67, t76, Scalar(0), Scalar(0)));
-  const Scalar t77 = -t67;
+  M[4] = -t68;
+  const Scalar t69 = lane_sum(((cos_lanes_abad_joint * ((cos_lanes_abad_joint * t40) - t57)) - (sin_lanes_abad_joint * (t58 - (sin_lanes_abad_joint * t42)))) - ((t33 * lane_c[10]) - (lane_c[5] * t61)));
+  store_lanes(M + 19, make_lanes(Scalar(0.036203) + t69, lane_sum(((cos_lanes_abad_joint * t59) - (sin_lanes_abad_joint * t60)) - (lane_c[6] * t54)), t68, Scalar(0)));
+  const Lane t70 = t37 + (lane_c[6] * t53);
+  store_interleaved_lanes<3>(M + 6, {t70, t48, t21});
+  const Lane t71 = t55 - (lane_c[5] * t53);
   // outputs
-  store_lanes(M + 36, make_lanes(t70, t72, Scalar(0.042673) + lane_sum(t65), t77));
-  store_lanes(M + 54, make_lanes(Scalar(0), t68, t77, Scalar(8.251999999999999)));
+  store_interleaved_lanes<3>(M + 24, {t71, t49, t22});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_lanes_e8e7e5a2ac94
+}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_lower_2b757bf8cf66

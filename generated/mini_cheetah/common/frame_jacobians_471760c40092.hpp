@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::frame_jacobians_0e0e4697b29b {
+namespace rbdc_gen::mini_cheetah::common::frame_jacobians_471760c40092 {
 
 /// 6 × nv Jacobians of the scene's frames (paper 000 Eq. B3 moved to the frame).
 ///
@@ -49,36 +49,6 @@ RBDC_HOST_DEVICE inline void frame_jacobians(const Scalar* q, Scalar* J_local, S
   J_local[35] = Scalar(0);
   J_local[64] = Scalar(0);
   J_local[65] = Scalar(0);
-  J_local[98] = Scalar(0);
-  J_local[102] = Scalar(0);
-  J_local[103] = Scalar(0);
-  J_local[104] = Scalar(0);
-  J_local[108] = Scalar(0);
-  J_local[109] = Scalar(0);
-  J_local[110] = Scalar(0);
-  J_local[114] = Scalar(0);
-  J_local[115] = Scalar(0);
-  J_local[116] = Scalar(0);
-  J_local[128] = Scalar(0);
-  J_local[132] = Scalar(0);
-  J_local[133] = Scalar(0);
-  J_local[134] = Scalar(0);
-  J_local[138] = Scalar(0);
-  J_local[139] = Scalar(0);
-  J_local[140] = Scalar(0);
-  J_local[144] = Scalar(0);
-  J_local[145] = Scalar(0);
-  J_local[146] = Scalar(0);
-  J_local[158] = Scalar(0);
-  J_local[162] = Scalar(0);
-  J_local[163] = Scalar(0);
-  J_local[164] = Scalar(0);
-  J_local[168] = Scalar(0);
-  J_local[169] = Scalar(0);
-  J_local[170] = Scalar(0);
-  J_local[174] = Scalar(0);
-  J_local[175] = Scalar(0);
-  J_local[176] = Scalar(0);
   store_lanes(J_local + 180, make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)));
   J_local[184] = Scalar(0);
   J_local[185] = Scalar(0);
@@ -356,18 +326,21 @@ RBDC_HOST_DEVICE inline void frame_jacobians(const Scalar* q, Scalar* J_local, S
   const Scalar t54 = ((t13 * t13) + (t16 * t16)) + (t19 * t19);
   store_lanes(J_local + 90, make_lanes(Scalar(0), Scalar(0), Scalar(0), t54));
   const Scalar t55 = ((t13 * t14) + (t16 * t17)) + (t19 * t20);
+  J_local[94] = t55;
   store_lanes(J_local + 120, make_lanes(Scalar(0), Scalar(0), Scalar(0), t55));
   const Scalar t56 = ((t13 * t15) + (t16 * t18)) + (t19 * t21);
   store_lanes(J_local + 0, make_lanes(t54, t55, t56, Scalar(0)));
-  store_lanes(J_local + 94, make_lanes(t55, t56, Scalar(0), Scalar(0)));
+  J_local[95] = t56;
   store_lanes(J_local + 150, make_lanes(Scalar(0), Scalar(0), Scalar(0), t56));
   const Scalar t57 = ((t14 * t14) + (t17 * t17)) + (t20 * t20);
+  J_local[124] = t57;
   const Scalar t58 = ((t14 * t15) + (t17 * t18)) + (t20 * t21);
   store_lanes(J_local + 30, make_lanes(t55, t57, t58, Scalar(0)));
-  store_lanes(J_local + 124, make_lanes(t57, t58, Scalar(0), Scalar(0)));
+  J_local[125] = t58;
+  J_local[154] = t58;
   const Scalar t59 = ((t15 * t15) + (t18 * t18)) + (t21 * t21);
   store_lanes(J_local + 60, make_lanes(t56, t58, t59, Scalar(0)));
-  store_lanes(J_local + 154, make_lanes(t58, t59, Scalar(0), Scalar(0)));
+  J_local[155] = t59;
   // Jacobian of frame LF_foot/RF_foot/LH_foot/RH_foot
   const Lane t60 = t45 - ((lane_c[0] * t25) + (Scalar(0.195) * t49));
   const Lane t61 = t46 - ((lane_c[0] * t27) + (Scalar(0.195) * t51));
@@ -411,27 +384,27 @@ RBDC_HOST_DEVICE inline void frame_jacobians(const Scalar* q, Scalar* J_local, S
   const Lane t93 = ((t13 * t48) - (t16 * t50)) + (t19 * t52);
   const Lane t94 = -(((t13 * t25) + (t16 * t27)) + (t19 * t29));
   const Lane t95 = ((t13 * t49) + (t16 * t51)) + (t19 * t53);
-  store_transposed_lanes<3>({J_local + 99, J_local + 105, J_local + 111, J_local + 117}, {t93, t94, t95});
+  store_interleaved_lanes<6>(J_local + 96, {make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)), make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)), make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)), t93, t94, t95});
   const Lane t96 = ((t48 * t66) - (t50 * t67)) + (t52 * t68);
   const Lane t97 = -(((t25 * t66) + (t27 * t67)) + (t29 * t68));
   const Lane t98 = ((t49 * t66) + (t51 * t67)) + (t53 * t68);
-  store_transposed_lanes<6>({J_local + 6, J_local + 12, J_local + 18, J_local + 24}, {t93, t94, t95, t96, t97, t98});
+  store_interleaved_lanes<6>(J_local + 6, {t93, t94, t95, t96, t97, t98});
   const Lane t99 = ((t14 * t48) - (t17 * t50)) + (t20 * t52);
   const Lane t100 = -(((t14 * t25) + (t17 * t27)) + (t20 * t29));
   const Lane t101 = ((t14 * t49) + (t17 * t51)) + (t20 * t53);
-  store_transposed_lanes<3>({J_local + 129, J_local + 135, J_local + 141, J_local + 147}, {t99, t100, t101});
+  store_interleaved_lanes<6>(J_local + 126, {make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)), make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)), make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)), t99, t100, t101});
   const Lane t102 = ((t48 * t69) - (t50 * t70)) + (t52 * t71);
   const Lane t103 = -(((t25 * t69) + (t27 * t70)) + (t29 * t71));
   const Lane t104 = ((t49 * t69) + (t51 * t70)) + (t53 * t71);
-  store_transposed_lanes<6>({J_local + 36, J_local + 42, J_local + 48, J_local + 54}, {t99, t100, t101, t102, t103, t104});
+  store_interleaved_lanes<6>(J_local + 36, {t99, t100, t101, t102, t103, t104});
   const Lane t105 = ((t15 * t48) - (t18 * t50)) + (t21 * t52);
   const Lane t106 = -(((t15 * t25) + (t18 * t27)) + (t21 * t29));
   const Lane t107 = ((t15 * t49) + (t18 * t51)) + (t21 * t53);
-  store_transposed_lanes<3>({J_local + 159, J_local + 165, J_local + 171, J_local + 177}, {t105, t106, t107});
+  store_interleaved_lanes<6>(J_local + 156, {make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)), make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)), make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)), t105, t106, t107});
   const Lane t108 = ((t48 * t72) - (t50 * t73)) + (t52 * t74);
   const Lane t109 = -(((t25 * t72) + (t27 * t73)) + (t29 * t74));
   const Lane t110 = ((t49 * t72) + (t51 * t73)) + (t53 * t74);
-  store_transposed_lanes<6>({J_local + 66, J_local + 72, J_local + 78, J_local + 84}, {t105, t106, t107, t108, t109, t110});
+  store_interleaved_lanes<6>(J_local + 66, {t105, t106, t107, t108, t109, t110});
   const Lane t111 = ((t48 * t78) - (t50 * t79)) + (t52 * t80);
   const Lane t112 = -(((t25 * t78) + (t27 * t79)) + (t29 * t80));
   const Lane t113 = ((t49 * t78) + (t51 * t79)) + (t53 * t80);
@@ -450,4 +423,4 @@ RBDC_HOST_DEVICE inline void frame_jacobians(const Scalar* q, Scalar* J_local, S
   store_transposed_lanes<6>({J_local + 246, J_local + 342, J_local + 438, J_local + 534}, {t114, t115, t116, t120, t121, t122});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::frame_jacobians_0e0e4697b29b
+}  // namespace rbdc_gen::mini_cheetah::common::frame_jacobians_471760c40092

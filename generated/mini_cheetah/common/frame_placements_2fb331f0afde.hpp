@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::frame_placements_16e83f9d230b {
+namespace rbdc_gen::mini_cheetah::common::frame_placements_2fb331f0afde {
 
 /// Placements of the scene's frames: W_R_F and the origin (paper 000 Eqs. 15-18).
 ///
@@ -97,13 +97,13 @@ RBDC_HOST_DEVICE inline void frame_placements(const Scalar* q, Scalar* R, Scalar
   const Lane t42 = (t36 * cos_lanes_knee_joint) - (t35 * sin_lanes_knee_joint);
   const Lane t43 = (t37 * cos_lanes_knee_joint) - (t38 * sin_lanes_knee_joint);
   const Lane t44 = (t37 * sin_lanes_knee_joint) + (t38 * cos_lanes_knee_joint);
-  store_transposed_lanes<9>({R + 9, R + 18, R + 27, R + 36}, {t39, t41, t43, t29, t30, t32, t40, t42, t44});
+  store_interleaved_lanes<9>(R + 9, {t39, t41, t43, t29, t30, t32, t40, t42, t44});
   // placement of frame LF_foot/RF_foot/LH_foot/RH_foot
   const Lane t45 = (((q[0] + ((t13 * lane_c[1]) + (t14 * lane_c[2]))) + (t22 * lane_c[3])) - (Scalar(0.209) * t34)) - ((lane_c[0] * t22) + (Scalar(0.195) * t40));
   const Lane t46 = (((q[1] + ((t16 * lane_c[1]) + (t17 * lane_c[2]))) + (t24 * lane_c[3])) - (Scalar(0.209) * t36)) - ((lane_c[0] * t24) + (Scalar(0.195) * t42));
   const Lane t47 = (((q[2] + ((t19 * lane_c[1]) + (t20 * lane_c[2]))) + (t26 * lane_c[3])) - (Scalar(0.209) * t38)) - ((lane_c[0] * t26) + (Scalar(0.195) * t44));
   // outputs
-  store_transposed_lanes<3>({p + 3, p + 6, p + 9, p + 12}, {t45, t46, t47});
+  store_interleaved_lanes<3>(p + 3, {t45, t46, t47});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::frame_placements_16e83f9d230b
+}  // namespace rbdc_gen::mini_cheetah::common::frame_placements_2fb331f0afde

@@ -2,18 +2,20 @@
 // input: robots/mini_cheetah.urdf (sha256 b23f00116f98e183b9f7166a74175cc628a8919051c201a68bfa170439e8eeca)
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// osc_open_chain for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
+// osc_open_chain_lanes for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
 // folded, shared subexpressions computed once, only what reaches the outputs kept. The file is named
-// by a hash of its content: every scene whose osc_open_chain is this code includes this one file
-// and brings the function into its namespace (<scene>/osc_open_chain.hpp).
+// by a hash of its content: every scene whose osc_open_chain_lanes is this code includes this one file
+// and brings the function into its namespace (<scene>/osc_open_chain_lanes.hpp).
 #pragma once
 
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::osc_open_chain_4efd728c707d {
+namespace rbdc_gen::mini_cheetah::common::osc_open_chain_lanes_f2d026a194a0 {
 
-/// Trunk operational-space Λ, J̄ᵀ, b with measured foot forces (paper 001 Table 1).
+/// Trunk operational-space Λ, J̄ᵀ, b with measured foot forces (paper 001 Table 1), the four
+/// isomorphic limbs' inward passes evaluated together in SIMD lanes, the trunk scalar; equals
+/// osc_open_chain.
 ///
 /// @param q in  19x1: configuration (position, quaternion w x y z, joints)
 /// @param v in  18x1: velocity (trunk ω, v in trunk coordinates, joint rates)
@@ -24,11 +26,8 @@ namespace rbdc_gen::mini_cheetah::common::osc_open_chain_4efd728c707d {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2392  1821    8     0    24   28   4273
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1195 arithmetic
-///   instructions, scalar tree 4233 (cost 5399), looped operational-space columns 7027
-///   (cost 9543)
 template <class Scalar>
-RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, const Scalar* f, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
+RBDC_HOST_DEVICE inline void osc_open_chain_lanes(const Scalar* q, const Scalar* v, const Scalar* f, Scalar* Lambda, Scalar* JbarT, Scalar* b) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_f[3] = {transposed_lanes<3, 0>(f + 0),
@@ -410,7 +409,7 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Lane t321 = (t198 - (t198 * t200)) + (lane_c[2] * t320);
   const Lane t322 = ((cos_lanes_abad_joint * t313) - (sin_lanes_abad_joint * t314)) - (lane_c[1] * t320);
   const Lane t323 = ((sin_lanes_abad_joint * t313) + (cos_lanes_abad_joint * t314)) + ((lane_c[2] * t315) - (lane_c[1] * t318));
-  store_transposed_lanes<18>({JbarT + 0, JbarT + 18, JbarT + 36, JbarT + 54}, {t295, t296, t297, t298, t299, t300, t309, t310, t311, t304, t307, t308, t321, t322, t323, t316, t319, t320});
+  store_interleaved_lanes<18>(JbarT + 0, {t295, t296, t297, t298, t299, t300, t309, t310, t311, t304, t307, t308, t321, t322, t323, t316, t319, t320});
   // trunk task
   const Scalar t324 = ((v[1] * v[5]) - (v[2] * v[4])) - (Scalar(9.81) * (t58 - t61));
   const Scalar t325 = ((v[2] * v[3]) - (v[0] * v[5])) - (Scalar(9.81) * t68);
@@ -421,4 +420,4 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   b[5] = (((v[0] * t26) - (v[1] * t25)) + lane_sum(t288)) - (((t277 * t324) + (t278 * t325)) + (t281 * t326));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::osc_open_chain_4efd728c707d
+}  // namespace rbdc_gen::mini_cheetah::common::osc_open_chain_lanes_f2d026a194a0

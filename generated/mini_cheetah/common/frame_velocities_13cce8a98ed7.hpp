@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::frame_velocities_d35692076ffd {
+namespace rbdc_gen::mini_cheetah::common::frame_velocities_13cce8a98ed7 {
 
 /// Spatial velocities (ω; v) of the scene's frames at their origins.
 ///
@@ -121,7 +121,7 @@ RBDC_HOST_DEVICE inline void frame_velocities(const Scalar* q, const Scalar* v, 
   const Lane t58 = (((cos_lanes_abad_joint * t42) + (sin_lanes_abad_joint * t43)) + (Scalar(0.209) * t48)) + (Scalar(0.195) * t53);
   const Lane t59 = -t58;
   const Lane t60 = ((sin_lanes_knee_joint * t52) + (cos_lanes_knee_joint * t50)) - (lane_c[0] * t53);
-  store_transposed_lanes<6>({v_local + 6, v_local + 12, v_local + 18, v_local + 24}, {t54, t56, t55, t57, t59, t60});
+  store_interleaved_lanes<6>(v_local + 6, {t54, t56, t55, t57, t59, t60});
   const Lane t61 = (t37 * t55) - ((t36 * t53) + (t22 * t56));
   const Lane t62 = ((t38 * t53) - (t24 * t56)) + (t39 * t55);
   const Lane t63 = (t41 * t55) - ((t40 * t53) + (t26 * t56));
@@ -129,7 +129,7 @@ RBDC_HOST_DEVICE inline void frame_velocities(const Scalar* q, const Scalar* v, 
   const Lane t65 = ((t24 * t58) - (t38 * t57)) + (t39 * t60);
   const Lane t66 = ((t40 * t57) + (t26 * t58)) + (t41 * t60);
   // outputs
-  store_transposed_lanes<6>({v_world + 6, v_world + 12, v_world + 18, v_world + 24}, {t61, t62, t63, t64, t65, t66});
+  store_interleaved_lanes<6>(v_world + 6, {t61, t62, t63, t64, t65, t66});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::frame_velocities_d35692076ffd
+}  // namespace rbdc_gen::mini_cheetah::common::frame_velocities_13cce8a98ed7

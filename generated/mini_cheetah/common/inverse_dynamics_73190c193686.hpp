@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_0cf18e6676f7 {
+namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_73190c193686 {
 
 /// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3).
 ///
@@ -100,7 +100,7 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* a, 
   const Lane t41 = (cos_lanes_hip_joint * t39) + (sin_lanes_hip_joint * t40);
   const Lane t42 = (cos_lanes_hip_joint * t40) - (sin_lanes_hip_joint * t39);
   const Lane t43 = t14 + ((lane_c[5] * t42) - ((cos_lanes_hip_joint * t36) + (sin_lanes_hip_joint * t38)));
-  store_transposed_lanes<3>({tau + 6, tau + 9, tau + 12, tau + 15}, {t43, t37, t31});
+  store_interleaved_lanes<3>(tau + 6, {t43, t37, t31});
   const Lane t44 = (((t13 * lane_c[3]) + (Scalar(0.00056) * t9)) + (t10 * lane_c[4])) - t37;
   const Lane t45 = t15 + (((cos_lanes_hip_joint * t38) - (sin_lanes_hip_joint * t36)) + (lane_c[5] * t41));
   const Lane t46 = ((Scalar(0.54) * t6) - (t10 * lane_c[2])) - t41;
@@ -115,4 +115,4 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* a, 
   tau[5] = (Scalar(3.3) * t5) + lane_sum(t50);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_0cf18e6676f7
+}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_73190c193686

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_93f81ef3bfbc {
+namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_c14734861c69 {
 
 /// Impulse dynamics of a touchdown of the scene's contact feet: v⁺ and Λ of M (v⁺ − v) = JᵀΛ, J v⁺
 /// = −e J v (docs/runtime.md).
@@ -844,7 +844,7 @@ RBDC_HOST_DEVICE inline void impulse_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t762 = lane_v[1] + t759;
   const Lane t763 = lane_v[2] + (((((t760 + (t72 * t753)) - (t73 * t751)) + (t74 * t750)) - (t76 * t749)) - (t77 * t748));
   // outputs
-  store_transposed_lanes<3>({v_plus + 6, v_plus + 9, v_plus + 12, v_plus + 15}, {t761, t762, t763});
+  store_interleaved_lanes<3>(v_plus + 6, {t761, t762, t763});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_93f81ef3bfbc
+}  // namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_c14734861c69

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::frame_bias_accelerations_b77ab169ae85 {
+namespace rbdc_gen::mini_cheetah::common::frame_bias_accelerations_e26238632a3a {
 
 /// J̇v of the scene's frames: their accelerations at a = 0.
 ///
@@ -150,7 +150,7 @@ RBDC_HOST_DEVICE inline void frame_bias_accelerations(const Scalar* q, const Sca
   const Lane t83 = (((cos_lanes_knee_joint * t77) - (sin_lanes_knee_joint * t76)) - (t58 * lane_v[2])) + ((Scalar(0.195) * t69) - (lane_c[0] * t79));
   const Lane t84 = ((Scalar(0.209) * t74) - (((cos_lanes_abad_joint * t67) + (sin_lanes_abad_joint * t68)) + (t45 * lane_v[0]))) + (Scalar(0.195) * t78);
   const Lane t85 = (((sin_lanes_knee_joint * t77) + (cos_lanes_knee_joint * t76)) + (t57 * lane_v[2])) + (lane_c[0] * t78);
-  store_transposed_lanes<6>({spatial + 6, spatial + 12, spatial + 18, spatial + 24}, {t78, t73, t79, t83, t84, t85});
+  store_interleaved_lanes<6>(spatial + 6, {t78, t73, t79, t83, t84, t85});
   const Lane t86 = t57 - ((Scalar(0.195) * t59) + (lane_c[0] * t56));
   const Lane t87 = (t44 + (Scalar(0.209) * t49)) + (Scalar(0.195) * t55);
   const Lane t88 = t58 - (lane_c[0] * t55);
@@ -164,7 +164,7 @@ RBDC_HOST_DEVICE inline void frame_bias_accelerations(const Scalar* q, const Sca
   const Lane t96 = (t37 * t91) - ((t36 * t89) + (t22 * t90));
   const Lane t97 = ((t38 * t89) - (t24 * t90)) + (t39 * t91);
   // outputs
-  store_transposed_lanes<6>({classical + 6, classical + 12, classical + 18, classical + 24}, {t92, t93, t94, t95, t96, t97});
+  store_interleaved_lanes<6>(classical + 6, {t92, t93, t94, t95, t96, t97});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::frame_bias_accelerations_b77ab169ae85
+}  // namespace rbdc_gen::mini_cheetah::common::frame_bias_accelerations_e26238632a3a

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::mass_matrix_c908b8bb04ea {
+namespace rbdc_gen::mini_cheetah::common::mass_matrix_3caad8dcb801 {
 
 /// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).
 ///
@@ -52,6 +52,10 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Lane cos_lanes_knee_joint = load_lanes(joint_trig.cos + 8);
   M[22] = Scalar(0);
   M[41] = Scalar(0);
+  M[58] = Scalar(0);
+  M[59] = Scalar(0);
+  M[76] = Scalar(8.251999999999999);
+  M[77] = Scalar(0);
   M[94] = Scalar(0);
   M[95] = Scalar(8.251999999999999);
   M[111] = Scalar(0);
@@ -138,9 +142,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Lane t32 = (t10 * cos_lanes_hip_joint) - t26;
   const Lane t33 = t13 - t24;
   const Lane t34 = -t25;
-  store_lanes(M + 58, make_lanes(Scalar(0), Scalar(0), Scalar(0), t34[0]));
-  store_lanes(M + 62, make_lanes(t15[0], Scalar(0), t34[1], t15[1]));
-  store_lanes(M + 66, make_lanes(Scalar(0), t34[2], t15[2], Scalar(0)));
+  store_interleaved_lanes<3>(M + 60, {make_lanes(Scalar(0), Scalar(0), Scalar(0), Scalar(0)), t34, t15});
   const Lane t35 = lane_c[4] * t33;
   const Lane t36 = lane_c[4] * t25;
   const Lane t37 = Scalar(0.00108084) + (((cos_lanes_hip_joint * ((t7 * cos_lanes_hip_joint) + t26)) + (sin_lanes_hip_joint * (t27 + (t10 * sin_lanes_hip_joint)))) + Scalar(0.0014252559999999997));
@@ -164,7 +166,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Lane t51 = cos_lanes_abad_joint * lane_c[7];
   const Lane t52 = sin_lanes_abad_joint * t25;
   const Lane t53 = t51 - t52;
-  store_transposed_lanes<3>({M + 96, M + 99, M + 102, M + 105}, {t53, t47, t20});
+  store_interleaved_lanes<3>(M + 96, {t53, t47, t20});
   M[113] = t53[0];
   const Lane t54 = (sin_lanes_abad_joint * lane_c[7]) + (cos_lanes_abad_joint * t25);
   const Lane t55 = (cos_lanes_abad_joint * t38) - (sin_lanes_abad_joint * t39);
@@ -176,17 +178,16 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Lane t61 = t33 + lane_c[8];
   const Lane t62 = t53 + lane_c[9];
   const Lane t63 = -t54;
-  store_transposed_lanes<3>({M + 78, M + 81, M + 84, M + 87}, {t63, t46, t19});
+  store_interleaved_lanes<3>(M + 78, {t63, t46, t19});
   M[112] = t63[0];
   store_lanes(M + 165, make_lanes(Scalar(0), t63[1], t53[1], Scalar(0)));
   store_lanes(M + 219, make_lanes(Scalar(0), t63[2], t53[2], Scalar(0)));
   store_lanes(M + 273, make_lanes(Scalar(0), t63[3], t53[3], Scalar(0)));
   const Lane t64 = t56 - (lane_c[5] * t54);
-  store_transposed_lanes<3>({M + 42, M + 45, M + 48, M + 51}, {t64, t50, t23});
+  store_interleaved_lanes<3>(M + 42, {t64, t50, t23});
   const Lane t65 = ((sin_lanes_abad_joint * t59) + (cos_lanes_abad_joint * t60)) - (((t53 * lane_c[11]) + (lane_c[5] * (t24 - t13))) + ((t61 * lane_c[10]) - (lane_c[6] * t62)));
   const Scalar t66 = lane_sum(t61);
   M[40] = t66;
-  store_lanes(M + 74, make_lanes(t66, Scalar(0), Scalar(8.251999999999999), Scalar(0)));
   const Scalar t67 = lane_sum(t62);
   M[5] = t67;
   const Scalar t68 = lane_sum(t54);
@@ -197,13 +198,13 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t72 = lane_sum(((cos_lanes_abad_joint * t59) - (sin_lanes_abad_joint * t60)) - (lane_c[6] * t54));
   store_lanes(M + 18, make_lanes(t69, Scalar(0.036203) + t71, t72, t68));
   const Lane t73 = t37 + (lane_c[6] * t53);
-  store_transposed_lanes<3>({M + 6, M + 9, M + 12, M + 15}, {t73, t48, t21});
+  store_interleaved_lanes<3>(M + 6, {t73, t48, t21});
   const Lane t74 = t55 - (lane_c[5] * t53);
-  store_transposed_lanes<3>({M + 24, M + 27, M + 30, M + 33}, {t74, t49, t22});
+  store_interleaved_lanes<3>(M + 24, {t74, t49, t22});
   store_transposed_lanes<3>({M + 108, M + 162, M + 216, M + 270}, {t73, t74, t64});
   const Scalar t75 = -t68;
   M[4] = t75;
-  store_lanes(M + 70, make_lanes(t34[3], t15[3], t75, Scalar(0)));
+  store_lanes(M + 72, make_lanes(t75, Scalar(0), t66, Scalar(0)));
   const Scalar t76 = -t66;
   M[23] = t76;
   store_lanes(M + 90, make_lanes(t67, t76, Scalar(0), Scalar(0)));
@@ -213,4 +214,4 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   store_lanes(M + 54, make_lanes(Scalar(0), t68, t77, Scalar(8.251999999999999)));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_c908b8bb04ea
+}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_3caad8dcb801

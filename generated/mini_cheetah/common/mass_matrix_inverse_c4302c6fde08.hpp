@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::mass_matrix_inverse_654c9a8fe95a {
+namespace rbdc_gen::mini_cheetah::common::mass_matrix_inverse_c4302c6fde08 {
 
 /// M⁻¹ from the sparse factor M = Lᵀ D L (CRBA, paper 000 Alg. 5).
 ///
@@ -266,7 +266,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Lane t203 = t109 * t161;
   const Lane t204 = t80 * t95;
   const Lane t205 = t145 * t174;
-  store_transposed_lanes<3>({M_inv + 6, M_inv + 9, M_inv + 12, M_inv + 15}, {t192, t198, t205});
+  store_interleaved_lanes<3>(M_inv + 6, {t192, t198, t205});
   const Lane t206 = t143 * t172;
   const Lane t207 = t139 * t171;
   const Lane t208 = t132 * t170;
@@ -277,12 +277,12 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Lane t213 = t193 - (t144 * t192);
   const Lane t214 = t199 - (t144 * t198);
   const Lane t215 = t206 - (t144 * t205);
-  store_transposed_lanes<3>({M_inv + 24, M_inv + 27, M_inv + 30, M_inv + 33}, {t213, t214, t215});
+  store_interleaved_lanes<3>(M_inv + 24, {t213, t214, t215});
   const Scalar t216 = -(t178 + (t146 * t175));
   const Lane t217 = t194 + ((t146 * t192) - (t140 * t193));
   const Lane t218 = t200 + ((t146 * t198) - (t140 * t199));
   const Lane t219 = t207 + ((t146 * t205) - (t140 * t206));
-  store_transposed_lanes<3>({M_inv + 42, M_inv + 45, M_inv + 48, M_inv + 51}, {t217, t218, t219});
+  store_interleaved_lanes<3>(M_inv + 42, {t217, t218, t219});
   const Scalar t220 = t180 - (t148 * t175);
   store_lanes(M_inv + 18, make_lanes(t176, t143 + (t144 * t175), t216, t220));
   const Scalar t221 = ((t148 * t177) - (t147 * t178)) - t181;
@@ -291,7 +291,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Lane t222 = (((t148 * t192) + (t147 * t193)) - (t133 * t194)) - t195;
   const Lane t223 = t201 + (((t148 * t198) + (t147 * t199)) - (t133 * t200));
   const Lane t224 = t208 + (((t148 * t205) + (t147 * t206)) - (t133 * t207));
-  store_transposed_lanes<3>({M_inv + 60, M_inv + 63, M_inv + 66, M_inv + 69}, {t222, t223, t224});
+  store_interleaved_lanes<3>(M_inv + 60, {t222, t223, t224});
   const Scalar t225 = t183 - (t151 * t175);
   M_inv[22] = t225;
   const Scalar t226 = ((t151 * t177) - (t150 * t178)) - t184;
@@ -302,7 +302,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Lane t228 = ((((t151 * t192) + (t150 * t193)) - (t149 * t194)) - (t124 * t195)) - t196;
   const Lane t229 = t202 + ((((t151 * t198) + (t150 * t199)) - (t149 * t200)) + (t124 * t201));
   const Lane t230 = t209 + ((((t151 * t205) + (t150 * t206)) - (t149 * t207)) + (t124 * t208));
-  store_transposed_lanes<3>({M_inv + 78, M_inv + 81, M_inv + 84, M_inv + 87}, {t228, t229, t230});
+  store_interleaved_lanes<3>(M_inv + 78, {t228, t229, t230});
   const Scalar t231 = t188 + (t155 * t175);
   M_inv[23] = t231;
   const Scalar t232 = t189 - ((t155 * t177) + (t154 * t178));
@@ -319,7 +319,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   store_transposed_lanes<6>({M_inv + 126, M_inv + 180, M_inv + 234, M_inv + 288}, {t198, t214, t218, t223, t229, t236});
   const Lane t237 = t210 + (((((t154 * t206) - (t155 * t205)) + (t153 * t207)) + (t152 * t208)) + (t110 * t209));
   store_transposed_lanes<6>({M_inv + 144, M_inv + 198, M_inv + 252, M_inv + 306}, {t205, t215, t219, t224, t230, t237});
-  store_transposed_lanes<3>({M_inv + 96, M_inv + 99, M_inv + 102, M_inv + 105}, {t235, t236, t237});
+  store_interleaved_lanes<3>(M_inv + 96, {t235, t236, t237});
   const Lane t238 = t95 + ((((((t160 * t192) + (t159 * t193)) + (t158 * t194)) + (t157 * t195)) + (t156 * t196)) + (t96 * t197));
   const Lane t239 = ((((((t166 * t192) + (t165 * t193)) + (t164 * t194)) - (t163 * t195)) - (t162 * t196)) - (t161 * t197)) - t204;
   const Lane t240 = (((((t166 * t198) + (t165 * t199)) + (t164 * t200)) + (t163 * t201)) + (t162 * t202)) + (t161 * t203);
@@ -398,4 +398,4 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   store_transposed_lanes<3>({M_inv + 258, M_inv + 315, M_inv + 156, M_inv + 213}, {t294, t297, t300});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_inverse_654c9a8fe95a
+}  // namespace rbdc_gen::mini_cheetah::common::mass_matrix_inverse_c4302c6fde08

@@ -2,19 +2,18 @@
 // input: robots/mini_cheetah.urdf (sha256 b23f00116f98e183b9f7166a74175cc628a8919051c201a68bfa170439e8eeca)
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// bias_lanes for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
+// bias for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
 // folded, shared subexpressions computed once, only what reaches the outputs kept. The file is named
-// by a hash of its content: every scene whose bias_lanes is this code includes this one file
-// and brings the function into its namespace (<scene>/bias_lanes.hpp).
+// by a hash of its content: every scene whose bias is this code includes this one file
+// and brings the function into its namespace (<scene>/bias.hpp).
 #pragma once
 
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::bias_lanes_ece56d390b53 {
+namespace rbdc_gen::mini_cheetah::common::bias_5fbae31aa989 {
 
-/// Bias c + g in one pass (inverse dynamics at a = 0), the four isomorphic limbs' passes evaluated
-/// together in SIMD lanes, the trunk scalar; equals bias.
+/// Bias c + g in one pass (inverse dynamics at a = 0, without the acceleration terms).
 ///
 /// @param q in  19x1: configuration (position, quaternion w x y z, joints)
 /// @param v in  18x1: velocity (trunk ω, v in trunk coordinates, joint rates)
@@ -22,8 +21,10 @@ namespace rbdc_gen::mini_cheetah::common::bias_lanes_ece56d390b53 {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             995  780    0     0    24    0   1799
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 515 arithmetic
+///   instructions, scalar tree 1775
 template <class Scalar>
-RBDC_HOST_DEVICE inline void bias_lanes(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
+RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_v[3] = {transposed_lanes<3, 0>(v + 6),
@@ -145,7 +146,7 @@ RBDC_HOST_DEVICE inline void bias_lanes(const Scalar* q, const Scalar* v, Scalar
   const Lane t86 = (cos_lanes_hip_joint * t83) + (sin_lanes_hip_joint * t85);
   const Lane t87 = (cos_lanes_hip_joint * t85) - (sin_lanes_hip_joint * t83);
   const Lane t88 = ((((t21 * lane_c[3]) - (Scalar(4.5e-07) * t22)) + (t24 * lane_c[2])) + t31) + ((lane_c[5] * t87) - ((cos_lanes_hip_joint * t80) + (sin_lanes_hip_joint * t82)));
-  store_transposed_lanes<3>({cg + 6, cg + 9, cg + 12, cg + 15}, {t88, t81, t74});
+  store_interleaved_lanes<3>(cg + 6, {t88, t81, t74});
   const Lane t89 = (((Scalar(0.00056) * t21) - (t22 * lane_c[4])) + (((t17 * t26) - (t20 * t27)) + ((t19 * t29) - (t13 * t30)))) - t81;
   const Lane t90 = ((((t21 * lane_c[4]) - (Scalar(0.00114384) * t22)) - (t3 * lane_c[2])) + t32) + (((cos_lanes_hip_joint * t82) - (sin_lanes_hip_joint * t80)) + (lane_c[5] * t86));
   const Lane t91 = (((Scalar(0.54) * t3) + (t22 * lane_c[2])) + ((t16 * t30) - (t17 * t28))) - t86;
@@ -161,4 +162,4 @@ RBDC_HOST_DEVICE inline void bias_lanes(const Scalar* q, const Scalar* v, Scalar
   store_lanes(cg + 0, make_lanes((((v[1] * t8) - (v[2] * t7)) + ((v[4] * t11) - (v[5] * t10))) + lane_sum(t88 + (lane_c[1] * t95)), t12 + lane_sum(((cos_lanes_abad_joint * t89) - (sin_lanes_abad_joint * t90)) - (lane_c[0] * t95)), (((v[0] * t7) - (v[1] * t6)) + ((v[3] * t10) - (v[4] * t9))) + t96, ((Scalar(3.3) * t3) + ((v[1] * t11) - (v[2] * t10))) + lane_sum(t91)));
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::bias_lanes_ece56d390b53
+}  // namespace rbdc_gen::mini_cheetah::common::bias_5fbae31aa989

@@ -2,18 +2,19 @@
 // input: robots/mini_cheetah.urdf (sha256 b23f00116f98e183b9f7166a74175cc628a8919051c201a68bfa170439e8eeca)
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// inverse_dynamics for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
+// inverse_dynamics_lanes for mini_cheetah: straight-line code from rbdc's traced algorithm, constants
 // folded, shared subexpressions computed once, only what reaches the outputs kept. The file is named
-// by a hash of its content: every scene whose inverse_dynamics is this code includes this one file
-// and brings the function into its namespace (<scene>/inverse_dynamics.hpp).
+// by a hash of its content: every scene whose inverse_dynamics_lanes is this code includes this one file
+// and brings the function into its namespace (<scene>/inverse_dynamics_lanes.hpp).
 #pragma once
 
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_588c48575d61 {
+namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_c789025b0029 {
 
-/// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3).
+/// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3), the four isomorphic limbs' passes
+/// evaluated together in SIMD lanes, the trunk scalar; equals inverse_dynamics.
 ///
 /// @param q in  19x1: configuration (position, quaternion w x y z, joints)
 /// @param v in  18x1: velocity (trunk ω, v in trunk coordinates, joint rates)
@@ -22,10 +23,8 @@ namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_588c48575d61 {
 ///
 /// operations   mul  add  div  sqrt  trig  neg  total
 ///             1061  858    0     0    24    0   1943
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 557 arithmetic
-///   instructions, scalar tree 1901
 template <class Scalar>
-RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
+RBDC_HOST_DEVICE inline void inverse_dynamics_lanes(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
   using Lane = Lanes<Scalar>;
   const Lane lane_a[3] = {transposed_lanes<3, 0>(a + 6),
@@ -162,7 +161,7 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t98 = (cos_lanes_hip_joint * t95) + (sin_lanes_hip_joint * t97);
   const Lane t99 = (cos_lanes_hip_joint * t97) - (sin_lanes_hip_joint * t95);
   const Lane t100 = t40 + ((lane_c[5] * t99) - ((cos_lanes_hip_joint * t92) + (sin_lanes_hip_joint * t94)));
-  store_transposed_lanes<3>({tau + 6, tau + 9, tau + 12, tau + 15}, {t100, t93, t86});
+  store_interleaved_lanes<3>(tau + 6, {t100, t93, t86});
   const Lane t101 = ((((t30 * lane_c[3]) + (Scalar(0.00056) * t26)) + (t27 * lane_c[4])) + t39) - t93;
   const Lane t102 = t41 + (((cos_lanes_hip_joint * t94) - (sin_lanes_hip_joint * t92)) + (lane_c[5] * t98));
   const Lane t103 = (((Scalar(0.54) * t15) - (t27 * lane_c[2])) + ((t21 * t38) - (t22 * t36))) - t98;
@@ -177,4 +176,4 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   tau[5] = ((Scalar(3.3) * t5) + ((v[0] * t10) - (v[1] * t9))) + lane_sum(t107);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_588c48575d61
+}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_c789025b0029

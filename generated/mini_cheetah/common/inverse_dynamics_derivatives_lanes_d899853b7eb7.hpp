@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_lanes_8fca8c5f42cb {
+namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_lanes_d899853b7eb7 {
 
 /// Derivatives of the inverse dynamics τ = M a + c + g (∂τ/∂a is M). The four isomorphic limbs in
 /// SIMD lanes, the trunk scalar; equals inverse_dynamics_derivatives.
@@ -716,9 +716,9 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives_lanes(const Scalar* q,
   const Lane t466 = -((t8 * t293) + (t7 * t294));
   const Lane t467 = -(t298 + ((((v[2] * t296) + (v[1] * t297)) + (t293 * t462)) + (t294 * t463)));
   const Lane t468 = -((t8 * t308) + (t7 * t309));
-  store_transposed_lanes<3>({dtau_dq + 6, dtau_dq + 9, dtau_dq + 12, dtau_dq + 15}, {t464, t466, t468});
+  store_interleaved_lanes<3>(dtau_dq + 6, {t464, t466, t468});
   const Lane t469 = t316 + ((((v[2] * t311) + (v[1] * t312)) - (t308 * t462)) - (t309 * t463));
-  store_transposed_lanes<3>({dtau_dv + 6, dtau_dv + 9, dtau_dv + 12, dtau_dv + 15}, {t465, t467, t469});
+  store_interleaved_lanes<3>(dtau_dv + 6, {t465, t467, t469});
   const Scalar t470 = t7 * t230;
   const Scalar t471 = t8 * t231;
   store_lanes(dtau_dq + 0, make_lanes(-(t470 + t471), t7 * t229, t8 * t229, Scalar(0)));
@@ -745,9 +745,9 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives_lanes(const Scalar* q,
   const Lane t487 = (t8 * t176) + (t6 * t294);
   const Lane t488 = ((cos_lanes_abad_joint * t207) - (sin_lanes_abad_joint * t299)) + ((((v[0] * t297) - (v[2] * t295)) + (t176 * t462)) + (t294 * t484));
   const Lane t489 = (t6 * t309) - (t8 * t305);
-  store_transposed_lanes<3>({dtau_dq + 24, dtau_dq + 27, dtau_dq + 30, dtau_dq + 33}, {t485, t487, t489});
+  store_interleaved_lanes<3>(dtau_dq + 24, {t485, t487, t489});
   const Lane t490 = ((cos_lanes_abad_joint * t126) - (sin_lanes_abad_joint * t315)) + ((t309 * t484) - (((v[2] * t310) + (v[0] * t312)) + (t305 * t462)));
-  store_transposed_lanes<3>({dtau_dv + 24, dtau_dv + 27, dtau_dv + 30, dtau_dv + 33}, {t486, t488, t490});
+  store_interleaved_lanes<3>(dtau_dv + 24, {t486, t488, t490});
   const Scalar t491 = t6 * t229;
   store_lanes(dtau_dq + 18, make_lanes(t6 * t230, -(t471 + t491), t8 * t230, -t472));
   store_lanes(dtau_dq + 36, make_lanes(t6 * t231, t7 * t231, -(t470 + t491), t473));
@@ -770,10 +770,10 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives_lanes(const Scalar* q,
   const Lane t500 = (t6 * t293) - (t7 * t176);
   const Lane t501 = ((sin_lanes_abad_joint * t207) + (cos_lanes_abad_joint * t299)) + ((((v[1] * t295) + (v[0] * t296)) - (t176 * t463)) + (t293 * t484));
   const Lane t502 = (t7 * t305) + (t6 * t308);
-  store_transposed_lanes<3>({dtau_dq + 42, dtau_dq + 45, dtau_dq + 48, dtau_dq + 51}, {t498, t500, t502});
+  store_interleaved_lanes<3>(dtau_dq + 42, {t498, t500, t502});
   const Lane t503 = ((sin_lanes_abad_joint * t126) + (cos_lanes_abad_joint * t315)) + ((((v[1] * t310) - (v[0] * t311)) + (t305 * t463)) + (t308 * t484));
   // outputs
-  store_transposed_lanes<3>({dtau_dv + 42, dtau_dv + 45, dtau_dv + 48, dtau_dv + 51}, {t499, t501, t503});
+  store_interleaved_lanes<3>(dtau_dv + 42, {t499, t501, t503});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_lanes_8fca8c5f42cb
+}  // namespace rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_lanes_d899853b7eb7
