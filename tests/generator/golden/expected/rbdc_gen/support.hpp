@@ -177,12 +177,18 @@ inline void sincos(const Vector<double, W>& x, Vector<double, W>& s, Vector<doub
   c = ((quadrant + 1) & 2) != 0 ? -cos_abs : cos_abs;
 }
 
+/// The lanes of x in sincos's range (|x| <= kMaxAngle; not inf, not NaN): all bits set, others zero.
+template <int W>
+inline Vector<std::int64_t, W> inside_range(const Vector<double, W>& x) noexcept {
+  return (x >= -kMaxAngle) & (x <= kMaxAngle);
+}
+
 /// sincos above, then libm for the lanes out of its range (one vector test; the fix-up loop runs
 /// only when some lane is out of range, inf or NaN).
 template <int W>
 inline void sincos_checked(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
   sincos<W>(x, s, c);
-  const Vector<std::int64_t, W> outside = (x > kMaxAngle) | (x < -kMaxAngle) | (x != x);
+  const Vector<std::int64_t, W> outside = ~inside_range<W>(x);
   std::int64_t lanes[W];
   std::memcpy(lanes, &outside, sizeof lanes);
   std::int64_t any = 0;
@@ -223,9 +229,15 @@ RBDC_ALWAYS_INLINE JointTrig<double, N> joint_sincos_inline(const double (&angle
   JointTrig<double, N> trig;
   std::memcpy(trig.sin, s, sizeof trig.sin);
   std::memcpy(trig.cos, c, sizeof trig.cos);
-  bool outside = false;
-  for (int i = 0; i < N; ++i) outside |= !(std::fabs(angle[i]) <= simd::kMaxAngle);
-  if (__builtin_expect(outside, 0)) {
+  // The range tested on the vectors, one mask for all: tested angle by angle, clang 14 made it a
+  // compare, a mask move and a branch per angle (TALOS's c + g 30 % slower, docs/performance.md).
+  simd::Vector<std::int64_t, kLanes> inside = simd::inside_range<kLanes>(x[0]);
+  for (int i = 1; i < n_vectors; ++i) inside &= simd::inside_range<kLanes>(x[i]);
+  std::int64_t inside_lanes[kLanes];
+  std::memcpy(inside_lanes, &inside, sizeof inside_lanes);
+  std::int64_t all_inside = -1;
+  for (int k = 0; k < kLanes; ++k) all_inside &= inside_lanes[k];
+  if (__builtin_expect(all_inside != -1, 0)) {
     for (int i = 0; i < N; ++i) {
       if (!(std::fabs(angle[i]) <= simd::kMaxAngle)) {
         trig.sin[i] = std::sin(angle[i]);
