@@ -230,7 +230,8 @@ RBDC_ALWAYS_INLINE JointTrig<double, N> joint_sincos_inline(const double (&angle
   std::memcpy(trig.sin, s, sizeof trig.sin);
   std::memcpy(trig.cos, c, sizeof trig.cos);
   // The range tested on the vectors, one mask for all: tested angle by angle, clang 14 made it a
-  // compare, a mask move and a branch per angle (TALOS's c + g 30 % slower, docs/performance.md).
+  // compare, a mask move and a branch per angle (about 40 instructions for a quadruped's 12 angles;
+  // docs/performance.md, "Lane sums in one vector add").
   simd::Vector<std::int64_t, kLanes> inside = simd::inside_range<kLanes>(x[0]);
   for (int i = 1; i < n_vectors; ++i) inside &= simd::inside_range<kLanes>(x[i]);
   std::int64_t inside_lanes[kLanes];

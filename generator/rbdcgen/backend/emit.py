@@ -262,7 +262,7 @@ def emit_body(fn, angle_names=None):
         if position == tail:
             lines.append("// outputs")
         if isinstance(item, TransposedStore):
-            values = ", ".join(ZERO_LANES if v.op == "const" else text(v, False) for v in item.values)
+            values = ", ".join(ZERO_LANES if v.is_const(0.0) else text(v, False) for v in item.values)
             if item.interleaved():
                 lines.append("store_interleaved_lanes<%d>(%s + %d, {%s});" % (
                     len(item.values), item.arg_name, item.starts[0], values))
