@@ -7,11 +7,11 @@
 // contact_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics is the same code:
-//   mini_cheetah/common/contact_dynamics_00770b502243.hpp
+//   mini_cheetah/common/contact_dynamics_2613a42f49ee.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_00770b502243.hpp"
+#include "mini_cheetah/common/contact_dynamics_2613a42f49ee.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::mini_cheetah::contact {
 ///             5441  4708   26     0    24   80  10279
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4954 arithmetic
 ///   instructions (cost 7238), scalar tree 9854 (cost 18890)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_00770b502243::contact_dynamics;
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_2613a42f49ee::contact_dynamics;
 
 /// contact_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

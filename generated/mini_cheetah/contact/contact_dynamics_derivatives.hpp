@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_48dd8abf7db4.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_dcfa94611a28.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_48dd8abf7db4.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_dcfa94611a28.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -34,7 +34,7 @@ namespace rbdc_gen::mini_cheetah::contact {
 ///   lanes, the solve's right-hand sides in SIMD across columns): 27687 arithmetic
 ///   instructions (cost 34228), scalar tree 100802 (cost 237165), looped solve 40577 (cost
 ///   65056)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_48dd8abf7db4::contact_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_dcfa94611a28::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // impulse_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose impulse_dynamics is the same code:
-//   mini_cheetah/common/impulse_dynamics_c14734861c69.hpp
+//   mini_cheetah/common/impulse_dynamics_dc4d36aa3ea9.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/impulse_dynamics_c14734861c69.hpp"
+#include "mini_cheetah/common/impulse_dynamics_dc4d36aa3ea9.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::mini_cheetah::contact {
 ///             4084  3562   26     0    24   76   7772
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4187 arithmetic
 ///   instructions (cost 5397), scalar tree 7375 (cost 12940)
-using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_c14734861c69::impulse_dynamics;
+using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_dc4d36aa3ea9::impulse_dynamics;
 
 /// impulse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // bias_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   mini_cheetah/common/bias_derivatives_52d2030385f1.hpp
+//   mini_cheetah/common/bias_derivatives_82410bfd97ee.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/bias_derivatives_52d2030385f1.hpp"
+#include "mini_cheetah/common/bias_derivatives_82410bfd97ee.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///             3432  3112    0     0    24   58   6626
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1805 arithmetic
 ///   instructions, scalar tree 6675 (cost 11260), looped RNEA derivatives 7624 (cost 10651)
-using ::rbdc_gen::mini_cheetah::common::bias_derivatives_52d2030385f1::bias_derivatives;
+using ::rbdc_gen::mini_cheetah::common::bias_derivatives_82410bfd97ee::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

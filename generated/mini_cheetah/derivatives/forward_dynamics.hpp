@@ -7,11 +7,11 @@
 // forward_dynamics for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah/common/forward_dynamics_20e9856b8397.hpp
+//   mini_cheetah/common/forward_dynamics_16e9507445a7.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_20e9856b8397.hpp"
+#include "mini_cheetah/common/forward_dynamics_16e9507445a7.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -29,7 +29,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// schedule: articulated-body algorithm in limb lanes (the 4 isomorphic limbs in SIMD lanes, the
 ///   trunk scalar): 1152 arithmetic instructions, scalar tree 3978 (cost 4787), limb lanes
 ///   1388, articulated-body algorithm 3667 (cost 4041)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_20e9856b8397::forward_dynamics;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_16e9507445a7::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

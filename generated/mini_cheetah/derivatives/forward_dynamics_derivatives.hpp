@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_b995f13b26fe.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_98d66470b07a.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_b995f13b26fe.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_98d66470b07a.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -34,7 +34,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///   instructions, scalar tree 26017 (cost 57681), limb lanes 7730 (cost 13792), looped
 ///   solve 16416 (cost 26776), looped RNEA derivatives 18467 (cost 21454), limb lanes and
 ///   looped RNEA derivatives 15170 (cost 15958), looped CRBA 21481 (cost 27717)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b995f13b26fe::forward_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_98d66470b07a::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // gravity_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   mini_cheetah/common/gravity_derivatives_4ffd2a1aa3f8.hpp
+//   mini_cheetah/common/gravity_derivatives_ab9acda458f1.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/gravity_derivatives_4ffd2a1aa3f8.hpp"
+#include "mini_cheetah/common/gravity_derivatives_ab9acda458f1.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///             593  379    0     0    24   62   1058
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 296 arithmetic
 ///   instructions, scalar tree 1051, looped RNEA derivatives 3370 (cost 4696)
-using ::rbdc_gen::mini_cheetah::common::gravity_derivatives_4ffd2a1aa3f8::gravity_derivatives;
+using ::rbdc_gen::mini_cheetah::common::gravity_derivatives_ab9acda458f1::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   mini_cheetah/common/inverse_dynamics_8e62da6ea1bd.hpp
+//   mini_cheetah/common/inverse_dynamics_b2f15797f971.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/inverse_dynamics_8e62da6ea1bd.hpp"
+#include "mini_cheetah/common/inverse_dynamics_b2f15797f971.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///             1061  858    0     0    24    0   1943
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 557 arithmetic
 ///   instructions, scalar tree 1901
-using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_8e62da6ea1bd::inverse_dynamics;
+using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_b2f15797f971::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

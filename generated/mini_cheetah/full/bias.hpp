@@ -7,11 +7,11 @@
 // bias for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   mini_cheetah/common/bias_5fbae31aa989.hpp
+//   mini_cheetah/common/bias_fd9ca8c115ae.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/bias_5fbae31aa989.hpp"
+#include "mini_cheetah/common/bias_fd9ca8c115ae.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::full {
 ///             995  780    0     0    24    0   1799
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 515 arithmetic
 ///   instructions, scalar tree 1775
-using ::rbdc_gen::mini_cheetah::common::bias_5fbae31aa989::bias;
+using ::rbdc_gen::mini_cheetah::common::bias_fd9ca8c115ae::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

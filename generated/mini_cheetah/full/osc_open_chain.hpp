@@ -7,11 +7,11 @@
 // osc_open_chain for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   mini_cheetah/common/osc_open_chain_d084f03e9d2a.hpp
+//   mini_cheetah/common/osc_open_chain_80291b990e59.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/osc_open_chain_d084f03e9d2a.hpp"
+#include "mini_cheetah/common/osc_open_chain_80291b990e59.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -29,7 +29,7 @@ namespace rbdc_gen::mini_cheetah::full {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1195 arithmetic
 ///   instructions, scalar tree 4233 (cost 5399), looped operational-space columns 7027
 ///   (cost 9543)
-using ::rbdc_gen::mini_cheetah::common::osc_open_chain_d084f03e9d2a::osc_open_chain;
+using ::rbdc_gen::mini_cheetah::common::osc_open_chain_80291b990e59::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

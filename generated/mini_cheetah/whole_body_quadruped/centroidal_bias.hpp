@@ -7,11 +7,11 @@
 // centroidal_bias for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_bias is the same code:
-//   mini_cheetah/common/centroidal_bias_e34be71e0535.hpp
+//   mini_cheetah/common/centroidal_bias_f758054bb65f.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/centroidal_bias_e34be71e0535.hpp"
+#include "mini_cheetah/common/centroidal_bias_f758054bb65f.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 ///             1277  1000    0     0    24    0   2301
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 690 arithmetic
 ///   instructions, scalar tree 2256
-using ::rbdc_gen::mini_cheetah::common::centroidal_bias_e34be71e0535::centroidal_bias;
+using ::rbdc_gen::mini_cheetah::common::centroidal_bias_f758054bb65f::centroidal_bias;
 
 /// centroidal_bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

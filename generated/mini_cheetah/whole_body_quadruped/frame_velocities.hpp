@@ -7,11 +7,11 @@
 // frame_velocities for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_velocities is the same code:
-//   mini_cheetah/common/frame_velocities_13cce8a98ed7.hpp
+//   mini_cheetah/common/frame_velocities_2f8e0d6569b3.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/frame_velocities_13cce8a98ed7.hpp"
+#include "mini_cheetah/common/frame_velocities_2f8e0d6569b3.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 ///             387  257    0     0    24    8    676
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 211 arithmetic
 ///   instructions, scalar tree 661
-using ::rbdc_gen::mini_cheetah::common::frame_velocities_13cce8a98ed7::frame_velocities;
+using ::rbdc_gen::mini_cheetah::common::frame_velocities_2f8e0d6569b3::frame_velocities;
 
 /// frame_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

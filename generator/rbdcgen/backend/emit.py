@@ -23,7 +23,8 @@ reads lane k of a lane value as `t7[k]`, writes the runs where each limb's entri
 of several lane values (a leg's column of M) transposed, `store_transposed_lanes<6>({M + 144, …},
 {t21, …});` (`store_interleaved_lanes<3>(M + 6, {t73, …})` where the limbs' runs follow one
 another), and each other run of ex.LANES consecutive output entries with one vector store,
-`store_lanes(M + 8, make_lanes(…));` (of the lane value itself where the run holds its lanes in order)."""
+`store_lanes(M + 8, make_lanes(…));` (of the lane value itself where the run holds its lanes in order),
+unless a scalar or a constant sits among its computed values: those entries are stored one by one."""
 
 from __future__ import annotations
 
@@ -427,8 +428,8 @@ def _store_units(fn, cleared):
     one; in a lane function, first the transposed runs (_transposed_stores), then each run of the
     other consecutive written entries of an argument in vector stores of ex.LANES from the run's start
     (the Mini Cheetah's M in lanes: its 324 scalar stores were the bottleneck, 172 -> 110 ns with g++;
-    docs/performance.md), the rest one by one. The zeros of the outputs in `cleared` (_zero_filled)
-    are not stored: a loop cleared them."""
+    docs/performance.md) where _one_vector says so, the rest one by one. The zeros of the outputs in
+    `cleared` (_zero_filled) are not stored: a loop cleared them."""
     width = ex.LANES if fn.lanes is not None else 1
     units = []
     for arg in fn.traced_arguments():
@@ -445,9 +446,24 @@ def _store_units(fn, cleared):
             runs[-1].append((arg.name, k, node))
         for run in runs:
             whole = len(run) - len(run) % width
-            units += [run[i:i + width] for i in range(0, whole, width)]
+            for i in range(0, whole, width):
+                chunk = run[i:i + width]
+                units += [chunk] if _one_vector(chunk) else [[entry] for entry in chunk]
             units += [[entry] for entry in run[whole:]]
     return units
+
+
+def _one_vector(entries):
+    """Whether ex.LANES consecutive entries take one vector store: the lanes of one lane value in
+    order, constants only (one vector literal), or lanes of several lane values (two-source shuffles
+    build them: lanes 1 and 3 of two values are one unpack). Where a scalar or a constant sits among
+    computed values (a leg's entries beside the other legs' zeros, the trunk's block of lane sums),
+    each entry is stored on its own: built into a vector, each such entry took about a shuffle, and
+    a store is cheaper (the Mini Cheetah's M 4 % faster on Zen 5; docs/performance.md, "Stores
+    instead of shuffles"). Splitting the lane mixes too left humanoid32's M 3-4 % slower."""
+    nodes = [node for _, _, node in entries]
+    return (_whole_lane_value(entries) or all(n.op == "const" for n in nodes)
+            or all(n.op == "lane_get" for n in nodes))
 
 
 def _early_stores(fn, temps, cleared):
