@@ -65,6 +65,10 @@ struct LanesOf {
     for (int k = 0; k < K; ++k)
       for (int l = 0; l < 4; ++l) p[l][k] = x[k].v[l];
   }
+  template <int N>
+  static RBDC_HOST_DEVICE void store_pairs(T* p, const T* a, const T* b) noexcept {
+    for (int j = 0; j < N; ++j) p[2 * j] = a[j], p[2 * j + 1] = b[j];
+  }
   template <int K>
   static RBDC_HOST_DEVICE void store_interleaved(T* p, const type (&x)[K]) noexcept {
     store_transposed<K>({p, p + K, p + 2 * K, p + 3 * K}, x);
@@ -112,6 +116,34 @@ struct PackLanesOf {
                          __builtin_shufflevector(ab_even, cd_even, 2, 3, 6, 7),
                          __builtin_shufflevector(ab_odd, cd_odd, 2, 3, 6, 7)};
       for (int l = 0; l < 4; ++l) std::memcpy(p[l] + k, &limb[l], n * sizeof(T));
+    }
+  }
+  /// a's and b's N entries interleaved four at a time by two shuffles, then two and one: entry by
+  /// entry (even a loop's last few), clang 14 gathered them, slow on AMD cores.
+  template <int N>
+  static void store_pairs(T* p, const T* a, const T* b) noexcept {
+    using V = typename type::Vector;
+    using Half = simd::Vector<T, 2>;
+    int j = 0;
+    for (; j + 4 <= N; j += 4) {
+      V x, y;
+      std::memcpy(&x, a + j, sizeof x);
+      std::memcpy(&y, b + j, sizeof y);
+      const V low = __builtin_shufflevector(x, y, 0, 4, 1, 5), high = __builtin_shufflevector(x, y, 2, 6, 3, 7);
+      std::memcpy(p + 2 * j, &low, sizeof low);
+      std::memcpy(p + 2 * j + 4, &high, sizeof high);
+    }
+    if constexpr (N % 4 >= 2) {
+      Half x, y;
+      std::memcpy(&x, a + j, sizeof x);
+      std::memcpy(&y, b + j, sizeof y);
+      const V both = __builtin_shufflevector(x, y, 0, 2, 1, 3);
+      std::memcpy(p + 2 * j, &both, sizeof both);
+      j += 2;
+    }
+    if constexpr (N % 2 == 1) {  // one vector store: as two, clang joined them and the stores after into a gather
+      const Half last = {a[j], b[j]};
+      std::memcpy(p + 2 * j, &last, sizeof last);
     }
   }
   /// Three lane values (a three-joint leg's) interleaved by two eight-wide two-source shuffles, then
@@ -186,6 +218,13 @@ RBDC_HOST_DEVICE inline void store_transposed_lanes(T* const (&p)[4], const Lane
 template <int K, class T>
 RBDC_HOST_DEVICE inline void store_interleaved_lanes(T* p, const Lanes<T> (&x)[K]) noexcept {
   LanesOf<T>::template store_interleaved<K>(p, x);
+}
+
+/// p[2j] = a[j], p[2j + 1] = b[j] for j < N: the angles of a limb pair's joints, each limb's
+/// consecutive in q, as a pair's lanes read them (two lanes each).
+template <int N, class T>
+RBDC_HOST_DEVICE inline void store_interleaved_pairs(T* p, const T* a, const T* b) noexcept {
+  LanesOf<T>::template store_pairs<N>(p, a, b);
 }
 
 /// The lanes rotated: lane k of the result is lane (k + Shift) mod 4 of x (one shuffle).

@@ -7,11 +7,11 @@
 // forward_dynamics for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   humanoid32/common/forward_dynamics_8379902a33de.hpp
+//   humanoid32/common/forward_dynamics_7abe268dc59b.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_8379902a33de.hpp"
+#include "humanoid32/common/forward_dynamics_7abe268dc59b.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -30,7 +30,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///   pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes); the rest
 ///   scalar): 5655 arithmetic instructions (cost 8812), scalar tree 13341 (cost 27258),
 ///   limb lanes 8336 (cost 15246), articulated-body algorithm 9268 (cost 17483)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_8379902a33de::forward_dynamics;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_7abe268dc59b::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

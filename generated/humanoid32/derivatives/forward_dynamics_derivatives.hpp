@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_59852754ad70.hpp
+//   humanoid32/common/forward_dynamics_derivatives_10da95387825.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_59852754ad70.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_10da95387825.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -36,7 +36,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///   131270 (cost 310288), looped solve 69410 (cost 115658), limb lanes and a looped solve
 ///   54816 (cost 80632), looped RNEA derivatives 70299 (cost 89082), looped CRBA 78129
 ///   (cost 104935)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_59852754ad70::forward_dynamics_derivatives;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_10da95387825::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // bias for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   humanoid32/common/bias_b342f322648d.hpp
+//   humanoid32/common/bias_0f05ab121cf5.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/bias_b342f322648d.hpp"
+#include "humanoid32/common/bias_0f05ab121cf5.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::humanoid32::full {
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 2535 arithmetic
 ///   instructions, scalar tree 4184 (cost 5282), limb lanes with the pairs' spare lanes
 ///   used 2327 (cost 2717)
-using ::rbdc_gen::humanoid32::common::bias_b342f322648d::bias;
+using ::rbdc_gen::humanoid32::common::bias_0f05ab121cf5::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   humanoid32/common/mass_matrix_38d4f28dddaf.hpp
+//   humanoid32/common/mass_matrix_9b075f489cd5.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/mass_matrix_38d4f28dddaf.hpp"
+#include "humanoid32/common/mass_matrix_9b075f489cd5.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::humanoid32::full {
 ///   scalar; a pair body's column of M in lanes 0-1, a child's in 2-3, so that one walk to
 ///   the root serves both): 1782 arithmetic instructions, scalar tree 3652 (cost 4005),
 ///   limb lanes 2086, looped CRBA 7746 (cost 10804)
-using ::rbdc_gen::humanoid32::common::mass_matrix_38d4f28dddaf::mass_matrix;
+using ::rbdc_gen::humanoid32::common::mass_matrix_9b075f489cd5::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

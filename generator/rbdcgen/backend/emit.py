@@ -131,10 +131,13 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
     slot = {}  # angle symbol id -> its index in joint_angle
     entries = []
     full = []  # the full-width lane angles' sources, in slot order
+    pairs = []  # (slot, sources) of the lane angles of a limb pair
     for angle in sorted(angles.values(), key=lambda a: -width(a)):  # stable: trig order otherwise
         slot[angle.id] = len(entries)
         if angle.lane:
             sources = lanes.inputs[angle.value[0]][angle.value[1]]
+            if width(angle) == 2:
+                pairs.append((len(entries), sources[:2]))
             entries += ["%s[%d]" % source for source in sources[:width(angle)]]
             if width(angle) == ex.LANES:
                 full.append(sources)
@@ -142,12 +145,19 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
             entries.append(text(angle, False))
     n = len(entries)
     block = _transposition(full) if full else None
-    if block:  # the lanes' angles as whole vectors, the rest one by one
-        stored = ex.LANES * len(full)
+    runs = _pair_runs(pairs)
+    if block or runs:  # the lanes' angles as whole vectors, the rest one by one
+        stored = ex.LANES * len(full) if block else 0
         lines = ["// sines and cosines of the joint angles", "Scalar joint_angle[%d];" % n]
-        lines += ["store_lanes(joint_angle + %d, transposed_lanes<%d, %d>(%s + %d));"
-                  % (ex.LANES * j, len(full), j, block[0], block[1]) for j in range(len(full))]
-        lines += ["joint_angle[%d] = %s;" % (k, entries[k]) for k in range(stored, n)]
+        if block:
+            lines += ["store_lanes(joint_angle + %d, transposed_lanes<%d, %d>(%s + %d));"
+                      % (ex.LANES * j, len(full), j, block[0], block[1]) for j in range(len(full))]
+        covered = set(range(stored))
+        for start, count, (a, b) in runs:
+            lines.append("store_interleaved_pairs<%d>(joint_angle + %d, %s + %d, %s + %d);"
+                         % (count, start, a[0], a[1], b[0], b[1]))
+            covered |= set(range(start, start + 2 * count))
+        lines += ["joint_angle[%d] = %s;" % (k, entries[k]) for k in range(n) if k not in covered]
     else:
         rows = [", ".join(entries[i:i + ANGLES_PER_LINE]) for i in range(0, n, ANGLES_PER_LINE)]
         lines = ["// sines and cosines of the joint angles",
@@ -164,6 +174,29 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
             lines.append("const Scalar %s = joint_trig.%s[%d];" % (name, node.op, slot[angle.id]))
         names[node.id] = name
     return lines
+
+
+# Fewest angles of a limb pair's run read as two interleaved runs (store_interleaved_pairs): four
+# fill a vector of each limb's.
+PAIR_RUN_MIN = 4
+
+
+def _pair_runs(pairs):
+    """[(slot, count, (source a, source b))] for each run of at least PAIR_RUN_MIN consecutive pair
+    angles (slots two apart) whose two limbs' angles are consecutive entries of one array each (a
+    pair's joints in q): joint_angle[slot + 2j] = a[j], [slot + 2j + 1] = b[j]. Read entry by entry,
+    clang 14 gathered them (four or five gathers in each of humanoid32's and TALOS's functions),
+    slow on AMD cores."""
+    runs = []
+    for start, (a, b) in pairs:
+        if runs:
+            first_start, count, (a0, b0) = runs[-1]
+            if (start == first_start + 2 * count and a == (a0[0], a0[1] + count)
+                    and b == (b0[0], b0[1] + count)):
+                runs[-1] = (first_start, count + 1, (a0, b0))
+                continue
+        runs.append((start, 1, (a, b)))
+    return [run for run in runs if run[1] >= PAIR_RUN_MIN]
 
 
 def _transposition(items):

@@ -321,6 +321,29 @@ class HumanoidPairs(unittest.TestCase):
         self.assertTrue(fn.schedule.startswith("limb lanes with the pairs' spare lanes used"), fn.schedule)
         self.assertNotIn("lane_rotate", {node.op for node in ex.reachable(fn.output_exprs())})
 
+    def test_pair_angles_read_as_interleaved_runs(self):
+        """A limb pair's lane angles sit in joint_angle as (left, right) pairs; where each limb's
+        angles are consecutive in q (humanoid32's legs q[7…12] and q[13…18], arms q[25…31] and
+        q[32…38]) they are read by store_interleaved_pairs, the rest entry by entry, every slot once
+        (entry by entry, clang 14 gathered them)."""
+        robot = mini_cheetah.load(urdf=mini_cheetah.HUMANOID32)
+        lines = emit_body(scheduled_function(robot, default_scene(), "mass_matrix"))
+        size = int(next(re.match(r"Scalar joint_angle\[(\d+)\];", l).group(1) for l in lines
+                        if l.startswith("Scalar joint_angle[")))
+        written = []
+        runs = []
+        for line in lines:
+            pair = re.match(r"store_interleaved_pairs<(\d+)>\(joint_angle \+ (\d+), q \+ (\d+), q \+ (\d+)\);$", line)
+            if pair:
+                count, start, a, b = map(int, pair.groups())
+                runs.append((count, a, b))
+                written += range(start, start + 2 * count)
+            single = re.match(r"joint_angle\[(\d+)\] = q\[\d+\];$", line)
+            if single:
+                written.append(int(single.group(1)))
+        self.assertEqual(runs, [(6, 7, 13), (7, 25, 32)])
+        self.assertEqual(sorted(written), list(range(size)))
+
     def test_auto_takes_the_pairs(self):
         robot = mini_cheetah.load(urdf=mini_cheetah.HUMANOID32)
         fn = scheduled_function(robot, default_scene(), "inverse_dynamics")

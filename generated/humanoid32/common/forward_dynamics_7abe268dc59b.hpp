@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_8379902a33de {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_7abe268dc59b {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
 /// algorithm where that is cheaper: the schedule line says which).
@@ -78,10 +78,15 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
     make_lanes(Scalar(-0.21), Scalar(0.21), Scalar(-0.21), Scalar(0.21)),
     make_lanes(Scalar(-0.09), Scalar(0.09), Scalar(-0.09), Scalar(0.09))};
   // sines and cosines of the joint angles
-  const Scalar joint_angle[32] = {q[7], q[13], q[8], q[14], q[9], q[15], q[10], q[16],
-    q[11], q[17], q[12], q[18], q[25], q[32], q[26], q[33],
-    q[27], q[34], q[28], q[35], q[29], q[36], q[30], q[37],
-    q[31], q[38], q[19], q[20], q[21], q[22], q[23], q[24]};
+  Scalar joint_angle[32];
+  store_interleaved_pairs<6>(joint_angle + 0, q + 7, q + 13);
+  store_interleaved_pairs<7>(joint_angle + 12, q + 25, q + 32);
+  joint_angle[26] = q[19];
+  joint_angle[27] = q[20];
+  joint_angle[28] = q[21];
+  joint_angle[29] = q[22];
+  joint_angle[30] = q[23];
+  joint_angle[31] = q[24];
   const auto joint_trig = joint_sincos(joint_angle);
   const Lane sin_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.sin + 0);
   const Lane cos_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.cos + 0);
@@ -1739,4 +1744,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[37] = t1529[1];
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_8379902a33de
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_7abe268dc59b

@@ -14,7 +14,7 @@
 #include "rbdc_gen/body_tree.hpp"
 #include "rbdc_gen/rnea_derivatives.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_59852754ad70 {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_10da95387825 {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -158,10 +158,15 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
     make_lanes(Scalar(1.0935), Scalar(-1.0935), Scalar(1.0935), Scalar(-1.0935)),
     make_lanes(Scalar(-0.09), Scalar(0.09), Scalar(-0.09), Scalar(0.09))};
   // sines and cosines of the joint angles
-  const Scalar joint_angle[32] = {q[7], q[13], q[8], q[14], q[9], q[15], q[10], q[16],
-    q[11], q[17], q[12], q[18], q[25], q[32], q[26], q[33],
-    q[27], q[34], q[28], q[35], q[29], q[36], q[30], q[37],
-    q[31], q[38], q[19], q[20], q[21], q[22], q[23], q[24]};
+  Scalar joint_angle[32];
+  store_interleaved_pairs<6>(joint_angle + 0, q + 7, q + 13);
+  store_interleaved_pairs<7>(joint_angle + 12, q + 25, q + 32);
+  joint_angle[26] = q[19];
+  joint_angle[27] = q[20];
+  joint_angle[28] = q[21];
+  joint_angle[29] = q[22];
+  joint_angle[30] = q[23];
+  joint_angle[31] = q[24];
   const auto joint_trig = joint_sincos(joint_angle);
   const Lane sin_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.sin + 0);
   const Lane cos_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.cos + 0);
@@ -3959,4 +3964,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 38, 128>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_59852754ad70
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_10da95387825

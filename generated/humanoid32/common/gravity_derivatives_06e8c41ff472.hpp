@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::gravity_derivatives_095917373486 {
+namespace rbdc_gen::humanoid32::common::gravity_derivatives_06e8c41ff472 {
 
 /// Derivative of the gravity terms g.
 ///
@@ -38,10 +38,15 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
     make_lanes(Scalar(1.2914999999999999), Scalar(-1.2914999999999999), Scalar(1.2914999999999999), Scalar(-1.2914999999999999)),
     make_lanes(Scalar(1.0935), Scalar(-1.0935), Scalar(1.0935), Scalar(-1.0935))};
   // sines and cosines of the joint angles
-  const Scalar joint_angle[32] = {q[7], q[13], q[8], q[14], q[9], q[15], q[10], q[16],
-    q[11], q[17], q[12], q[18], q[25], q[32], q[26], q[33],
-    q[27], q[34], q[28], q[35], q[29], q[36], q[30], q[37],
-    q[31], q[38], q[19], q[20], q[21], q[22], q[23], q[24]};
+  Scalar joint_angle[32];
+  store_interleaved_pairs<6>(joint_angle + 0, q + 7, q + 13);
+  store_interleaved_pairs<7>(joint_angle + 12, q + 25, q + 32);
+  joint_angle[26] = q[19];
+  joint_angle[27] = q[20];
+  joint_angle[28] = q[21];
+  joint_angle[29] = q[22];
+  joint_angle[30] = q[23];
+  joint_angle[31] = q[24];
   const auto joint_trig = joint_sincos(joint_angle);
   const Lane sin_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.sin + 0);
   const Lane cos_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.cos + 0);
@@ -1856,4 +1861,4 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   dg_dq[113] = t991[1];
 }
 
-}  // namespace rbdc_gen::humanoid32::common::gravity_derivatives_095917373486
+}  // namespace rbdc_gen::humanoid32::common::gravity_derivatives_06e8c41ff472

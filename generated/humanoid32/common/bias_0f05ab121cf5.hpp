@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::bias_b342f322648d {
+namespace rbdc_gen::humanoid32::common::bias_0f05ab121cf5 {
 
 /// Bias c + g in one pass (inverse dynamics at a = 0, without the acceleration terms).
 ///
@@ -51,10 +51,15 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
     make_lanes(Scalar(0.018000000000000002), Scalar(-0.018000000000000002), Scalar(0.018000000000000002), Scalar(-0.018000000000000002)),
     make_lanes(Scalar(0.05), Scalar(-0.05), Scalar(0.05), Scalar(-0.05))};
   // sines and cosines of the joint angles
-  const Scalar joint_angle[32] = {q[7], q[13], q[8], q[14], q[9], q[15], q[10], q[16],
-    q[11], q[17], q[12], q[18], q[25], q[32], q[26], q[33],
-    q[27], q[34], q[28], q[35], q[29], q[36], q[30], q[37],
-    q[31], q[38], q[19], q[20], q[21], q[22], q[23], q[24]};
+  Scalar joint_angle[32];
+  store_interleaved_pairs<6>(joint_angle + 0, q + 7, q + 13);
+  store_interleaved_pairs<7>(joint_angle + 12, q + 25, q + 32);
+  joint_angle[26] = q[19];
+  joint_angle[27] = q[20];
+  joint_angle[28] = q[21];
+  joint_angle[29] = q[22];
+  joint_angle[30] = q[23];
+  joint_angle[31] = q[24];
   const auto joint_trig = joint_sincos(joint_angle);
   const Lane sin_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.sin + 0);
   const Lane cos_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.cos + 0);
@@ -708,4 +713,4 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   cg[2] = ((((v[0] * t7) - (v[1] * t6)) + ((v[3] * t10) - (v[4] * t9))) + t505) + (t548[0] + t548[1]);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::bias_b342f322648d
+}  // namespace rbdc_gen::humanoid32::common::bias_0f05ab121cf5

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::inverse_dynamics_15fe8cc894e5 {
+namespace rbdc_gen::humanoid32::common::inverse_dynamics_f8305e2d3e34 {
 
 /// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3).
 ///
@@ -65,10 +65,15 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
     make_lanes(Scalar(0.018000000000000002), Scalar(-0.018000000000000002), Scalar(0.018000000000000002), Scalar(-0.018000000000000002)),
     make_lanes(Scalar(0.05), Scalar(-0.05), Scalar(0.05), Scalar(-0.05))};
   // sines and cosines of the joint angles
-  const Scalar joint_angle[32] = {q[7], q[13], q[8], q[14], q[9], q[15], q[10], q[16],
-    q[11], q[17], q[12], q[18], q[25], q[32], q[26], q[33],
-    q[27], q[34], q[28], q[35], q[29], q[36], q[30], q[37],
-    q[31], q[38], q[19], q[20], q[21], q[22], q[23], q[24]};
+  Scalar joint_angle[32];
+  store_interleaved_pairs<6>(joint_angle + 0, q + 7, q + 13);
+  store_interleaved_pairs<7>(joint_angle + 12, q + 25, q + 32);
+  joint_angle[26] = q[19];
+  joint_angle[27] = q[20];
+  joint_angle[28] = q[21];
+  joint_angle[29] = q[22];
+  joint_angle[30] = q[23];
+  joint_angle[31] = q[24];
   const auto joint_trig = joint_sincos(joint_angle);
   const Lane sin_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.sin + 0);
   const Lane cos_lanes_hip_yaw = load_repeated_lanes<2>(joint_trig.cos + 0);
@@ -747,4 +752,4 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   tau[2] = (((Scalar(0.0866666667) * a[2]) + (((v[0] * t7) - (v[1] * t6)) + ((v[3] * t10) - (v[4] * t9)))) + t530) + (t573[0] + t573[1]);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::inverse_dynamics_15fe8cc894e5
+}  // namespace rbdc_gen::humanoid32::common::inverse_dynamics_f8305e2d3e34
