@@ -177,10 +177,11 @@ inline void sincos(const Vector<double, W>& x, Vector<double, W>& s, Vector<doub
   c = ((quadrant + 1) & 2) != 0 ? -cos_abs : cos_abs;
 }
 
-/// The lanes of x in sincos's range (|x| <= kMaxAngle; not inf, not NaN): all bits set, others zero.
+/// inside = the lanes of x in sincos's range (|x| <= kMaxAngle; not inf, not NaN) all bits set, the
+/// others zero (by reference, as join: a vector returned by value changes the ABI without AVX).
 template <int W>
-inline Vector<std::int64_t, W> inside_range(const Vector<double, W>& x) noexcept {
-  return (x >= -kMaxAngle) & (x <= kMaxAngle);
+inline void inside_range(const Vector<double, W>& x, Vector<std::int64_t, W>& inside) noexcept {
+  inside = (x >= -kMaxAngle) & (x <= kMaxAngle);
 }
 
 /// sincos above, then libm for the lanes out of its range (one vector test; the fix-up loop runs
@@ -188,7 +189,9 @@ inline Vector<std::int64_t, W> inside_range(const Vector<double, W>& x) noexcept
 template <int W>
 inline void sincos_checked(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
   sincos<W>(x, s, c);
-  const Vector<std::int64_t, W> outside = ~inside_range<W>(x);
+  Vector<std::int64_t, W> outside;
+  inside_range<W>(x, outside);
+  outside = ~outside;
   std::int64_t lanes[W];
   std::memcpy(lanes, &outside, sizeof lanes);
   std::int64_t any = 0;
@@ -232,8 +235,12 @@ RBDC_ALWAYS_INLINE JointTrig<double, N> joint_sincos_inline(const double (&angle
   // The range tested on the vectors, one mask for all: tested angle by angle, clang 14 made it a
   // compare, a mask move and a branch per angle (about 40 instructions for a quadruped's 12 angles;
   // docs/performance.md, "Lane sums in one vector add").
-  simd::Vector<std::int64_t, kLanes> inside = simd::inside_range<kLanes>(x[0]);
-  for (int i = 1; i < n_vectors; ++i) inside &= simd::inside_range<kLanes>(x[i]);
+  simd::Vector<std::int64_t, kLanes> inside, next;
+  simd::inside_range<kLanes>(x[0], inside);
+  for (int i = 1; i < n_vectors; ++i) {
+    simd::inside_range<kLanes>(x[i], next);
+    inside &= next;
+  }
   std::int64_t inside_lanes[kLanes];
   std::memcpy(inside_lanes, &inside, sizeof inside_lanes);
   std::int64_t all_inside = -1;

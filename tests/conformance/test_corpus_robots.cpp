@@ -59,7 +59,9 @@ TEST_P(CorpusRobot, LoadsByDefaultWithItsMassAndDofs) {
   for (const Body& b : m.bodies) mass += b.mass;
   EXPECT_NEAR(mass, mass_in_file(path), 1e-9 * mass);
   const auto known = kKnownDofs.find(std::filesystem::path(path).stem().string());
-  if (known != kKnownDofs.end()) EXPECT_EQ(coupled_coordinates(m).num_joints(), known->second);
+  if (known != kKnownDofs.end()) {
+    EXPECT_EQ(coupled_coordinates(m).num_joints(), known->second);
+  }
   UrdfOptions opts;
   opts.mimic = MimicMode::Independent;
   EXPECT_EQ(load_urdf(path, opts).num_joints(), m.num_joints());
