@@ -73,7 +73,9 @@ TEST_P(Frames, JacobianTimesVelocityIsTheFrameVelocity) {
       const Vector6 world = data.frame_jacobian_world[k] * v;
       EXPECT_LE((local - data.frame_velocity_local.col(col)).norm(), 1e-12 * (1 + local.norm()));
       EXPECT_LE((world - data.frame_velocity_world.col(col)).norm(), 1e-12 * (1 + world.norm()));
-      if (model.floating_base || model.frames[k].body != 0) EXPECT_GT(world.norm(), 0.0) << model.frames[k].name;
+      if (model.floating_base || model.frames[k].body != 0) {
+        EXPECT_GT(world.norm(), 0.0) << model.frames[k].name;
+      }
     }
   }
 }

@@ -89,7 +89,9 @@ TEST(Rotors, ForwardDynamicsUndoesInverseDynamics) {
     const VectorX tau = rs.vector(m.num_joints(), 5.0);
     const VectorX a = forward_dynamics(m, d, q, v, tau, Matrix3X::Zero(3, static_cast<Eigen::Index>(m.feet.size())));
     const VectorX back = inverse_dynamics(m, d, q, v, a);
-    if (m.floating_base) EXPECT_LT(back.head<6>().cwiseAbs().maxCoeff(), 1e-9) << m.name;
+    if (m.floating_base) {
+      EXPECT_LT(back.head<6>().cwiseAbs().maxCoeff(), 1e-9) << m.name;
+    }
     EXPECT_LT((back.tail(m.num_joints()) - tau).cwiseAbs().maxCoeff(), 1e-9) << m.name;
   }
 }

@@ -93,7 +93,9 @@ void check_robot() {
         const char* names[] = {"runtime", "generated double", "generated float"};
         for (size_t i = 0; i < outputs.size(); ++i) {
           EXPECT_FALSE(all_finite(outputs[i])) << label << ": " << names[i] << " hid the bad input";
-          if (std::isnan(bad)) EXPECT_TRUE(has_nan(outputs[i])) << label << ": " << names[i];
+          if (std::isnan(bad)) {
+            EXPECT_TRUE(has_nan(outputs[i])) << label << ": " << names[i];
+          }
         }
       }
     }
