@@ -8,7 +8,7 @@
 #   PINOCCHIO_SRC  `git archive v3.7.0` of github.com/stack-of-tasks/pinocchio, outside the repository
 #   OUT            scratch directory: OUT/gen (generated code), OUT/ROBOT/ (binary, runK.json, runK.txt)
 #   ROBOT          name of the generated namespace and directory
-# Environment: RUNS (default 3), TIME_CPU (the core timing runs are pinned to, default 1),
+# Environment: RUNS (default 3; 0 builds only), TIME_CPU (the core timing runs are pinned to, default 1),
 # BENCHMARK_FLAGS (more Google Benchmark flags), and pinocchio_setup.sh's CXX, BUILD_CPU, RBDC_BUILD_DIR.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -77,4 +77,5 @@ for k in $(seq 1 "${RUNS:-3}"); do
   runs+=("$out/$robot/run$k.json")
   rm "$binary.run"
 done
-python3 "$peer/peer_ratios.py" "${runs[@]}"
+# RUNS=0 only builds (bench/peer/alternate_runs.sh times two builds against each other).
+[ ${#runs[@]} -eq 0 ] || python3 "$peer/peer_ratios.py" "${runs[@]}"
