@@ -141,7 +141,8 @@ struct PackLanesOf {
       std::memcpy(p + 2 * j, &both, sizeof both);
       j += 2;
     }
-    if constexpr (N % 2 == 1) {  // one vector store: as two, clang joined them and the stores after into a gather
+    if constexpr (N % 2 == 1) {
+      // one vector store: as two scalar stores, clang joined them and the stores after into a gather
       const Half last = {a[j], b[j]};
       std::memcpy(p + 2 * j, &last, sizeof last);
     }

@@ -487,16 +487,14 @@ def _store_units(fn, cleared):
 
 
 def _one_vector(entries):
-    """Whether ex.LANES consecutive entries take one vector store: the lanes of one lane value in
-    order, constants only (one vector literal), or lanes of several lane values (two-source shuffles
-    build them: lanes 1 and 3 of two values are one unpack). Where a scalar or a constant sits among
+    """Whether ex.LANES consecutive entries take one vector store: constants only (one vector
+    literal), or lanes of lane values (one value's in order is the value itself; two-source shuffles
+    build the rest: lanes 1 and 3 of two values are one unpack). Where a scalar or a constant sits among
     computed values (a leg's entries beside the other legs' zeros, the trunk's block of lane sums),
     each entry is stored on its own: built into a vector, each such entry took about a shuffle, and
     a store is cheaper (the Mini Cheetah's M 4 % faster on Zen 5; docs/performance.md, "Stores
     instead of shuffles"). Splitting the lane mixes too left humanoid32's M 3-4 % slower."""
-    nodes = [node for _, _, node in entries]
-    return (_whole_lane_value(entries) or all(n.op == "const" for n in nodes)
-            or all(n.op == "lane_get" for n in nodes))
+    return {node.op for _, _, node in entries} in ({"const"}, {"lane_get"})
 
 
 def _early_stores(fn, temps, cleared):

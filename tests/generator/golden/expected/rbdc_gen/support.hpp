@@ -189,9 +189,9 @@ inline void inside_range(const Vector<double, W>& x, Vector<std::int64_t, W>& in
 template <int W>
 inline void sincos_checked(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
   sincos<W>(x, s, c);
-  Vector<std::int64_t, W> outside;
-  inside_range<W>(x, outside);
-  outside = ~outside;
+  Vector<std::int64_t, W> inside;
+  inside_range<W>(x, inside);
+  const Vector<std::int64_t, W> outside = ~inside;
   std::int64_t lanes[W];
   std::memcpy(lanes, &outside, sizeof lanes);
   std::int64_t any = 0;
