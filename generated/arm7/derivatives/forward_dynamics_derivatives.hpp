@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_39ef485875fd.hpp
+//   arm7/common/forward_dynamics_derivatives_5d6e3c42f770.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_39ef485875fd.hpp"
+#include "arm7/common/forward_dynamics_derivatives_5d6e3c42f770.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -28,11 +28,11 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param da_df out 7x3: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             3543  3059    6     0    14   15   6637
-/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4999 arithmetic
-///   instructions (cost 6473), scalar tree 6242 (cost 10221), looped RNEA derivatives 6351
-///   (cost 6759), looped CRBA 8222 (cost 9772)
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_39ef485875fd::forward_dynamics_derivatives;
+///             3037  2615    5     0    14   18   5689
+/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4051 arithmetic
+///   instructions (cost 4198), scalar tree 5289 (cost 7934), looped RNEA derivatives 6080
+///   (cost 6488), looped CRBA 7884 (cost 9434)
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_5d6e3c42f770::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // gravity_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   arm7/common/gravity_derivatives_cf6816bbb5f8.hpp
+//   arm7/common/gravity_derivatives_dc0f009cca21.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/gravity_derivatives_cf6816bbb5f8.hpp"
+#include "arm7/common/gravity_derivatives_dc0f009cca21.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -21,9 +21,9 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param dg_dq out 7x7: ∂g/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             274  182    0     0    12    6    474
-/// schedule: scalar tree: 474 arithmetic instructions, looped RNEA derivatives 1942 (cost 2709)
-using ::rbdc_gen::arm7::common::gravity_derivatives_cf6816bbb5f8::gravity_derivatives;
+///             147   86    0     0    10    5    248
+/// schedule: scalar tree: 248 arithmetic instructions, looped RNEA derivatives 1942 (cost 2709)
+using ::rbdc_gen::arm7::common::gravity_derivatives_dc0f009cca21::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   arm7/common/inverse_dynamics_derivatives_c9d4b6e8c9bc.hpp
+//   arm7/common/inverse_dynamics_derivatives_ce8ba11df8c9.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/inverse_dynamics_derivatives_c9d4b6e8c9bc.hpp"
+#include "arm7/common/inverse_dynamics_derivatives_ce8ba11df8c9.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -24,9 +24,9 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param dtau_dv out 7x7: ∂τ/∂v
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             1796  1548    0     0    12   10   3366
-/// schedule: scalar tree: 3366 arithmetic instructions, looped RNEA derivatives 4063 (cost 5679)
-using ::rbdc_gen::arm7::common::inverse_dynamics_derivatives_c9d4b6e8c9bc::inverse_dynamics_derivatives;
+///             1341  1159    0     0    12    8   2520
+/// schedule: scalar tree: 2520 arithmetic instructions, looped RNEA derivatives 4063 (cost 5679)
+using ::rbdc_gen::arm7::common::inverse_dynamics_derivatives_ce8ba11df8c9::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

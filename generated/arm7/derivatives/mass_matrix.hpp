@@ -7,11 +7,11 @@
 // mass_matrix for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   arm7/common/mass_matrix_94571527d2aa.hpp
+//   arm7/common/mass_matrix_2d6e4dd34428.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/mass_matrix_94571527d2aa.hpp"
+#include "arm7/common/mass_matrix_2d6e4dd34428.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -21,9 +21,9 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param M out 7x7: mass matrix, full symmetric
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             192  164    0     0    12    2    370
-/// schedule: scalar tree: 370 arithmetic instructions, looped CRBA 1484 (cost 2068)
-using ::rbdc_gen::arm7::common::mass_matrix_94571527d2aa::mass_matrix;
+///             175  137    0     0    10    4    326
+/// schedule: scalar tree: 326 arithmetic instructions, looped CRBA 1484 (cost 2068)
+using ::rbdc_gen::arm7::common::mass_matrix_2d6e4dd34428::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // centroidal_momentum_matrix for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_momentum_matrix is the same code:
-//   arm7/common/centroidal_momentum_matrix_c8986469e2ef.hpp
+//   arm7/common/centroidal_momentum_matrix_988f4458f00d.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/centroidal_momentum_matrix_c8986469e2ef.hpp"
+#include "arm7/common/centroidal_momentum_matrix_988f4458f00d.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -21,8 +21,8 @@ namespace rbdc_gen::arm7::whole_body_arm {
 /// @param A_G out 6x7: rows: angular momentum about the CoM, then linear momentum, world axes
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             365  314    0     0    14    4    697
-using ::rbdc_gen::arm7::common::centroidal_momentum_matrix_c8986469e2ef::centroidal_momentum_matrix;
+///             313  249    0     0    12    4    578
+using ::rbdc_gen::arm7::common::centroidal_momentum_matrix_988f4458f00d::centroidal_momentum_matrix;
 
 /// centroidal_momentum_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

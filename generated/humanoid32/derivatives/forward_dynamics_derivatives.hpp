@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_10da95387825.hpp
+//   humanoid32/common/forward_dynamics_derivatives_d1c51d8fa124.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_10da95387825.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_d1c51d8fa124.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -28,15 +28,15 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param da_df out 38x15: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations     mul     add  div  sqrt  trig  neg   total
-///             117920  106495   55     0    64  145  224679
+///             116705  105367   55     0    64  145  222336
 /// schedule: limb lanes and looped RNEA derivatives (M's factor and the terms traced with the
 ///   isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of fewer than 4
 ///   repeated to fill the lanes), ∂τ a loop over the bodies, the solve's right-hand sides
-///   in SIMD across columns): 64548 arithmetic instructions (cost 75280), scalar tree
-///   131270 (cost 310288), looped solve 69410 (cost 115658), limb lanes and a looped solve
-///   54816 (cost 80632), looped RNEA derivatives 70299 (cost 89082), looped CRBA 78129
-///   (cost 104935)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_10da95387825::forward_dynamics_derivatives;
+///   in SIMD across columns): 63795 arithmetic instructions (cost 73472), scalar tree
+///   126140 (cost 297976), looped solve 66750 (cost 109274), limb lanes and a looped solve
+///   53167 (cost 76674), looped RNEA derivatives 69020 (cost 86012), looped CRBA 77074
+///   (cost 102403)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_d1c51d8fa124::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

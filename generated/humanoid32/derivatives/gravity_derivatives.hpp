@@ -7,11 +7,11 @@
 // gravity_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   humanoid32/common/gravity_derivatives_06e8c41ff472.hpp
+//   humanoid32/common/gravity_derivatives_83fb298f18f7.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/gravity_derivatives_06e8c41ff472.hpp"
+#include "humanoid32/common/gravity_derivatives_83fb298f18f7.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -21,11 +21,11 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param dg_dq out 38x38: ∂g/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             6118  3571    0     0    64  105   9858
+///             3995  2076    0     0    64   85   6220
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
-///   fewer than 4 repeated to fill the lanes); the rest scalar): 3034 arithmetic
-///   instructions, scalar tree 5325 (cost 8020), looped RNEA derivatives 9856 (cost 13751)
-using ::rbdc_gen::humanoid32::common::gravity_derivatives_06e8c41ff472::gravity_derivatives;
+///   fewer than 4 repeated to fill the lanes); the rest scalar): 1949 arithmetic
+///   instructions, scalar tree 3390, looped RNEA derivatives 9856 (cost 13751)
+using ::rbdc_gen::humanoid32::common::gravity_derivatives_83fb298f18f7::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

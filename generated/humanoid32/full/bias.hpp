@@ -7,11 +7,11 @@
 // bias for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   humanoid32/common/bias_0f05ab121cf5.hpp
+//   humanoid32/common/bias_d73361c47210.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/bias_0f05ab121cf5.hpp"
+#include "humanoid32/common/bias_d73361c47210.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -22,12 +22,12 @@ namespace rbdc_gen::humanoid32::full {
 /// @param cg out 38x1: quadratic velocity and gravity terms c + g
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             4210  3192    0     0    64    0   7466
+///             3138  2238    0     0    64    0   5440
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
-///   fewer than 4 repeated to fill the lanes); the rest scalar): 2535 arithmetic
-///   instructions, scalar tree 4184 (cost 5282), limb lanes with the pairs' spare lanes
-///   used 2327 (cost 2717)
-using ::rbdc_gen::humanoid32::common::bias_0f05ab121cf5::bias;
+///   fewer than 4 repeated to fill the lanes); the rest scalar): 1883 arithmetic
+///   instructions, scalar tree 3074, limb lanes with the pairs' spare lanes used 1778 (cost
+///   2123)
+using ::rbdc_gen::humanoid32::common::bias_d73361c47210::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   humanoid32/common/forward_dynamics_7abe268dc59b.hpp
+//   humanoid32/common/forward_dynamics_9138495938bf.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/forward_dynamics_7abe268dc59b.hpp"
+#include "humanoid32/common/forward_dynamics_9138495938bf.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -25,12 +25,12 @@ namespace rbdc_gen::humanoid32::full {
 /// @param a out 38x1: acceleration
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             9415  6985   55     0    64    1  16520
+///             8466  6015   55     0    64    5  14605
 /// schedule: articulated-body algorithm in limb lanes (the isomorphic limbs in SIMD lanes: 2 of
 ///   pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes); the rest
-///   scalar): 5655 arithmetic instructions (cost 8812), scalar tree 13341 (cost 27258),
-///   limb lanes 8336 (cost 15246), articulated-body algorithm 9268 (cost 17483)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_7abe268dc59b::forward_dynamics;
+///   scalar): 5033 arithmetic instructions (cost 7319), scalar tree 12062 (cost 24189),
+///   limb lanes 7583 (cost 13439), articulated-body algorithm 8213 (cost 14951)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_9138495938bf::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // gravity_terms for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_terms is the same code:
-//   humanoid32/common/gravity_terms_7bbcf54c4887.hpp
+//   humanoid32/common/gravity_terms_cd3e0a7c91db.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/gravity_terms_7bbcf54c4887.hpp"
+#include "humanoid32/common/gravity_terms_cd3e0a7c91db.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -21,8 +21,8 @@ namespace rbdc_gen::humanoid32::full {
 /// @param g out 38x1: gravity terms
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             623  424    0     0    64   13   1124
-using ::rbdc_gen::humanoid32::common::gravity_terms_7bbcf54c4887::gravity_terms;
+///             308  178    0     0    64   13    563
+using ::rbdc_gen::humanoid32::common::gravity_terms_cd3e0a7c91db::gravity_terms;
 
 /// gravity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

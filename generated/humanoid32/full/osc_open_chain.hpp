@@ -7,11 +7,11 @@
 // osc_open_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   humanoid32/common/osc_open_chain_046a8a9b0e44.hpp
+//   humanoid32/common/osc_open_chain_9087c0adeae8.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_open_chain_046a8a9b0e44.hpp"
+#include "humanoid32/common/osc_open_chain_9087c0adeae8.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -25,10 +25,10 @@ namespace rbdc_gen::humanoid32::full {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             8205  6061   27     0    64    9  14366
-/// schedule: scalar tree: 14366 arithmetic instructions (cost 29718), looped operational-space
-///   columns 19868 (cost 35417)
-using ::rbdc_gen::humanoid32::common::osc_open_chain_046a8a9b0e44::osc_open_chain;
+///             7706  5536   27     0    64   13  13346
+/// schedule: scalar tree: 13346 arithmetic instructions (cost 27270), looped operational-space
+///   columns 18843 (cost 32957)
+using ::rbdc_gen::humanoid32::common::osc_open_chain_9087c0adeae8::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

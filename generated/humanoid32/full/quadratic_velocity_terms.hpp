@@ -7,11 +7,11 @@
 // quadratic_velocity_terms for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose quadratic_velocity_terms is the same code:
-//   humanoid32/common/quadratic_velocity_terms_81e4ec6d9b8b.hpp
+//   humanoid32/common/quadratic_velocity_terms_42c2a59e4cfe.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/quadratic_velocity_terms_81e4ec6d9b8b.hpp"
+#include "humanoid32/common/quadratic_velocity_terms_42c2a59e4cfe.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::humanoid32::full {
 /// @param c out 38x1: Coriolis and centrifugal terms
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2325  1776    0     0    64    0   4165
-using ::rbdc_gen::humanoid32::common::quadratic_velocity_terms_81e4ec6d9b8b::quadratic_velocity_terms;
+///             1737  1254    0     0    64    0   3055
+using ::rbdc_gen::humanoid32::common::quadratic_velocity_terms_42c2a59e4cfe::quadratic_velocity_terms;
 
 /// quadratic_velocity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

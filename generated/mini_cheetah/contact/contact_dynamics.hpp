@@ -7,11 +7,11 @@
 // contact_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics is the same code:
-//   mini_cheetah/common/contact_dynamics_2613a42f49ee.hpp
+//   mini_cheetah/common/contact_dynamics_ee9a52eac6e8.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_2613a42f49ee.hpp"
+#include "mini_cheetah/common/contact_dynamics_ee9a52eac6e8.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -25,10 +25,10 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param lambda out 12x1: contact forces on the feet, world; rows 3k + r: contact k (the scene's contacts in the robot's foot order), world axis r
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             5441  4708   26     0    24   80  10279
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4954 arithmetic
-///   instructions (cost 7238), scalar tree 9854 (cost 18890)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_2613a42f49ee::contact_dynamics;
+///             5212  4492   26     0    24   84   9838
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4843 arithmetic
+///   instructions (cost 6971), scalar tree 9415 (cost 17836)
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_ee9a52eac6e8::contact_dynamics;
 
 /// contact_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

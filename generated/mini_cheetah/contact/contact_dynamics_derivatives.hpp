@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_dcfa94611a28.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_95fc8ec43d60.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_dcfa94611a28.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_95fc8ec43d60.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -28,13 +28,13 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param dlambda_dv out 12x18: ∂λ/∂v
 /// @param dlambda_dtau out 12x12: ∂λ/∂τ
 ///
-/// operations    mul    add  div  sqrt  trig   neg   total
-///             50190  48572   26     0    24  1625  100437
+/// operations    mul    add  div  sqrt  trig   neg  total
+///             49745  48132   26     0    24  1637  99564
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
-///   lanes, the solve's right-hand sides in SIMD across columns): 27687 arithmetic
-///   instructions (cost 34228), scalar tree 100802 (cost 237165), looped solve 40577 (cost
-///   65056)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_dcfa94611a28::contact_dynamics_derivatives;
+///   lanes, the solve's right-hand sides in SIMD across columns): 27468 arithmetic
+///   instructions (cost 33702), scalar tree 99385 (cost 233764), looped solve 39565 (cost
+///   62627)
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_95fc8ec43d60::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // impulse_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose impulse_dynamics is the same code:
-//   mini_cheetah/common/impulse_dynamics_dc4d36aa3ea9.hpp
+//   mini_cheetah/common/impulse_dynamics_35f907055191.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/impulse_dynamics_dc4d36aa3ea9.hpp"
+#include "mini_cheetah/common/impulse_dynamics_35f907055191.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -25,10 +25,10 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param impulse out 12x1: contact impulses, world; rows 3k + r: contact k (the scene's contacts in the robot's foot order), world axis r
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             4084  3562   26     0    24   76   7772
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4187 arithmetic
-///   instructions (cost 5397), scalar tree 7375 (cost 12940)
-using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_dc4d36aa3ea9::impulse_dynamics;
+///             4036  3514   26     0    24   76   7676
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4163 arithmetic
+///   instructions (cost 5339), scalar tree 7283 (cost 12719)
+using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_35f907055191::impulse_dynamics;
 
 /// impulse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

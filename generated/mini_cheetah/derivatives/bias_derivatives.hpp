@@ -7,11 +7,11 @@
 // bias_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   mini_cheetah/common/bias_derivatives_82410bfd97ee.hpp
+//   mini_cheetah/common/bias_derivatives_d9bb86f0ab8e.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/bias_derivatives_82410bfd97ee.hpp"
+#include "mini_cheetah/common/bias_derivatives_d9bb86f0ab8e.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -23,10 +23,10 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param dbias_dv out 18x18: ∂c/∂v
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             3432  3112    0     0    24   58   6626
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1805 arithmetic
-///   instructions, scalar tree 6675 (cost 11260), looped RNEA derivatives 7624 (cost 10651)
-using ::rbdc_gen::mini_cheetah::common::bias_derivatives_82410bfd97ee::bias_derivatives;
+///             3068  2744    0     0    24   70   5906
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1625 arithmetic
+///   instructions, scalar tree 5816 (cost 9198), looped RNEA derivatives 7624 (cost 10651)
+using ::rbdc_gen::mini_cheetah::common::bias_derivatives_d9bb86f0ab8e::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_98d66470b07a.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_9060bcd1ac15.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_98d66470b07a.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_9060bcd1ac15.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -28,13 +28,13 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param da_df out 18x12: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
-///             19427  17759   14     0    24  149  37373
+///             18986  17315   14     0    24  149  36488
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
-///   lanes, the solve's right-hand sides in SIMD across columns): 9857 arithmetic
-///   instructions, scalar tree 26017 (cost 57681), limb lanes 7730 (cost 13792), looped
-///   solve 16416 (cost 26776), looped RNEA derivatives 18467 (cost 21454), limb lanes and
-///   looped RNEA derivatives 15170 (cost 15958), looped CRBA 21481 (cost 27717)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_98d66470b07a::forward_dynamics_derivatives;
+///   lanes, the solve's right-hand sides in SIMD across columns): 9635 arithmetic
+///   instructions, scalar tree 24160 (cost 53224), limb lanes 7509 (cost 13262), looped
+///   solve 15391 (cost 24316), looped RNEA derivatives 18024 (cost 20391), limb lanes and
+///   looped RNEA derivatives 15058 (cost 15846), looped CRBA 21143 (cost 26906)
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_9060bcd1ac15::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

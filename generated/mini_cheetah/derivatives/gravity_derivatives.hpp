@@ -7,11 +7,11 @@
 // gravity_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   mini_cheetah/common/gravity_derivatives_ab9acda458f1.hpp
+//   mini_cheetah/common/gravity_derivatives_4893c9b73b08.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/gravity_derivatives_ab9acda458f1.hpp"
+#include "mini_cheetah/common/gravity_derivatives_4893c9b73b08.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -21,10 +21,10 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param dg_dq out 18x18: ∂g/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             593  379    0     0    24   62   1058
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 296 arithmetic
-///   instructions, scalar tree 1051, looped RNEA derivatives 3370 (cost 4696)
-using ::rbdc_gen::mini_cheetah::common::gravity_derivatives_ab9acda458f1::gravity_derivatives;
+///             333  179    0     0    24   46    582
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 177 arithmetic
+///   instructions, scalar tree 579, looped RNEA derivatives 3370 (cost 4696)
+using ::rbdc_gen::mini_cheetah::common::gravity_derivatives_4893c9b73b08::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

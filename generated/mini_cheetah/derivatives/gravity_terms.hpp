@@ -7,11 +7,11 @@
 // gravity_terms for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_terms is the same code:
-//   mini_cheetah/common/gravity_terms_322b8a84ae4f.hpp
+//   mini_cheetah/common/gravity_terms_2c381320ba66.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/gravity_terms_322b8a84ae4f.hpp"
+#include "mini_cheetah/common/gravity_terms_2c381320ba66.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -21,8 +21,8 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param g out 18x1: gravity terms
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             242  172    0     0    24    0    438
-using ::rbdc_gen::mini_cheetah::common::gravity_terms_322b8a84ae4f::gravity_terms;
+///             113   68    0     0    24    1    206
+using ::rbdc_gen::mini_cheetah::common::gravity_terms_2c381320ba66::gravity_terms;
 
 /// gravity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

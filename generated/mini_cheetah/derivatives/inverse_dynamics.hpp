@@ -7,11 +7,11 @@
 // inverse_dynamics for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   mini_cheetah/common/inverse_dynamics_b2f15797f971.hpp
+//   mini_cheetah/common/inverse_dynamics_40c438530e54.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/inverse_dynamics_b2f15797f971.hpp"
+#include "mini_cheetah/common/inverse_dynamics_40c438530e54.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -22,11 +22,11 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param a in  18x1: acceleration (trunk ω̇, R_W^0 p̈, joint accelerations)
 /// @param tau out 18x1: generalised forces M a + c + g
 ///
-/// operations   mul  add  div  sqrt  trig  neg  total
-///             1061  858    0     0    24    0   1943
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 557 arithmetic
-///   instructions, scalar tree 1901
-using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_b2f15797f971::inverse_dynamics;
+/// operations  mul  add  div  sqrt  trig  neg  total
+///             873  686    0     0    24    0   1583
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 467 arithmetic
+///   instructions, scalar tree 1545
+using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_40c438530e54::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   mini_cheetah/common/mass_matrix_3d1b7bf04f39.hpp
+//   mini_cheetah/common/mass_matrix_b23e36b336c2.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/mass_matrix_3d1b7bf04f39.hpp"
+#include "mini_cheetah/common/mass_matrix_b23e36b336c2.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -21,10 +21,10 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param M out 18x18: mass matrix, full symmetric
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             388  366    0     0    24   27    805
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 217 arithmetic
-///   instructions, scalar tree 781, looped CRBA 2252 (cost 3137)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_3d1b7bf04f39::mass_matrix;
+///             340  318    0     0    24   27    709
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 193 arithmetic
+///   instructions, scalar tree 689, looped CRBA 2252 (cost 3137)
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_b23e36b336c2::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // bias for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   mini_cheetah/common/bias_fd9ca8c115ae.hpp
+//   mini_cheetah/common/bias_f48ddb27ff3d.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/bias_fd9ca8c115ae.hpp"
+#include "mini_cheetah/common/bias_f48ddb27ff3d.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -22,10 +22,10 @@ namespace rbdc_gen::mini_cheetah::full {
 /// @param cg out 18x1: quadratic velocity and gravity terms c + g
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             995  780    0     0    24    0   1799
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 515 arithmetic
-///   instructions, scalar tree 1775
-using ::rbdc_gen::mini_cheetah::common::bias_fd9ca8c115ae::bias;
+///             810  612    0     0    24    8   1454
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 428 arithmetic
+///   instructions, scalar tree 1428
+using ::rbdc_gen::mini_cheetah::common::bias_f48ddb27ff3d::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah/common/forward_dynamics_16e9507445a7.hpp
+//   mini_cheetah/common/forward_dynamics_dd8407be726a.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/forward_dynamics_16e9507445a7.hpp"
+#include "mini_cheetah/common/forward_dynamics_dd8407be726a.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -25,11 +25,11 @@ namespace rbdc_gen::mini_cheetah::full {
 /// @param a out 18x1: acceleration
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2060  1618   14     0    24   13   3729
+///             1892  1446   14     0    24   25   3401
 /// schedule: articulated-body algorithm in limb lanes (the 4 isomorphic limbs in SIMD lanes, the
-///   trunk scalar): 1152 arithmetic instructions, scalar tree 3978 (cost 4787), limb lanes
-///   1388, articulated-body algorithm 3667 (cost 4041)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_16e9507445a7::forward_dynamics;
+///   trunk scalar): 1070 arithmetic instructions, scalar tree 3535 (cost 3724), limb lanes
+///   1276, articulated-body algorithm 3329
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_dd8407be726a::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

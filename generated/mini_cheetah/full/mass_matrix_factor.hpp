@@ -7,11 +7,11 @@
 // mass_matrix_factor for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   mini_cheetah/common/mass_matrix_factor_881e4d541f36.hpp
+//   mini_cheetah/common/mass_matrix_factor_889b4e5e828e.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/mass_matrix_factor_881e4d541f36.hpp"
+#include "mini_cheetah/common/mass_matrix_factor_889b4e5e828e.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -23,10 +23,10 @@ namespace rbdc_gen::mini_cheetah::full {
 /// @param D_inv out 18x1: their inverses, so that a solve multiplies
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             846  729   14     0    24   15   1628
-/// schedule: scalar tree: 1628 arithmetic instructions, looped factor 1909 (cost 4729), looped CRBA
+///             804  679   14     0    24   15   1536
+/// schedule: scalar tree: 1536 arithmetic instructions, looped factor 1817 (cost 4637), looped CRBA
 ///   3380 (cost 7085)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_factor_881e4d541f36::mass_matrix_factor;
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_factor_889b4e5e828e::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_cd13f73c6e26.hpp
+//   mini_cheetah/common/osc_closed_chain_c8ea7cc1821f.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/osc_closed_chain_cd13f73c6e26.hpp"
+#include "mini_cheetah/common/osc_closed_chain_c8ea7cc1821f.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -25,10 +25,10 @@ namespace rbdc_gen::mini_cheetah::full {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2381  1847    9     0    24   17   4278
-/// schedule: scalar tree: 4278 arithmetic instructions (cost 5507), looped operational-space
-///   columns 7229 (cost 10028)
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_cd13f73c6e26::osc_closed_chain;
+///             2271  1711    9     0    24   17   4032
+/// schedule: scalar tree: 4032 arithmetic instructions (cost 4917), looped operational-space
+///   columns 6983 (cost 9437)
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_c8ea7cc1821f::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_open_chain for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   mini_cheetah/common/osc_open_chain_80291b990e59.hpp
+//   mini_cheetah/common/osc_open_chain_2e973f9b07e9.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/osc_open_chain_80291b990e59.hpp"
+#include "mini_cheetah/common/osc_open_chain_2e973f9b07e9.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -25,11 +25,11 @@ namespace rbdc_gen::mini_cheetah::full {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2392  1821    8     0    24   28   4273
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1195 arithmetic
-///   instructions, scalar tree 4233 (cost 5399), looped operational-space columns 7027
-///   (cost 9543)
-using ::rbdc_gen::mini_cheetah::common::osc_open_chain_80291b990e59::osc_open_chain;
+///             2200  1625    8     0    24   36   3893
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1100 arithmetic
+///   instructions, scalar tree 3847 (cost 4473), looped operational-space columns 6641
+///   (cost 8616)
+using ::rbdc_gen::mini_cheetah::common::osc_open_chain_2e973f9b07e9::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

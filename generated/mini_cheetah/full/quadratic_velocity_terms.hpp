@@ -7,11 +7,11 @@
 // quadratic_velocity_terms for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose quadratic_velocity_terms is the same code:
-//   mini_cheetah/common/quadratic_velocity_terms_f0ba92759b19.hpp
+//   mini_cheetah/common/quadratic_velocity_terms_99ab4ed3d5a1.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/quadratic_velocity_terms_f0ba92759b19.hpp"
+#include "mini_cheetah/common/quadratic_velocity_terms_99ab4ed3d5a1.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::mini_cheetah::full {
 /// @param c out 18x1: Coriolis and centrifugal terms
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             967  765    0     0    24    0   1756
-using ::rbdc_gen::mini_cheetah::common::quadratic_velocity_terms_f0ba92759b19::quadratic_velocity_terms;
+///             784  597    0     0    24    4   1409
+using ::rbdc_gen::mini_cheetah::common::quadratic_velocity_terms_99ab4ed3d5a1::quadratic_velocity_terms;
 
 /// quadratic_velocity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics for mini_cheetah, scene "gravity_compensation": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   mini_cheetah/common/inverse_dynamics_92f77ca98592.hpp
+//   mini_cheetah/common/inverse_dynamics_f633299dc14f.hpp
 #pragma once
 
 #include "mini_cheetah/gravity_compensation.hpp"
-#include "mini_cheetah/common/inverse_dynamics_92f77ca98592.hpp"
+#include "mini_cheetah/common/inverse_dynamics_f633299dc14f.hpp"
 
 namespace rbdc_gen::mini_cheetah::gravity_compensation {
 
@@ -22,10 +22,10 @@ namespace rbdc_gen::mini_cheetah::gravity_compensation {
 /// @param tau out 18x1: generalised forces M a + c + g
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             455  366    0     0    24    0    845
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 242 arithmetic
-///   instructions, scalar tree 824
-using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_92f77ca98592::inverse_dynamics;
+///             375  294    0     0    24    0    693
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 204 arithmetic
+///   instructions, scalar tree 674
+using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_f633299dc14f::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // bias_lanes for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_lanes is the same code:
-//   mini_cheetah/common/bias_lanes_495d3ae7f71a.hpp
+//   mini_cheetah/common/bias_lanes_12ab10780440.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/bias_lanes_495d3ae7f71a.hpp"
+#include "mini_cheetah/common/bias_lanes_12ab10780440.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 /// @param cg out 18x1: quadratic velocity and gravity terms c + g
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             995  780    0     0    24    0   1799
-using ::rbdc_gen::mini_cheetah::common::bias_lanes_495d3ae7f71a::bias_lanes;
+///             810  612    0     0    24    8   1454
+using ::rbdc_gen::mini_cheetah::common::bias_lanes_12ab10780440::bias_lanes;
 
 /// bias_lanes on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_lanes for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_lanes is the same code:
-//   mini_cheetah/common/forward_dynamics_lanes_3eb6abae9e53.hpp
+//   mini_cheetah/common/forward_dynamics_lanes_0e39689fa787.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/forward_dynamics_lanes_3eb6abae9e53.hpp"
+#include "mini_cheetah/common/forward_dynamics_lanes_0e39689fa787.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -26,8 +26,8 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 /// @param a out 18x1: acceleration
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2176  1805   14     0    24   81   4100
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_3eb6abae9e53::forward_dynamics_lanes;
+///             1943  1589   14     0    24   85   3655
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_0e39689fa787::forward_dynamics_lanes;
 
 /// forward_dynamics_lanes on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

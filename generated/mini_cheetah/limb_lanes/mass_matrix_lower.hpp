@@ -7,11 +7,11 @@
 // mass_matrix_lower for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_lower is the same code:
-//   mini_cheetah/common/mass_matrix_lower_166105752ea3.hpp
+//   mini_cheetah/common/mass_matrix_lower_c968ed5e39fe.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/mass_matrix_lower_166105752ea3.hpp"
+#include "mini_cheetah/common/mass_matrix_lower_c968ed5e39fe.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -22,10 +22,10 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 /// @param M out 18x18: mass matrix, lower triangle (row ≥ column); the entries above the diagonal are not written
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             388  366    0     0    24   27    805
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 217 arithmetic
-///   instructions, scalar tree 781, looped CRBA 2252 (cost 3137)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_lower_166105752ea3::mass_matrix_lower;
+///             340  318    0     0    24   27    709
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 193 arithmetic
+///   instructions, scalar tree 689, looped CRBA 2252 (cost 3137)
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_lower_c968ed5e39fe::mass_matrix_lower;
 
 /// mass_matrix_lower on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // step_terms for mini_cheetah, scene "simulation": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose step_terms is the same code:
-//   mini_cheetah/common/step_terms_4b3ac287911c.hpp
+//   mini_cheetah/common/step_terms_643e5c704f09.hpp
 #pragma once
 
 #include "mini_cheetah/simulation.hpp"
-#include "mini_cheetah/common/step_terms_4b3ac287911c.hpp"
+#include "mini_cheetah/common/step_terms_643e5c704f09.hpp"
 
 namespace rbdc_gen::mini_cheetah::simulation {
 
@@ -33,8 +33,8 @@ namespace rbdc_gen::mini_cheetah::simulation {
 /// @param a out 18x1: acceleration without foot forces, M⁻¹(Sᵀτ − c − g)
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2471  2049   14     0    24   28   4586
-using ::rbdc_gen::mini_cheetah::common::step_terms_4b3ac287911c::step_terms;
+///             2246  1831   14     0    24   28   4143
+using ::rbdc_gen::mini_cheetah::common::step_terms_643e5c704f09::step_terms;
 
 /// step_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

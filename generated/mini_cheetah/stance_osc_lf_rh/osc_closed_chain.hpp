@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "stance_osc_lf_rh": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_06796f13350d.hpp
+//   mini_cheetah/common/osc_closed_chain_6ff3ad0ae9a9.hpp
 #pragma once
 
 #include "mini_cheetah/stance_osc_lf_rh.hpp"
-#include "mini_cheetah/common/osc_closed_chain_06796f13350d.hpp"
+#include "mini_cheetah/common/osc_closed_chain_6ff3ad0ae9a9.hpp"
 
 namespace rbdc_gen::mini_cheetah::stance_osc_lf_rh {
 
@@ -25,10 +25,10 @@ namespace rbdc_gen::mini_cheetah::stance_osc_lf_rh {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2281  1773    9     0    24   19   4106
-/// schedule: scalar tree: 4106 arithmetic instructions (cost 5094), looped operational-space
-///   columns 7056 (cost 9612)
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_06796f13350d::osc_closed_chain;
+///             2131  1605    9     0    24   18   3787
+/// schedule: scalar tree: 3787 arithmetic instructions (cost 4329), looped operational-space
+///   columns 6737 (cost 8847)
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_6ff3ad0ae9a9::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

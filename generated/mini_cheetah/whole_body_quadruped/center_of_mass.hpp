@@ -7,11 +7,11 @@
 // center_of_mass for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose center_of_mass is the same code:
-//   mini_cheetah/common/center_of_mass_2a1198de70eb.hpp
+//   mini_cheetah/common/center_of_mass_2f4c67340211.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/center_of_mass_2a1198de70eb.hpp"
+#include "mini_cheetah/common/center_of_mass_2f4c67340211.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -23,10 +23,10 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// @param com_velocity out 3x1: its velocity
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             602  455    0     0    24    0   1081
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 322 arithmetic
-///   instructions, scalar tree 1041
-using ::rbdc_gen::mini_cheetah::common::center_of_mass_2a1198de70eb::center_of_mass;
+///             346  235    0     0    24    0    605
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 203 arithmetic
+///   instructions, scalar tree 605
+using ::rbdc_gen::mini_cheetah::common::center_of_mass_2f4c67340211::center_of_mass;
 
 /// center_of_mass on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // center_of_mass_jacobian for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose center_of_mass_jacobian is the same code:
-//   mini_cheetah/common/center_of_mass_jacobian_6748bc056bf5.hpp
+//   mini_cheetah/common/center_of_mass_jacobian_bb3c19984f58.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/center_of_mass_jacobian_6748bc056bf5.hpp"
+#include "mini_cheetah/common/center_of_mass_jacobian_bb3c19984f58.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -21,10 +21,10 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// @param J_c out 3x18: centre-of-mass Jacobian
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             417  293    0     0    24    0    734
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 236 arithmetic
-///   instructions, scalar tree 713
-using ::rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_6748bc056bf5::center_of_mass_jacobian;
+///             297  161    0     0    24    0    482
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 173 arithmetic
+///   instructions, scalar tree 482
+using ::rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_bb3c19984f58::center_of_mass_jacobian;
 
 /// center_of_mass_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

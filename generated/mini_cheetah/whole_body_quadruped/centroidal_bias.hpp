@@ -7,11 +7,11 @@
 // centroidal_bias for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_bias is the same code:
-//   mini_cheetah/common/centroidal_bias_f758054bb65f.hpp
+//   mini_cheetah/common/centroidal_bias_44172251c8a3.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/centroidal_bias_f758054bb65f.hpp"
+#include "mini_cheetah/common/centroidal_bias_44172251c8a3.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -21,11 +21,11 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// @param v in  18x1: velocity (trunk ω, v in trunk coordinates, joint rates)
 /// @param Adot_v out 6x1: (k̇_G; l̇) at a = 0, world axes
 ///
-/// operations   mul   add  div  sqrt  trig  neg  total
-///             1277  1000    0     0    24    0   2301
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 690 arithmetic
-///   instructions, scalar tree 2256
-using ::rbdc_gen::mini_cheetah::common::centroidal_bias_f758054bb65f::centroidal_bias;
+/// operations  mul  add  div  sqrt  trig  neg  total
+///             996  732    0     0    24    4   1756
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 553 arithmetic
+///   instructions, scalar tree 1730
+using ::rbdc_gen::mini_cheetah::common::centroidal_bias_44172251c8a3::centroidal_bias;
 
 /// centroidal_bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

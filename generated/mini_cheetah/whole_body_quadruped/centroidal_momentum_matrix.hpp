@@ -7,11 +7,11 @@
 // centroidal_momentum_matrix for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_momentum_matrix is the same code:
-//   mini_cheetah/common/centroidal_momentum_matrix_c8e57c63e107.hpp
+//   mini_cheetah/common/centroidal_momentum_matrix_25510cccefca.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/centroidal_momentum_matrix_c8e57c63e107.hpp"
+#include "mini_cheetah/common/centroidal_momentum_matrix_25510cccefca.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -21,10 +21,10 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// @param A_G out 6x18: rows: angular momentum about the CoM, then linear momentum, world axes
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             877  758    0     0    24    8   1667
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 584 arithmetic
-///   instructions, scalar tree 1646
-using ::rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_c8e57c63e107::centroidal_momentum_matrix;
+///             785  662    0     0    24    8   1479
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 537 arithmetic
+///   instructions, scalar tree 1462
+using ::rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_25510cccefca::centroidal_momentum_matrix;
 
 /// centroidal_momentum_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // bias for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   mini_cheetah_rotors/common/bias_342f6ecd58b8.hpp
+//   mini_cheetah_rotors/common/bias_302a0ad81c52.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/bias_342f6ecd58b8.hpp"
+#include "mini_cheetah_rotors/common/bias_302a0ad81c52.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -22,9 +22,9 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// @param v in  18x1: velocity (trunk ω, v in trunk coordinates, joint rates)
 /// @param cg out 18x1: quadratic velocity and gravity terms c + g
 ///
-/// operations   mul   add  div  sqrt  trig  neg  total
-///             1405  1165    0     0    24    0   2594
-using ::rbdc_gen::mini_cheetah_rotors::common::bias_342f6ecd58b8::bias;
+/// operations   mul  add  div  sqrt  trig  neg  total
+///             1222  993    0     0    24    0   2239
+using ::rbdc_gen::mini_cheetah_rotors::common::bias_302a0ad81c52::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // mass_matrix_factor for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   mini_cheetah_rotors/common/mass_matrix_factor_e835e4b815ea.hpp
+//   mini_cheetah_rotors/common/mass_matrix_factor_e17bd47c7311.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/mass_matrix_factor_e835e4b815ea.hpp"
+#include "mini_cheetah_rotors/common/mass_matrix_factor_e17bd47c7311.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -24,9 +24,9 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// @param D_inv out 18x1: their inverses, so that a solve multiplies
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             846  749   14     0    24   14   1647
-/// schedule: scalar tree: 1647 arithmetic instructions, looped factor 1929 (cost 4749)
-using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_factor_e835e4b815ea::mass_matrix_factor;
+///             818  725   14     0    24   14   1595
+/// schedule: scalar tree: 1595 arithmetic instructions, looped factor 1877 (cost 4697)
+using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_factor_e17bd47c7311::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // osc_open_chain for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   mini_cheetah_rotors/common/osc_open_chain_7a1f1d603e97.hpp
+//   mini_cheetah_rotors/common/osc_open_chain_ba7fe01b3a5b.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/osc_open_chain_7a1f1d603e97.hpp"
+#include "mini_cheetah_rotors/common/osc_open_chain_ba7fe01b3a5b.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -26,8 +26,8 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2596  2170    8     0    24   29   4827
-using ::rbdc_gen::mini_cheetah_rotors::common::osc_open_chain_7a1f1d603e97::osc_open_chain;
+///             2362  1942    8     0    24   29   4365
+using ::rbdc_gen::mini_cheetah_rotors::common::osc_open_chain_ba7fe01b3a5b::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // center_of_mass_jacobian for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose center_of_mass_jacobian is the same code:
-//   mini_cheetah_rotors/common/center_of_mass_jacobian_de8a5d0a8153.hpp
+//   mini_cheetah_rotors/common/center_of_mass_jacobian_df089cbc0d13.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/center_of_mass_jacobian_de8a5d0a8153.hpp"
+#include "mini_cheetah_rotors/common/center_of_mass_jacobian_df089cbc0d13.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 /// @param J_c out 3x18: centre-of-mass Jacobian
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             450  359    0     0    24    0    833
-using ::rbdc_gen::mini_cheetah_rotors::common::center_of_mass_jacobian_de8a5d0a8153::center_of_mass_jacobian;
+///             378  287    0     0    24    0    689
+using ::rbdc_gen::mini_cheetah_rotors::common::center_of_mass_jacobian_df089cbc0d13::center_of_mass_jacobian;
 
 /// center_of_mass_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

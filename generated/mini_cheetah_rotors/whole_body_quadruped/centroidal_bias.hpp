@@ -8,11 +8,11 @@
 // centroidal_bias for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_bias is the same code:
-//   mini_cheetah_rotors/common/centroidal_bias_6a3c7198f513.hpp
+//   mini_cheetah_rotors/common/centroidal_bias_748e80b88d16.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/centroidal_bias_6a3c7198f513.hpp"
+#include "mini_cheetah_rotors/common/centroidal_bias_748e80b88d16.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 /// @param Adot_v out 6x1: (k̇_G; l̇) at a = 0, world axes
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             1708  1435    0     0    24    0   3167
-using ::rbdc_gen::mini_cheetah_rotors::common::centroidal_bias_6a3c7198f513::centroidal_bias;
+///             1465  1203    0     0    24    0   2692
+using ::rbdc_gen::mini_cheetah_rotors::common::centroidal_bias_748e80b88d16::centroidal_bias;
 
 /// centroidal_bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

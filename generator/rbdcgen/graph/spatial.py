@@ -408,9 +408,9 @@ class Inertia:
         self.m, self.h, self.Ibar = m, h, Ibar
 
     @staticmethod
-    def from_body(body):
-        return Inertia(ex.const(body.mass), vec([body.mass * x for x in body.com]),
-                       symmetric(mat(inertia_at_origin(body))))
+    def of(m, h, Ibar):
+        """From floats: mass, first moment, rotational inertia about the origin."""
+        return Inertia(ex.const(m), vec(h), symmetric(mat(Ibar)))
 
     def apply(self, v):
         """I v = (Ī ω + h × v_O, m v_O − h × ω)."""

@@ -8,7 +8,8 @@ from __future__ import annotations
 
 from ..algorithms import aba
 from ..algorithms.crba import depth_first_order
-from ..graph.spatial import inertia_at_origin, snap_axis
+from ..graph.spatial import snap_axis
+from ..views import regrouped
 
 HEADER = "rbdc_gen/body_tree.hpp"
 # Per call of each piece of body_tree.hpp: (multiplications, additions).
@@ -81,11 +82,11 @@ def table(robot):
         return repr(float(x))
 
     joints = [robot.joints[i] for i in order]
-    bodies = [robot.bodies[i] for i in order]
     no_axis = [0.0, 0.0, 0.0]  # the root's
     axes = [snap_axis(joint.axis) if k else no_axis for k, joint in enumerate(joints)]
-    moments = [[body.mass * c for c in body.com] for body in bodies]
-    rotational = [_upper(inertia_at_origin(body)) for body in bodies]
+    parameters = [regrouped.body_parameters(robot)[i] for i in order]
+    moments = [h for _, h, _ in parameters]
+    rotational = [_upper(ibar) for _, _, ibar in parameters]
 
     def components(vectors, n):  # component by component, as BodyTree holds them
         return row(row(number(vector[k]) for vector in vectors) for k in range(n))
@@ -96,7 +97,7 @@ def table(robot):
         row(str(joint.v_index if k else -1) for k, joint in enumerate(joints)),
         row(cpp_bool(k and joint.type == "revolute") for k, joint in enumerate(joints)),
         components(axes, 3),
-        row(number(body.mass) for body in bodies),
+        row(number(mass) for mass, _, _ in parameters),
         components(moments, 3),
         components(rotational, 6),
         row(number(joint.actuator.armature if k and joint.actuator else 0.0) for k, joint in enumerate(joints)),

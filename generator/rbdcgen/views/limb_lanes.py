@@ -21,6 +21,7 @@ from dataclasses import dataclass, replace
 
 from ..graph import expr as ex
 from ..graph import spatial as sp
+from . import regrouped
 from .limbs import LimbError
 from ..algorithms import forward_dynamics as fd
 from .scalar import TracedModel
@@ -215,12 +216,21 @@ class LaneModel(TracedModel):
         return sp.Transform(None if identity else E_T,
                             r_T if any(any(j.translation) for j in joints) else None)
 
+    def body_parameters(self):
+        """The full robot's regrouped parameters (views/regrouped.py) of each reduced body's lane 0:
+        a spine body's own."""
+        if "parameters" not in self._cache:
+            full = regrouped.body_parameters(self.full)
+            self._cache["parameters"] = tuple(full[lanes[0]] for lanes in self._lanes_in)
+        return self._cache["parameters"]
+
     def inertia(self, i):
         if self._group[i] is None:
             return super().inertia(i)
         key = ("inertia", i)
         if key not in self._cache:
-            lanes = [sp.Inertia.from_body(self.full.bodies[b]) for b in self._lanes_of(i)]
+            parameters = regrouped.body_parameters(self.full)
+            lanes = [sp.Inertia.of(*parameters[b]) for b in self._lanes_of(i)]
             m = ex.lane_const([x.m.value for x in lanes])
             h = tuple(ex.lane_const([x.h[a].value for x in lanes]) for a in range(3))
             ibar = tuple(tuple(ex.lane_const([x.Ibar[a][b].value for x in lanes]) for b in range(3))

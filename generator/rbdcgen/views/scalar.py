@@ -5,7 +5,7 @@ Section 3 (X_T, X_J, S_i, I_i) built once per traced function."""
 from __future__ import annotations
 
 
-from . import coupled
+from . import coupled, regrouped
 from ..graph import expr as ex
 from ..graph import spatial as sp
 
@@ -212,10 +212,16 @@ class TracedModel:
         limb's entries scattered to every limb (views/limb_lanes.LaneModel)."""
         return rows
 
+    def body_parameters(self):
+        """(m, h, Ī) per body of the tree, regrouped (views/regrouped.py)."""
+        if "parameters" not in self._cache:
+            self._cache["parameters"] = regrouped.body_parameters(self.robot)
+        return self._cache["parameters"]
+
     def inertia(self, i):
         key = ("inertia", i)
         if key not in self._cache:
-            self._cache[key] = sp.Inertia.from_body(self.robot.bodies[i])
+            self._cache[key] = sp.Inertia.of(*self.body_parameters()[i])
         return self._cache[key]
 
     # --- floating base ------------------------------------------------------------------------

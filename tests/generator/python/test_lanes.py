@@ -290,12 +290,13 @@ class HumanoidPairs(unittest.TestCase):
     def test_paired_forms_equal_scalar(self):
         """The pairs' spare lanes used (lane_functions.PAIRED): rnea.pair_step's a and v in one lane
         value, crba's walks of a body's column and a child's together; both pairs of humanoid32 at
-        once, each form fewer instructions than the plain lane form."""
+        once, each form fewer instructions than the plain lane form (bias and ID 5-6 % fewer since the
+        regrouped inertias made the shared inertia product cheaper, M 15 %)."""
         robot = mini_cheetah.load(urdf=mini_cheetah.HUMANOID32)
         for name, paired in PAIRED.items():
             lanes = trace_function(robot, default_scene(), paired)
             plain = trace_function(robot, default_scene(), LANE_NAME[name])
-            self.assertLess(schedule.straight_line_instructions(lanes), 0.93 * schedule.straight_line_instructions(plain), name)
+            self.assertLess(schedule.straight_line_instructions(lanes), 0.96 * schedule.straight_line_instructions(plain), name)
             scalar = trace_function(robot, default_scene(), name)
             for seed in (1, 2):
                 state = random_state(robot, len(robot.feet), seed)

@@ -40,7 +40,7 @@ class DenseAgreement(unittest.TestCase):
         class Body:
             mass, com = 1.3, (0.05, -0.02, 0.1)
             inertia_com = ((0.02, 0.001, 0.0), (0.001, 0.03, -0.002), (0.0, -0.002, 0.025))
-        inertia = sp.Inertia.from_body(Body)
+        inertia = sp.Inertia.of(Body.mass, [Body.mass * c for c in Body.com], sp.inertia_at_origin(Body))
         got = inertia.congruence(self.X).dense()
         want = ref.matmul(ref.transpose(self.dense),
                           ref.matmul(ref.spatial_inertia(Body), self.dense))

@@ -6,11 +6,11 @@
 // inverse_dynamics for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   two_link/common/inverse_dynamics_7ca3dd11ebf0.hpp
+//   two_link/common/inverse_dynamics_e09b4c0607eb.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/inverse_dynamics_7ca3dd11ebf0.hpp"
+#include "two_link/common/inverse_dynamics_e09b4c0607eb.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::two_link::full {
 /// @param tau out 2x1: generalised forces M a + c + g
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///              40   25    0     0     2    0     67
-using ::rbdc_gen::two_link::common::inverse_dynamics_7ca3dd11ebf0::inverse_dynamics;
+///              35   21    0     0     2    0     58
+using ::rbdc_gen::two_link::common::inverse_dynamics_e09b4c0607eb::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

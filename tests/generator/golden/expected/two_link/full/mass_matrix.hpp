@@ -6,11 +6,11 @@
 // mass_matrix for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   two_link/common/mass_matrix_5fc110d68453.hpp
+//   two_link/common/mass_matrix_b4b308ed3895.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/mass_matrix_5fc110d68453.hpp"
+#include "two_link/common/mass_matrix_b4b308ed3895.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -20,9 +20,9 @@ namespace rbdc_gen::two_link::full {
 /// @param M out 2x2: mass matrix, full symmetric
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///              15   13    0     0     0    0     28
-/// schedule: scalar tree: 28 arithmetic instructions, looped CRBA 355 (cost 491)
-using ::rbdc_gen::two_link::common::mass_matrix_5fc110d68453::mass_matrix;
+///              15    9    0     0     0    0     24
+/// schedule: scalar tree: 24 arithmetic instructions, looped CRBA 355 (cost 491)
+using ::rbdc_gen::two_link::common::mass_matrix_b4b308ed3895::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

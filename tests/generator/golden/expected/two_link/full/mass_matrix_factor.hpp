@@ -6,11 +6,11 @@
 // mass_matrix_factor for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   two_link/common/mass_matrix_factor_c74b5afa8850.hpp
+//   two_link/common/mass_matrix_factor_1c025669d0bf.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/mass_matrix_factor_c74b5afa8850.hpp"
+#include "two_link/common/mass_matrix_factor_1c025669d0bf.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -22,10 +22,10 @@ namespace rbdc_gen::two_link::full {
 /// @param D_inv out 2x1: their inverses, so that a solve multiplies
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///              15   13    1     0     0    0     29
-/// schedule: scalar tree: 29 arithmetic instructions, looped factor 38 (cost 63), looped CRBA 365
+///              15    9    1     0     0    0     25
+/// schedule: scalar tree: 25 arithmetic instructions, looped factor 34 (cost 59), looped CRBA 365
 ///   (cost 526)
-using ::rbdc_gen::two_link::common::mass_matrix_factor_c74b5afa8850::mass_matrix_factor;
+using ::rbdc_gen::two_link::common::mass_matrix_factor_1c025669d0bf::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>
