@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_95fc8ec43d60.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_dd21e800cbf8.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_95fc8ec43d60.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_dd21e800cbf8.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -34,7 +34,7 @@ namespace rbdc_gen::mini_cheetah::contact {
 ///   lanes, the solve's right-hand sides in SIMD across columns): 27468 arithmetic
 ///   instructions (cost 33702), scalar tree 99385 (cost 233764), looped solve 39565 (cost
 ///   62627)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_95fc8ec43d60::contact_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_dd21e800cbf8::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_9060bcd1ac15.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_5d3f53a31cf8.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_9060bcd1ac15.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_5d3f53a31cf8.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -34,7 +34,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///   instructions, scalar tree 24160 (cost 53224), limb lanes 7509 (cost 13262), looped
 ///   solve 15391 (cost 24316), looped RNEA derivatives 18024 (cost 20391), limb lanes and
 ///   looped RNEA derivatives 15058 (cost 15846), looped CRBA 21143 (cost 26906)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_9060bcd1ac15::forward_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_5d3f53a31cf8::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

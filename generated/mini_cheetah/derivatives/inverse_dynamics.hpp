@@ -7,11 +7,11 @@
 // inverse_dynamics for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   mini_cheetah/common/inverse_dynamics_40c438530e54.hpp
+//   mini_cheetah/common/inverse_dynamics_b45ede901759.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/inverse_dynamics_40c438530e54.hpp"
+#include "mini_cheetah/common/inverse_dynamics_b45ede901759.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///             873  686    0     0    24    0   1583
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 467 arithmetic
 ///   instructions, scalar tree 1545
-using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_40c438530e54::inverse_dynamics;
+using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_b45ede901759::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

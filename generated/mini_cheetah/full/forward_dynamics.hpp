@@ -7,11 +7,11 @@
 // forward_dynamics for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah/common/forward_dynamics_dd8407be726a.hpp
+//   mini_cheetah/common/forward_dynamics_edfe96d6fc63.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/forward_dynamics_dd8407be726a.hpp"
+#include "mini_cheetah/common/forward_dynamics_edfe96d6fc63.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -29,7 +29,7 @@ namespace rbdc_gen::mini_cheetah::full {
 /// schedule: articulated-body algorithm in limb lanes (the 4 isomorphic limbs in SIMD lanes, the
 ///   trunk scalar): 1070 arithmetic instructions, scalar tree 3535 (cost 3724), limb lanes
 ///   1276, articulated-body algorithm 3329
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_dd8407be726a::forward_dynamics;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_edfe96d6fc63::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix_factor for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   mini_cheetah/common/mass_matrix_factor_889b4e5e828e.hpp
+//   mini_cheetah/common/mass_matrix_factor_4853d15e8beb.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/mass_matrix_factor_889b4e5e828e.hpp"
+#include "mini_cheetah/common/mass_matrix_factor_4853d15e8beb.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::full {
 ///             804  679   14     0    24   15   1536
 /// schedule: scalar tree: 1536 arithmetic instructions, looped factor 1817 (cost 4637), looped CRBA
 ///   3380 (cost 7085)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_factor_889b4e5e828e::mass_matrix_factor;
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_factor_4853d15e8beb::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

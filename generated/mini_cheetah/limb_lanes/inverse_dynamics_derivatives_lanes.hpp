@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives_lanes for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives_lanes is the same code:
-//   mini_cheetah/common/inverse_dynamics_derivatives_lanes_6352b5d0bd44.hpp
+//   mini_cheetah/common/inverse_dynamics_derivatives_lanes_b8b40b3d94ce.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/inverse_dynamics_derivatives_lanes_6352b5d0bd44.hpp"
+#include "mini_cheetah/common/inverse_dynamics_derivatives_lanes_b8b40b3d94ce.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             3124  2831    0     0    24   66   6045
-using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_lanes_6352b5d0bd44::inverse_dynamics_derivatives_lanes;
+using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_lanes_b8b40b3d94ce::inverse_dynamics_derivatives_lanes;
 
 /// inverse_dynamics_derivatives_lanes on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

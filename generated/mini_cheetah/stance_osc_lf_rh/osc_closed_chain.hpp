@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "stance_osc_lf_rh": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_6ff3ad0ae9a9.hpp
+//   mini_cheetah/common/osc_closed_chain_0dc1861c0986.hpp
 #pragma once
 
 #include "mini_cheetah/stance_osc_lf_rh.hpp"
-#include "mini_cheetah/common/osc_closed_chain_6ff3ad0ae9a9.hpp"
+#include "mini_cheetah/common/osc_closed_chain_0dc1861c0986.hpp"
 
 namespace rbdc_gen::mini_cheetah::stance_osc_lf_rh {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::mini_cheetah::stance_osc_lf_rh {
 ///             2131  1605    9     0    24   18   3787
 /// schedule: scalar tree: 3787 arithmetic instructions (cost 4329), looped operational-space
 ///   columns 6737 (cost 8847)
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_6ff3ad0ae9a9::osc_closed_chain;
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_0dc1861c0986::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

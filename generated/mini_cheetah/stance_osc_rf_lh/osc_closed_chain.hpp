@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "stance_osc_rf_lh": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_e0cbedd6f122.hpp
+//   mini_cheetah/common/osc_closed_chain_fc4e004d1a6b.hpp
 #pragma once
 
 #include "mini_cheetah/stance_osc_rf_lh.hpp"
-#include "mini_cheetah/common/osc_closed_chain_e0cbedd6f122.hpp"
+#include "mini_cheetah/common/osc_closed_chain_fc4e004d1a6b.hpp"
 
 namespace rbdc_gen::mini_cheetah::stance_osc_rf_lh {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::mini_cheetah::stance_osc_rf_lh {
 ///             2131  1605    9     0    24   18   3787
 /// schedule: scalar tree: 3787 arithmetic instructions (cost 4329), looped operational-space
 ///   columns 6737 (cost 8847)
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_e0cbedd6f122::osc_closed_chain;
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_fc4e004d1a6b::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // centroidal_bias for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_bias is the same code:
-//   mini_cheetah/common/centroidal_bias_44172251c8a3.hpp
+//   mini_cheetah/common/centroidal_bias_e6a2b2d72da0.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/centroidal_bias_44172251c8a3.hpp"
+#include "mini_cheetah/common/centroidal_bias_e6a2b2d72da0.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 ///             996  732    0     0    24    4   1756
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 553 arithmetic
 ///   instructions, scalar tree 1730
-using ::rbdc_gen::mini_cheetah::common::centroidal_bias_44172251c8a3::centroidal_bias;
+using ::rbdc_gen::mini_cheetah::common::centroidal_bias_e6a2b2d72da0::centroidal_bias;
 
 /// centroidal_bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

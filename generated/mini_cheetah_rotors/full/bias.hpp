@@ -8,11 +8,11 @@
 // bias for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   mini_cheetah_rotors/common/bias_302a0ad81c52.hpp
+//   mini_cheetah_rotors/common/bias_487047daece1.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/bias_302a0ad81c52.hpp"
+#include "mini_cheetah_rotors/common/bias_487047daece1.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations   mul  add  div  sqrt  trig  neg  total
 ///             1222  993    0     0    24    0   2239
-using ::rbdc_gen::mini_cheetah_rotors::common::bias_302a0ad81c52::bias;
+using ::rbdc_gen::mini_cheetah_rotors::common::bias_487047daece1::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

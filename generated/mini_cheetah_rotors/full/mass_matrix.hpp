@@ -8,11 +8,11 @@
 // mass_matrix for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   mini_cheetah_rotors/common/mass_matrix_1f973d15c4af.hpp
+//   mini_cheetah_rotors/common/mass_matrix_541039e18b0e.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/mass_matrix_1f973d15c4af.hpp"
+#include "mini_cheetah_rotors/common/mass_matrix_541039e18b0e.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             344  360    0     0    24   21    749
-using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_1f973d15c4af::mass_matrix;
+using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_541039e18b0e::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // mass_matrix_factor for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   mini_cheetah_rotors/common/mass_matrix_factor_e17bd47c7311.hpp
+//   mini_cheetah_rotors/common/mass_matrix_factor_f580cd660515.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/mass_matrix_factor_e17bd47c7311.hpp"
+#include "mini_cheetah_rotors/common/mass_matrix_factor_f580cd660515.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             818  725   14     0    24   14   1595
 /// schedule: scalar tree: 1595 arithmetic instructions, looped factor 1877 (cost 4697)
-using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_factor_e17bd47c7311::mass_matrix_factor;
+using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_factor_f580cd660515::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

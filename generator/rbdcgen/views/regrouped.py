@@ -18,7 +18,7 @@ parent's own; the root keeps what reaches it (a fixed base's share is then never
 
 from __future__ import annotations
 
-from ..graph.spatial import inertia_at_origin, snap_axis
+from ..graph.spatial import inertia_at_origin, snap_axis, snap_rotation
 
 
 def body_parameters(tree):
@@ -69,7 +69,7 @@ def _in_parent(joint, piece):
     """The piece in λ(i) coordinates: Xᵀ ΔI X for X_T = (E, r) (spatial.Inertia.congruence), which is
     its value at every q_i since X_J leaves it unchanged."""
     m, h, ibar = piece
-    E, r = joint.rotation, joint.translation
+    E, r = snap_rotation(joint.rotation), joint.translation
     y = [sum(E[a][k] * h[a] for a in range(3)) for k in range(3)]                    # Eᵀ h
     rotated = [[sum(E[a][k] * ibar[a][b] * E[b][c] for a in range(3) for b in range(3))
                 for c in range(3)] for k in range(3)]                               # Eᵀ Ī E
