@@ -7,11 +7,11 @@
 // bias_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   humanoid32/common/bias_derivatives_ff90afe50f27.hpp
+//   humanoid32/common/bias_derivatives_12917068d393.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/bias_derivatives_ff90afe50f27.hpp"
+#include "humanoid32/common/bias_derivatives_12917068d393.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -23,12 +23,11 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param dbias_dv out 38x38: ∂c/∂v
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
-///             23536  18212    0     0    64   23  41835
-/// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
-///   fewer than 4 repeated to fill the lanes); the rest scalar): 13171 arithmetic
-///   instructions (cost 26850), scalar tree 22710 (cost 49744), looped RNEA derivatives
-///   21350 (cost 29843)
-using ::rbdc_gen::humanoid32::common::bias_derivatives_ff90afe50f27::bias_derivatives;
+///             32235  28332    0     0    64   30  60661
+/// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
+///   21350 arithmetic instructions (cost 29843), scalar tree 22710 (cost 49744), limb lanes
+///   13171 (cost 36792)
+using ::rbdc_gen::humanoid32::common::bias_derivatives_12917068d393::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_d1c51d8fa124.hpp
+//   humanoid32/common/forward_dynamics_derivatives_950c118a9ed0.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_d1c51d8fa124.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_950c118a9ed0.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -32,11 +32,11 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// schedule: limb lanes and looped RNEA derivatives (M's factor and the terms traced with the
 ///   isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of fewer than 4
 ///   repeated to fill the lanes), ∂τ a loop over the bodies, the solve's right-hand sides
-///   in SIMD across columns): 63795 arithmetic instructions (cost 73472), scalar tree
+///   in SIMD across columns): 63795 arithmetic instructions (cost 77967), scalar tree
 ///   126140 (cost 297976), looped solve 66750 (cost 109274), limb lanes and a looped solve
-///   53167 (cost 76674), looped RNEA derivatives 69020 (cost 86012), looped CRBA 77074
+///   53167 (cost 92547), looped RNEA derivatives 69020 (cost 86012), looped CRBA 77074
 ///   (cost 102403)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_d1c51d8fa124::forward_dynamics_derivatives;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_950c118a9ed0::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

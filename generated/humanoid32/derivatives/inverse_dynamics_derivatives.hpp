@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   humanoid32/common/inverse_dynamics_derivatives_62980e3bf687.hpp
+//   humanoid32/common/inverse_dynamics_derivatives_2e752f495e86.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/inverse_dynamics_derivatives_62980e3bf687.hpp"
+#include "humanoid32/common/inverse_dynamics_derivatives_2e752f495e86.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -24,12 +24,11 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param dtau_dv out 38x38: ∂τ/∂v
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
-///             23578  18326    0     0    64   23  41991
-/// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
-///   fewer than 4 repeated to fill the lanes); the rest scalar): 13231 arithmetic
-///   instructions (cost 26994), scalar tree 22800 (cost 49960), looped RNEA derivatives
-///   21542 (cost 30112)
-using ::rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_62980e3bf687::inverse_dynamics_derivatives;
+///             32427  28524    0     0    64   30  61045
+/// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
+///   21542 arithmetic instructions (cost 30112), scalar tree 22800 (cost 49960), limb lanes
+///   13231 (cost 36985)
+using ::rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_2e752f495e86::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

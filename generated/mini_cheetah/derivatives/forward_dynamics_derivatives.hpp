@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_5d3f53a31cf8.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_2c15d675e5b4.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_5d3f53a31cf8.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_2c15d675e5b4.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -31,10 +31,10 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///             18986  17315   14     0    24  149  36488
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 9635 arithmetic
-///   instructions, scalar tree 24160 (cost 53224), limb lanes 7509 (cost 13262), looped
+///   instructions, scalar tree 24160 (cost 53224), limb lanes 7509 (cost 18270), looped
 ///   solve 15391 (cost 24316), looped RNEA derivatives 18024 (cost 20391), limb lanes and
 ///   looped RNEA derivatives 15058 (cost 15846), looped CRBA 21143 (cost 26906)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_5d3f53a31cf8::forward_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_2c15d675e5b4::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

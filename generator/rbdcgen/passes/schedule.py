@@ -53,15 +53,18 @@ def straight_line_instructions(fn):
 
 
 def _straight_line_counts(fn):
-    """(arithmetic instructions, lane rotations among them) of fn's traced, straight-line part."""
-    count = rotations = 0
+    """(arithmetic instructions, lane rotations among them, lane instructions among them) of fn's
+    traced, straight-line part."""
+    count = rotations = lanes = 0
     for node in ex.reachable(fn.output_exprs()):
         if node.op == "lane_sum":
             count += _LANE_SUM_INSTRUCTIONS
+            lanes += _LANE_SUM_INSTRUCTIONS
         elif node.op not in ("const", "sym", "lane_get"):
             count += 1
             rotations += node.op == "lane_rotate"
-    return count, rotations
+            lanes += bool(node.lane)
+    return count, rotations, lanes
 
 
 # Straight-line code runs from the op cache while it is short; past FRONT_END_LIMIT arithmetic
@@ -78,6 +81,12 @@ FRONT_END_LIMIT = 3400
 # limit).
 LANE_CODE_LIMIT = 32000
 FRONT_END_PENALTY = 1.4
+# A lane instruction past the limit costs this much more again: its EVEX encoding is longer, and long
+# lane code passes its values between blocks through memory. Measured (Zen 5, clang 14) on
+# humanoid32's ∂τ once the regrouped inertias (views/regrouped.py) had made its lane form 13 231
+# instructions, 73 % of them lane ones: 2.6-2.9 µs against 2.2-2.3 µs for the looped RNEA
+# derivatives (cost 30 112), where the scalar penalty alone had costed it 26 994 and chosen it.
+LANE_FRONT_END_EXTRA = 1.4
 
 
 # A lane rotation stands for the chain it lengthens: the pairs' velocity products (rnea.pair_step)
@@ -89,12 +98,13 @@ LANE_ROTATE_EXTRA = 3
 
 def cost(fn, counts=None):
     """What `auto` minimises, in units of one short straight-line instruction: the straight-line part
-    (`counts`: its instructions and lane rotations, _straight_line_counts, counted here if not given)
-    with the front-end penalty and LANE_ROTATE_EXTRA a rotation, the loops weighted by what each of
+    (`counts`: _straight_line_counts, counted here if not given) with the front-end penalty (more for
+    the share of lane instructions) and LANE_ROTATE_EXTRA a rotation, the loops weighted by what each of
     their instructions was measured to cost (their `cost()`)."""
-    n, rotations = _straight_line_counts(fn) if counts is None else counts
+    n, rotations, lanes = _straight_line_counts(fn) if counts is None else counts
     loops = fn.solve.cost() if fn.solve is not None else 0
-    return round(n + FRONT_END_PENALTY * max(0, n - FRONT_END_LIMIT) + LANE_ROTATE_EXTRA * rotations + loops)
+    penalty = FRONT_END_PENALTY + LANE_FRONT_END_EXTRA * lanes / max(1, n)
+    return round(n + penalty * max(0, n - FRONT_END_LIMIT) + LANE_ROTATE_EXTRA * rotations + loops)
 
 
 def _instructions_and_cost(fn):

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_9138495938bf {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_a5d972443775 {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
 /// algorithm where that is cheaper: the schedule line says which).
@@ -26,8 +26,8 @@ namespace rbdc_gen::humanoid32::common::forward_dynamics_9138495938bf {
 ///             8466  6015   55     0    64    5  14605
 /// schedule: articulated-body algorithm in limb lanes (the isomorphic limbs in SIMD lanes: 2 of
 ///   pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes); the rest
-///   scalar): 5033 arithmetic instructions (cost 7319), scalar tree 12062 (cost 24189),
-///   limb lanes 7583 (cost 13439), articulated-body algorithm 8213 (cost 14951)
+///   scalar): 5033 arithmetic instructions (cost 8776), scalar tree 12062 (cost 24189),
+///   limb lanes 7583 (cost 16910), articulated-body algorithm 8213 (cost 14951)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -1652,4 +1652,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[37] = t1439[1];
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_9138495938bf
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_a5d972443775

@@ -12,7 +12,7 @@
 #include "rbdc_gen/lanes.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_5d3f53a31cf8 {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_2c15d675e5b4 {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -1556,7 +1556,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 ///             18986  17315   14     0    24  149  36488
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 9635 arithmetic
-///   instructions, scalar tree 24160 (cost 53224), limb lanes 7509 (cost 13262), looped
+///   instructions, scalar tree 24160 (cost 53224), limb lanes 7509 (cost 18270), looped
 ///   solve 15391 (cost 24316), looped RNEA derivatives 18024 (cost 20391), limb lanes and
 ///   looped RNEA derivatives 15058 (cost 15846), looped CRBA 21143 (cost 26906)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 60 right-hand sides and
@@ -1574,4 +1574,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 18, 64>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_5d3f53a31cf8
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_2c15d675e5b4

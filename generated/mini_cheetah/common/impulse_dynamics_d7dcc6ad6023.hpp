@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_f50cd5c1dc89 {
+namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_d7dcc6ad6023 {
 
 /// Impulse dynamics of a touchdown of the scene's contact feet: v⁺ and Λ of M (v⁺ − v) = JᵀΛ, J v⁺
 /// = −e J v (docs/runtime.md).
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_f50cd5c1dc89 {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             4036  3514   26     0    24   76   7676
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4163 arithmetic
-///   instructions (cost 5339), scalar tree 7283 (cost 12719)
+///   instructions (cost 5685), scalar tree 7283 (cost 12719)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void impulse_dynamics(const Scalar* q, const Scalar* v, const Scalar* restitution, Scalar* v_plus, Scalar* impulse) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -859,4 +859,4 @@ RBDC_HOST_DEVICE inline void impulse_dynamics(const Scalar* q, const Scalar* v, 
   store_interleaved_lanes<3>(v_plus + 6, {t763, t764, t765});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_f50cd5c1dc89
+}  // namespace rbdc_gen::mini_cheetah::common::impulse_dynamics_d7dcc6ad6023

@@ -12,7 +12,7 @@
 #include "rbdc_gen/lanes.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_dd21e800cbf8 {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_2a3007b6b552 {
 
 /// The traced part of contact_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -2984,7 +2984,7 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives_terms(const Scalar* q,
 ///             49745  48132   26     0    24  1637  99564
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 27468 arithmetic
-///   instructions (cost 33702), scalar tree 99385 (cost 233764), looped solve 39565 (cost
+///   instructions (cost 37219), scalar tree 99385 (cost 233764), looped solve 39565 (cost
 ///   62627)
 /// emission: looped solve: contact_dynamics_derivatives_terms writes the 48 right-hand sides, Z =
 ///   L⁻ᵀJᵀ and the factors; loops solve them all at once (M⁻¹'s halves with J M⁻¹ and M⁻¹Jᵀ
@@ -3020,4 +3020,4 @@ RBDC_HOST_DEVICE inline void contact_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 12, 48>(solve_R2, solve_R2_out);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_dd21e800cbf8
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_2a3007b6b552

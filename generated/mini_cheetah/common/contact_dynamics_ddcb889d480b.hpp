@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::contact_dynamics_a516c02d157f {
+namespace rbdc_gen::mini_cheetah::common::contact_dynamics_ddcb889d480b {
 
 /// Rigid-contact dynamics of the scene's contact feet: a and λ of M a − Jᵀλ = Sᵀτ − c − g, J a =
 /// −J̇v (Schur complement, damped proximal Delassus solve; docs/runtime.md).
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::common::contact_dynamics_a516c02d157f {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             5212  4492   26     0    24   84   9838
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4843 arithmetic
-///   instructions (cost 6971), scalar tree 9415 (cost 17836)
+///   instructions (cost 7757), scalar tree 9415 (cost 17836)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void contact_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, Scalar* a, Scalar* lambda) noexcept {
   // the isomorphic limbs, one per lane; lane_c: constants that differ between them
@@ -1019,4 +1019,4 @@ RBDC_HOST_DEVICE inline void contact_dynamics(const Scalar* q, const Scalar* v, 
   store_interleaved_lanes<3>(a + 6, {t908, t909, t910});
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_a516c02d157f
+}  // namespace rbdc_gen::mini_cheetah::common::contact_dynamics_ddcb889d480b

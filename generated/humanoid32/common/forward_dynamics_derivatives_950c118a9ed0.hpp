@@ -14,7 +14,7 @@
 #include "rbdc_gen/body_tree.hpp"
 #include "rbdc_gen/rnea_derivatives.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_d1c51d8fa124 {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_950c118a9ed0 {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -3788,9 +3788,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 /// schedule: limb lanes and looped RNEA derivatives (M's factor and the terms traced with the
 ///   isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of fewer than 4
 ///   repeated to fill the lanes), ∂τ a loop over the bodies, the solve's right-hand sides
-///   in SIMD across columns): 63795 arithmetic instructions (cost 73472), scalar tree
+///   in SIMD across columns): 63795 arithmetic instructions (cost 77967), scalar tree
 ///   126140 (cost 297976), looped solve 66750 (cost 109274), limb lanes and a looped solve
-///   53167 (cost 76674), looped RNEA derivatives 69020 (cost 86012), looped CRBA 77074
+///   53167 (cost 92547), looped RNEA derivatives 69020 (cost 86012), looped CRBA 77074
 ///   (cost 102403)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 123 right-hand sides and
 ///   the factor, rnea_derivatives_loop subtracts ∂τ/∂(q, v) less the feet's ∂(Jᵀf)/∂q over
@@ -3830,4 +3830,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 38, 128>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_d1c51d8fa124
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_950c118a9ed0
