@@ -16,7 +16,7 @@ class TracedModel:
     `inputs` maps an input array name (q, v, a, tau, f, ground_mass, restitution) to its length; an input the
     scene declares zero is all constant zeros, so everything depending on it folds away."""
 
-    def __init__(self, robot, scene, zero_inputs=(), known_inputs=None, body_parameters=None):
+    def __init__(self, robot, scene, zero_inputs=(), known_inputs=None):
         self.robot = coupled.tree_view(robot)  # the algorithms see the tree (views/coupled.py)
         self.coupled = robot                     # the inputs have its independent coordinates
         self.scene = scene
@@ -26,7 +26,7 @@ class TracedModel:
         self.gravity = sp.vec(scene.gravity_for(robot))
         self.zero_inputs = tuple(zero_inputs)
         self.known_inputs = known_inputs or {}   # {name: floats}: traced as constants, so all folds
-        self._cache = {} if body_parameters is None else {"parameters": body_parameters}
+        self._cache = {}
 
     # --- inputs -------------------------------------------------------------------------------
     def input(self, name, size):
@@ -213,7 +213,7 @@ class TracedModel:
         return rows
 
     def body_parameters(self):
-        """(m, h, Ī) per body of the tree: regrouped (views/regrouped.py) unless given."""
+        """(m, h, Ī) per body of the tree, regrouped (views/regrouped.py)."""
         if "parameters" not in self._cache:
             self._cache["parameters"] = regrouped.body_parameters(self.robot)
         return self._cache["parameters"]
