@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_5d6e3c42f770.hpp
+//   arm7/common/forward_dynamics_derivatives_2eabc79fa80b.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_5d6e3c42f770.hpp"
+#include "arm7/common/forward_dynamics_derivatives_2eabc79fa80b.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -32,7 +32,7 @@ namespace rbdc_gen::arm7::derivatives {
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 4051 arithmetic
 ///   instructions (cost 4198), scalar tree 5289 (cost 7934), looped RNEA derivatives 6080
 ///   (cost 6488), looped CRBA 7884 (cost 9434)
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_5d6e3c42f770::forward_dynamics_derivatives;
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_2eabc79fa80b::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   arm7/common/inverse_dynamics_derivatives_ce8ba11df8c9.hpp
+//   arm7/common/inverse_dynamics_derivatives_5975a29e311d.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/inverse_dynamics_derivatives_ce8ba11df8c9.hpp"
+#include "arm7/common/inverse_dynamics_derivatives_5975a29e311d.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::arm7::derivatives {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1341  1159    0     0    12    8   2520
 /// schedule: scalar tree: 2520 arithmetic instructions, looped RNEA derivatives 4063 (cost 5679)
-using ::rbdc_gen::arm7::common::inverse_dynamics_derivatives_ce8ba11df8c9::inverse_dynamics_derivatives;
+using ::rbdc_gen::arm7::common::inverse_dynamics_derivatives_5975a29e311d::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

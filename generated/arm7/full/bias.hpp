@@ -7,11 +7,11 @@
 // bias for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   arm7/common/bias_04f6038d0f29.hpp
+//   arm7/common/bias_0762b0bc59e7.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/bias_04f6038d0f29.hpp"
+#include "arm7/common/bias_0762b0bc59e7.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::arm7::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             331  239    0     0    12    1    583
-using ::rbdc_gen::arm7::common::bias_04f6038d0f29::bias;
+using ::rbdc_gen::arm7::common::bias_0762b0bc59e7::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

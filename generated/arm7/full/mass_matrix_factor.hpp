@@ -7,11 +7,11 @@
 // mass_matrix_factor for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   arm7/common/mass_matrix_factor_db7aefeefaad.hpp
+//   arm7/common/mass_matrix_factor_216ad3d25fba.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/mass_matrix_factor_db7aefeefaad.hpp"
+#include "arm7/common/mass_matrix_factor_216ad3d25fba.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::arm7::full {
 ///             245  187    5     0    10    5    452
 /// schedule: scalar tree: 452 arithmetic instructions, looped factor 549 (cost 1106), looped CRBA
 ///   1707 (cost 2848)
-using ::rbdc_gen::arm7::common::mass_matrix_factor_db7aefeefaad::mass_matrix_factor;
+using ::rbdc_gen::arm7::common::mass_matrix_factor_216ad3d25fba::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // centroidal_momentum_matrix for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_momentum_matrix is the same code:
-//   arm7/common/centroidal_momentum_matrix_988f4458f00d.hpp
+//   arm7/common/centroidal_momentum_matrix_a0f4ef3022c8.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/centroidal_momentum_matrix_988f4458f00d.hpp"
+#include "arm7/common/centroidal_momentum_matrix_a0f4ef3022c8.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::whole_body_arm {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             313  249    0     0    12    4    578
-using ::rbdc_gen::arm7::common::centroidal_momentum_matrix_988f4458f00d::centroidal_momentum_matrix;
+using ::rbdc_gen::arm7::common::centroidal_momentum_matrix_a0f4ef3022c8::centroidal_momentum_matrix;
 
 /// centroidal_momentum_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // bias_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   humanoid32/common/bias_derivatives_12917068d393.hpp
+//   humanoid32/common/bias_derivatives_6c4437f32e9b.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/bias_derivatives_12917068d393.hpp"
+#include "humanoid32/common/bias_derivatives_6c4437f32e9b.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
 ///   21350 arithmetic instructions (cost 29843), scalar tree 22710 (cost 49744), limb lanes
 ///   13171 (cost 36792)
-using ::rbdc_gen::humanoid32::common::bias_derivatives_12917068d393::bias_derivatives;
+using ::rbdc_gen::humanoid32::common::bias_derivatives_6c4437f32e9b::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

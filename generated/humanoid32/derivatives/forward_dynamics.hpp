@@ -7,11 +7,11 @@
 // forward_dynamics for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   humanoid32/common/forward_dynamics_a5d972443775.hpp
+//   humanoid32/common/forward_dynamics_29bbba073812.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_a5d972443775.hpp"
+#include "humanoid32/common/forward_dynamics_29bbba073812.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -30,7 +30,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///   pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes); the rest
 ///   scalar): 5033 arithmetic instructions (cost 8776), scalar tree 12062 (cost 24189),
 ///   limb lanes 7583 (cost 16910), articulated-body algorithm 8213 (cost 14951)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_a5d972443775::forward_dynamics;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_29bbba073812::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_950c118a9ed0.hpp
+//   humanoid32/common/forward_dynamics_derivatives_99b418b20b6a.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_950c118a9ed0.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_99b418b20b6a.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -36,7 +36,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///   126140 (cost 297976), looped solve 66750 (cost 109274), limb lanes and a looped solve
 ///   53167 (cost 92547), looped RNEA derivatives 69020 (cost 86012), looped CRBA 77074
 ///   (cost 102403)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_950c118a9ed0::forward_dynamics_derivatives;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_99b418b20b6a::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

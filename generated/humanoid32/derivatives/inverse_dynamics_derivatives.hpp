@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   humanoid32/common/inverse_dynamics_derivatives_2e752f495e86.hpp
+//   humanoid32/common/inverse_dynamics_derivatives_154f9d6f4a21.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/inverse_dynamics_derivatives_2e752f495e86.hpp"
+#include "humanoid32/common/inverse_dynamics_derivatives_154f9d6f4a21.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
 ///   21542 arithmetic instructions (cost 30112), scalar tree 22800 (cost 49960), limb lanes
 ///   13231 (cost 36985)
-using ::rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_2e752f495e86::inverse_dynamics_derivatives;
+using ::rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_154f9d6f4a21::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

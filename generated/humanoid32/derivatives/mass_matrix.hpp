@@ -7,11 +7,11 @@
 // mass_matrix for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   humanoid32/common/mass_matrix_278381149713.hpp
+//   humanoid32/common/mass_matrix_a1c7843ea1e7.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/mass_matrix_278381149713.hpp"
+#include "humanoid32/common/mass_matrix_a1c7843ea1e7.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///   scalar; a pair body's column of M in lanes 0-1, a child's in 2-3, so that one walk to
 ///   the root serves both): 1689 arithmetic instructions, scalar tree 3483 (cost 3599),
 ///   limb lanes 1985, looped CRBA 7746 (cost 10804)
-using ::rbdc_gen::humanoid32::common::mass_matrix_278381149713::mass_matrix;
+using ::rbdc_gen::humanoid32::common::mass_matrix_a1c7843ea1e7::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

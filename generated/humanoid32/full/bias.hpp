@@ -7,11 +7,11 @@
 // bias for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   humanoid32/common/bias_d73361c47210.hpp
+//   humanoid32/common/bias_5446a34618b9.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/bias_d73361c47210.hpp"
+#include "humanoid32/common/bias_5446a34618b9.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::humanoid32::full {
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 1883 arithmetic
 ///   instructions, scalar tree 3074, limb lanes with the pairs' spare lanes used 1778 (cost
 ///   2123)
-using ::rbdc_gen::humanoid32::common::bias_d73361c47210::bias;
+using ::rbdc_gen::humanoid32::common::bias_5446a34618b9::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

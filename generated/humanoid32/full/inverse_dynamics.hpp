@@ -7,11 +7,11 @@
 // inverse_dynamics for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   humanoid32/common/inverse_dynamics_2ed5488b0d9f.hpp
+//   humanoid32/common/inverse_dynamics_22175d7b4ab1.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/inverse_dynamics_2ed5488b0d9f.hpp"
+#include "humanoid32/common/inverse_dynamics_22175d7b4ab1.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::humanoid32::full {
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 1955 arithmetic
 ///   instructions, scalar tree 3176, limb lanes with the pairs' spare lanes used 1847 (cost
 ///   2192)
-using ::rbdc_gen::humanoid32::common::inverse_dynamics_2ed5488b0d9f::inverse_dynamics;
+using ::rbdc_gen::humanoid32::common::inverse_dynamics_22175d7b4ab1::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_closed_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   humanoid32/common/osc_closed_chain_049102089d48.hpp
+//   humanoid32/common/osc_closed_chain_e09efd1f5b2c.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_closed_chain_049102089d48.hpp"
+#include "humanoid32/common/osc_closed_chain_e09efd1f5b2c.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::humanoid32::full {
 ///             7506  5426   28     0    64    9  13033
 /// schedule: scalar tree: 13033 arithmetic instructions (cost 26519), looped operational-space
 ///   columns 18887 (cost 33063)
-using ::rbdc_gen::humanoid32::common::osc_closed_chain_049102089d48::osc_closed_chain;
+using ::rbdc_gen::humanoid32::common::osc_closed_chain_e09efd1f5b2c::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_open_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   humanoid32/common/osc_open_chain_9087c0adeae8.hpp
+//   humanoid32/common/osc_open_chain_16c72c15951f.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_open_chain_9087c0adeae8.hpp"
+#include "humanoid32/common/osc_open_chain_16c72c15951f.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::humanoid32::full {
 ///             7706  5536   27     0    64   13  13346
 /// schedule: scalar tree: 13346 arithmetic instructions (cost 27270), looped operational-space
 ///   columns 18843 (cost 32957)
-using ::rbdc_gen::humanoid32::common::osc_open_chain_9087c0adeae8::osc_open_chain;
+using ::rbdc_gen::humanoid32::common::osc_open_chain_16c72c15951f::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -23,7 +23,10 @@ from __future__ import annotations
 
 import functools
 import itertools
+import sys
 
+from ..graph import expr as ex
+from ..graph import spatial as sp
 from ..graph.spatial import inertia_at_origin, snap_axis, snap_rotation
 
 
@@ -48,17 +51,20 @@ def _regrouped(tree, choose):
     (cost, body's, parent's), every piece handed up first, then fewer and fewer."""
     params = [(body.mass, tuple(body.mass * c for c in body.com), _rows(inertia_at_origin(body)))
               for body in tree.bodies]
-    for i in range(tree.nb - 1, 0, -1):
-        joint, j = tree.joints[i], tree.parent[i]
-        free_parent = j == 0 and not tree.floating_base  # a fixed root's inertia is never read
-        options = []
-        for pieces in _subsets(_movable_pieces(joint.type, snap_axis(joint.axis), params[i])):
-            moved = _sum([(0.0, (0.0,) * 3, _rows([[0.0] * 3] * 3))] + pieces)
-            child = _sum([params[i], _scaled(moved, -1.0)])
-            parent = _sum([params[j], _in_parent(joint, moved)])
-            options.append((_cost(child) + (0 if free_parent else _cost(_left_after_own(tree, j, parent))),
-                            child, parent))
-        _, params[i], params[j] = choose(options)
+    with ex.Graph():  # the pieces' images in the parents, by spatial.Inertia.congruence on constants
+        for i in range(tree.nb - 1, 0, -1):
+            joint, j = tree.joints[i], tree.parent[i]
+            free_parent = j == 0 and not tree.floating_base  # a fixed root's inertia is never read
+            placement = sp.Transform(sp.mat(snap_rotation(joint.rotation)), sp.vec(joint.translation))
+            pieces = [(piece, _in_parent(placement, piece))
+                      for piece in _movable_pieces(joint.type, snap_axis(joint.axis), params[i])]
+            options = []
+            for chosen in _subsets(pieces):  # the congruence is linear: a sum's image is the images' sum
+                child = _sum([params[i]] + [_scaled(piece, -1.0) for piece, _ in chosen])
+                parent = _sum([params[j]] + [image for _, image in chosen])
+                left = _left_after_own(tree, j, parent)
+                options.append((_cost(child) + (0 if free_parent else _cost(left)), child, parent))
+            _, params[i], params[j] = choose(options)
     return tuple(params)
 
 
@@ -110,9 +116,21 @@ def _cost(parameters):
             + 2 * sum(ibar[r][c] != 0.0 for r in range(3) for c in range(r + 1, 3)))
 
 
+# A sum within this many ulp of its largest term is round-off: the pieces of a left and a right limb
+# cancel in the trunk up to 1e-17, which would cost a multiplication each (humanoid32's bias 12 more
+# operations, Solo12's ID 16).
+ROUND_OFF_ULPS = 8
+
+
 def _sum(terms):
-    return (sum(t[0] for t in terms), tuple(sum(t[1][k] for t in terms) for k in range(3)),
-            _rows([[sum(t[2][r][c] for t in terms) for c in range(3)] for r in range(3)]))
+    """The parameters' sum, entry by entry, a round-off residue (ROUND_OFF_ULPS) made the zero it
+    stands for."""
+    def entry(values):
+        total = sum(values)
+        return 0.0 if abs(total) <= ROUND_OFF_ULPS * sys.float_info.epsilon * max(map(abs, values)) else total
+
+    return (entry([t[0] for t in terms]), tuple(entry([t[1][k] for t in terms]) for k in range(3)),
+            _rows([[entry([t[2][r][c] for t in terms]) for c in range(3)] for r in range(3)]))
 
 
 def _scaled(parameters, factor):
@@ -130,20 +148,9 @@ def _coordinate_axis(axis):
     return nonzero[0] if len(nonzero) == 1 else None
 
 
-def _in_parent(joint, piece):
-    """The piece in λ(i) coordinates: Xᵀ ΔI X for X_T = (E, r) (spatial.Inertia.congruence), which is
-    its value at every q_i since X_J leaves it unchanged."""
-    m, h, ibar = piece
-    E, r = snap_rotation(joint.rotation), joint.translation
-    y = [sum(E[a][k] * h[a] for a in range(3)) for k in range(3)]                    # Eᵀ h
-    rotated = [[sum(E[a][k] * ibar[a][b] * E[b][c] for a in range(3) for b in range(3))
-                for c in range(3)] for k in range(3)]                               # Eᵀ Ī E
-    h_new = [y[k] + m * r[k] for k in range(3)]
-    rs, ys, hs = _skew(r), _skew(y), _skew(h_new)
-    shift = [[sum(rs[a][k] * ys[k][b] + hs[a][k] * rs[k][b] for k in range(3)) for b in range(3)]
-             for a in range(3)]
-    return m, h_new, [[rotated[a][b] - shift[a][b] for b in range(3)] for a in range(3)]
-
-
-def _skew(v):
-    return [[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]]
+def _in_parent(placement, piece):
+    """The piece in λ(i) coordinates, Xᵀ ΔI X for the joint's placement X_T: its value at every q_i,
+    since X_J leaves it unchanged."""
+    image = sp.Inertia.of(*piece).congruence(placement)
+    return (image.m.value, tuple(x.value for x in image.h),
+            _rows([[x.value for x in row] for row in image.Ibar]))

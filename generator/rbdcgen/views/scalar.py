@@ -213,10 +213,8 @@ class TracedModel:
         return rows
 
     def body_parameters(self):
-        """(m, h, Ī) per body of the tree, regrouped (views/regrouped.py)."""
-        if "parameters" not in self._cache:
-            self._cache["parameters"] = regrouped.body_parameters(self.robot)
-        return self._cache["parameters"]
+        """(m, h, Ī) per body of the tree, regrouped (views/regrouped.py, which keeps them per tree)."""
+        return regrouped.body_parameters(self.robot)
 
     def inertia(self, i):
         key = ("inertia", i)

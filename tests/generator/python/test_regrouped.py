@@ -14,7 +14,7 @@ from rbdcgen.frontend.scene import Scene
 from rbdcgen.graph.flops import count_ops
 from rbdcgen.graph.spatial import inertia_at_origin, snap_axis
 from rbdcgen.passes.trace import trace_function
-from rbdcgen.views import coupled, regrouped
+from rbdcgen.views import regrouped
 from test_random_properties import load
 
 ARM7 = os.path.join(mini_cheetah.ROOT, "robots", "arm7.urdf")

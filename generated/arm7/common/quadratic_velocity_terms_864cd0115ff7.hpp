@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::quadratic_velocity_terms_867e4a7d819a {
+namespace rbdc_gen::arm7::common::quadratic_velocity_terms_864cd0115ff7 {
 
 /// Quadratic velocity terms c (paper 000 Alg. 2).
 ///
@@ -43,8 +43,8 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t2 = v[1] * t1;
   const Scalar t3 = v[1] * t0;
   const Scalar t4 = (Scalar(0.00030010000000000003) * t1) - (Scalar(3.3299999999999996e-05) * v[1]);
-  const Scalar t5 = ((Scalar(3.3299999999999996e-05) * t0) + (Scalar(1.4426703330000004) * v[1])) - (Scalar(0.01279) * t1);
-  const Scalar t6 = ((Scalar(0.00030010000000000003) * t0) + (Scalar(0.01279) * v[1])) + (Scalar(1.4336696670000002) * t1);
+  const Scalar t5 = ((Scalar(3.3299999999999996e-05) * t0) + (Scalar(1.4426703330000001) * v[1])) - (Scalar(0.01279) * t1);
+  const Scalar t6 = ((Scalar(0.00030010000000000003) * t0) + (Scalar(0.01279) * v[1])) + (Scalar(1.433669667) * t1);
   // outward pass: body 3 link3
   const Scalar t7 = Scalar(0.22) * t2;
   const Scalar t8 = Scalar(0.22) * v[1];
@@ -57,13 +57,13 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t15 = (v[2] * t11) - (t2 * cos_joint3);
   const Scalar t16 = (t2 * sin_joint3) - (v[2] * t10);
   const Scalar t17 = (sin_joint3 * t7) + (v[2] * t13);
-  const Scalar t18 = Scalar(0.4474035169999999) * t10;
+  const Scalar t18 = Scalar(0.44740351700000003) * t10;
   const Scalar t19 = Scalar(0.008428) * t14;
-  const Scalar t20 = ((Scalar(0.008428) * t11) + (Scalar(0.453603517) * t14)) - (Scalar(0.0006000000000000033) * t12);
+  const Scalar t20 = ((Scalar(0.008428) * t11) + (Scalar(0.45360351700000007) * t14)) - (Scalar(0.0006000000000000033) * t12);
   const Scalar t21 = Scalar(0.0006000000000000033) * t14;
   const Scalar t22 = Scalar(0.0006000000000000033) * t10;
-  const Scalar t23 = (Scalar(0.4474035169999999) * t15) + (((t11 * t20) - (t14 * t19)) + (t13 * t22));
-  const Scalar t24 = (((Scalar(0.008428) * t16) - (Scalar(0.453603517) * t3)) - (Scalar(0.0006000000000000033) * t17)) + (((t10 * t19) - (t11 * t18)) + (t13 * t21));
+  const Scalar t23 = (Scalar(0.44740351700000003) * t15) + (((t11 * t20) - (t14 * t19)) + (t13 * t22));
+  const Scalar t24 = (((Scalar(0.008428) * t16) - (Scalar(0.45360351700000007) * t3)) - (Scalar(0.0006000000000000033) * t17)) + (((t10 * t19) - (t11 * t18)) + (t13 * t21));
   // outward pass: body 4 link4
   const Scalar t25 = Scalar(0.2) * t16;
   const Scalar t26 = t17 + t25;
@@ -79,13 +79,13 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t36 = ((t15 * sin_joint4) + (t3 * cos_joint4)) + (v[3] * t30);
   const Scalar t37 = (cos_joint4 * t26) - (v[3] * t33);
   const Scalar t38 = (sin_joint4 * t26) + (v[3] * t32);
-  const Scalar t39 = (Scalar(0.004275000000000001) * t34) - (Scalar(0.435936717) * t31);
-  const Scalar t40 = Scalar(1.3641999999999999) * t29;
-  const Scalar t41 = ((Scalar(0.44103671699999997) * t34) + (Scalar(0.004275000000000001) * t31)) + (Scalar(1.3641999999999999) * t32);
-  const Scalar t42 = Scalar(1.3641999999999999) * t34;
-  const Scalar t43 = Scalar(1.3641999999999999) * t30;
-  const Scalar t44 = (((t34 * t39) - (t31 * t41)) - (t33 * t43)) - (Scalar(1.3641999999999999) * t27);
-  const Scalar t45 = (((Scalar(0.44103671699999997) * t16) - (Scalar(0.004275000000000001) * t36)) + (Scalar(1.3641999999999999) * t37)) - (((t31 * t40) + (t30 * t39)) + (t33 * t42));
+  const Scalar t39 = (Scalar(0.004275000000000001) * t34) - (Scalar(0.43593671700000003) * t31);
+  const Scalar t40 = Scalar(1.3642) * t29;
+  const Scalar t41 = ((Scalar(0.441036717) * t34) + (Scalar(0.004275000000000001) * t31)) + (Scalar(1.3642) * t32);
+  const Scalar t42 = Scalar(1.3642) * t34;
+  const Scalar t43 = Scalar(1.3642) * t30;
+  const Scalar t44 = (((t34 * t39) - (t31 * t41)) - (t33 * t43)) - (Scalar(1.3642) * t27);
+  const Scalar t45 = (((Scalar(0.441036717) * t16) - (Scalar(0.004275000000000001) * t36)) + (Scalar(1.3642) * t37)) - (((t31 * t40) + (t30 * t39)) + (t33 * t42));
   // outward pass: body 5 link5
   const Scalar t46 = t25 + t37;
   const Scalar t47 = t27 - (Scalar(0.2) * t35);
@@ -100,9 +100,9 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t56 = ((t16 * cos_joint5) - (t35 * sin_joint5)) - (v[4] * t50);
   const Scalar t57 = ((cos_joint5 * t46) + (sin_joint5 * t47)) + (v[4] * t53);
   const Scalar t58 = ((cos_joint5 * t47) - (sin_joint5 * t46)) - (v[4] * t52);
-  const Scalar t59 = (((Scalar(0.010680452843509214) * t55) - (Scalar(3.57e-06) * t56)) + (Scalar(1.2919999999999997e-05) * t36)) - (Scalar(0.036480000000000005) * t38);
+  const Scalar t59 = (((Scalar(0.010680452843509228) * t55) - (Scalar(3.57e-06) * t56)) + (Scalar(1.2919999999999997e-05) * t36)) - (Scalar(0.036480000000000005) * t38);
   const Scalar t60 = ((Scalar(0.00017) * t58) - (Scalar(0.036480000000000005) * t57)) - (((Scalar(1.2919999999999997e-05) * t55) + (Scalar(0.0011613999999999995) * t56)) + (Scalar(0.012880486843509217) * t36));
-  const Scalar t61 = (((Scalar(0.010680452843509214) * t50) - (Scalar(3.57e-06) * t51)) - (Scalar(1.2919999999999997e-05) * t54)) - (Scalar(0.036480000000000005) * t33);
+  const Scalar t61 = (((Scalar(0.010680452843509228) * t50) - (Scalar(3.57e-06) * t51)) - (Scalar(1.2919999999999997e-05) * t54)) - (Scalar(0.036480000000000005) * t33);
   const Scalar t62 = (Scalar(0.00017) * t33) - ((Scalar(3.57e-06) * t50) + (Scalar(0.0011613999999999995) * t54));
   const Scalar t63 = ((Scalar(0.012880486843509217) * t54) - ((Scalar(1.2919999999999997e-05) * t50) + (Scalar(0.0011613999999999995) * t51))) + ((Scalar(0.00017) * t53) - (Scalar(0.036480000000000005) * t52));
   const Scalar t64 = Scalar(0.036480000000000005) * t54;
@@ -124,14 +124,14 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t79 = ((t55 * sin_joint6) - (t36 * cos_joint6)) + (v[5] * t73);
   const Scalar t80 = Scalar(0.04726753550266307) * (((cos_joint6 * t69) + (t38 * sin_joint6)) - (v[5] * t76));
   const Scalar t81 = ((Scalar(0.009281063680426091) * t56) - (Scalar(3.12e-07) * t79)) + (t80 - (Scalar(0.0033246023249400717) * (((sin_joint6 * t69) - (t38 * cos_joint6)) + (v[5] * t75))));
-  const Scalar t82 = (Scalar(0.0033246023249400717) * t70) - (((Scalar(0.000430067404825638) * t78) + (Scalar(3.12e-07) * t56)) + (Scalar(0.005179540006592342) * t79));
-  const Scalar t83 = (Scalar(0.000430067404825638) * t74) + (Scalar(0.04726753550266307) * t72);
+  const Scalar t82 = (Scalar(0.0033246023249400717) * t70) - (((Scalar(0.0004300674048256379) * t78) + (Scalar(3.12e-07) * t56)) + (Scalar(0.005179540006592342) * t79));
+  const Scalar t83 = (Scalar(0.0004300674048256379) * t74) + (Scalar(0.04726753550266307) * t72);
   const Scalar t84 = ((Scalar(0.009281063680426091) * t77) - (Scalar(3.12e-07) * t74)) + ((Scalar(0.04726753550266307) * t75) - (Scalar(0.0033246023249400717) * t76));
-  const Scalar t85 = (Scalar(0.0033246023249400717) * t72) - (((Scalar(0.000430067404825638) * t73) + (Scalar(3.12e-07) * t77)) + (Scalar(0.005179540006592342) * t74));
+  const Scalar t85 = (Scalar(0.0033246023249400717) * t72) - (((Scalar(0.0004300674048256379) * t73) + (Scalar(3.12e-07) * t77)) + (Scalar(0.005179540006592342) * t74));
   const Scalar t86 = Scalar(0.04726753550266307) * t77;
   const Scalar t87 = Scalar(0.0033246023249400717) * t77;
   const Scalar t88 = (Scalar(0.0033246023249400717) * t74) - (Scalar(0.04726753550266307) * t73);
-  const Scalar t89 = (((t77 * t85) - (t74 * t84)) - ((t72 * t87) + (t76 * t88))) - ((Scalar(0.000430067404825638) * t79) + (Scalar(0.04726753550266307) * t70));
+  const Scalar t89 = (((t77 * t85) - (t74 * t84)) - ((t72 * t87) + (t76 * t88))) - ((Scalar(0.0004300674048256379) * t79) + (Scalar(0.04726753550266307) * t70));
   const Scalar t90 = (Scalar(0.04726753550266307) * t56) - ((t77 * t87) + (t74 * t88));
   const Scalar t91 = ((Scalar(0.0033246023249400717) * t79) - (Scalar(0.04726753550266307) * t78)) + ((t74 * t86) + (t73 * t87));
   const Scalar t92 = ((t73 * t88) - (t77 * t86)) - (Scalar(0.0033246023249400717) * t56);
@@ -163,10 +163,10 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t111 = t44 + (((cos_joint5 * t103) - (sin_joint5 * t104)) - (Scalar(0.2) * t110));
   const Scalar t112 = t45 + (((sin_joint5 * t103) + (cos_joint5 * t104)) + (Scalar(0.2) * t109));
   c[3] = -t112;
-  const Scalar t113 = (((Scalar(0.004275000000000001) * t16) + (Scalar(0.435936717) * t36)) + (((t30 * t41) + (t34 * t40)) - ((t32 * t43) + (t29 * t42)))) + t105;
-  const Scalar t114 = ((t31 * t42) - (Scalar(1.3641999999999999) * t35)) + t110;
+  const Scalar t113 = (((Scalar(0.004275000000000001) * t16) + (Scalar(0.43593671700000003) * t36)) + (((t30 * t41) + (t34 * t40)) - ((t32 * t43) + (t29 * t42)))) + t105;
+  const Scalar t114 = ((t31 * t42) - (Scalar(1.3642) * t35)) + t110;
   // inward pass: body 4 link4
-  const Scalar t115 = (cos_joint4 * (((Scalar(1.3641999999999999) * t16) + (t31 * t43)) + t109)) - (sin_joint4 * (t108 - ((t30 * t43) + (t34 * t42))));
+  const Scalar t115 = (cos_joint4 * (((Scalar(1.3642) * t16) + (t31 * t43)) + t109)) - (sin_joint4 * (t108 - ((t30 * t43) + (t34 * t42))));
   const Scalar t116 = t23 + (((cos_joint4 * t111) - (sin_joint4 * t113)) - (Scalar(0.2) * t114));
   const Scalar t117 = ((((t14 * t18) - (t10 * t20)) - (t12 * t22)) - (Scalar(0.008428) * t3)) + (t112 + (Scalar(0.2) * t115));
   const Scalar t118 = t24 + ((sin_joint4 * t111) + (cos_joint4 * t113));
@@ -178,9 +178,9 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t122 = ((sin_joint3 * t116) + (cos_joint3 * t117)) + (Scalar(0.22) * ((cos_joint3 * t119) - (sin_joint3 * t120)));
   c[1] = (((Scalar(3.3299999999999996e-05) * t2) + (Scalar(0.01279) * t3)) + ((t1 * t4) - (t0 * t6))) + t122;
   // inward pass: body 2 link2
-  const Scalar t123 = cos_joint2 * ((((Scalar(1.4336696670000002) * t3) - (Scalar(0.00030010000000000003) * t2)) - ((t0 * t5) + (v[1] * t4))) + t118);
+  const Scalar t123 = cos_joint2 * ((((Scalar(1.433669667) * t3) - (Scalar(0.00030010000000000003) * t2)) - ((t0 * t5) + (v[1] * t4))) + t118);
   // outputs
   c[0] = t123 - (sin_joint2 * (t121 - ((Scalar(0.00030010000000000003) * t3) + ((v[1] * t6) + (t1 * t5)))));
 }
 
-}  // namespace rbdc_gen::arm7::common::quadratic_velocity_terms_867e4a7d819a
+}  // namespace rbdc_gen::arm7::common::quadratic_velocity_terms_864cd0115ff7

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_a79477c27c0d {
+namespace rbdc_gen::arm7::common::forward_dynamics_679b4b089db7 {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
 /// algorithm where that is cheaper: the schedule line says which).
@@ -69,8 +69,8 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t21 = v[1] * t20;
   const Scalar t22 = v[1] * t19;
   const Scalar t23 = (Scalar(0.00030010000000000003) * t20) - (Scalar(3.3299999999999996e-05) * v[1]);
-  const Scalar t24 = ((Scalar(3.3299999999999996e-05) * t19) + (Scalar(1.4426703330000004) * v[1])) - (Scalar(0.01279) * t20);
-  const Scalar t25 = ((Scalar(0.00030010000000000003) * t19) + (Scalar(0.01279) * v[1])) + (Scalar(1.4336696670000002) * t20);
+  const Scalar t24 = ((Scalar(3.3299999999999996e-05) * t19) + (Scalar(1.4426703330000001) * v[1])) - (Scalar(0.01279) * t20);
+  const Scalar t25 = ((Scalar(0.00030010000000000003) * t19) + (Scalar(0.01279) * v[1])) + (Scalar(1.433669667) * t20);
   const Scalar t26 = (((Scalar(3.3299999999999996e-05) * t21) + (Scalar(0.01279) * t22)) - ((Scalar(36.78750000000001) * sin_joint2) + (Scalar(0.010889099999999999) * cos_joint2))) + ((t20 * t23) - (t19 * t25));
   // outward pass: body 3 link3
   const Scalar t27 = Scalar(0.22) * t21;
@@ -84,13 +84,13 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t35 = (v[2] * t31) - (cos_joint3 * t21);
   const Scalar t36 = (sin_joint3 * t21) - (v[2] * t30);
   const Scalar t37 = ((sin_joint3 * t27) - (cos_joint3 * t17)) + (v[2] * t33);
-  const Scalar t38 = Scalar(0.4474035169999999) * t30;
+  const Scalar t38 = Scalar(0.44740351700000003) * t30;
   const Scalar t39 = Scalar(0.008428) * t34;
-  const Scalar t40 = ((Scalar(0.008428) * t31) + (Scalar(0.453603517) * t34)) - (Scalar(0.0006000000000000033) * t32);
+  const Scalar t40 = ((Scalar(0.008428) * t31) + (Scalar(0.45360351700000007) * t34)) - (Scalar(0.0006000000000000033) * t32);
   const Scalar t41 = Scalar(0.0006000000000000033) * t34;
   const Scalar t42 = Scalar(0.0006000000000000033) * t30;
-  const Scalar t43 = ((Scalar(0.4474035169999999) * t35) + (Scalar(0.005886000000000033) * cos_joint2)) + (((t31 * t40) - (t34 * t39)) + (t33 * t42));
-  const Scalar t44 = (((Scalar(0.008428) * t36) - (Scalar(0.453603517) * t22)) - (Scalar(0.0006000000000000033) * t37)) + (((t30 * t39) - (t31 * t38)) + (t33 * t41));
+  const Scalar t43 = ((Scalar(0.44740351700000003) * t35) + (Scalar(0.005886000000000033) * cos_joint2)) + (((t31 * t40) - (t34 * t39)) + (t33 * t42));
+  const Scalar t44 = (((Scalar(0.008428) * t36) - (Scalar(0.45360351700000007) * t22)) - (Scalar(0.0006000000000000033) * t37)) + (((t30 * t39) - (t31 * t38)) + (t33 * t41));
   // outward pass: body 4 link4
   const Scalar t45 = Scalar(0.2) * t36;
   const Scalar t46 = t37 + t45;
@@ -106,13 +106,13 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t56 = ((sin_joint4 * t35) + (cos_joint4 * t22)) + (v[3] * t50);
   const Scalar t57 = ((cos_joint4 * t46) + (sin_joint4 * t18)) - (v[3] * t53);
   const Scalar t58 = ((cos_joint4 * t18) - (sin_joint4 * t46)) - (v[3] * t52);
-  const Scalar t59 = (Scalar(0.004275000000000001) * t54) - (Scalar(0.435936717) * t51);
-  const Scalar t60 = Scalar(1.3641999999999999) * t49;
-  const Scalar t61 = ((Scalar(0.44103671699999997) * t54) + (Scalar(0.004275000000000001) * t51)) + (Scalar(1.3641999999999999) * t52);
-  const Scalar t62 = Scalar(1.3641999999999999) * t54;
-  const Scalar t63 = Scalar(1.3641999999999999) * t50;
-  const Scalar t64 = (((t54 * t59) - (t51 * t61)) - (t53 * t63)) - (Scalar(1.3641999999999999) * t47);
-  const Scalar t65 = (((Scalar(0.44103671699999997) * t36) - (Scalar(0.004275000000000001) * t56)) + (Scalar(1.3641999999999999) * t57)) - (((t51 * t60) + (t50 * t59)) + (t53 * t62));
+  const Scalar t59 = (Scalar(0.004275000000000001) * t54) - (Scalar(0.43593671700000003) * t51);
+  const Scalar t60 = Scalar(1.3642) * t49;
+  const Scalar t61 = ((Scalar(0.441036717) * t54) + (Scalar(0.004275000000000001) * t51)) + (Scalar(1.3642) * t52);
+  const Scalar t62 = Scalar(1.3642) * t54;
+  const Scalar t63 = Scalar(1.3642) * t50;
+  const Scalar t64 = (((t54 * t59) - (t51 * t61)) - (t53 * t63)) - (Scalar(1.3642) * t47);
+  const Scalar t65 = (((Scalar(0.441036717) * t36) - (Scalar(0.004275000000000001) * t56)) + (Scalar(1.3642) * t57)) - (((t51 * t60) + (t50 * t59)) + (t53 * t62));
   // outward pass: body 5 link5
   const Scalar t66 = t45 + t57;
   const Scalar t67 = t47 - (Scalar(0.2) * t55);
@@ -127,9 +127,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t76 = ((cos_joint5 * t36) - (sin_joint5 * t55)) - (v[4] * t70);
   const Scalar t77 = ((cos_joint5 * t66) + (sin_joint5 * t67)) + (v[4] * t73);
   const Scalar t78 = ((cos_joint5 * t67) - (sin_joint5 * t66)) - (v[4] * t72);
-  const Scalar t79 = (((Scalar(0.010680452843509214) * t75) - (Scalar(3.57e-06) * t76)) + (Scalar(1.2919999999999997e-05) * t56)) + (Scalar(0.036480000000000005) * t58);
+  const Scalar t79 = (((Scalar(0.010680452843509228) * t75) - (Scalar(3.57e-06) * t76)) + (Scalar(1.2919999999999997e-05) * t56)) + (Scalar(0.036480000000000005) * t58);
   const Scalar t80 = ((Scalar(0.00017) * t78) - (Scalar(0.036480000000000005) * t77)) - (((Scalar(1.2919999999999997e-05) * t75) + (Scalar(0.0011613999999999995) * t76)) + (Scalar(0.012880486843509217) * t56));
-  const Scalar t81 = (((Scalar(0.010680452843509214) * t70) - (Scalar(3.57e-06) * t71)) - (Scalar(1.2919999999999997e-05) * t74)) - (Scalar(0.036480000000000005) * t53);
+  const Scalar t81 = (((Scalar(0.010680452843509228) * t70) - (Scalar(3.57e-06) * t71)) - (Scalar(1.2919999999999997e-05) * t74)) - (Scalar(0.036480000000000005) * t53);
   const Scalar t82 = (Scalar(0.00017) * t53) - ((Scalar(3.57e-06) * t70) + (Scalar(0.0011613999999999995) * t74));
   const Scalar t83 = ((Scalar(0.012880486843509217) * t74) - ((Scalar(1.2919999999999997e-05) * t70) + (Scalar(0.0011613999999999995) * t71))) + ((Scalar(0.00017) * t73) - (Scalar(0.036480000000000005) * t72));
   const Scalar t84 = Scalar(0.036480000000000005) * t74;
@@ -151,14 +151,14 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t99 = ((sin_joint6 * t75) - (cos_joint6 * t56)) + (v[5] * t93);
   const Scalar t100 = Scalar(0.04726753550266307) * (((cos_joint6 * t89) - (sin_joint6 * t58)) - (v[5] * t96));
   const Scalar t101 = ((Scalar(0.009281063680426091) * t76) - (Scalar(3.12e-07) * t99)) + (t100 - (Scalar(0.0033246023249400717) * (((sin_joint6 * t89) + (cos_joint6 * t58)) + (v[5] * t95))));
-  const Scalar t102 = (Scalar(0.0033246023249400717) * t90) - (((Scalar(0.000430067404825638) * t98) + (Scalar(3.12e-07) * t76)) + (Scalar(0.005179540006592342) * t99));
-  const Scalar t103 = (Scalar(0.000430067404825638) * t94) + (Scalar(0.04726753550266307) * t92);
+  const Scalar t102 = (Scalar(0.0033246023249400717) * t90) - (((Scalar(0.0004300674048256379) * t98) + (Scalar(3.12e-07) * t76)) + (Scalar(0.005179540006592342) * t99));
+  const Scalar t103 = (Scalar(0.0004300674048256379) * t94) + (Scalar(0.04726753550266307) * t92);
   const Scalar t104 = ((Scalar(0.009281063680426091) * t97) - (Scalar(3.12e-07) * t94)) + ((Scalar(0.04726753550266307) * t95) - (Scalar(0.0033246023249400717) * t96));
-  const Scalar t105 = (Scalar(0.0033246023249400717) * t92) - (((Scalar(0.000430067404825638) * t93) + (Scalar(3.12e-07) * t97)) + (Scalar(0.005179540006592342) * t94));
+  const Scalar t105 = (Scalar(0.0033246023249400717) * t92) - (((Scalar(0.0004300674048256379) * t93) + (Scalar(3.12e-07) * t97)) + (Scalar(0.005179540006592342) * t94));
   const Scalar t106 = Scalar(0.04726753550266307) * t97;
   const Scalar t107 = Scalar(0.0033246023249400717) * t97;
   const Scalar t108 = (Scalar(0.0033246023249400717) * t94) - (Scalar(0.04726753550266307) * t93);
-  const Scalar t109 = (((t97 * t105) - (t94 * t104)) - ((t92 * t107) + (t96 * t108))) - ((Scalar(0.000430067404825638) * t99) + (Scalar(0.04726753550266307) * t90));
+  const Scalar t109 = (((t97 * t105) - (t94 * t104)) - ((t92 * t107) + (t96 * t108))) - ((Scalar(0.0004300674048256379) * t99) + (Scalar(0.04726753550266307) * t90));
   const Scalar t110 = t101 + (((t96 * t106) + (t95 * t107)) - ((t94 * t103) + (t93 * t105)));
   // outward pass: body 7 link7
   const Scalar t111 = (Scalar(0.29552020666133966) * t98) + (Scalar(0.955336489125606) * t99);
@@ -191,10 +191,10 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t135 = (sin_joint5 * t131) + (cos_joint5 * t132);
   const Scalar t136 = t64 + (((cos_joint5 * t128) - (sin_joint5 * t129)) - (Scalar(0.2) * t135));
   const Scalar t137 = t65 + (((sin_joint5 * t128) + (cos_joint5 * t129)) + (Scalar(0.2) * t134));
-  const Scalar t138 = (((Scalar(0.004275000000000001) * t36) + (Scalar(0.435936717) * t56)) + (((t50 * t61) + (t54 * t60)) - ((t52 * t63) + (t49 * t62)))) + t130;
-  const Scalar t139 = ((t51 * t62) - (Scalar(1.3641999999999999) * t55)) + t135;
+  const Scalar t138 = (((Scalar(0.004275000000000001) * t36) + (Scalar(0.43593671700000003) * t56)) + (((t50 * t61) + (t54 * t60)) - ((t52 * t63) + (t49 * t62)))) + t130;
+  const Scalar t139 = ((t51 * t62) - (Scalar(1.3642) * t55)) + t135;
   // inward pass: body 4 link4
-  const Scalar t140 = (cos_joint4 * (((Scalar(1.3641999999999999) * t36) + (t51 * t63)) + t134)) - (sin_joint4 * (t133 - ((t50 * t63) + (t54 * t62))));
+  const Scalar t140 = (cos_joint4 * (((Scalar(1.3642) * t36) + (t51 * t63)) + t134)) - (sin_joint4 * (t133 - ((t50 * t63) + (t54 * t62))));
   const Scalar t141 = t43 + (((cos_joint4 * t136) - (sin_joint4 * t138)) - (Scalar(0.2) * t139));
   const Scalar t142 = ((((t34 * t38) - (t30 * t40)) - (t32 * t42)) - (Scalar(0.008428) * t22)) + (t137 + (Scalar(0.2) * t140));
   const Scalar t143 = t44 + ((sin_joint4 * t136) + (cos_joint4 * t138));
@@ -203,7 +203,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   // inward pass: body 3 link3
   const Scalar t146 = ((cos_joint3 * t141) - (sin_joint3 * t142)) - (Scalar(0.22) * ((sin_joint3 * t144) + (cos_joint3 * t145)));
   // inward pass: body 2 link2
-  const Scalar t147 = cos_joint2 * ((((Scalar(1.4336696670000002) * t22) - (Scalar(0.00030010000000000003) * t21)) - ((t19 * t24) + (v[1] * t23))) + t143);
+  const Scalar t147 = cos_joint2 * ((((Scalar(1.433669667) * t22) - (Scalar(0.00030010000000000003) * t21)) - ((t19 * t24) + (v[1] * t23))) + t143);
   // inward pass: body 1 link1
   const Scalar t148 = tau[5] - t122;
   const Scalar t149 = tau[6] - (Scalar(0.0005) * t111);
@@ -232,7 +232,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t170 = (Scalar(0.19) * t168) - t169;
   const Scalar t171 = Scalar(0.009281063680426091) - t170;
   const Scalar t172 = Scalar(0.00017) + t158;
-  const Scalar t173 = Scalar(0.010680452843509214) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t162)) - (sin_joint6 * (t163 + (Scalar(0.004723206102864922) * sin_joint6)))) - t170);
+  const Scalar t173 = Scalar(0.010680452843509228) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t162)) - (sin_joint6 * (t163 + (Scalar(0.004723206102864922) * sin_joint6)))) - t170);
   const Scalar t174 = Scalar(-3.57e-06) - t165;
   const Scalar t175 = (((sin_joint6 * t167) - (cos_joint6 * t164)) - (Scalar(0.19) * t158)) - Scalar(1.2919999999999997e-05);
   const Scalar t176 = Scalar(-0.0011613999999999995) - t166;
@@ -270,10 +270,10 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t207 = t198 + (Scalar(0.2) * (t191 - t190));
   const Scalar t208 = t199 - t203;
   const Scalar t209 = t198 - t204;
-  const Scalar t210 = Scalar(1.3641999999999999) + t161;
-  const Scalar t211 = Scalar(0.44103671699999997) + (((sin_joint5 * t196) + (cos_joint5 * t197)) - t205);
+  const Scalar t210 = Scalar(1.3642) + t161;
+  const Scalar t211 = Scalar(0.441036717) + (((sin_joint5 * t196) + (cos_joint5 * t197)) - t205);
   const Scalar t212 = Scalar(0.004275000000000001) + t208;
-  const Scalar t213 = t177 - Scalar(0.435936717);
+  const Scalar t213 = t177 - Scalar(0.43593671700000003);
   const Scalar t214 = (sin_joint4 * t209) + (cos_joint4 * t177);
   const Scalar t215 = cos_joint4 * t193;
   const Scalar t216 = ((cos_joint4 * t209) - (sin_joint4 * t177)) - t204;
@@ -296,9 +296,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t232 = ((cos_joint4 * t225) - (sin_joint4 * t229)) + (Scalar(0.2) * (t220 - t219));
   const Scalar t233 = t211 + t231;
   const Scalar t234 = Scalar(0.0006000000000000033) + t193;
-  const Scalar t235 = Scalar(0.4474035169999999) + (((cos_joint4 * ((cos_joint4 * t206) - t223)) - (sin_joint4 * (t224 - (sin_joint4 * t213)))) + t231);
+  const Scalar t235 = Scalar(0.44740351700000003) + (((cos_joint4 * ((cos_joint4 * t206) - t223)) - (sin_joint4 * (t224 - (sin_joint4 * t213)))) + t231);
   const Scalar t236 = Scalar(0.008428) + (((sin_joint4 * t202) + t228) - t203);
-  const Scalar t237 = Scalar(0.453603517) + ((sin_joint4 * t225) + (cos_joint4 * t229));
+  const Scalar t237 = Scalar(0.45360351700000007) + ((sin_joint4 * t225) + (cos_joint4 * t229));
   const Scalar t238 = t201 - t200;
   const Scalar t239 = t226 + (cos_joint4 * t238);
   const Scalar t240 = (sin_joint4 * t238) - t228;
@@ -334,7 +334,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t267 = Scalar(107.74627073284883) * t188;
   const Scalar t268 = (((cos_joint2 * (t251 - Scalar(0.01279))) - (sin_joint2 * (((cos_joint3 * t246) - (sin_joint3 * t247)) - Scalar(3.3299999999999996e-05)))) - (t157 * t258)) + (t189 * t267);
   const Scalar t269 = Scalar(107.74627073284883) * t189;
-  const Scalar t270 = ((Scalar(1.4602500000000003) + ((cos_joint2 * ((cos_joint2 * (t237 - Scalar(1.4336696670000002))) - (sin_joint2 * t252))) - t253)) - (t157 * t259)) - (t189 * t269);
+  const Scalar t270 = ((Scalar(1.46025) + ((cos_joint2 * ((cos_joint2 * (t237 - Scalar(1.433669667))) - (sin_joint2 * t252))) - t253)) - (t157 * t259)) - (t189 * t269);
   const Scalar t271 = Scalar(1) / ((t177 - (t151 * t254)) - (t166 * t260));
   const Scalar t272 = t261 * t271;
   const Scalar t273 = ((t240 + (t155 * t255)) - (t184 * t265)) - (t262 * t272);
@@ -343,7 +343,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t276 = t262 * t271;
   const Scalar t277 = ((((cos_joint2 * t237) - (sin_joint2 * (t248 - (Scalar(0.22) * (t242 - t243))))) - (t157 * t257)) - (t189 * t266)) - (t264 * t276);
   const Scalar t278 = t263 * t271;
-  const Scalar t279 = (((Scalar(1.4426703330000004) + (((sin_joint3 * t246) + (cos_joint3 * t247)) + t250)) - (t156 * t258)) - (t188 * t267)) - (t263 * t278);
+  const Scalar t279 = (((Scalar(1.4426703330000001) + (((sin_joint3 * t246) + (cos_joint3 * t247)) + t250)) - (t156 * t258)) - (t188 * t267)) - (t263 * t278);
   const Scalar t280 = t264 * t271;
   const Scalar t281 = Scalar(1) / (((t211 - (t153 * t255)) - (t183 * t265)) - (t261 * t272));
   const Scalar t282 = t273 * t281;
@@ -380,4 +380,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[6] = (((((Scalar(2000) * t149) - (t254 * t304)) + (t255 * t303)) - (t257 * t302)) - (t258 * t301)) - (t259 * t300);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_a79477c27c0d
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_679b4b089db7

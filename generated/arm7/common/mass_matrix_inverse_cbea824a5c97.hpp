@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::mass_matrix_inverse_94b1d5614c6b {
+namespace rbdc_gen::arm7::common::mass_matrix_inverse_cbea824a5c97 {
 
 /// M⁻¹ from the sparse factor M = Lᵀ D L (CRBA, paper 000 Alg. 5).
 ///
@@ -59,7 +59,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Scalar t20 = (Scalar(0.19) * t18) - t19;
   const Scalar t21 = Scalar(0.009281063680426091) - t20;
   const Scalar t22 = Scalar(0.00017) + t8;
-  const Scalar t23 = Scalar(0.010680452843509214) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t12)) - (sin_joint6 * (t13 + (Scalar(0.004723206102864922) * sin_joint6)))) - t20);
+  const Scalar t23 = Scalar(0.010680452843509228) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t12)) - (sin_joint6 * (t13 + (Scalar(0.004723206102864922) * sin_joint6)))) - t20);
   const Scalar t24 = Scalar(-3.57e-06) - t15;
   const Scalar t25 = (((sin_joint6 * t17) - (cos_joint6 * t14)) - (Scalar(0.19) * t8)) - Scalar(1.2919999999999997e-05);
   const Scalar t26 = Scalar(-0.0011613999999999995) - t16;
@@ -97,10 +97,10 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Scalar t57 = t48 + (Scalar(0.2) * (t41 - t40));
   const Scalar t58 = t49 - t53;
   const Scalar t59 = t48 - t54;
-  const Scalar t60 = Scalar(1.3641999999999999) + t11;
-  const Scalar t61 = Scalar(0.44103671699999997) + (((sin_joint5 * t46) + (cos_joint5 * t47)) - t55);
+  const Scalar t60 = Scalar(1.3642) + t11;
+  const Scalar t61 = Scalar(0.441036717) + (((sin_joint5 * t46) + (cos_joint5 * t47)) - t55);
   const Scalar t62 = Scalar(0.004275000000000001) + t58;
-  const Scalar t63 = t27 - Scalar(0.435936717);
+  const Scalar t63 = t27 - Scalar(0.43593671700000003);
   const Scalar t64 = (sin_joint4 * t59) + (cos_joint4 * t27);
   const Scalar t65 = cos_joint4 * t43;
   const Scalar t66 = ((cos_joint4 * t59) - (sin_joint4 * t27)) - t54;
@@ -123,9 +123,9 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Scalar t82 = ((cos_joint4 * t75) - (sin_joint4 * t79)) + (Scalar(0.2) * (t70 - t69));
   const Scalar t83 = t61 + t81;
   const Scalar t84 = Scalar(0.0006000000000000033) + t43;
-  const Scalar t85 = Scalar(0.4474035169999999) + (((cos_joint4 * ((cos_joint4 * t56) - t73)) - (sin_joint4 * (t74 - (sin_joint4 * t63)))) + t81);
+  const Scalar t85 = Scalar(0.44740351700000003) + (((cos_joint4 * ((cos_joint4 * t56) - t73)) - (sin_joint4 * (t74 - (sin_joint4 * t63)))) + t81);
   const Scalar t86 = Scalar(0.008428) + (((sin_joint4 * t52) + t78) - t53);
-  const Scalar t87 = Scalar(0.453603517) + ((sin_joint4 * t75) + (cos_joint4 * t79));
+  const Scalar t87 = Scalar(0.45360351700000007) + ((sin_joint4 * t75) + (cos_joint4 * t79));
   const Scalar t88 = t51 - t50;
   const Scalar t89 = t76 + (cos_joint4 * t88);
   const Scalar t90 = (sin_joint4 * t88) - t78;
@@ -161,7 +161,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Scalar t117 = Scalar(107.74627073284883) * t38;
   const Scalar t118 = (((cos_joint2 * (t101 - Scalar(0.01279))) - (sin_joint2 * (((cos_joint3 * t96) - (sin_joint3 * t97)) - Scalar(3.3299999999999996e-05)))) - (t7 * t108)) + (t39 * t117);
   const Scalar t119 = Scalar(107.74627073284883) * t39;
-  const Scalar t120 = ((Scalar(1.4602500000000003) + ((cos_joint2 * ((cos_joint2 * (t87 - Scalar(1.4336696670000002))) - (sin_joint2 * t102))) - t103)) - (t7 * t109)) - (t39 * t119);
+  const Scalar t120 = ((Scalar(1.46025) + ((cos_joint2 * ((cos_joint2 * (t87 - Scalar(1.433669667))) - (sin_joint2 * t102))) - t103)) - (t7 * t109)) - (t39 * t119);
   const Scalar t121 = Scalar(1) / ((t27 - (t1 * t104)) - (t16 * t110));
   const Scalar t122 = t111 * t121;
   const Scalar t123 = ((t90 + (t5 * t105)) - (t34 * t115)) - (t112 * t122);
@@ -170,7 +170,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   const Scalar t126 = t112 * t121;
   const Scalar t127 = ((((cos_joint2 * t87) - (sin_joint2 * (t98 - (Scalar(0.22) * (t92 - t93))))) - (t7 * t107)) - (t39 * t116)) - (t114 * t126);
   const Scalar t128 = t113 * t121;
-  const Scalar t129 = (((Scalar(1.4426703330000004) + (((sin_joint3 * t96) + (cos_joint3 * t97)) + t100)) - (t6 * t108)) - (t38 * t117)) - (t113 * t128);
+  const Scalar t129 = (((Scalar(1.4426703330000001) + (((sin_joint3 * t96) + (cos_joint3 * t97)) + t100)) - (t6 * t108)) - (t38 * t117)) - (t113 * t128);
   const Scalar t130 = t114 * t121;
   const Scalar t131 = Scalar(1) / (((t61 - (t3 * t105)) - (t33 * t115)) - (t111 * t122));
   const Scalar t132 = t123 * t131;
@@ -288,4 +288,4 @@ RBDC_HOST_DEVICE inline void mass_matrix_inverse(const Scalar* q, Scalar* M_inv)
   M_inv[47] = t193;
 }
 
-}  // namespace rbdc_gen::arm7::common::mass_matrix_inverse_94b1d5614c6b
+}  // namespace rbdc_gen::arm7::common::mass_matrix_inverse_cbea824a5c97

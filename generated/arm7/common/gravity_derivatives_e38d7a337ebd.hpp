@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::gravity_derivatives_dc0f009cca21 {
+namespace rbdc_gen::arm7::common::gravity_derivatives_e38d7a337ebd {
 
 /// Derivative of the gravity terms g.
 ///
@@ -88,11 +88,11 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   const Scalar t23 = (Scalar(0.04726753550266307) * cos_joint6) - (Scalar(0.0033246023249400717) * sin_joint6);
   const Scalar t24 = Scalar(0.00017) + t22;
   // derivatives: inward pass, composites: body 5 link5
-  const Scalar t25 = ((cos_joint5 * t19) - (sin_joint5 * t20)) - (Scalar(1.3641999999999999) * t3);
-  const Scalar t26 = (Scalar(1.3641999999999999) * t6) + ((sin_joint5 * t19) + (cos_joint5 * t20));
+  const Scalar t25 = ((cos_joint5 * t19) - (sin_joint5 * t20)) - (Scalar(1.3642) * t3);
+  const Scalar t26 = (Scalar(1.3642) * t6) + ((sin_joint5 * t19) + (cos_joint5 * t20));
   const Scalar t27 = (cos_joint5 * t24) - (Scalar(0.036480000000000005) * sin_joint5);
   const Scalar t28 = (sin_joint5 * t24) + (Scalar(0.036480000000000005) * cos_joint5);
-  const Scalar t29 = Scalar(1.3641999999999999) + t23;
+  const Scalar t29 = Scalar(1.3642) + t23;
   // derivatives: inward pass, composites: body 4 link4
   const Scalar t30 = (Scalar(0.005886000000000033) * cos_joint2) + ((cos_joint4 * t25) - (sin_joint4 * t21));
   const Scalar t31 = (cos_joint4 * t27) - (sin_joint4 * t29);
@@ -180,4 +180,4 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   dg_dq[37] = t69;
 }
 
-}  // namespace rbdc_gen::arm7::common::gravity_derivatives_dc0f009cca21
+}  // namespace rbdc_gen::arm7::common::gravity_derivatives_e38d7a337ebd

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::mass_matrix_2d6e4dd34428 {
+namespace rbdc_gen::arm7::common::mass_matrix_14109eca399b {
 
 /// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).
 ///
@@ -78,7 +78,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t22 = (Scalar(0.19) * t20) - t21;
   const Scalar t23 = Scalar(0.009281063680426091) - t22;
   const Scalar t24 = Scalar(0.00017) + t9;
-  const Scalar t25 = Scalar(0.010680452843509214) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t13)) - (sin_joint6 * (t14 + (Scalar(0.004723206102864922) * sin_joint6)))) - t22);
+  const Scalar t25 = Scalar(0.010680452843509228) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t13)) - (sin_joint6 * (t14 + (Scalar(0.004723206102864922) * sin_joint6)))) - t22);
   const Scalar t26 = Scalar(-3.57e-06) - t16;
   const Scalar t27 = (((sin_joint6 * t19) - (cos_joint6 * t15)) - (Scalar(0.19) * t9)) - Scalar(1.2919999999999997e-05);
   const Scalar t28 = Scalar(-0.0011613999999999995) - t17;
@@ -127,11 +127,11 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t61 = t52 + (Scalar(0.2) * (t45 - t44));
   const Scalar t62 = t53 - t57;
   const Scalar t63 = t52 - t58;
-  const Scalar t64 = Scalar(1.3641999999999999) + t12;
-  const Scalar t65 = Scalar(0.44103671699999997) + (((sin_joint5 * t50) + (cos_joint5 * t51)) - t59);
+  const Scalar t64 = Scalar(1.3642) + t12;
+  const Scalar t65 = Scalar(0.441036717) + (((sin_joint5 * t50) + (cos_joint5 * t51)) - t59);
   M[24] = t65;
   const Scalar t66 = Scalar(0.004275000000000001) + t62;
-  const Scalar t67 = t29 - Scalar(0.435936717);
+  const Scalar t67 = t29 - Scalar(0.43593671700000003);
   const Scalar t68 = t57 - t53;
   M[25] = t68;
   M[31] = t68;
@@ -164,9 +164,9 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t88 = ((cos_joint4 * t81) - (sin_joint4 * t85)) + (Scalar(0.2) * (t76 - t75));
   const Scalar t89 = t65 + t87;
   const Scalar t90 = Scalar(0.0006000000000000033) + t47;
-  const Scalar t91 = Scalar(0.4474035169999999) + (((cos_joint4 * ((cos_joint4 * t60) - t79)) - (sin_joint4 * (t80 - (sin_joint4 * t67)))) + t87);
+  const Scalar t91 = Scalar(0.44740351700000003) + (((cos_joint4 * ((cos_joint4 * t60) - t79)) - (sin_joint4 * (t80 - (sin_joint4 * t67)))) + t87);
   const Scalar t92 = Scalar(0.008428) + (((sin_joint4 * t56) + t84) - t57);
-  const Scalar t93 = Scalar(0.453603517) + ((sin_joint4 * t81) + (cos_joint4 * t85));
+  const Scalar t93 = Scalar(0.45360351700000007) + ((sin_joint4 * t81) + (cos_joint4 * t85));
   M[16] = t93;
   const Scalar t94 = t55 - t54;
   const Scalar t95 = t82 + (cos_joint4 * t94);
@@ -190,7 +190,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t106 = (cos_joint3 * t88) - (sin_joint3 * t92);
   const Scalar t107 = Scalar(0.22) * t78;
   const Scalar t108 = t107 + t107;
-  M[8] = Scalar(1.4426703330000004) + (((sin_joint3 * t104) + (cos_joint3 * t105)) + t108);
+  M[8] = Scalar(1.4426703330000001) + (((sin_joint3 * t104) + (cos_joint3 * t105)) + t108);
   const Scalar t109 = ((sin_joint3 * t88) + (cos_joint3 * t92)) - (Scalar(0.22) * ((sin_joint3 * t77) + (cos_joint3 * t90)));
   M[9] = t109;
   M[15] = t109;
@@ -204,7 +204,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   M[7] = t112;
   const Scalar t113 = sin_joint2 * ((cos_joint2 * t110) - (sin_joint2 * (((cos_joint3 * ((cos_joint3 * t91) - t102)) - (sin_joint3 * (t103 - (sin_joint3 * t89)))) + t108)));
   // outputs
-  M[0] = Scalar(1.4602500000000003) + ((cos_joint2 * ((cos_joint2 * (t93 - Scalar(1.4336696670000002))) - (sin_joint2 * t110))) - t113);
+  M[0] = Scalar(1.46025) + ((cos_joint2 * ((cos_joint2 * (t93 - Scalar(1.433669667))) - (sin_joint2 * t110))) - t113);
 }
 
-}  // namespace rbdc_gen::arm7::common::mass_matrix_2d6e4dd34428
+}  // namespace rbdc_gen::arm7::common::mass_matrix_14109eca399b

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::inverse_dynamics_85e8963760ac {
+namespace rbdc_gen::arm7::common::inverse_dynamics_67553b7f7049 {
 
 /// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3).
 ///
@@ -44,10 +44,10 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t2 = v[0] * cos_joint2;
   const Scalar t3 = (a[0] * sin_joint2) + (v[1] * t2);
   const Scalar t4 = (a[0] * cos_joint2) - (v[1] * t1);
-  const Scalar t5 = (((Scalar(3.3299999999999996e-05) * t3) + (Scalar(1.4426703330000004) * a[1])) - (Scalar(0.01279) * t4)) - ((Scalar(36.78750000000001) * sin_joint2) + (Scalar(0.010889099999999999) * cos_joint2));
+  const Scalar t5 = (((Scalar(3.3299999999999996e-05) * t3) + (Scalar(1.4426703330000001) * a[1])) - (Scalar(0.01279) * t4)) - ((Scalar(36.78750000000001) * sin_joint2) + (Scalar(0.010889099999999999) * cos_joint2));
   const Scalar t6 = (Scalar(0.00030010000000000003) * t2) - (Scalar(3.3299999999999996e-05) * v[1]);
-  const Scalar t7 = ((Scalar(3.3299999999999996e-05) * t1) + (Scalar(1.4426703330000004) * v[1])) - (Scalar(0.01279) * t2);
-  const Scalar t8 = ((Scalar(0.00030010000000000003) * t1) + (Scalar(0.01279) * v[1])) + (Scalar(1.4336696670000002) * t2);
+  const Scalar t7 = ((Scalar(3.3299999999999996e-05) * t1) + (Scalar(1.4426703330000001) * v[1])) - (Scalar(0.01279) * t2);
+  const Scalar t8 = ((Scalar(0.00030010000000000003) * t1) + (Scalar(0.01279) * v[1])) + (Scalar(1.433669667) * t2);
   // outward pass: body 3 link3
   const Scalar t9 = Scalar(0.22) * t3;
   const Scalar t10 = (Scalar(0.22) * a[1]) - (Scalar(9.81) * sin_joint2);
@@ -62,13 +62,13 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t19 = ((t3 * sin_joint3) + (a[1] * cos_joint3)) - (v[2] * t13);
   const Scalar t20 = ((cos_joint3 * t10) + (sin_joint3 * t9)) + (v[2] * t16);
   const Scalar t21 = a[2] + t4;
-  const Scalar t22 = Scalar(0.4474035169999999) * t13;
+  const Scalar t22 = Scalar(0.44740351700000003) * t13;
   const Scalar t23 = Scalar(0.008428) * t17;
-  const Scalar t24 = ((Scalar(0.008428) * t14) + (Scalar(0.453603517) * t17)) - (Scalar(0.0006000000000000033) * t15);
+  const Scalar t24 = ((Scalar(0.008428) * t14) + (Scalar(0.45360351700000007) * t17)) - (Scalar(0.0006000000000000033) * t15);
   const Scalar t25 = Scalar(0.0006000000000000033) * t17;
   const Scalar t26 = Scalar(0.0006000000000000033) * t13;
-  const Scalar t27 = ((Scalar(0.4474035169999999) * t18) + (Scalar(0.005886000000000033) * cos_joint2)) + (((t14 * t24) - (t17 * t23)) + (t16 * t26));
-  const Scalar t28 = (((Scalar(0.008428) * t19) + (Scalar(0.453603517) * t21)) - (Scalar(0.0006000000000000033) * t20)) + (((t13 * t23) - (t14 * t22)) + (t16 * t25));
+  const Scalar t27 = ((Scalar(0.44740351700000003) * t18) + (Scalar(0.005886000000000033) * cos_joint2)) + (((t14 * t24) - (t17 * t23)) + (t16 * t26));
+  const Scalar t28 = (((Scalar(0.008428) * t19) + (Scalar(0.45360351700000007) * t21)) - (Scalar(0.0006000000000000033) * t20)) + (((t13 * t23) - (t14 * t22)) + (t16 * t25));
   // outward pass: body 4 link4
   const Scalar t29 = t20 + (Scalar(0.2) * t19);
   const Scalar t30 = (((cos_joint3 * t9) - (sin_joint3 * t10)) - (v[2] * t15)) - (Scalar(0.2) * t18);
@@ -84,13 +84,13 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t40 = ((cos_joint4 * t29) + (t0 * sin_joint4)) - (v[3] * t36);
   const Scalar t41 = ((t0 * cos_joint4) - (sin_joint4 * t29)) - (v[3] * t35);
   const Scalar t42 = t19 - a[3];
-  const Scalar t43 = (Scalar(0.004275000000000001) * t37) - (Scalar(0.435936717) * t34);
-  const Scalar t44 = Scalar(1.3641999999999999) * t32;
-  const Scalar t45 = ((Scalar(0.44103671699999997) * t37) + (Scalar(0.004275000000000001) * t34)) + (Scalar(1.3641999999999999) * t35);
-  const Scalar t46 = Scalar(1.3641999999999999) * t37;
-  const Scalar t47 = Scalar(1.3641999999999999) * t33;
-  const Scalar t48 = (((t37 * t43) - (t34 * t45)) - (t36 * t47)) - (Scalar(1.3641999999999999) * t30);
-  const Scalar t49 = (((Scalar(0.44103671699999997) * t42) + (Scalar(0.004275000000000001) * t39)) + (Scalar(1.3641999999999999) * t40)) - (((t34 * t44) + (t33 * t43)) + (t36 * t46));
+  const Scalar t43 = (Scalar(0.004275000000000001) * t37) - (Scalar(0.43593671700000003) * t34);
+  const Scalar t44 = Scalar(1.3642) * t32;
+  const Scalar t45 = ((Scalar(0.441036717) * t37) + (Scalar(0.004275000000000001) * t34)) + (Scalar(1.3642) * t35);
+  const Scalar t46 = Scalar(1.3642) * t37;
+  const Scalar t47 = Scalar(1.3642) * t33;
+  const Scalar t48 = (((t37 * t43) - (t34 * t45)) - (t36 * t47)) - (Scalar(1.3642) * t30);
+  const Scalar t49 = (((Scalar(0.441036717) * t42) + (Scalar(0.004275000000000001) * t39)) + (Scalar(1.3642) * t40)) - (((t34 * t44) + (t33 * t43)) + (t36 * t46));
   // outward pass: body 5 link5
   const Scalar t50 = t40 + (Scalar(0.2) * t42);
   const Scalar t51 = t30 - (Scalar(0.2) * t38);
@@ -106,9 +106,9 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t61 = ((cos_joint5 * t50) + (sin_joint5 * t51)) + (v[4] * t57);
   const Scalar t62 = ((cos_joint5 * t51) - (sin_joint5 * t50)) - (v[4] * t56);
   const Scalar t63 = a[4] + t39;
-  const Scalar t64 = (((Scalar(0.010680452843509214) * t59) - (Scalar(3.57e-06) * t60)) - (Scalar(1.2919999999999997e-05) * t63)) + (Scalar(0.036480000000000005) * t41);
+  const Scalar t64 = (((Scalar(0.010680452843509228) * t59) - (Scalar(3.57e-06) * t60)) - (Scalar(1.2919999999999997e-05) * t63)) + (Scalar(0.036480000000000005) * t41);
   const Scalar t65 = ((Scalar(0.012880486843509217) * t63) - ((Scalar(1.2919999999999997e-05) * t59) + (Scalar(0.0011613999999999995) * t60))) + ((Scalar(0.00017) * t62) - (Scalar(0.036480000000000005) * t61));
-  const Scalar t66 = (((Scalar(0.010680452843509214) * t54) - (Scalar(3.57e-06) * t55)) - (Scalar(1.2919999999999997e-05) * t58)) - (Scalar(0.036480000000000005) * t36);
+  const Scalar t66 = (((Scalar(0.010680452843509228) * t54) - (Scalar(3.57e-06) * t55)) - (Scalar(1.2919999999999997e-05) * t58)) - (Scalar(0.036480000000000005) * t36);
   const Scalar t67 = (Scalar(0.00017) * t36) - ((Scalar(3.57e-06) * t54) + (Scalar(0.0011613999999999995) * t58));
   const Scalar t68 = ((Scalar(0.012880486843509217) * t58) - ((Scalar(1.2919999999999997e-05) * t54) + (Scalar(0.0011613999999999995) * t55))) + ((Scalar(0.00017) * t57) - (Scalar(0.036480000000000005) * t56));
   const Scalar t69 = Scalar(0.036480000000000005) * t58;
@@ -131,14 +131,14 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t85 = a[5] + t60;
   const Scalar t86 = Scalar(0.04726753550266307) * (((cos_joint6 * t74) - (t41 * sin_joint6)) - (v[5] * t81));
   const Scalar t87 = ((Scalar(0.009281063680426091) * t85) - (Scalar(3.12e-07) * t84)) + (t86 - (Scalar(0.0033246023249400717) * (((sin_joint6 * t74) + (t41 * cos_joint6)) + (v[5] * t80))));
-  const Scalar t88 = (Scalar(0.0033246023249400717) * t75) - (((Scalar(0.000430067404825638) * t83) + (Scalar(3.12e-07) * t85)) + (Scalar(0.005179540006592342) * t84));
-  const Scalar t89 = (Scalar(0.000430067404825638) * t79) + (Scalar(0.04726753550266307) * t77);
+  const Scalar t88 = (Scalar(0.0033246023249400717) * t75) - (((Scalar(0.0004300674048256379) * t83) + (Scalar(3.12e-07) * t85)) + (Scalar(0.005179540006592342) * t84));
+  const Scalar t89 = (Scalar(0.0004300674048256379) * t79) + (Scalar(0.04726753550266307) * t77);
   const Scalar t90 = ((Scalar(0.009281063680426091) * t82) - (Scalar(3.12e-07) * t79)) + ((Scalar(0.04726753550266307) * t80) - (Scalar(0.0033246023249400717) * t81));
-  const Scalar t91 = (Scalar(0.0033246023249400717) * t77) - (((Scalar(0.000430067404825638) * t78) + (Scalar(3.12e-07) * t82)) + (Scalar(0.005179540006592342) * t79));
+  const Scalar t91 = (Scalar(0.0033246023249400717) * t77) - (((Scalar(0.0004300674048256379) * t78) + (Scalar(3.12e-07) * t82)) + (Scalar(0.005179540006592342) * t79));
   const Scalar t92 = Scalar(0.04726753550266307) * t82;
   const Scalar t93 = Scalar(0.0033246023249400717) * t82;
   const Scalar t94 = (Scalar(0.0033246023249400717) * t79) - (Scalar(0.04726753550266307) * t78);
-  const Scalar t95 = (((t82 * t91) - (t79 * t90)) - ((t77 * t93) + (t81 * t94))) - ((Scalar(0.000430067404825638) * t84) + (Scalar(0.04726753550266307) * t75));
+  const Scalar t95 = (((t82 * t91) - (t79 * t90)) - ((t77 * t93) + (t81 * t94))) - ((Scalar(0.0004300674048256379) * t84) + (Scalar(0.04726753550266307) * t75));
   const Scalar t96 = (Scalar(0.04726753550266307) * t85) - ((t82 * t93) + (t79 * t94));
   const Scalar t97 = ((Scalar(0.0033246023249400717) * t84) - (Scalar(0.04726753550266307) * t83)) + ((t79 * t92) + (t78 * t93));
   const Scalar t98 = ((t78 * t94) - (t82 * t92)) - (Scalar(0.0033246023249400717) * t85);
@@ -170,10 +170,10 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t117 = t48 + (((cos_joint5 * t109) - (sin_joint5 * t110)) - (Scalar(0.2) * t116));
   const Scalar t118 = t49 + (((sin_joint5 * t109) + (cos_joint5 * t110)) + (Scalar(0.2) * t115));
   tau[3] = -t118;
-  const Scalar t119 = (((Scalar(0.004275000000000001) * t42) - (Scalar(0.435936717) * t39)) + (((t33 * t45) + (t37 * t44)) - ((t35 * t47) + (t32 * t46)))) + t111;
-  const Scalar t120 = ((t34 * t46) - (Scalar(1.3641999999999999) * t38)) + t116;
+  const Scalar t119 = (((Scalar(0.004275000000000001) * t42) - (Scalar(0.43593671700000003) * t39)) + (((t33 * t45) + (t37 * t44)) - ((t35 * t47) + (t32 * t46)))) + t111;
+  const Scalar t120 = ((t34 * t46) - (Scalar(1.3642) * t38)) + t116;
   // inward pass: body 4 link4
-  const Scalar t121 = (cos_joint4 * (((Scalar(1.3641999999999999) * t42) + (t34 * t47)) + t115)) - (sin_joint4 * (t114 - ((t33 * t47) + (t37 * t46))));
+  const Scalar t121 = (cos_joint4 * (((Scalar(1.3642) * t42) + (t34 * t47)) + t115)) - (sin_joint4 * (t114 - ((t33 * t47) + (t37 * t46))));
   const Scalar t122 = t27 + (((cos_joint4 * t117) - (sin_joint4 * t119)) - (Scalar(0.2) * t120));
   const Scalar t123 = ((Scalar(0.008428) * t21) + (((t17 * t22) - (t13 * t24)) - (t15 * t26))) + (t118 + (Scalar(0.2) * t121));
   const Scalar t124 = t28 + ((sin_joint4 * t117) + (cos_joint4 * t119));
@@ -185,9 +185,9 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t128 = ((sin_joint3 * t122) + (cos_joint3 * t123)) + (Scalar(0.22) * ((cos_joint3 * t125) - (sin_joint3 * t126)));
   tau[1] = (t5 + ((t2 * t6) - (t1 * t8))) + t128;
   // inward pass: body 2 link2
-  const Scalar t129 = cos_joint2 * (t124 - ((((Scalar(0.00030010000000000003) * t3) + (Scalar(0.01279) * a[1])) + (Scalar(1.4336696670000002) * t4)) + ((t1 * t7) + (v[1] * t6))));
+  const Scalar t129 = cos_joint2 * (t124 - ((((Scalar(0.00030010000000000003) * t3) + (Scalar(0.01279) * a[1])) + (Scalar(1.433669667) * t4)) + ((t1 * t7) + (v[1] * t6))));
   // outputs
-  tau[0] = (Scalar(1.4602500000000003) * a[0]) + (t129 - (sin_joint2 * ((((Scalar(0.00030010000000000003) * t4) - (Scalar(3.3299999999999996e-05) * a[1])) - ((v[1] * t8) + (t2 * t7))) + t127)));
+  tau[0] = (Scalar(1.46025) * a[0]) + (t129 - (sin_joint2 * ((((Scalar(0.00030010000000000003) * t4) - (Scalar(3.3299999999999996e-05) * a[1])) - ((v[1] * t8) + (t2 * t7))) + t127)));
 }
 
-}  // namespace rbdc_gen::arm7::common::inverse_dynamics_85e8963760ac
+}  // namespace rbdc_gen::arm7::common::inverse_dynamics_67553b7f7049

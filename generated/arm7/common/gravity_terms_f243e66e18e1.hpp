@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::gravity_terms_7ef6fb79cc16 {
+namespace rbdc_gen::arm7::common::gravity_terms_f243e66e18e1 {
 
 /// Gravity terms g (paper 000 Alg. 3).
 ///
@@ -58,8 +58,8 @@ RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept 
   const Scalar t13 = ((Scalar(0.00017) * t7) - (Scalar(0.036480000000000005) * t6)) + ((sin_joint6 * t8) + (cos_joint6 * t10));
   g[4] = t13;
   // inward pass: body 5 link5
-  const Scalar t14 = ((cos_joint5 * t11) - (sin_joint5 * t12)) - (Scalar(1.3641999999999999) * t3);
-  const Scalar t15 = (Scalar(1.3641999999999999) * t4) + ((sin_joint5 * t11) + (cos_joint5 * t12));
+  const Scalar t14 = ((cos_joint5 * t11) - (sin_joint5 * t12)) - (Scalar(1.3642) * t3);
+  const Scalar t15 = (Scalar(1.3642) * t4) + ((sin_joint5 * t11) + (cos_joint5 * t12));
   g[3] = -t15;
   // inward pass: body 4 link4
   const Scalar t16 = (Scalar(0.005886000000000033) * cos_joint2) + ((cos_joint4 * t14) - (sin_joint4 * t13));
@@ -70,4 +70,4 @@ RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept 
   g[2] = t17;
 }
 
-}  // namespace rbdc_gen::arm7::common::gravity_terms_7ef6fb79cc16
+}  // namespace rbdc_gen::arm7::common::gravity_terms_f243e66e18e1

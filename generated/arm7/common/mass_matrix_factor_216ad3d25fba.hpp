@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::mass_matrix_factor_db7aefeefaad {
+namespace rbdc_gen::arm7::common::mass_matrix_factor_216ad3d25fba {
 
 /// M = Lᵀ D L over the tree's dofs (CRBA + the sparse factorisation forward_dynamics uses).
 ///
@@ -96,7 +96,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   const Scalar t20 = (Scalar(0.19) * t18) - t19;
   const Scalar t21 = Scalar(0.009281063680426091) - t20;
   const Scalar t22 = Scalar(0.00017) + t8;
-  const Scalar t23 = Scalar(0.010680452843509214) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t12)) - (sin_joint6 * (t13 + (Scalar(0.004723206102864922) * sin_joint6)))) - t20);
+  const Scalar t23 = Scalar(0.010680452843509228) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t12)) - (sin_joint6 * (t13 + (Scalar(0.004723206102864922) * sin_joint6)))) - t20);
   const Scalar t24 = Scalar(-3.57e-06) - t15;
   const Scalar t25 = (((sin_joint6 * t17) - (cos_joint6 * t14)) - (Scalar(0.19) * t8)) - Scalar(1.2919999999999997e-05);
   const Scalar t26 = Scalar(-0.0011613999999999995) - t16;
@@ -134,10 +134,10 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   const Scalar t57 = t48 + (Scalar(0.2) * (t41 - t40));
   const Scalar t58 = t49 - t53;
   const Scalar t59 = t48 - t54;
-  const Scalar t60 = Scalar(1.3641999999999999) + t11;
-  const Scalar t61 = Scalar(0.44103671699999997) + (((sin_joint5 * t46) + (cos_joint5 * t47)) - t55);
+  const Scalar t60 = Scalar(1.3642) + t11;
+  const Scalar t61 = Scalar(0.441036717) + (((sin_joint5 * t46) + (cos_joint5 * t47)) - t55);
   const Scalar t62 = Scalar(0.004275000000000001) + t58;
-  const Scalar t63 = t27 - Scalar(0.435936717);
+  const Scalar t63 = t27 - Scalar(0.43593671700000003);
   const Scalar t64 = (sin_joint4 * t59) + (cos_joint4 * t27);
   const Scalar t65 = cos_joint4 * t43;
   const Scalar t66 = ((cos_joint4 * t59) - (sin_joint4 * t27)) - t54;
@@ -160,9 +160,9 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   const Scalar t82 = ((cos_joint4 * t75) - (sin_joint4 * t79)) + (Scalar(0.2) * (t70 - t69));
   const Scalar t83 = t61 + t81;
   const Scalar t84 = Scalar(0.0006000000000000033) + t43;
-  const Scalar t85 = Scalar(0.4474035169999999) + (((cos_joint4 * ((cos_joint4 * t56) - t73)) - (sin_joint4 * (t74 - (sin_joint4 * t63)))) + t81);
+  const Scalar t85 = Scalar(0.44740351700000003) + (((cos_joint4 * ((cos_joint4 * t56) - t73)) - (sin_joint4 * (t74 - (sin_joint4 * t63)))) + t81);
   const Scalar t86 = Scalar(0.008428) + (((sin_joint4 * t52) + t78) - t53);
-  const Scalar t87 = Scalar(0.453603517) + ((sin_joint4 * t75) + (cos_joint4 * t79));
+  const Scalar t87 = Scalar(0.45360351700000007) + ((sin_joint4 * t75) + (cos_joint4 * t79));
   const Scalar t88 = t51 - t50;
   const Scalar t89 = t76 + (cos_joint4 * t88);
   const Scalar t90 = (sin_joint4 * t88) - t78;
@@ -210,7 +210,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   const Scalar t119 = (((cos_joint2 * (t101 - Scalar(0.01279))) - (sin_joint2 * (((cos_joint3 * t96) - (sin_joint3 * t97)) - Scalar(3.3299999999999996e-05)))) - (t7 * t108)) + (t39 * t118);
   const Scalar t120 = Scalar(107.74627073284883) * t39;
   L[5] = -t120;
-  const Scalar t121 = ((Scalar(1.4602500000000003) + ((cos_joint2 * ((cos_joint2 * (t87 - Scalar(1.4336696670000002))) - (sin_joint2 * t102))) - t103)) - (t7 * t109)) - (t39 * t120);
+  const Scalar t121 = ((Scalar(1.46025) + ((cos_joint2 * ((cos_joint2 * (t87 - Scalar(1.433669667))) - (sin_joint2 * t102))) - t103)) - (t7 * t109)) - (t39 * t120);
   const Scalar t122 = Scalar(1) / t111;
   D_inv[4] = t122;
   const Scalar t123 = t112 * t122;
@@ -225,7 +225,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   const Scalar t129 = ((((cos_joint2 * t87) - (sin_joint2 * (t98 - (Scalar(0.22) * (t92 - t93))))) - (t7 * t107)) - (t39 * t117)) - (t115 * t128);
   const Scalar t130 = t114 * t122;
   L[11] = t130;
-  const Scalar t131 = (((Scalar(1.4426703330000004) + (((sin_joint3 * t96) + (cos_joint3 * t97)) + t100)) - (t6 * t108)) - (t38 * t118)) - (t114 * t130);
+  const Scalar t131 = (((Scalar(1.4426703330000001) + (((sin_joint3 * t96) + (cos_joint3 * t97)) + t100)) - (t6 * t108)) - (t38 * t118)) - (t114 * t130);
   const Scalar t132 = t115 * t122;
   L[4] = t132;
   const Scalar t133 = Scalar(1) / t124;
@@ -259,4 +259,4 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   D_inv[0] = Scalar(1) / t147;
 }
 
-}  // namespace rbdc_gen::arm7::common::mass_matrix_factor_db7aefeefaad
+}  // namespace rbdc_gen::arm7::common::mass_matrix_factor_216ad3d25fba

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::inverse_dynamics_2ed5488b0d9f {
+namespace rbdc_gen::humanoid32::common::inverse_dynamics_22175d7b4ab1 {
 
 /// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3).
 ///
@@ -120,13 +120,13 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t5 = (a[5] + ((v[1] * v[3]) - (v[0] * v[4]))) + (Scalar(9.81) * (Scalar(1) - ((q[4] * t0) + (q[5] * t1))));
   // outward pass: body 0 pelvis
   const Scalar t6 = Scalar(0.28349666669999996) * v[2];
-  const Scalar t7 = (Scalar(4.039851666744001) * v[0]) - (Scalar(2.0625) * v[4]);
-  const Scalar t8 = (Scalar(3.809688333444001) * v[1]) + (Scalar(2.0625) * v[3]);
+  const Scalar t7 = (Scalar(4.039851666744001) * v[0]) - (Scalar(2.062499999999999) * v[4]);
+  const Scalar t8 = (Scalar(3.809688333444001) * v[1]) + (Scalar(2.062499999999999) * v[3]);
   const Scalar t9 = Scalar(66.95) * v[5];
-  const Scalar t10 = (Scalar(66.95) * v[3]) + (Scalar(2.0625) * v[1]);
-  const Scalar t11 = (Scalar(66.95) * v[4]) - (Scalar(2.0625) * v[0]);
-  const Scalar t12 = ((Scalar(4.039851666744001) * a[0]) - (Scalar(2.0625) * t4)) + (((v[1] * t6) - (v[2] * t8)) + ((v[4] * t9) - (v[5] * t11)));
-  const Scalar t13 = ((Scalar(3.809688333444001) * a[1]) + (Scalar(2.0625) * t3)) + (((v[2] * t7) - (v[0] * t6)) + ((v[5] * t10) - (v[3] * t9)));
+  const Scalar t10 = (Scalar(66.95) * v[3]) + (Scalar(2.062499999999999) * v[1]);
+  const Scalar t11 = (Scalar(66.95) * v[4]) - (Scalar(2.062499999999999) * v[0]);
+  const Scalar t12 = ((Scalar(4.039851666744001) * a[0]) - (Scalar(2.062499999999999) * t4)) + (((v[1] * t6) - (v[2] * t8)) + ((v[4] * t9) - (v[5] * t11)));
+  const Scalar t13 = ((Scalar(3.809688333444001) * a[1]) + (Scalar(2.062499999999999) * t3)) + (((v[2] * t7) - (v[0] * t6)) + ((v[5] * t10) - (v[3] * t9)));
   // outward pass: body 1 l_hip_yaw_link/r_hip_yaw_link
   const Lane t14 = t3 - ((a[2] * lane_c[0]) + (Scalar(0.07) * a[1]));
   const Scalar t15 = t4 + (Scalar(0.07) * a[0]);
@@ -278,13 +278,13 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t153 = ((sin_waist_pitch * t141) + (t5 * cos_waist_pitch)) + (v[19] * t147);
   const Scalar t154 = a[19] + t137;
   const Scalar t155 = Scalar(0.012) * t144;
-  const Scalar t156 = (Scalar(1.0410841074056743) * t149) + ((Scalar(0.012) * t147) - (Scalar(0.16) * t148));
-  const Scalar t157 = (Scalar(1.0401241074056744) * t146) + (Scalar(0.16) * t144);
+  const Scalar t156 = (Scalar(1.0410841074056745) * t149) + ((Scalar(0.012) * t147) - (Scalar(0.16) * t148));
+  const Scalar t157 = (Scalar(1.0401241074056746) * t146) + (Scalar(0.16) * t144);
   const Scalar t158 = Scalar(0.012) * t149;
   const Scalar t159 = Scalar(0.16) * t149;
   const Scalar t160 = (Scalar(0.16) * t146) - (Scalar(0.012) * t145);
   const Scalar t161 = ((t148 * t158) + (t147 * t159)) - ((t146 * t155) + (t145 * t157));
-  const Scalar t162 = ((Scalar(1.0401241074056744) * t151) + (Scalar(0.16) * t142)) + (((t145 * t156) + (t149 * t155)) + ((t147 * t160) - (t144 * t158)));
+  const Scalar t162 = ((Scalar(1.0401241074056746) * t151) + (Scalar(0.16) * t142)) + (((t145 * t156) + (t149 * t155)) + ((t147 * t160) - (t144 * t158)));
   // outward pass: body 9 torso
   const Scalar t163 = (t149 * cos_waist_roll) + (t146 * sin_waist_roll);
   const Scalar t164 = (t146 * cos_waist_roll) - (t149 * sin_waist_roll);
@@ -298,7 +298,7 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t172 = a[20] + t150;
   const Scalar t173 = Scalar(0.032) * t167;
   const Scalar t174 = ((Scalar(4.379874803165694) * t167) - (Scalar(0.032) * t164)) - (Scalar(9.530453494576028) * t165);
-  const Scalar t175 = (Scalar(2.4329332543543454) * t163) + (Scalar(9.530453494576028) * t147);
+  const Scalar t175 = (Scalar(2.432933254354345) * t163) + (Scalar(9.530453494576028) * t147);
   const Scalar t176 = Scalar(9.530453494576028) * t163;
   const Scalar t177 = Scalar(9.530453494576028) * t167;
   const Scalar t178 = (((Scalar(4.379874803165694) * t172) - (Scalar(0.032) * t169)) - (Scalar(9.530453494576028) * t170)) + ((t166 * t177) - ((t163 * t173) + (t164 * t175)));
@@ -393,12 +393,12 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t261 = ((t233 * cos_lanes_shoulder_roll) + (sin_lanes_shoulder_roll * t252)) + (t258 * lane_v[7]);
   const Lane t262 = ((cos_lanes_shoulder_roll * t252) - (t233 * sin_lanes_shoulder_roll)) - (t257 * lane_v[7]);
   const Lane t263 = lane_a[7] + t246;
-  const Lane t264 = (Scalar(0.295408333333) * t259) + (Scalar(1.0805) * t257);
-  const Lane t265 = (Scalar(0.294755) * t255) - (Scalar(1.0805) * t253);
-  const Lane t266 = Scalar(1.0805) * t255;
-  const Lane t267 = Scalar(1.0805) * t259;
-  const Lane t268 = ((Scalar(0.295408333333) * t263) + (Scalar(1.0805) * t261)) - ((t256 * t265) + (t258 * t267));
-  const Lane t269 = ((Scalar(0.294755) * t260) - (Scalar(1.0805) * t251)) + ((t256 * t264) - (t258 * t266));
+  const Lane t264 = (Scalar(0.295408333333) * t259) + (Scalar(1.0804999999999998) * t257);
+  const Lane t265 = (Scalar(0.294755) * t255) - (Scalar(1.0804999999999998) * t253);
+  const Lane t266 = Scalar(1.0804999999999998) * t255;
+  const Lane t267 = Scalar(1.0804999999999998) * t259;
+  const Lane t268 = ((Scalar(0.295408333333) * t263) + (Scalar(1.0804999999999998) * t261)) - ((t256 * t265) + (t258 * t267));
+  const Lane t269 = ((Scalar(0.294755) * t260) - (Scalar(1.0804999999999998) * t251)) + ((t256 * t264) - (t258 * t266));
   // outward pass: body 15 l_upper_arm/r_upper_arm
   const Lane t270 = t251 - (Scalar(0.03) * t260);
   const Lane t271 = t261 + (Scalar(0.03) * t263);
@@ -413,7 +413,7 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t280 = ((t260 * cos_lanes_shoulder_yaw) - (t263 * sin_lanes_shoulder_yaw)) - (t274 * lane_v[8]);
   const Lane t281 = lane_a[8] + (((t247 * cos_lanes_shoulder_roll) - (t248 * sin_lanes_shoulder_roll)) - (t255 * lane_v[7]));
   const Lane t282 = Scalar(0.10778583333300001) * t274;
-  const Lane t283 = Scalar(0.11002583333300002) * t278;
+  const Lane t283 = Scalar(0.110025833333) * t278;
   // outward pass: body 16 l_forearm/r_forearm
   const Lane t284 = (((cos_lanes_shoulder_yaw * t270) + (sin_lanes_shoulder_yaw * t271)) + (t277 * lane_v[8])) - (Scalar(0.28) * t280);
   const Lane t285 = (((cos_lanes_shoulder_yaw * t271) - (sin_lanes_shoulder_yaw * t270)) - (t276 * lane_v[8])) + (Scalar(0.28) * t279);
@@ -429,13 +429,13 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t295 = ((cos_lanes_elbow * t284) - (t262 * sin_lanes_elbow)) - (t291 * lane_v[9]);
   const Lane t296 = ((sin_lanes_elbow * t284) + (t262 * cos_lanes_elbow)) + (t290 * lane_v[9]);
   const Lane t297 = lane_a[9] + t280;
-  const Lane t298 = Scalar(0.10680583333300002) * t289;
+  const Lane t298 = Scalar(0.106805833333) * t289;
   const Lane t299 = Scalar(0.447) * t287;
-  const Lane t300 = (Scalar(0.10778583333300001) * t292) - (Scalar(0.447) * t290);
+  const Lane t300 = (Scalar(0.107785833333) * t292) - (Scalar(0.447) * t290);
   const Lane t301 = Scalar(0.447) * t292;
   const Lane t302 = Scalar(0.447) * t288;
   const Lane t303 = (Scalar(0.447) * t285) - (((t292 * t298) + (t289 * t300)) + (t291 * t302));
-  const Lane t304 = ((Scalar(0.10778583333300001) * t297) - (Scalar(0.447) * t295)) + (((t289 * t299) + (t288 * t298)) - (t291 * t301));
+  const Lane t304 = ((Scalar(0.107785833333) * t297) - (Scalar(0.447) * t295)) + (((t289 * t299) + (t288 * t298)) - (t291 * t301));
   // outward pass: body 17 l_wrist_yaw_link/r_wrist_yaw_link
   const Lane t305 = t295 - (Scalar(0.25) * t297);
   const Lane t306 = t285 + (Scalar(0.25) * t293);
@@ -502,7 +502,7 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t360 = (sin_lanes_wrist_yaw * t355) + (cos_lanes_wrist_yaw * t350);
   const Lane t361 = t303 + (((cos_lanes_wrist_yaw * t356) - (sin_lanes_wrist_yaw * t357)) + (Scalar(0.25) * t360));
   const Lane t362 = t304 + (((sin_lanes_wrist_yaw * t356) + (cos_lanes_wrist_yaw * t357)) - (Scalar(0.25) * t359));
-  const Lane t363 = ((((t288 * t300) - (t292 * t299)) + ((t290 * t302) + (t287 * t301))) - (Scalar(0.10680583333300002) * t294)) + t358;
+  const Lane t363 = ((((t288 * t300) - (t292 * t299)) + ((t290 * t302) + (t287 * t301))) - (Scalar(0.106805833333) * t294)) + t358;
   const Lane t364 = t359 - ((Scalar(0.447) * t297) + (t289 * t302));
   const Lane t365 = ((Scalar(0.447) * t293) - (t289 * t301)) + t360;
   const Lane t366 = ((t288 * t302) + (t292 * t301)) + ((sin_lanes_wrist_pitch * t348) + (cos_lanes_wrist_pitch * t351));
@@ -510,7 +510,7 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t367 = (cos_lanes_elbow * t364) + (sin_lanes_elbow * t366);
   const Lane t368 = ((Scalar(0.10778583333300001) * t279) + (t275 * t283)) + (((cos_lanes_elbow * t361) + (sin_lanes_elbow * t363)) + (Scalar(0.28) * t365));
   const Lane t369 = ((t278 * t282) - (t274 * t283)) + (t362 - (Scalar(0.28) * t367));
-  const Lane t370 = ((Scalar(0.11002583333300002) * t281) - (t275 * t282)) + ((cos_lanes_elbow * t363) - (sin_lanes_elbow * t361));
+  const Lane t370 = ((Scalar(0.110025833333) * t281) - (t275 * t282)) + ((cos_lanes_elbow * t363) - (sin_lanes_elbow * t361));
   // inward pass: body 15 l_upper_arm/r_upper_arm
   const Lane t371 = (cos_lanes_shoulder_yaw * t367) - (sin_lanes_shoulder_yaw * t365);
   const Lane t372 = (sin_lanes_shoulder_yaw * t367) + (cos_lanes_shoulder_yaw * t365);
@@ -518,8 +518,8 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   store_lanes(tau + 32, make_lanes(t373[1], t370[1], t362[1], t358[1]));
   const Lane t374 = t269 + (((sin_lanes_shoulder_yaw * t368) + (cos_lanes_shoulder_yaw * t369)) - (Scalar(0.03) * t371));
   const Lane t375 = (((t259 * t265) - (t255 * t264)) + ((t253 * t267) + (t257 * t266))) + t370;
-  const Lane t376 = t371 - ((Scalar(1.0805) * t260) + (t256 * t267));
-  const Lane t377 = ((Scalar(1.0805) * t263) - (t256 * t266)) + t372;
+  const Lane t376 = t371 - ((Scalar(1.0804999999999998) * t260) + (t256 * t267));
+  const Lane t377 = ((Scalar(1.0804999999999998) * t263) - (t256 * t266)) + t372;
   const Lane t378 = ((t259 * t267) + (t255 * t266)) + ((cos_lanes_elbow * t366) - (sin_lanes_elbow * t364));
   // inward pass: body 14 l_shoulder_roll_link/r_shoulder_roll_link
   const Lane t379 = (cos_lanes_shoulder_roll * t377) - (sin_lanes_shoulder_roll * t378);
@@ -538,7 +538,7 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t389 = ((cos_lanes_shoulder_pitch * t381) + (sin_lanes_shoulder_pitch * t383)) + ((lane_c[5] * t388) - (Scalar(0.36) * t387));
   const Lane t390 = ((Scalar(0.9800665778412416) * t382) + (lane_c[4] * t384)) + (Scalar(0.36) * t385);
   const Lane t391 = ((lane_c[3] * t382) + (Scalar(0.9800665778412416) * t384)) - (lane_c[5] * t385);
-  const Scalar t392 = (((Scalar(2.4329332543543454) * t168) + (Scalar(9.530453494576028) * t152)) + (((t164 * t174) + (t167 * t173)) + (t166 * t176))) + (t390[0] + t390[1]);
+  const Scalar t392 = (((Scalar(2.432933254354345) * t168) + (Scalar(9.530453494576028) * t152)) + (((t164 * t174) + (t167 * t173)) + (t166 * t176))) + (t390[0] + t390[1]);
   // inward pass: body 12 head
   const Scalar t393 = (((t201 * t206) - (t198 * t205)) - ((t196 * t208) + (t200 * t207))) + t225;
   const Scalar t394 = (((Scalar(0.019757499966999995) * t204) - (Scalar(0.064) * t203)) + ((t199 * t208) - (t197 * t206))) + ((cos_neck_roll * t226) - (sin_neck_roll * t227));
@@ -564,7 +564,7 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t409 = ((t388[0] + t388[1]) - ((t167 * t177) + (t163 * t176))) + ((cos_neck_pitch * t398) - (sin_neck_pitch * t396));
   // inward pass: body 9 torso
   const Scalar t410 = ((((t149 * t157) - (t146 * t156)) - ((t144 * t159) + (t148 * t160))) - (Scalar(0.012) * t142)) + t405;
-  const Scalar t411 = (((Scalar(1.0410841074056743) * t154) + ((Scalar(0.012) * t152) - (Scalar(0.16) * t153))) + t161) + ((cos_waist_roll * t406) - (sin_waist_roll * t407));
+  const Scalar t411 = (((Scalar(1.0410841074056745) * t154) + ((Scalar(0.012) * t152) - (Scalar(0.16) * t153))) + t161) + ((cos_waist_roll * t406) - (sin_waist_roll * t407));
   tau[19] = t411;
   const Scalar t412 = t162 + ((sin_waist_roll * t406) + (cos_waist_roll * t407));
   const Scalar t413 = ((Scalar(0.012) * t154) - ((t149 * t159) + (t146 * t160))) + ((((Scalar(9.530453494576028) * t168) + (t164 * t177)) + (t385[0] + t385[1])) + t403);
@@ -622,9 +622,9 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   store_lanes(tau + 12, make_lanes(t451[1], t441[1], t437[1], t430[1]));
   // inward pass: body 1 l_hip_yaw_link/r_hip_yaw_link
   const Lane t452 = (cos_lanes_hip_yaw * t444) - (sin_lanes_hip_yaw * t447);
-  tau[3] = ((((Scalar(66.95) * t3) + (Scalar(2.0625) * a[1])) + ((v[1] * t9) - (v[2] * t11))) + t420) + (t452[0] + t452[1]);
+  tau[3] = ((((Scalar(66.95) * t3) + (Scalar(2.062499999999999) * a[1])) + ((v[1] * t9) - (v[2] * t11))) + t420) + (t452[0] + t452[1]);
   const Lane t453 = (sin_lanes_hip_yaw * t444) + (cos_lanes_hip_yaw * t447);
-  tau[4] = ((((Scalar(66.95) * t4) - (Scalar(2.0625) * a[0])) + ((v[2] * t10) - (v[0] * t9))) + t421) + (t453[0] + t453[1]);
+  tau[4] = ((((Scalar(66.95) * t4) - (Scalar(2.062499999999999) * a[0])) + ((v[2] * t10) - (v[0] * t9))) + t421) + (t453[0] + t453[1]);
   const Lane t454 = ((cos_lanes_hip_yaw * t449) - (sin_lanes_hip_yaw * t450)) + ((lane_c[0] * t448) + (Scalar(0.07) * t453));
   tau[0] = (t12 + (((cos_waist_yaw * t417) - (sin_waist_yaw * t418)) - (Scalar(0.1) * t421))) + (t454[0] + t454[1]);
   const Lane t455 = ((sin_lanes_hip_yaw * t449) + (cos_lanes_hip_yaw * t450)) - (Scalar(0.07) * t452);
@@ -634,4 +634,4 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   tau[2] = (((Scalar(0.28349666669999996) * a[2]) + (((v[0] * t8) - (v[1] * t7)) + ((v[3] * t11) - (v[4] * t10)))) + t419) + (t456[0] + t456[1]);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::inverse_dynamics_2ed5488b0d9f
+}  // namespace rbdc_gen::humanoid32::common::inverse_dynamics_22175d7b4ab1

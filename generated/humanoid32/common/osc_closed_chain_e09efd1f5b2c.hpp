@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::osc_closed_chain_049102089d48 {
+namespace rbdc_gen::humanoid32::common::osc_closed_chain_e09efd1f5b2c {
 
 /// Trunk operational-space Λ, J̄ᵀ, b with feet in contact (paper 001 Table 2).
 ///
@@ -359,11 +359,11 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   const Scalar t227 = v[37] + t218;
   // outward pass, inertias and bias forces: body 0 pelvis
   const Scalar t228 = Scalar(0.28349666669999996) * v[2];
-  const Scalar t229 = (Scalar(4.039851666744001) * v[0]) - (Scalar(2.0625) * v[4]);
-  const Scalar t230 = (Scalar(3.809688333444001) * v[1]) + (Scalar(2.0625) * v[3]);
+  const Scalar t229 = (Scalar(4.039851666744001) * v[0]) - (Scalar(2.062499999999999) * v[4]);
+  const Scalar t230 = (Scalar(3.809688333444001) * v[1]) + (Scalar(2.062499999999999) * v[3]);
   const Scalar t231 = Scalar(66.95) * v[5];
-  const Scalar t232 = (Scalar(66.95) * v[3]) + (Scalar(2.0625) * v[1]);
-  const Scalar t233 = (Scalar(66.95) * v[4]) - (Scalar(2.0625) * v[0]);
+  const Scalar t232 = (Scalar(66.95) * v[3]) + (Scalar(2.062499999999999) * v[1]);
+  const Scalar t233 = (Scalar(66.95) * v[4]) - (Scalar(2.062499999999999) * v[0]);
   const Scalar t234 = ((v[1] * t228) - (v[2] * t230)) + ((v[4] * t231) - (v[5] * t233));
   const Scalar t235 = ((v[2] * t229) - (v[0] * t228)) + ((v[5] * t232) - (v[3] * t231));
   // outward pass, inertias and bias forces: body 1 l_hip_yaw_link
@@ -437,15 +437,15 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   const Scalar t291 = Scalar(0.00381333333) * t86;
   // outward pass, inertias and bias forces: body 14 waist_pitch_link
   const Scalar t292 = Scalar(0.012) * t88;
-  const Scalar t293 = (Scalar(1.0410841074056743) * t93) + ((Scalar(0.012) * t91) - (Scalar(0.16) * t92));
-  const Scalar t294 = (Scalar(1.0401241074056744) * t90) + (Scalar(0.16) * t88);
+  const Scalar t293 = (Scalar(1.0410841074056745) * t93) + ((Scalar(0.012) * t91) - (Scalar(0.16) * t92));
+  const Scalar t294 = (Scalar(1.0401241074056746) * t90) + (Scalar(0.16) * t88);
   const Scalar t295 = Scalar(0.012) * t93;
   const Scalar t296 = Scalar(0.16) * t93;
   const Scalar t297 = (Scalar(0.16) * t90) - (Scalar(0.012) * t89);
   // outward pass, inertias and bias forces: body 15 torso
   const Scalar t298 = Scalar(0.032) * t98;
   const Scalar t299 = ((Scalar(4.379874803165694) * t98) - (Scalar(0.032) * t95)) - (Scalar(9.530453494576028) * t96);
-  const Scalar t300 = (Scalar(2.4329332543543454) * t94) + (Scalar(9.530453494576028) * t91);
+  const Scalar t300 = (Scalar(2.432933254354345) * t94) + (Scalar(9.530453494576028) * t91);
   const Scalar t301 = Scalar(9.530453494576028) * t94;
   const Scalar t302 = Scalar(9.530453494576028) * t98;
   const Scalar t303 = ((t98 * t300) - (t94 * t299)) - ((t91 * t302) + (t96 * t301));
@@ -468,17 +468,17 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   const Scalar t316 = Scalar(0.001388333333) * t137;
   const Scalar t317 = Scalar(0.0006533333329999998) * t134;
   // outward pass, inertias and bias forces: body 20 l_shoulder_roll_link
-  const Scalar t318 = (Scalar(0.295408333333) * t144) + (Scalar(1.0805) * t142);
-  const Scalar t319 = (Scalar(0.294755) * t140) - (Scalar(1.0805) * t138);
-  const Scalar t320 = Scalar(1.0805) * t140;
-  const Scalar t321 = Scalar(1.0805) * t144;
+  const Scalar t318 = (Scalar(0.295408333333) * t144) + (Scalar(1.0804999999999998) * t142);
+  const Scalar t319 = (Scalar(0.294755) * t140) - (Scalar(1.0804999999999998) * t138);
+  const Scalar t320 = Scalar(1.0804999999999998) * t140;
+  const Scalar t321 = Scalar(1.0804999999999998) * t144;
   // outward pass, inertias and bias forces: body 21 l_upper_arm
   const Scalar t322 = Scalar(0.10778583333300001) * t147;
-  const Scalar t323 = Scalar(0.11002583333300002) * t151;
+  const Scalar t323 = Scalar(0.110025833333) * t151;
   // outward pass, inertias and bias forces: body 22 l_forearm
-  const Scalar t324 = Scalar(0.10680583333300002) * t155;
+  const Scalar t324 = Scalar(0.106805833333) * t155;
   const Scalar t325 = Scalar(0.447) * t153;
-  const Scalar t326 = (Scalar(0.10778583333300001) * t158) - (Scalar(0.447) * t156);
+  const Scalar t326 = (Scalar(0.107785833333) * t158) - (Scalar(0.447) * t156);
   const Scalar t327 = Scalar(0.447) * t158;
   const Scalar t328 = Scalar(0.447) * t154;
   // outward pass, inertias and bias forces: body 23 l_wrist_yaw_link
@@ -497,17 +497,17 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   const Scalar t338 = Scalar(0.001388333333) * t187;
   const Scalar t339 = Scalar(0.0006533333329999998) * t184;
   // outward pass, inertias and bias forces: body 27 r_shoulder_roll_link
-  const Scalar t340 = (Scalar(0.295408333333) * t194) + (Scalar(1.0805) * t192);
-  const Scalar t341 = (Scalar(0.294755) * t190) - (Scalar(1.0805) * t188);
-  const Scalar t342 = Scalar(1.0805) * t190;
-  const Scalar t343 = Scalar(1.0805) * t194;
+  const Scalar t340 = (Scalar(0.295408333333) * t194) + (Scalar(1.0804999999999998) * t192);
+  const Scalar t341 = (Scalar(0.294755) * t190) - (Scalar(1.0804999999999998) * t188);
+  const Scalar t342 = Scalar(1.0804999999999998) * t190;
+  const Scalar t343 = Scalar(1.0804999999999998) * t194;
   // outward pass, inertias and bias forces: body 28 r_upper_arm
   const Scalar t344 = Scalar(0.10778583333300001) * t197;
-  const Scalar t345 = Scalar(0.11002583333300002) * t201;
+  const Scalar t345 = Scalar(0.110025833333) * t201;
   // outward pass, inertias and bias forces: body 29 r_forearm
-  const Scalar t346 = Scalar(0.10680583333300002) * t205;
+  const Scalar t346 = Scalar(0.106805833333) * t205;
   const Scalar t347 = Scalar(0.447) * t203;
-  const Scalar t348 = (Scalar(0.10778583333300001) * t208) - (Scalar(0.447) * t206);
+  const Scalar t348 = (Scalar(0.107785833333) * t208) - (Scalar(0.447) * t206);
   const Scalar t349 = Scalar(0.447) * t208;
   const Scalar t350 = Scalar(0.447) * t204;
   // outward pass, inertias and bias forces: body 30 r_wrist_yaw_link
@@ -781,9 +781,9 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   const Scalar t584 = ((cos_r_wrist_yaw * t535) - (sin_r_wrist_yaw * t540)) + (Scalar(0.25) * t562);
   const Scalar t585 = ((sin_r_wrist_yaw * t535) + (cos_r_wrist_yaw * t540)) - (Scalar(0.25) * t561);
   const Scalar t586 = Scalar(0.447) + t577;
-  const Scalar t587 = Scalar(0.10778583333300001) + ((((sin_r_wrist_yaw * t555) + (cos_r_wrist_yaw * t556)) - (Scalar(0.25) * t565)) - (Scalar(0.25) * t579));
+  const Scalar t587 = Scalar(0.107785833333) + ((((sin_r_wrist_yaw * t555) + (cos_r_wrist_yaw * t556)) - (Scalar(0.25) * t565)) - (Scalar(0.25) * t579));
   const Scalar t588 = t579 - Scalar(0.447);
-  const Scalar t589 = (t509 - (t509 * t522)) - Scalar(0.10680583333300002);
+  const Scalar t589 = (t509 - (t509 * t522)) - Scalar(0.106805833333);
   const Scalar t590 = (t513 + ((((t508 * t526) - (t504 * t527)) + (t499 * t528)) - (t500 * t529))) - (t520 * t531);
   const Scalar t591 = (t514 + ((((t504 * t526) - (t505 * t527)) + (t502 * t528)) + (t498 * t529))) - (t521 * t531);
   const Scalar t592 = (t512 + ((((t499 * t526) - (t502 * t527)) + (t496 * t528)) - (t493 * t529))) - (t523 * t531);
@@ -878,7 +878,7 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   const Scalar t680 = ((cos_r_elbow * t651) + (sin_r_elbow * t652)) + (Scalar(0.28) * t661);
   const Scalar t681 = ((cos_r_elbow * t636) - (sin_r_elbow * t631)) - (Scalar(0.28) * t660);
   const Scalar t682 = Scalar(0.10778583333300001) + ((((cos_r_elbow * ((cos_r_elbow * t630) + t649)) + (sin_r_elbow * (t650 + (sin_r_elbow * t639)))) + (Scalar(0.28) * t659)) + (Scalar(0.28) * t673));
-  const Scalar t683 = Scalar(0.11002583333300002) + ((cos_r_elbow * t652) - (sin_r_elbow * t651));
+  const Scalar t683 = Scalar(0.110025833333) + ((cos_r_elbow * t652) - (sin_r_elbow * t651));
   const Scalar t684 = (t596 + ((((t584 * t625) - (t582 * t624)) - (t576 * t626)) + (t578 * t627))) - (t618 * t629);
   const Scalar t685 = (t598 + ((((t589 * t625) - (t584 * t624)) - (t561 * t626)) + (t546 * t627))) - (t620 * t629);
   const Scalar t686 = ((t594 - (t205 * t350)) + ((((t561 * t625) - (t576 * t624)) - (t572 * t626)) + (t570 * t627))) - (t621 * t629);
@@ -979,9 +979,9 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   const Scalar t780 = ((cos_r_shoulder_yaw * t731) - (sin_r_shoulder_yaw * t736)) + (Scalar(0.03) * t759);
   const Scalar t781 = ((sin_r_shoulder_yaw * t731) + (cos_r_shoulder_yaw * t736)) - (Scalar(0.03) * t758);
   const Scalar t782 = Scalar(0.295408333333) + ((((cos_r_shoulder_yaw * ((cos_r_shoulder_yaw * t729) - t750)) - (sin_r_shoulder_yaw * (t751 - (sin_r_shoulder_yaw * t735)))) + (Scalar(0.03) * t761)) + (Scalar(0.03) * t774));
-  const Scalar t783 = Scalar(1.0805) + t774;
+  const Scalar t783 = Scalar(1.0804999999999998) + t774;
   const Scalar t784 = Scalar(0.294755) + ((((sin_r_shoulder_yaw * t752) + (cos_r_shoulder_yaw * t753)) - (Scalar(0.03) * t762)) - (Scalar(0.03) * t776));
-  const Scalar t785 = t776 - Scalar(1.0805);
+  const Scalar t785 = t776 - Scalar(1.0804999999999998);
   const Scalar t786 = (t690 + ((((t682 * t722) - (t678 * t723)) + (t672 * t724)) - (t673 * t725))) - (t716 * t727);
   const Scalar t787 = (t691 + ((((t678 * t722) - (t679 * t723)) + (t675 * t724)) - (t676 * t725))) - (t717 * t727);
   const Scalar t788 = (t689 + ((((t672 * t722) - (t675 * t723)) + (t669 * t724)) - (t666 * t725))) - (t719 * t727);
@@ -1237,7 +1237,7 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   const Scalar t1036 = (((Scalar(0.9800665778412416) * t1005) + (Scalar(0.19866933079506124) * t1006)) + (Scalar(0.21) * t1013)) + (Scalar(0.36) * t1031);
   const Scalar t1037 = (((Scalar(0.9800665778412416) * t1006) - (Scalar(0.19866933079506124) * t1005)) + (Scalar(0.21) * t1014)) + (Scalar(0.21) * t1031);
   const Scalar t1038 = ((((Scalar(0.9800665778412416) * t980) - (Scalar(0.19866933079506124) * t977)) + (Scalar(0.21) * t988)) - ((Scalar(0.36) * t1032) + (Scalar(0.21) * t1033))) - Scalar(0.032);
-  const Scalar t1039 = Scalar(2.4329332543543454) + ((((Scalar(0.9800665778412416) * ((Scalar(0.9800665778412416) * t959) + t1003)) + (Scalar(0.19866933079506124) * (t1004 + (Scalar(0.19866933079506124) * t981)))) + (Scalar(0.36) * t1013)) + (Scalar(0.36) * t1028));
+  const Scalar t1039 = Scalar(2.432933254354345) + ((((Scalar(0.9800665778412416) * ((Scalar(0.9800665778412416) * t959) + t1003)) + (Scalar(0.19866933079506124) * (t1004 + (Scalar(0.19866933079506124) * t981)))) + (Scalar(0.36) * t1013)) + (Scalar(0.36) * t1028));
   const Scalar t1040 = (t900 + ((((t890 * t947) - (t888 * t946)) - (t882 * t948)) + (t884 * t949))) - (t940 * t951);
   const Scalar t1041 = t951 - (t941 * t951);
   const Scalar t1042 = (t901 + ((((t893 * t947) - (t890 * t946)) - (t885 * t948)) + (t887 * t949))) - (t942 * t951);
@@ -1478,9 +1478,9 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   const Scalar t1274 = ((cos_l_wrist_yaw * t1225) - (sin_l_wrist_yaw * t1230)) + (Scalar(0.25) * t1252);
   const Scalar t1275 = ((sin_l_wrist_yaw * t1225) + (cos_l_wrist_yaw * t1230)) - (Scalar(0.25) * t1251);
   const Scalar t1276 = Scalar(0.447) + t1267;
-  const Scalar t1277 = Scalar(0.10778583333300001) + ((((sin_l_wrist_yaw * t1245) + (cos_l_wrist_yaw * t1246)) - (Scalar(0.25) * t1255)) - (Scalar(0.25) * t1269));
+  const Scalar t1277 = Scalar(0.107785833333) + ((((sin_l_wrist_yaw * t1245) + (cos_l_wrist_yaw * t1246)) - (Scalar(0.25) * t1255)) - (Scalar(0.25) * t1269));
   const Scalar t1278 = t1269 - Scalar(0.447);
-  const Scalar t1279 = (t1199 - (t1199 * t1212)) - Scalar(0.10680583333300002);
+  const Scalar t1279 = (t1199 - (t1199 * t1212)) - Scalar(0.106805833333);
   const Scalar t1280 = (t1203 + ((((t1198 * t1216) - (t1194 * t1217)) + (t1189 * t1218)) - (t1190 * t1219))) - (t1210 * t1221);
   const Scalar t1281 = (t1204 + ((((t1194 * t1216) - (t1195 * t1217)) + (t1192 * t1218)) + (t1188 * t1219))) - (t1211 * t1221);
   const Scalar t1282 = (t1202 + ((((t1189 * t1216) - (t1192 * t1217)) + (t1186 * t1218)) - (t1183 * t1219))) - (t1213 * t1221);
@@ -1575,7 +1575,7 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   const Scalar t1370 = ((cos_l_elbow * t1341) + (sin_l_elbow * t1342)) + (Scalar(0.28) * t1351);
   const Scalar t1371 = ((cos_l_elbow * t1326) - (sin_l_elbow * t1321)) - (Scalar(0.28) * t1350);
   const Scalar t1372 = Scalar(0.10778583333300001) + ((((cos_l_elbow * ((cos_l_elbow * t1320) + t1339)) + (sin_l_elbow * (t1340 + (sin_l_elbow * t1329)))) + (Scalar(0.28) * t1349)) + (Scalar(0.28) * t1363));
-  const Scalar t1373 = Scalar(0.11002583333300002) + ((cos_l_elbow * t1342) - (sin_l_elbow * t1341));
+  const Scalar t1373 = Scalar(0.110025833333) + ((cos_l_elbow * t1342) - (sin_l_elbow * t1341));
   const Scalar t1374 = (t1286 + ((((t1274 * t1315) - (t1272 * t1314)) - (t1266 * t1316)) + (t1268 * t1317))) - (t1308 * t1319);
   const Scalar t1375 = (t1288 + ((((t1279 * t1315) - (t1274 * t1314)) - (t1251 * t1316)) + (t1236 * t1317))) - (t1310 * t1319);
   const Scalar t1376 = ((t1284 - (t155 * t328)) + ((((t1251 * t1315) - (t1266 * t1314)) - (t1262 * t1316)) + (t1260 * t1317))) - (t1311 * t1319);
@@ -1676,9 +1676,9 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   const Scalar t1470 = ((cos_l_shoulder_yaw * t1421) - (sin_l_shoulder_yaw * t1426)) + (Scalar(0.03) * t1449);
   const Scalar t1471 = ((sin_l_shoulder_yaw * t1421) + (cos_l_shoulder_yaw * t1426)) - (Scalar(0.03) * t1448);
   const Scalar t1472 = Scalar(0.295408333333) + ((((cos_l_shoulder_yaw * ((cos_l_shoulder_yaw * t1419) - t1440)) - (sin_l_shoulder_yaw * (t1441 - (sin_l_shoulder_yaw * t1425)))) + (Scalar(0.03) * t1451)) + (Scalar(0.03) * t1464));
-  const Scalar t1473 = Scalar(1.0805) + t1464;
+  const Scalar t1473 = Scalar(1.0804999999999998) + t1464;
   const Scalar t1474 = Scalar(0.294755) + ((((sin_l_shoulder_yaw * t1442) + (cos_l_shoulder_yaw * t1443)) - (Scalar(0.03) * t1452)) - (Scalar(0.03) * t1466));
-  const Scalar t1475 = t1466 - Scalar(1.0805);
+  const Scalar t1475 = t1466 - Scalar(1.0804999999999998);
   const Scalar t1476 = (t1380 + ((((t1372 * t1412) - (t1368 * t1413)) + (t1362 * t1414)) - (t1363 * t1415))) - (t1406 * t1417);
   const Scalar t1477 = (t1381 + ((((t1368 * t1412) - (t1369 * t1413)) + (t1365 * t1414)) - (t1366 * t1415))) - (t1407 * t1417);
   const Scalar t1478 = (t1379 + ((((t1362 * t1412) - (t1365 * t1413)) + (t1359 * t1414)) - (t1356 * t1415))) - (t1409 * t1417);
@@ -2294,10 +2294,10 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   const Scalar t2082 = (cos_waist_roll * t2080) - (sin_waist_roll * t2081);
   const Scalar t2083 = (sin_waist_roll * t2080) + (cos_waist_roll * t2081);
   const Scalar t2084 = ((cos_waist_roll * t2044) - (sin_waist_roll * t2045)) - Scalar(0.012);
-  const Scalar t2085 = Scalar(1.0410841074056743) + ((cos_waist_roll * ((cos_waist_roll * t2046) - t2063)) - (sin_waist_roll * (t2064 - (sin_waist_roll * t2051))));
+  const Scalar t2085 = Scalar(1.0410841074056745) + ((cos_waist_roll * ((cos_waist_roll * t2046) - t2063)) - (sin_waist_roll * (t2064 - (sin_waist_roll * t2051))));
   const Scalar t2086 = Scalar(0.012) + ((cos_waist_roll * t2048) - (sin_waist_roll * t2052));
   const Scalar t2087 = ((cos_waist_roll * t2070) - (sin_waist_roll * t2072)) - Scalar(0.16);
-  const Scalar t2088 = Scalar(1.0401241074056744) + ((sin_waist_roll * t2065) + (cos_waist_roll * t2066));
+  const Scalar t2088 = Scalar(1.0401241074056746) + ((sin_waist_roll * t2065) + (cos_waist_roll * t2066));
   const Scalar t2089 = Scalar(0.16) + ((sin_waist_roll * t2069) + (cos_waist_roll * t2071));
   const Scalar t2090 = (t2004 + ((((t1984 * t2031) - (t1985 * t2032)) + (t1987 * t2033)) - (t1988 * t2034))) - (t2026 * t2036);
   const Scalar t2091 = t2037 - (t2027 * t2036);
@@ -3995,7 +3995,7 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   const Scalar t3605 = ((t2430 - t2442) + (t3040 + (t3053 - t3054))) + (t3576 + (t3589 + t3590));
   Lambda[3] = t3605;
   Lambda[18] = t3605;
-  const Scalar t3606 = ((t2443 - Scalar(2.0625)) + t3055) + t3591;
+  const Scalar t3606 = ((t2443 - Scalar(2.062499999999999)) + t3055) + t3591;
   Lambda[4] = t3606;
   Lambda[24] = t3606;
   const Scalar t3607 = ((((cos_waist_yaw * t2407) - (sin_waist_yaw * t2412)) - (Scalar(0.1) * t2438)) + t3056) + t3592;
@@ -4004,7 +4004,7 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   const Scalar t3608 = ((((sin_waist_yaw * t2404) + (cos_waist_yaw * t2409)) + (Scalar(0.1) * t2428)) + t3066) + t3602;
   Lambda[8] = t3608;
   Lambda[13] = t3608;
-  const Scalar t3609 = ((Scalar(2.0625) + t2444) + t3057) + t3593;
+  const Scalar t3609 = ((Scalar(2.062499999999999) + t2444) + t3057) + t3593;
   Lambda[9] = t3609;
   Lambda[19] = t3609;
   const Scalar t3610 = (t2445 + t3058) + t3594;
@@ -4134,4 +4134,4 @@ RBDC_HOST_DEVICE inline void osc_closed_chain(const Scalar* q, const Scalar* v, 
   b[5] = t3630 - (((t3617 * t3670) + (t3619 * t3671)) + (t3620 * t3672));
 }
 
-}  // namespace rbdc_gen::humanoid32::common::osc_closed_chain_049102089d48
+}  // namespace rbdc_gen::humanoid32::common::osc_closed_chain_e09efd1f5b2c

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::centroidal_momentum_matrix_988f4458f00d {
+namespace rbdc_gen::arm7::common::centroidal_momentum_matrix_a0f4ef3022c8 {
 
 /// Centroidal momentum matrix A_G (Orin, Goswami & Lee 2013): h_G = A_G v.
 ///
@@ -86,9 +86,9 @@ RBDC_HOST_DEVICE inline void centroidal_momentum_matrix(const Scalar* q, Scalar*
   const Scalar t36 = (t29 * sin_joint6) + (t21 * cos_joint6);
   A_G[38] = Scalar(0.0005) * ((Scalar(0.29552020666133966) * t35) + (Scalar(0.955336489125606) * t36));
   // centre of mass
-  const Scalar t37 = ((Scalar(1.3641999999999999) * t17) + (((Scalar(0.00017) * t25) - (Scalar(0.036480000000000005) * t26)) + ((Scalar(0.0033246023249400717) * t31) + (Scalar(0.04726753550266307) * t32)))) - (Scalar(0.0006000000000000033) * t8);
-  const Scalar t38 = (Scalar(0.0006000000000000033) * t10) + ((Scalar(1.3641999999999999) * t19) + (((Scalar(0.00017) * t27) + (Scalar(0.036480000000000005) * t28)) + ((Scalar(0.0033246023249400717) * t33) + (Scalar(0.04726753550266307) * t34))));
-  const Scalar t39 = (Scalar(0.0006000000000000033) * t12) + ((Scalar(1.3641999999999999) * t21) + (((Scalar(0.00017) * t29) + (Scalar(0.036480000000000005) * t30)) + ((Scalar(0.0033246023249400717) * t35) + (Scalar(0.04726753550266307) * t36))));
+  const Scalar t37 = ((Scalar(1.3642) * t17) + (((Scalar(0.00017) * t25) - (Scalar(0.036480000000000005) * t26)) + ((Scalar(0.0033246023249400717) * t31) + (Scalar(0.04726753550266307) * t32)))) - (Scalar(0.0006000000000000033) * t8);
+  const Scalar t38 = (Scalar(0.0006000000000000033) * t10) + ((Scalar(1.3642) * t19) + (((Scalar(0.00017) * t27) + (Scalar(0.036480000000000005) * t28)) + ((Scalar(0.0033246023249400717) * t33) + (Scalar(0.04726753550266307) * t34))));
+  const Scalar t39 = (Scalar(0.0006000000000000033) * t12) + ((Scalar(1.3642) * t21) + (((Scalar(0.00017) * t29) + (Scalar(0.036480000000000005) * t30)) + ((Scalar(0.0033246023249400717) * t35) + (Scalar(0.04726753550266307) * t36))));
   const Scalar t40 = Scalar(0.04962779156327543) * (((((Scalar(0.0011099999999999999) * t0) + (Scalar(3.7500000000000004) * t1)) + t37) - (Scalar(0.02099999999999999) * sin_joint1)) - Scalar(0.084));
   const Scalar t41 = Scalar(0.04962779156327543) * ((Scalar(0.02099999999999999) * cos_joint1) + (((Scalar(0.0011099999999999999) * t2) + (Scalar(3.7500000000000004) * t3)) + t38));
   const Scalar t42 = Scalar(0.04962779156327543) * (Scalar(5.423) + (((Scalar(3.7500000000000004) * cos_joint2) - (Scalar(0.0011099999999999999) * sin_joint2)) + t39));
@@ -105,7 +105,7 @@ RBDC_HOST_DEVICE inline void centroidal_momentum_matrix(const Scalar* q, Scalar*
   const Scalar t52 = (Scalar(0.19) * t51) - (Scalar(0.19) * t46);
   const Scalar t53 = Scalar(0.009281063680426091) - t52;
   const Scalar t54 = Scalar(0.00017) + t43;
-  const Scalar t55 = Scalar(0.010680452843509214) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t47)) - (sin_joint6 * (t48 + (Scalar(0.004723206102864922) * sin_joint6)))) - t52);
+  const Scalar t55 = Scalar(0.010680452843509228) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t47)) - (sin_joint6 * (t48 + (Scalar(0.004723206102864922) * sin_joint6)))) - t52);
   const Scalar t56 = Scalar(-3.57e-06) - (Scalar(3.12e-07) * sin_joint6);
   const Scalar t57 = (((sin_joint6 * t50) - (cos_joint6 * t49)) - (Scalar(0.19) * t43)) - Scalar(1.2919999999999997e-05);
   const Scalar t58 = Scalar(-0.0011613999999999995) - (Scalar(3.12e-07) * cos_joint6);
@@ -126,10 +126,10 @@ RBDC_HOST_DEVICE inline void centroidal_momentum_matrix(const Scalar* q, Scalar*
   const Scalar t72 = (Scalar(0.2) * t51) - (Scalar(0.2) * t46);
   const Scalar t73 = ((cos_joint5 * ((cos_joint5 * t55) - t64)) - (sin_joint5 * (t65 - (sin_joint5 * t53)))) - t72;
   const Scalar t74 = ((cos_joint5 * t57) - (sin_joint5 * t58)) + (Scalar(0.2) * (t61 - t60));
-  const Scalar t75 = Scalar(1.3641999999999999) + t46;
-  const Scalar t76 = Scalar(0.44103671699999997) + (((sin_joint5 * t66) + (cos_joint5 * t67)) - t72);
+  const Scalar t75 = Scalar(1.3642) + t46;
+  const Scalar t76 = Scalar(0.441036717) + (((sin_joint5 * t66) + (cos_joint5 * t67)) - t72);
   const Scalar t77 = Scalar(0.004275000000000001) + (((sin_joint5 * t57) + (cos_joint5 * t58)) - t71);
-  const Scalar t78 = t59 - Scalar(0.435936717);
+  const Scalar t78 = t59 - Scalar(0.43593671700000003);
   // inward pass, composite inertias: body 4 link4
   const Scalar t79 = cos_joint4 * t62;
   const Scalar t80 = sin_joint4 * t75;
@@ -145,9 +145,9 @@ RBDC_HOST_DEVICE inline void centroidal_momentum_matrix(const Scalar* q, Scalar*
   const Scalar t90 = ((cos_joint4 * t85) - (sin_joint4 * t87)) + (Scalar(0.2) * (t80 - t79));
   const Scalar t91 = t76 + t89;
   const Scalar t92 = Scalar(0.0006000000000000033) + t63;
-  const Scalar t93 = Scalar(0.4474035169999999) + (((cos_joint4 * ((cos_joint4 * t73) - t83)) - (sin_joint4 * (t84 - (sin_joint4 * t78)))) + t89);
+  const Scalar t93 = Scalar(0.44740351700000003) + (((cos_joint4 * ((cos_joint4 * t73) - t83)) - (sin_joint4 * (t84 - (sin_joint4 * t78)))) + t89);
   const Scalar t94 = Scalar(0.008428) + (((sin_joint4 * t70) + (cos_joint4 * t77)) - t71);
-  const Scalar t95 = Scalar(0.453603517) + ((sin_joint4 * t85) + (cos_joint4 * t87));
+  const Scalar t95 = Scalar(0.45360351700000007) + ((sin_joint4 * t85) + (cos_joint4 * t87));
   // inward pass, composite inertias: body 3 link3
   const Scalar t96 = cos_joint3 * t81;
   const Scalar t97 = sin_joint3 * t92;
@@ -162,14 +162,14 @@ RBDC_HOST_DEVICE inline void centroidal_momentum_matrix(const Scalar* q, Scalar*
   const Scalar t106 = Scalar(3.7500000000000004) + t82;
   const Scalar t107 = ((cos_joint3 * t101) - (sin_joint3 * t102)) - Scalar(3.3299999999999996e-05);
   const Scalar t108 = Scalar(0.00030010000000000003) + (((cos_joint3 * t90) - (sin_joint3 * t94)) + (Scalar(0.22) * (t97 - t96)));
-  const Scalar t109 = Scalar(1.4426703330000004) + (((sin_joint3 * t101) + (cos_joint3 * t102)) + t104);
+  const Scalar t109 = Scalar(1.4426703330000001) + (((sin_joint3 * t101) + (cos_joint3 * t102)) + t104);
   const Scalar t110 = (((sin_joint3 * t90) + (cos_joint3 * t94)) - (Scalar(0.22) * t98)) - Scalar(0.01279);
   // inward pass, composite inertias: body 2 link2
   const Scalar t111 = (cos_joint2 * t105) + (sin_joint2 * t106);
   A_G[11] = -t111;
   const Scalar t112 = (cos_joint2 * t108) - (sin_joint2 * (((cos_joint3 * ((cos_joint3 * t93) - t99)) - (sin_joint3 * (t100 - (sin_joint3 * t91)))) + t104));
   const Scalar t113 = (cos_joint2 * t110) - (sin_joint2 * t107);
-  const Scalar t114 = (cos_joint2 * (t95 - Scalar(1.4336696670000002))) - (sin_joint2 * t108);
+  const Scalar t114 = (cos_joint2 * (t95 - Scalar(1.433669667))) - (sin_joint2 * t108);
   const Scalar t115 = ((cos_joint2 * t112) + (sin_joint2 * t114)) - (Scalar(0.18) * t111);
   const Scalar t116 = Scalar(0.02099999999999999) + t98;
   const Scalar t117 = (t113 - (Scalar(0.18) * t98)) - Scalar(0.00698);
@@ -177,7 +177,7 @@ RBDC_HOST_DEVICE inline void centroidal_momentum_matrix(const Scalar* q, Scalar*
   const Scalar t118 = (cos_joint1 * t111) - (sin_joint1 * t116);
   A_G[4] = t118;
   const Scalar t119 = (sin_joint1 * t111) + (cos_joint1 * t116);
-  A_G[2] = (Scalar(1.4602500000000003) + ((cos_joint2 * t114) - (sin_joint2 * t112))) - ((t40 * t118) + (t41 * t119));
+  A_G[2] = (Scalar(1.46025) + ((cos_joint2 * t114) - (sin_joint2 * t112))) - ((t40 * t118) + (t41 * t119));
   A_G[3] = -t119;
   // centroidal momentum matrix: body 1 link1
   const Scalar t120 = Scalar(0.16) - t42;
@@ -248,4 +248,4 @@ RBDC_HOST_DEVICE inline void centroidal_momentum_matrix(const Scalar* q, Scalar*
   A_G[31] = ((Scalar(0.009281063680426091) * t28) - (Scalar(3.12e-07) * t34)) + ((t143 * t148) - (t145 * t146));
 }
 
-}  // namespace rbdc_gen::arm7::common::centroidal_momentum_matrix_988f4458f00d
+}  // namespace rbdc_gen::arm7::common::centroidal_momentum_matrix_a0f4ef3022c8

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_ce8ba11df8c9 {
+namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_5975a29e311d {
 
 /// Derivatives of the inverse dynamics τ = M a + c + g (∂τ/∂a is M).
 ///
@@ -154,44 +154,44 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   const Scalar t89 = t88 - t87;
   const Scalar t90 = Scalar(3.3299999999999996e-05) * t0;
   const Scalar t91 = Scalar(0.01279) * t1;
-  const Scalar t92 = (t90 + (Scalar(1.4426703330000004) * v[1])) - t91;
+  const Scalar t92 = (t90 + (Scalar(1.4426703330000001) * v[1])) - t91;
   const Scalar t93 = Scalar(0.00030010000000000003) * t0;
   const Scalar t94 = Scalar(0.01279) * v[1];
-  const Scalar t95 = (t93 + t94) + (Scalar(1.4336696670000002) * t1);
-  const Scalar t96 = (((Scalar(0.00030010000000000003) * t42) + (Scalar(0.01279) * a[1])) + (Scalar(1.4336696670000002) * t43)) + ((t0 * t92) + (v[1] * t89));
+  const Scalar t95 = (t93 + t94) + (Scalar(1.433669667) * t1);
+  const Scalar t96 = (((Scalar(0.00030010000000000003) * t42) + (Scalar(0.01279) * a[1])) + (Scalar(1.433669667) * t43)) + ((t0 * t92) + (v[1] * t89));
   const Scalar t97 = Scalar(0.0006002000000000001) * v[1];
   const Scalar t98 = Scalar(6.659999999999999e-05) * t1;
   const Scalar t99 = Scalar(0.02558) * t0;
   // derivatives: outward pass, forces: body 3 link3
-  const Scalar t100 = Scalar(0.4474035169999999) * t6;
+  const Scalar t100 = Scalar(0.44740351700000003) * t6;
   const Scalar t101 = Scalar(0.008428) * t10;
   const Scalar t102 = Scalar(0.008428) * t7;
   const Scalar t103 = Scalar(0.0006000000000000033) * t8;
-  const Scalar t104 = (t102 + (Scalar(0.453603517) * t10)) - t103;
+  const Scalar t104 = (t102 + (Scalar(0.45360351700000007) * t10)) - t103;
   const Scalar t105 = Scalar(0.0006000000000000033) * t10;
   const Scalar t106 = Scalar(0.0006000000000000033) * t6;
   const Scalar t107 = (t10 * t105) + (t6 * t106);
-  const Scalar t108 = ((Scalar(0.4474035169999999) * t51) + (Scalar(0.005886000000000033) * cos_joint2)) + (((t7 * t104) - (t10 * t101)) + (t9 * t106));
-  const Scalar t109 = (((Scalar(0.008428) * t52) + (Scalar(0.453603517) * t54)) - (Scalar(0.0006000000000000033) * t53)) + (((t6 * t101) - (t7 * t100)) + (t9 * t105));
+  const Scalar t108 = ((Scalar(0.44740351700000003) * t51) + (Scalar(0.005886000000000033) * cos_joint2)) + (((t7 * t104) - (t10 * t101)) + (t9 * t106));
+  const Scalar t109 = (((Scalar(0.008428) * t52) + (Scalar(0.45360351700000007) * t54)) - (Scalar(0.0006000000000000033) * t53)) + (((t6 * t101) - (t7 * t100)) + (t9 * t105));
   const Scalar t110 = Scalar(0.0012000000000000066) * t9;
   const Scalar t111 = Scalar(0.016856) * t6;
   // derivatives: outward pass, forces: body 4 link4
   const Scalar t112 = Scalar(0.004275000000000001) * t14;
   const Scalar t113 = Scalar(0.004275000000000001) * t17;
-  const Scalar t114 = t113 - (Scalar(0.435936717) * t14);
-  const Scalar t115 = Scalar(1.3641999999999999) * t12;
-  const Scalar t116 = Scalar(1.3641999999999999) * t15;
-  const Scalar t117 = ((Scalar(0.44103671699999997) * t17) + t112) + t116;
-  const Scalar t118 = Scalar(1.3641999999999999) * t17;
-  const Scalar t119 = Scalar(1.3641999999999999) * t13;
+  const Scalar t114 = t113 - (Scalar(0.43593671700000003) * t14);
+  const Scalar t115 = Scalar(1.3642) * t12;
+  const Scalar t116 = Scalar(1.3642) * t15;
+  const Scalar t117 = ((Scalar(0.441036717) * t17) + t112) + t116;
+  const Scalar t118 = Scalar(1.3642) * t17;
+  const Scalar t119 = Scalar(1.3642) * t13;
   const Scalar t120 = (t13 * t119) + (t17 * t118);
-  const Scalar t121 = (((t17 * t114) - (t14 * t117)) - (t16 * t119)) - (Scalar(1.3641999999999999) * t56);
-  const Scalar t122 = (((Scalar(0.44103671699999997) * t65) + (Scalar(0.004275000000000001) * t62)) + (Scalar(1.3641999999999999) * t63)) - (((t14 * t115) + (t13 * t114)) + (t16 * t118));
-  const Scalar t123 = Scalar(2.7283999999999997) * t16;
+  const Scalar t121 = (((t17 * t114) - (t14 * t117)) - (t16 * t119)) - (Scalar(1.3642) * t56);
+  const Scalar t122 = (((Scalar(0.441036717) * t65) + (Scalar(0.004275000000000001) * t62)) + (Scalar(1.3642) * t63)) - (((t14 * t115) + (t13 * t114)) + (t16 * t118));
+  const Scalar t123 = Scalar(2.7284) * t16;
   const Scalar t124 = Scalar(0.008550000000000002) * t13;
   const Scalar t125 = t123 + t124;
   // derivatives: outward pass, forces: body 5 link5
-  const Scalar t126 = (((Scalar(0.010680452843509214) * t72) - (Scalar(3.57e-06) * t73)) - (Scalar(1.2919999999999997e-05) * t76)) + (Scalar(0.036480000000000005) * t64);
+  const Scalar t126 = (((Scalar(0.010680452843509228) * t72) - (Scalar(3.57e-06) * t73)) - (Scalar(1.2919999999999997e-05) * t76)) + (Scalar(0.036480000000000005) * t64);
   const Scalar t127 = ((Scalar(0.012880486843509217) * t76) - ((Scalar(1.2919999999999997e-05) * t72) + (Scalar(0.0011613999999999995) * t73))) + ((Scalar(0.00017) * t75) - (Scalar(0.036480000000000005) * t74));
   const Scalar t128 = Scalar(3.57e-06) * t21;
   const Scalar t129 = Scalar(1.2919999999999997e-05) * t24;
@@ -203,7 +203,7 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   const Scalar t135 = Scalar(0.00017) * t16;
   const Scalar t136 = Scalar(0.00017) * t23;
   const Scalar t137 = Scalar(0.036480000000000005) * t22;
-  const Scalar t138 = (((Scalar(0.010680452843509214) * t20) - t128) - t129) - t134;
+  const Scalar t138 = (((Scalar(0.010680452843509228) * t20) - t128) - t129) - t134;
   const Scalar t139 = t135 - (t130 + t131);
   const Scalar t140 = ((Scalar(0.012880486843509217) * t24) - (t132 + t133)) + (t136 - t137);
   const Scalar t141 = Scalar(0.036480000000000005) * t24;
@@ -218,11 +218,11 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   const Scalar t150 = Scalar(0.00034) * t22;
   // derivatives: outward pass, forces: body 6 link6
   const Scalar t151 = ((Scalar(0.009281063680426091) * t85) - (Scalar(3.12e-07) * t84)) + ((Scalar(0.04726753550266307) * (t81 - (v[5] * t32))) - (Scalar(0.0033246023249400717) * (t82 + (v[5] * t29))));
-  const Scalar t152 = (Scalar(0.0033246023249400717) * t78) - (((Scalar(0.000430067404825638) * t83) + (Scalar(3.12e-07) * t85)) + (Scalar(0.005179540006592342) * t84));
+  const Scalar t152 = (Scalar(0.0033246023249400717) * t78) - (((Scalar(0.0004300674048256379) * t83) + (Scalar(3.12e-07) * t85)) + (Scalar(0.005179540006592342) * t84));
   const Scalar t153 = Scalar(0.04726753550266307) * t85;
-  const Scalar t154 = Scalar(0.000430067404825638) * t28;
+  const Scalar t154 = Scalar(0.0004300674048256379) * t28;
   const Scalar t155 = Scalar(3.12e-07) * t28;
-  const Scalar t156 = Scalar(0.000430067404825638) * t27;
+  const Scalar t156 = Scalar(0.0004300674048256379) * t27;
   const Scalar t157 = Scalar(3.12e-07) * t33;
   const Scalar t158 = Scalar(0.04726753550266307) * t26;
   const Scalar t159 = Scalar(0.04726753550266307) * t29;
@@ -240,11 +240,11 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   const Scalar t171 = t28 * t167;
   const Scalar t172 = (t33 * t166) + t171;
   const Scalar t173 = t27 * t167;
-  const Scalar t174 = (((t33 * t164) - t168) - ((t26 * t166) + (t32 * t167))) - ((Scalar(0.000430067404825638) * t84) + (Scalar(0.04726753550266307) * t78));
+  const Scalar t174 = (((t33 * t164) - t168) - ((t26 * t166) + (t32 * t167))) - ((Scalar(0.0004300674048256379) * t84) + (Scalar(0.04726753550266307) * t78));
   const Scalar t175 = t153 - t172;
   const Scalar t176 = ((Scalar(0.0033246023249400717) * t84) - (Scalar(0.04726753550266307) * t83)) + ((t28 * t165) + (t27 * t166));
   const Scalar t177 = (t173 - (t33 * t165)) - (Scalar(0.0033246023249400717) * t85);
-  const Scalar t178 = Scalar(0.000860134809651276) * t33;
+  const Scalar t178 = Scalar(0.0008601348096512758) * t33;
   const Scalar t179 = Scalar(0.09453507100532614) * t32;
   const Scalar t180 = Scalar(6.24e-07) * t27;
   const Scalar t181 = Scalar(0.006649204649880143) * t29;
@@ -299,7 +299,7 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   const Scalar t225 = (Scalar(0.19) * t223) - t224;
   const Scalar t226 = Scalar(0.009281063680426091) - t225;
   const Scalar t227 = Scalar(0.00017) + t213;
-  const Scalar t228 = Scalar(0.010680452843509214) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t217)) - (sin_joint6 * (t218 + (Scalar(0.004723206102864922) * sin_joint6)))) - t225);
+  const Scalar t228 = Scalar(0.010680452843509228) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t217)) - (sin_joint6 * (t218 + (Scalar(0.004723206102864922) * sin_joint6)))) - t225);
   const Scalar t229 = Scalar(-3.57e-06) - t220;
   const Scalar t230 = (((sin_joint6 * t222) - (cos_joint6 * t219)) - (Scalar(0.19) * t213)) - Scalar(1.2919999999999997e-05);
   const Scalar t231 = Scalar(-0.0011613999999999995) - t221;
@@ -322,8 +322,8 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   const Scalar t248 = Scalar(0.19) * t236;
   const Scalar t249 = t248 + t248;
   const Scalar t250 = ((t147 - t146) + t148) + (((cos_joint6 * ((cos_joint6 * t201) + t244)) + (sin_joint6 * (t245 + (sin_joint6 * t205)))) - t249);
-  const Scalar t251 = ((((t132 - t133) + (Scalar(0.010680452843509214) * t24)) - t137) - t136) + ((cos_joint6 * t202) + (sin_joint6 * t204));
-  const Scalar t252 = (t135 + (t131 + ((Scalar(0.0022000340000000035) * t21) - t130))) + (((cos_joint6 * t246) + (sin_joint6 * t247)) + (Scalar(0.19) * (t234 - t233)));
+  const Scalar t251 = ((((t132 - t133) + (Scalar(0.010680452843509228) * t24)) - t137) - t136) + ((cos_joint6 * t202) + (sin_joint6 * t204));
+  const Scalar t252 = (t135 + (t131 + ((Scalar(0.0022000339999999896) * t21) - t130))) + (((cos_joint6 * t246) + (sin_joint6 * t247)) + (Scalar(0.19) * (t234 - t233)));
   const Scalar t253 = ((t149 - t147) + t150) + (t182 - t249);
   const Scalar t254 = (t134 + ((t128 - (Scalar(0.012880486843509217) * t20)) - t129)) + (((cos_joint6 * t204) - (sin_joint6 * t202)) - t237);
   const Scalar t255 = (t148 + (t150 + (t146 - t149))) + ((cos_joint6 * t247) - (sin_joint6 * t246));
@@ -331,9 +331,9 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   const Scalar t256 = (cos_joint5 * t210) - (sin_joint5 * t211);
   const Scalar t257 = (sin_joint5 * t210) + (cos_joint5 * t211);
   const Scalar t258 = t121 + (((cos_joint5 * t207) - (sin_joint5 * t208)) - (Scalar(0.2) * t257));
-  const Scalar t259 = (((Scalar(0.004275000000000001) * t65) - (Scalar(0.435936717) * t62)) + (((t13 * t117) + (t17 * t115)) - ((t15 * t119) + (t12 * t118)))) + t209;
-  const Scalar t260 = ((Scalar(1.3641999999999999) * t65) + (t14 * t119)) + t256;
-  const Scalar t261 = ((t14 * t118) - (Scalar(1.3641999999999999) * t61)) + t257;
+  const Scalar t259 = (((Scalar(0.004275000000000001) * t65) - (Scalar(0.43593671700000003) * t62)) + (((t13 * t117) + (t17 * t115)) - ((t15 * t119) + (t12 * t118)))) + t209;
+  const Scalar t260 = ((Scalar(1.3642) * t65) + (t14 * t119)) + t256;
+  const Scalar t261 = ((t14 * t118) - (Scalar(1.3642) * t61)) + t257;
   const Scalar t262 = cos_joint5 * t227;
   const Scalar t263 = Scalar(0.036480000000000005) * sin_joint5;
   const Scalar t264 = t262 - t263;
@@ -353,10 +353,10 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   const Scalar t278 = t270 + (Scalar(0.2) * (t263 - t262));
   const Scalar t279 = ((sin_joint5 * t230) + (cos_joint5 * t231)) - t274;
   const Scalar t280 = t270 - t275;
-  const Scalar t281 = Scalar(1.3641999999999999) + t216;
-  const Scalar t282 = Scalar(0.44103671699999997) + (((sin_joint5 * t268) + (cos_joint5 * t269)) - t276);
+  const Scalar t281 = Scalar(1.3642) + t216;
+  const Scalar t282 = Scalar(0.441036717) + (((sin_joint5 * t268) + (cos_joint5 * t269)) - t276);
   const Scalar t283 = Scalar(0.004275000000000001) + t279;
-  const Scalar t284 = t232 - Scalar(0.435936717);
+  const Scalar t284 = t232 - Scalar(0.43593671700000003);
   const Scalar t285 = cos_joint5 * t241;
   const Scalar t286 = sin_joint5 * t242;
   const Scalar t287 = t285 - t286;
@@ -375,9 +375,9 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   const Scalar t300 = (Scalar(0.2) * t299) - (Scalar(0.2) * t243);
   const Scalar t301 = ((sin_joint5 * t297) + (cos_joint5 * t298)) - t300;
   const Scalar t302 = (((cos_joint5 * ((cos_joint5 * t250) - t295)) - (sin_joint5 * (t296 - (sin_joint5 * t253)))) - t300) - t123;
-  const Scalar t303 = (t113 - (Scalar(0.44103671699999997) * t14)) + ((cos_joint5 * t297) - (sin_joint5 * t298));
-  const Scalar t304 = (((cos_joint5 * t252) - (sin_joint5 * t254)) + (Scalar(0.2) * (t286 - t285))) - (t116 + (t112 + (Scalar(0.435936717) * t17)));
-  const Scalar t305 = ((Scalar(0.8769734339999999) * t13) - t115) + (((sin_joint5 * t252) + (cos_joint5 * t254)) - t289);
+  const Scalar t303 = (t113 - (Scalar(0.441036717) * t14)) + ((cos_joint5 * t297) - (sin_joint5 * t298));
+  const Scalar t304 = (((cos_joint5 * t252) - (sin_joint5 * t254)) + (Scalar(0.2) * (t286 - t285))) - (t116 + (t112 + (Scalar(0.43593671700000003) * t17)));
+  const Scalar t305 = ((Scalar(0.876973434) * t13) - t115) + (((sin_joint5 * t252) + (cos_joint5 * t254)) - t289);
   const Scalar t306 = t124 + t255;
   // derivatives: inward pass, composites: body 4 link4
   const Scalar t307 = (cos_joint4 * t260) - (sin_joint4 * (t212 - t120));
@@ -401,9 +401,9 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   const Scalar t325 = ((cos_joint4 * t318) - (sin_joint4 * t322)) + (Scalar(0.2) * (t313 - t312));
   const Scalar t326 = t282 + t324;
   const Scalar t327 = Scalar(0.0006000000000000033) + t265;
-  const Scalar t328 = Scalar(0.4474035169999999) + (((cos_joint4 * ((cos_joint4 * t277) - t316)) - (sin_joint4 * (t317 - (sin_joint4 * t284)))) + t324);
+  const Scalar t328 = Scalar(0.44740351700000003) + (((cos_joint4 * ((cos_joint4 * t277) - t316)) - (sin_joint4 * (t317 - (sin_joint4 * t284)))) + t324);
   const Scalar t329 = Scalar(0.008428) + (((sin_joint4 * t273) + t321) - t274);
-  const Scalar t330 = Scalar(0.453603517) + ((sin_joint4 * t318) + (cos_joint4 * t322));
+  const Scalar t330 = Scalar(0.45360351700000007) + ((sin_joint4 * t318) + (cos_joint4 * t322));
   const Scalar t331 = cos_joint4 * t293;
   const Scalar t332 = sin_joint4 * t243;
   const Scalar t333 = t331 - t332;
@@ -422,10 +422,10 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   const Scalar t346 = Scalar(0.2) * t334;
   const Scalar t347 = t346 + t346;
   const Scalar t348 = t110 + (((cos_joint4 * ((cos_joint4 * t302) - t341)) - (sin_joint4 * (t342 - (sin_joint4 * t306)))) + t347);
-  const Scalar t349 = ((t102 + (Scalar(0.4474035169999999) * t10)) - t103) + ((cos_joint4 * t303) - (sin_joint4 * t305));
-  const Scalar t350 = ((Scalar(0.006200000000000094) * t7) - t101) + (((cos_joint4 * t343) - (sin_joint4 * t344)) + (Scalar(0.2) * (t332 - t331)));
+  const Scalar t349 = ((t102 + (Scalar(0.44740351700000003) * t10)) - t103) + ((cos_joint4 * t303) - (sin_joint4 * t305));
+  const Scalar t350 = ((Scalar(0.006200000000000039) * t7) - t101) + (((cos_joint4 * t343) - (sin_joint4 * t344)) + (Scalar(0.2) * (t332 - t331)));
   const Scalar t351 = ((t301 - t125) + t347) - t111;
-  const Scalar t352 = (((sin_joint4 * t303) + (cos_joint4 * t305)) - t335) - (Scalar(0.453603517) * t6);
+  const Scalar t352 = (((sin_joint4 * t303) + (cos_joint4 * t305)) - t335) - (Scalar(0.45360351700000007) * t6);
   const Scalar t353 = (t110 + t111) + ((sin_joint4 * t343) + (cos_joint4 * t344));
   // derivatives: inward pass, composites: body 3 link3
   const Scalar t354 = ((cos_joint3 * t309) - (sin_joint3 * t310)) - (Scalar(0.22) * ((sin_joint3 * t311) + (cos_joint3 * (t261 - t107))));
@@ -447,7 +447,7 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   const Scalar t370 = ((cos_joint3 * t362) - (sin_joint3 * t363)) - Scalar(3.3299999999999996e-05);
   const Scalar t371 = Scalar(0.00030010000000000003) + (t364 + (Scalar(0.22) * (t357 - t356)));
   const Scalar t372 = t368 - Scalar(0.01279);
-  const Scalar t373 = t330 - Scalar(1.4336696670000002);
+  const Scalar t373 = t330 - Scalar(1.433669667);
   const Scalar t374 = cos_joint3 * t339;
   const Scalar t375 = sin_joint3 * t294;
   const Scalar t376 = Scalar(0.22) * ((sin_joint3 * t339) + (cos_joint3 * t294));
@@ -461,9 +461,9 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   const Scalar t384 = Scalar(0.22) * t340;
   const Scalar t385 = t384 + t384;
   const Scalar t386 = (t97 + t98) + (((cos_joint3 * ((cos_joint3 * t348) - t380)) - (sin_joint3 * (t381 - (sin_joint3 * t351)))) + t385);
-  const Scalar t387 = ((t93 - t94) - (Scalar(1.4426703330000004) * t1)) + ((cos_joint3 * t382) - (sin_joint3 * t383));
-  const Scalar t388 = (t91 + (t90 - (Scalar(1.4336696670000002) * v[1]))) + (((cos_joint3 * t350) - (sin_joint3 * t352)) + (Scalar(0.22) * (t375 - t374)));
-  const Scalar t389 = (t88 + (t87 - (Scalar(2.876340000000001) * t0))) + (((sin_joint3 * t350) + (cos_joint3 * t352)) - t376);
+  const Scalar t387 = ((t93 - t94) - (Scalar(1.4426703330000001) * t1)) + ((cos_joint3 * t382) - (sin_joint3 * t383));
+  const Scalar t388 = (t91 + (t90 - (Scalar(1.433669667) * v[1]))) + (((cos_joint3 * t350) - (sin_joint3 * t352)) + (Scalar(0.22) * (t375 - t374)));
+  const Scalar t389 = (t88 + (t87 - (Scalar(2.87634) * t0))) + (((sin_joint3 * t350) + (cos_joint3 * t352)) - t376);
   dtau_dv[1] = (cos_joint2 * (t377 + t389)) - (sin_joint2 * (t387 - t379));
   const Scalar t390 = (t99 - t97) + t353;
   dtau_dv[0] = (cos_joint2 * ((cos_joint2 * t390) - (sin_joint2 * t388))) - (sin_joint2 * ((cos_joint2 * t388) - (sin_joint2 * t386)));
@@ -607,7 +607,7 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   dtau_dq[12] = (t493 - (t40 * t460)) - ((t1 * t471) + (t0 * t470));
   const Scalar t494 = (((t39 * t478) + (t391 * ((sin_joint3 * t476) + (cos_joint3 * t475)))) + (t38 * t477)) + ((t1 * t485) + (t0 * t484));
   dtau_dq[13] = -t494;
-  const Scalar t495 = ((t39 * t370) + ((Scalar(1.4426703330000004) + (((sin_joint3 * t362) + (cos_joint3 * t363)) + t366)) * t391)) + (t38 * t372);
+  const Scalar t495 = ((t39 * t370) + ((Scalar(1.4426703330000001) + (((sin_joint3 * t362) + (cos_joint3 * t363)) + t366)) * t391)) + (t38 * t372);
   const Scalar t496 = (((t39 * t367) + (t370 * t391)) + (t38 * t371)) + (t40 * t359);
   const Scalar t497 = (t490 - (((t39 * t371) + (t372 * t391)) + (t38 * t373))) - t355;
   const Scalar t498 = ((t1 * t379) - (t0 * t377)) - ((t1 * t387) + (t0 * t389));
@@ -846,4 +846,4 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   dtau_dq[44] = t660;
 }
 
-}  // namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_ce8ba11df8c9
+}  // namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_5975a29e311d

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::mass_matrix_278381149713 {
+namespace rbdc_gen::humanoid32::common::mass_matrix_a1c7843ea1e7 {
 
 /// Joint-space inertia matrix M (CRBA, paper 000 Alg. 5).
 ///
@@ -497,10 +497,10 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   store_lanes(M + 1091, make_lanes(t82[0], t17[0], t22[0], t22[2]));
   store_lanes(M + 1364, make_lanes(t82[1], t17[1], t22[1], t22[3]));
   const Lane t83 = Scalar(-0.447) - t7;
-  const Lane t84 = Scalar(0.10778583333300001) + (((sin_lanes_wrist_yaw * t72) + (cos_lanes_wrist_yaw * t73)) + t78);
+  const Lane t84 = Scalar(0.107785833333) + (((sin_lanes_wrist_yaw * t72) + (cos_lanes_wrist_yaw * t73)) + t78);
   store_lanes(M + 1053, make_lanes(t84[0], t82[0], t30[0], t30[2]));
   store_lanes(M + 1326, make_lanes(t84[1], t82[1], t30[1], t30[3]));
-  const Lane t85 = t17 - Scalar(0.10680583333300002);
+  const Lane t85 = t17 - Scalar(0.106805833333);
   // inward pass, composite inertias (CRBA): body 16 l_forearm/r_forearm
   const Lane t86 = cos_lanes_elbow * t66;
   const Lane t87 = sin_lanes_elbow * t83;
@@ -517,7 +517,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Lane t98 = t84 - t96;
   const Lane t99 = ((cos_lanes_elbow * t81) - (sin_lanes_elbow * t75)) + (Scalar(0.28) * t69);
   const Lane t100 = Scalar(0.10778583333300001) + (((cos_lanes_elbow * ((cos_lanes_elbow * t79) + t90)) + (sin_lanes_elbow * (t91 + (sin_lanes_elbow * t85)))) - t96);
-  const Lane t101 = Scalar(0.11002583333300002) + ((cos_lanes_elbow * t94) - (sin_lanes_elbow * t92));
+  const Lane t101 = Scalar(0.110025833333) + ((cos_lanes_elbow * t94) - (sin_lanes_elbow * t92));
   M[1287] = t101[1];
   const Lane t102 = (lane_c[2] * t75) + (lane_c[3] * t80);
   const Lane t103 = (lane_c[2] * t81) + (t17 * lane_c[3]);
@@ -600,7 +600,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Lane t156 = t155 + t155;
   const Lane t157 = t151 - (Scalar(0.03) * t154);
   const Lane t158 = t152 + (Scalar(0.03) * t146);
-  const Lane t159 = t89 - Scalar(1.0805);
+  const Lane t159 = t89 - Scalar(1.0804999999999998);
   const Lane t160 = Scalar(0.295408333333) + (((cos_lanes_shoulder_yaw * ((cos_lanes_shoulder_yaw * t100) - t147)) - (sin_lanes_shoulder_yaw * (t148 - (sin_lanes_shoulder_yaw * t98)))) - t156);
   M[975] = t160[0];
   M[1248] = t160[1];
@@ -910,7 +910,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   M[780] = t340;
   const Scalar t341 = (t233[0] + t233[1]) + ((cos_neck_yaw * t331) - (sin_neck_yaw * t332));
   const Scalar t342 = ((t234[0] + t234[1]) - Scalar(0.032)) + t336;
-  const Scalar t343 = (Scalar(2.4329332543543454) + (t235[0] + t235[1])) + (((sin_neck_yaw * t331) + (cos_neck_yaw * t332)) - t335);
+  const Scalar t343 = (Scalar(2.432933254354345) + (t235[0] + t235[1])) + (((sin_neck_yaw * t331) + (cos_neck_yaw * t332)) - t335);
   const Scalar t344 = (t236[0] + t236[1]) + (t333 - (Scalar(0.44) * t330));
   const Scalar t345 = (t237[0] + t237[1]) + t306;
   const Scalar t346 = (cos_waist_roll * t337) - (sin_waist_roll * t306);
@@ -958,9 +958,9 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t369 = (cos_waist_roll * t367) - (sin_waist_roll * t368);
   const Scalar t370 = Scalar(0.16) + ((t212[0] + t212[1]) + t327);
   const Scalar t371 = Scalar(0.012) + t362;
-  const Scalar t372 = Scalar(1.0410841074056743) + ((cos_waist_roll * ((cos_waist_roll * t343) - t365)) - (sin_waist_roll * (t366 - (sin_waist_roll * t345))));
+  const Scalar t372 = Scalar(1.0410841074056745) + ((cos_waist_roll * ((cos_waist_roll * t343) - t365)) - (sin_waist_roll * (t366 - (sin_waist_roll * t345))));
   M[741] = t372;
-  const Scalar t373 = Scalar(1.0401241074056744) + ((sin_waist_roll * t367) + (cos_waist_roll * t368));
+  const Scalar t373 = Scalar(1.0401241074056746) + ((sin_waist_roll * t367) + (cos_waist_roll * t368));
   const Scalar t374 = sin_waist_pitch * t364;
   const Scalar t375 = (cos_waist_pitch * t340) + t374;
   const Scalar t376 = cos_waist_pitch * t364;
@@ -1253,7 +1253,7 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   const Scalar t566 = t413 + (t551[0] + t551[1]);
   M[5] = t566;
   M[190] = t566;
-  const Scalar t567 = (Scalar(2.0625) + t389) + (t534[0] + t534[1]);
+  const Scalar t567 = (Scalar(2.062499999999999) + t389) + (t534[0] + t534[1]);
   M[41] = t567;
   M[115] = t567;
   const Scalar t568 = ((cos_waist_yaw * t414) - (sin_waist_yaw * t415)) + (t560[0] + t560[1]);
@@ -1303,4 +1303,4 @@ RBDC_HOST_DEVICE inline void mass_matrix(const Scalar* q, Scalar* M) noexcept {
   M[116] = t583;
 }
 
-}  // namespace rbdc_gen::humanoid32::common::mass_matrix_278381149713
+}  // namespace rbdc_gen::humanoid32::common::mass_matrix_a1c7843ea1e7

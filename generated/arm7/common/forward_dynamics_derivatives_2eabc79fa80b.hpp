@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_5d6e3c42f770 {
+namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_2eabc79fa80b {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -164,10 +164,10 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t62 = t61 - t60;
   const Scalar t63 = Scalar(3.3299999999999996e-05) * t0;
   const Scalar t64 = Scalar(0.01279) * t1;
-  const Scalar t65 = (t63 + (Scalar(1.4426703330000004) * v[1])) - t64;
+  const Scalar t65 = (t63 + (Scalar(1.4426703330000001) * v[1])) - t64;
   const Scalar t66 = Scalar(0.00030010000000000003) * t0;
   const Scalar t67 = Scalar(0.01279) * v[1];
-  const Scalar t68 = (t66 + t67) + (Scalar(1.4336696670000002) * t1);
+  const Scalar t68 = (t66 + t67) + (Scalar(1.433669667) * t1);
   const Scalar t69 = (v[1] * t68) + (t1 * t65);
   const Scalar t70 = (t0 * t65) + (v[1] * t62);
   const Scalar t71 = Scalar(0.0006002000000000001) * v[1];
@@ -175,11 +175,11 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t73 = Scalar(0.02558) * t0;
   // derivatives: outward pass, forces: body 3 link3
   const Scalar t74 = Scalar(0.005886000000000033) * cos_joint2;
-  const Scalar t75 = Scalar(0.4474035169999999) * t6;
+  const Scalar t75 = Scalar(0.44740351700000003) * t6;
   const Scalar t76 = Scalar(0.008428) * t10;
   const Scalar t77 = Scalar(0.008428) * t7;
   const Scalar t78 = Scalar(0.0006000000000000033) * t8;
-  const Scalar t79 = (t77 + (Scalar(0.453603517) * t10)) - t78;
+  const Scalar t79 = (t77 + (Scalar(0.45360351700000007) * t10)) - t78;
   const Scalar t80 = Scalar(0.0006000000000000033) * t10;
   const Scalar t81 = Scalar(0.0006000000000000033) * t6;
   const Scalar t82 = ((t7 * t79) - (t10 * t76)) + (t9 * t81);
@@ -192,19 +192,19 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   // derivatives: outward pass, forces: body 4 link4
   const Scalar t89 = Scalar(0.004275000000000001) * t14;
   const Scalar t90 = Scalar(0.004275000000000001) * t17;
-  const Scalar t91 = t90 - (Scalar(0.435936717) * t14);
-  const Scalar t92 = Scalar(1.3641999999999999) * t12;
-  const Scalar t93 = Scalar(1.3641999999999999) * t15;
-  const Scalar t94 = ((Scalar(0.44103671699999997) * t17) + t89) + t93;
-  const Scalar t95 = Scalar(1.3641999999999999) * t17;
-  const Scalar t96 = Scalar(1.3641999999999999) * t13;
+  const Scalar t91 = t90 - (Scalar(0.43593671700000003) * t14);
+  const Scalar t92 = Scalar(1.3642) * t12;
+  const Scalar t93 = Scalar(1.3642) * t15;
+  const Scalar t94 = ((Scalar(0.441036717) * t17) + t89) + t93;
+  const Scalar t95 = Scalar(1.3642) * t17;
+  const Scalar t96 = Scalar(1.3642) * t13;
   const Scalar t97 = ((t17 * t91) - (t14 * t94)) - (t16 * t96);
   const Scalar t98 = ((t14 * t92) + (t13 * t91)) + (t16 * t95);
   const Scalar t99 = ((t13 * t94) + (t17 * t92)) - ((t15 * t96) + (t12 * t95));
   const Scalar t100 = t14 * t96;
   const Scalar t101 = t14 * t95;
   const Scalar t102 = (t13 * t96) + (t17 * t95);
-  const Scalar t103 = Scalar(2.7283999999999997) * t16;
+  const Scalar t103 = Scalar(2.7284) * t16;
   const Scalar t104 = Scalar(0.008550000000000002) * t13;
   const Scalar t105 = t103 + t104;
   // derivatives: outward pass, forces: body 5 link5
@@ -218,7 +218,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t113 = Scalar(0.00017) * t16;
   const Scalar t114 = Scalar(0.00017) * t23;
   const Scalar t115 = Scalar(0.036480000000000005) * t22;
-  const Scalar t116 = (((Scalar(0.010680452843509214) * t20) - t106) - t107) - t112;
+  const Scalar t116 = (((Scalar(0.010680452843509228) * t20) - t106) - t107) - t112;
   const Scalar t117 = t113 - (t108 + t109);
   const Scalar t118 = ((Scalar(0.012880486843509217) * t24) - (t110 + t111)) + (t114 - t115);
   const Scalar t119 = Scalar(0.036480000000000005) * t24;
@@ -236,9 +236,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t131 = Scalar(0.002322799999999999) * t20;
   const Scalar t132 = Scalar(0.00034) * t22;
   // derivatives: outward pass, forces: body 6 link6
-  const Scalar t133 = Scalar(0.000430067404825638) * t28;
+  const Scalar t133 = Scalar(0.0004300674048256379) * t28;
   const Scalar t134 = Scalar(3.12e-07) * t28;
-  const Scalar t135 = Scalar(0.000430067404825638) * t27;
+  const Scalar t135 = Scalar(0.0004300674048256379) * t27;
   const Scalar t136 = Scalar(3.12e-07) * t33;
   const Scalar t137 = Scalar(0.04726753550266307) * t26;
   const Scalar t138 = Scalar(0.04726753550266307) * t29;
@@ -261,7 +261,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t155 = (t28 * t144) + (t27 * t145);
   const Scalar t156 = t27 * t146;
   const Scalar t157 = t156 - (t33 * t144);
-  const Scalar t158 = Scalar(0.000860134809651276) * t33;
+  const Scalar t158 = Scalar(0.0008601348096512758) * t33;
   const Scalar t159 = Scalar(0.09453507100532614) * t32;
   const Scalar t160 = Scalar(6.24e-07) * t27;
   const Scalar t161 = Scalar(0.006649204649880143) * t29;
@@ -308,7 +308,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t197 = (Scalar(0.19) * t195) - t196;
   const Scalar t198 = Scalar(0.009281063680426091) - t197;
   const Scalar t199 = Scalar(0.00017) + t185;
-  const Scalar t200 = Scalar(0.010680452843509214) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t189)) - (sin_joint6 * (t190 + (Scalar(0.004723206102864922) * sin_joint6)))) - t197);
+  const Scalar t200 = Scalar(0.010680452843509228) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t189)) - (sin_joint6 * (t190 + (Scalar(0.004723206102864922) * sin_joint6)))) - t197);
   const Scalar t201 = Scalar(-3.57e-06) - t192;
   const Scalar t202 = (((sin_joint6 * t194) - (cos_joint6 * t191)) - (Scalar(0.19) * t185)) - Scalar(1.2919999999999997e-05);
   const Scalar t203 = Scalar(-0.0011613999999999995) - t193;
@@ -331,8 +331,8 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t220 = Scalar(0.19) * t208;
   const Scalar t221 = t220 + t220;
   const Scalar t222 = ((t129 - t128) + t130) + (((cos_joint6 * ((cos_joint6 * t180) + t216)) + (sin_joint6 * (t217 + (sin_joint6 * t184)))) - t221);
-  const Scalar t223 = ((((t110 - t111) + (Scalar(0.010680452843509214) * t24)) - t115) - t114) + ((cos_joint6 * t181) + (sin_joint6 * t183));
-  const Scalar t224 = (t113 + (t109 + ((Scalar(0.0022000340000000035) * t21) - t108))) + (((cos_joint6 * t218) + (sin_joint6 * t219)) + (Scalar(0.19) * (t206 - t205)));
+  const Scalar t223 = ((((t110 - t111) + (Scalar(0.010680452843509228) * t24)) - t115) - t114) + ((cos_joint6 * t181) + (sin_joint6 * t183));
+  const Scalar t224 = (t113 + (t109 + ((Scalar(0.0022000339999999896) * t21) - t108))) + (((cos_joint6 * t218) + (sin_joint6 * t219)) + (Scalar(0.19) * (t206 - t205)));
   const Scalar t225 = ((t131 - t129) + t132) + (t162 - t221);
   const Scalar t226 = (t112 + ((t106 - (Scalar(0.012880486843509217) * t20)) - t107)) + (((cos_joint6 * t183) - (sin_joint6 * t181)) - t209);
   const Scalar t227 = (t130 + (t132 + (t128 - t131))) + ((cos_joint6 * t219) - (sin_joint6 * t218));
@@ -357,10 +357,10 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t245 = t236 + (Scalar(0.2) * (t229 - t228));
   const Scalar t246 = t237 - t241;
   const Scalar t247 = t236 - t242;
-  const Scalar t248 = Scalar(1.3641999999999999) + t188;
-  const Scalar t249 = Scalar(0.44103671699999997) + (((sin_joint5 * t234) + (cos_joint5 * t235)) - t243);
+  const Scalar t248 = Scalar(1.3642) + t188;
+  const Scalar t249 = Scalar(0.441036717) + (((sin_joint5 * t234) + (cos_joint5 * t235)) - t243);
   const Scalar t250 = Scalar(0.004275000000000001) + t246;
-  const Scalar t251 = t204 - Scalar(0.435936717);
+  const Scalar t251 = t204 - Scalar(0.43593671700000003);
   const Scalar t252 = cos_joint5 * t213;
   const Scalar t253 = sin_joint5 * t214;
   const Scalar t254 = t252 - t253;
@@ -379,9 +379,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t267 = (Scalar(0.2) * t266) - (Scalar(0.2) * t215);
   const Scalar t268 = ((sin_joint5 * t264) + (cos_joint5 * t265)) - t267;
   const Scalar t269 = (((cos_joint5 * ((cos_joint5 * t222) - t262)) - (sin_joint5 * (t263 - (sin_joint5 * t225)))) - t267) - t103;
-  const Scalar t270 = (t90 - (Scalar(0.44103671699999997) * t14)) + ((cos_joint5 * t264) - (sin_joint5 * t265));
-  const Scalar t271 = (((cos_joint5 * t224) - (sin_joint5 * t226)) + (Scalar(0.2) * (t253 - t252))) - (t93 + (t89 + (Scalar(0.435936717) * t17)));
-  const Scalar t272 = ((Scalar(0.8769734339999999) * t13) - t92) + (((sin_joint5 * t224) + (cos_joint5 * t226)) - t256);
+  const Scalar t270 = (t90 - (Scalar(0.441036717) * t14)) + ((cos_joint5 * t264) - (sin_joint5 * t265));
+  const Scalar t271 = (((cos_joint5 * t224) - (sin_joint5 * t226)) + (Scalar(0.2) * (t253 - t252))) - (t93 + (t89 + (Scalar(0.43593671700000003) * t17)));
+  const Scalar t272 = ((Scalar(0.876973434) * t13) - t92) + (((sin_joint5 * t224) + (cos_joint5 * t226)) - t256);
   const Scalar t273 = t104 + t227;
   // derivatives: inward pass, composites: body 4 link4
   const Scalar t274 = cos_joint4 * t230;
@@ -400,9 +400,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t287 = ((cos_joint4 * t280) - (sin_joint4 * t284)) + (Scalar(0.2) * (t275 - t274));
   const Scalar t288 = t249 + t286;
   const Scalar t289 = Scalar(0.0006000000000000033) + t231;
-  const Scalar t290 = Scalar(0.4474035169999999) + (((cos_joint4 * ((cos_joint4 * t244) - t278)) - (sin_joint4 * (t279 - (sin_joint4 * t251)))) + t286);
+  const Scalar t290 = Scalar(0.44740351700000003) + (((cos_joint4 * ((cos_joint4 * t244) - t278)) - (sin_joint4 * (t279 - (sin_joint4 * t251)))) + t286);
   const Scalar t291 = Scalar(0.008428) + (((sin_joint4 * t240) + t283) - t241);
-  const Scalar t292 = Scalar(0.453603517) + ((sin_joint4 * t280) + (cos_joint4 * t284));
+  const Scalar t292 = Scalar(0.45360351700000007) + ((sin_joint4 * t280) + (cos_joint4 * t284));
   const Scalar t293 = cos_joint4 * t260;
   const Scalar t294 = sin_joint4 * t215;
   const Scalar t295 = t293 - t294;
@@ -421,10 +421,10 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t308 = Scalar(0.2) * t296;
   const Scalar t309 = t308 + t308;
   const Scalar t310 = t87 + (((cos_joint4 * ((cos_joint4 * t269) - t303)) - (sin_joint4 * (t304 - (sin_joint4 * t273)))) + t309);
-  const Scalar t311 = ((t77 + (Scalar(0.4474035169999999) * t10)) - t78) + ((cos_joint4 * t270) - (sin_joint4 * t272));
-  const Scalar t312 = ((Scalar(0.006200000000000094) * t7) - t76) + (((cos_joint4 * t305) - (sin_joint4 * t306)) + (Scalar(0.2) * (t294 - t293)));
+  const Scalar t311 = ((t77 + (Scalar(0.44740351700000003) * t10)) - t78) + ((cos_joint4 * t270) - (sin_joint4 * t272));
+  const Scalar t312 = ((Scalar(0.006200000000000039) * t7) - t76) + (((cos_joint4 * t305) - (sin_joint4 * t306)) + (Scalar(0.2) * (t294 - t293)));
   const Scalar t313 = ((t268 - t105) + t309) - t88;
-  const Scalar t314 = (((sin_joint4 * t270) + (cos_joint4 * t272)) - t297) - (Scalar(0.453603517) * t6);
+  const Scalar t314 = (((sin_joint4 * t270) + (cos_joint4 * t272)) - t297) - (Scalar(0.45360351700000007) * t6);
   const Scalar t315 = (t87 + t88) + ((sin_joint4 * t305) + (cos_joint4 * t306));
   // derivatives: inward pass, composites: body 3 link3
   const Scalar t316 = cos_joint3 * t276;
@@ -443,9 +443,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t329 = t324 - (Scalar(0.22) * t318);
   const Scalar t330 = ((cos_joint3 * t322) - (sin_joint3 * t323)) - Scalar(3.3299999999999996e-05);
   const Scalar t331 = Scalar(0.00030010000000000003) + (t324 + (Scalar(0.22) * (t317 - t316)));
-  const Scalar t332 = Scalar(1.4426703330000004) + (((sin_joint3 * t322) + (cos_joint3 * t323)) + t326);
+  const Scalar t332 = Scalar(1.4426703330000001) + (((sin_joint3 * t322) + (cos_joint3 * t323)) + t326);
   const Scalar t333 = t328 - Scalar(0.01279);
-  const Scalar t334 = t292 - Scalar(1.4336696670000002);
+  const Scalar t334 = t292 - Scalar(1.433669667);
   const Scalar t335 = cos_joint3 * t301;
   const Scalar t336 = sin_joint3 * t261;
   const Scalar t337 = Scalar(0.22) * ((sin_joint3 * t301) + (cos_joint3 * t261));
@@ -459,9 +459,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t345 = Scalar(0.22) * t302;
   const Scalar t346 = t345 + t345;
   const Scalar t347 = (t71 + t72) + (((cos_joint3 * ((cos_joint3 * t310) - t341)) - (sin_joint3 * (t342 - (sin_joint3 * t313)))) + t346);
-  const Scalar t348 = ((t66 - t67) - (Scalar(1.4426703330000004) * t1)) + ((cos_joint3 * t343) - (sin_joint3 * t344));
-  const Scalar t349 = (t64 + (t63 - (Scalar(1.4336696670000002) * v[1]))) + (((cos_joint3 * t312) - (sin_joint3 * t314)) + (Scalar(0.22) * (t336 - t335)));
-  const Scalar t350 = (t61 + (t60 - (Scalar(2.876340000000001) * t0))) + (((sin_joint3 * t312) + (cos_joint3 * t314)) - t337);
+  const Scalar t348 = ((t66 - t67) - (Scalar(1.4426703330000001) * t1)) + ((cos_joint3 * t343) - (sin_joint3 * t344));
+  const Scalar t349 = (t64 + (t63 - (Scalar(1.433669667) * v[1]))) + (((cos_joint3 * t312) - (sin_joint3 * t314)) + (Scalar(0.22) * (t336 - t335)));
+  const Scalar t350 = (t61 + (t60 - (Scalar(2.87634) * t0))) + (((sin_joint3 * t312) + (cos_joint3 * t314)) - t337);
   rhs[31] = (sin_joint2 * (t348 - t340)) - (cos_joint2 * (t338 + t350));
   const Scalar t351 = (t73 - t71) + t315;
   rhs[7] = (sin_joint2 * ((cos_joint2 * t349) - (sin_joint2 * t347))) - (cos_joint2 * ((cos_joint2 * t351) - (sin_joint2 * t349)));
@@ -893,7 +893,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   L[19] = t664;
   const Scalar t665 = Scalar(2000) * t431;
   L[20] = t665;
-  const Scalar t666 = (Scalar(1.4602500000000003) + ((cos_joint2 * ((cos_joint2 * t334) - (sin_joint2 * t331))) - (sin_joint2 * ((cos_joint2 * t331) - (sin_joint2 * t327))))) - (t431 * t665);
+  const Scalar t666 = (Scalar(1.46025) + ((cos_joint2 * ((cos_joint2 * t334) - (sin_joint2 * t331))) - (sin_joint2 * ((cos_joint2 * t331) - (sin_joint2 * t327))))) - (t431 * t665);
   const Scalar t667 = Scalar(3.3616836468648833e-05) * cos_joint6;
   L[10] = -t667;
   const Scalar t668 = ((t241 - t237) + (t426 * t661)) - (t406 * t667);
@@ -985,7 +985,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t730 = ((cos_joint5 * t718) - (sin_joint5 * t723)) - t53;
   const Scalar t731 = t54 + ((cos_joint5 * t727) + (sin_joint5 * t728));
   const Scalar t732 = ((cos_joint5 * t728) - (sin_joint5 * t727)) - t55;
-  const Scalar t733 = t122 + ((((Scalar(0.010680452843509214) * t729) - (Scalar(3.57e-06) * t730)) + (Scalar(1.2919999999999997e-05) * t724)) + (Scalar(0.036480000000000005) * t726));
+  const Scalar t733 = t122 + ((((Scalar(0.010680452843509228) * t729) - (Scalar(3.57e-06) * t730)) + (Scalar(1.2919999999999997e-05) * t724)) + (Scalar(0.036480000000000005) * t726));
   const Scalar t734 = t124 + (((Scalar(0.00017) * t732) - (Scalar(0.036480000000000005) * t731)) - (((Scalar(1.2919999999999997e-05) * t729) + (Scalar(0.0011613999999999995) * t730)) + (Scalar(0.012880486843509217) * t724)));
   // outward pass: body 6 link6
   const Scalar t735 = t731 + (Scalar(0.19) * t730);
@@ -1003,9 +1003,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t745 = (cos_joint7 * t712) + (sin_joint7 * t743);
   const Scalar t746 = (cos_joint7 * t743) - (sin_joint7 * t712);
   const Scalar t747 = (Scalar(0.955336489125606) * t745) + (Scalar(0.29552020666133966) * t711);
-  const Scalar t748 = (t150 - ((Scalar(0.000430067404825638) * t738) + (Scalar(0.04726753550266307) * t736))) + (((Scalar(0.955336489125606) * t744) + (Scalar(0.00014776010333066982) * t740)) - (Scalar(0.08) * t746));
+  const Scalar t748 = (t150 - ((Scalar(0.0004300674048256379) * t738) + (Scalar(0.04726753550266307) * t736))) + (((Scalar(0.955336489125606) * t744) + (Scalar(0.00014776010333066982) * t740)) - (Scalar(0.08) * t746));
   const Scalar t749 = (t151 + (((Scalar(0.009281063680426091) * t730) - (Scalar(3.12e-07) * t738)) + t739)) + (((sin_joint7 * t741) - (cos_joint7 * t742)) - (Scalar(0.08) * t747));
-  const Scalar t750 = (t152 + ((Scalar(0.0033246023249400717) * t736) - (((Scalar(0.000430067404825638) * t737) + (Scalar(3.12e-07) * t730)) + (Scalar(0.005179540006592342) * t738)))) + ((Scalar(0.000477668244562803) * t740) - (Scalar(0.29552020666133966) * t744));
+  const Scalar t750 = (t152 + ((Scalar(0.0033246023249400717) * t736) - (((Scalar(0.0004300674048256379) * t737) + (Scalar(3.12e-07) * t730)) + (Scalar(0.005179540006592342) * t738)))) + ((Scalar(0.000477668244562803) * t740) - (Scalar(0.29552020666133966) * t744));
   const Scalar t751 = ((Scalar(0.04726753550266307) * t730) - t154) - t747;
   const Scalar t752 = (t155 + ((Scalar(0.0033246023249400717) * t738) - (Scalar(0.04726753550266307) * t737))) + t746;
   const Scalar t753 = (t157 - (Scalar(0.0033246023249400717) * t730)) + ((Scalar(0.29552020666133966) * t745) - (Scalar(0.955336489125606) * t711));
@@ -1019,16 +1019,16 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   // inward pass: body 5 link5
   const Scalar t760 = (cos_joint5 * t758) - (sin_joint5 * t759);
   const Scalar t761 = (sin_joint5 * t758) + (cos_joint5 * t759);
-  const Scalar t762 = (t97 - (Scalar(1.3641999999999999) * t722)) + (((cos_joint5 * t755) - (sin_joint5 * t756)) - (Scalar(0.2) * t761));
-  const Scalar t763 = ((((Scalar(0.44103671699999997) * t718) - (Scalar(0.004275000000000001) * t724)) + (Scalar(1.3641999999999999) * t725)) - t98) + (((sin_joint5 * t755) + (cos_joint5 * t756)) + (Scalar(0.2) * t760));
-  const Scalar t764 = (t99 + ((Scalar(0.004275000000000001) * t718) + (Scalar(0.435936717) * t724))) + t757;
-  const Scalar t765 = (t101 - (Scalar(1.3641999999999999) * t723)) + t761;
+  const Scalar t762 = (t97 - (Scalar(1.3642) * t722)) + (((cos_joint5 * t755) - (sin_joint5 * t756)) - (Scalar(0.2) * t761));
+  const Scalar t763 = ((((Scalar(0.441036717) * t718) - (Scalar(0.004275000000000001) * t724)) + (Scalar(1.3642) * t725)) - t98) + (((sin_joint5 * t755) + (cos_joint5 * t756)) + (Scalar(0.2) * t760));
+  const Scalar t764 = (t99 + ((Scalar(0.004275000000000001) * t718) + (Scalar(0.43593671700000003) * t724))) + t757;
+  const Scalar t765 = (t101 - (Scalar(1.3642) * t723)) + t761;
   // inward pass: body 4 link4
   const Scalar t766 = sin_joint4 * (((t127 + ((Scalar(0.036480000000000005) * t729) - (Scalar(0.00017) * t730))) + ((cos_joint6 * t753) - (sin_joint6 * t751))) - t102);
-  const Scalar t767 = (cos_joint4 * ((t100 + (Scalar(1.3641999999999999) * t718)) + t760)) - t766;
-  const Scalar t768 = (t82 + (t74 + (Scalar(0.4474035169999999) * t717))) + (((cos_joint4 * t762) - (sin_joint4 * t764)) - (Scalar(0.2) * t765));
+  const Scalar t767 = (cos_joint4 * ((t100 + (Scalar(1.3642) * t718)) + t760)) - t766;
+  const Scalar t768 = (t82 + (t74 + (Scalar(0.44740351700000003) * t717))) + (((cos_joint4 * t762) - (sin_joint4 * t764)) - (Scalar(0.2) * t765));
   const Scalar t769 = (t83 - (Scalar(0.008428) * t41)) + (t763 + (Scalar(0.2) * t767));
-  const Scalar t770 = (t84 + (((Scalar(0.008428) * t718) - (Scalar(0.453603517) * t41)) - (Scalar(0.0006000000000000033) * t719))) + ((sin_joint4 * t762) + (cos_joint4 * t764));
+  const Scalar t770 = (t84 + (((Scalar(0.008428) * t718) - (Scalar(0.45360351700000007) * t41)) - (Scalar(0.0006000000000000033) * t719))) + ((sin_joint4 * t762) + (cos_joint4 * t764));
   const Scalar t771 = (t85 + (Scalar(0.0006000000000000033) * t41)) + t767;
   const Scalar t772 = t765 - t86;
   // inward pass: body 2 link2
@@ -1039,7 +1039,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   // solve LᵀDL a = τ + τ_e − c − g
   const Scalar t776 = (tau[1] - (t715 + (((sin_joint3 * t768) + (cos_joint3 * t769)) + (Scalar(0.22) * ((cos_joint3 * t771) - (sin_joint3 * t772)))))) - (t664 * t775);
   const Scalar t777 = ((tau[4] - t757) - (t661 * t775)) + (t667 * t774);
-  const Scalar t778 = ((tau[0] - ((cos_joint2 * ((((Scalar(1.4336696670000002) * t41) - (Scalar(0.00030010000000000003) * t40)) - t70) + t770)) - t773)) - (t665 * t775)) + (t675 * t774);
+  const Scalar t778 = ((tau[0] - ((cos_joint2 * ((((Scalar(1.433669667) * t41) - (Scalar(0.00030010000000000003) * t40)) - t70) + t770)) - t773)) - (t665 * t775)) + (t675 * t774);
   const Scalar t779 = (((t763 + tau[3]) + (t662 * t775)) + (t672 * t774)) - (t677 * t777);
   const Scalar t780 = ((((tau[2] - t770) - (t663 * t775)) + (t673 * t774)) - (t681 * t777)) - (t685 * t779);
   const Scalar t781 = (((t776 - (t674 * t774)) - (t682 * t777)) - (t688 * t779)) - (t692 * t780);
@@ -1080,7 +1080,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t814 = t813 + (Scalar(0.2) * t803);
   const Scalar t815 = t47 - (sin_joint4 * t814);
   const Scalar t816 = t815 - t51;
-  const Scalar t817 = t122 + ((((Scalar(0.010680452843509214) * t806) - (Scalar(3.57e-06) * t808)) - (Scalar(1.2919999999999997e-05) * t811)) + (Scalar(0.036480000000000005) * t816));
+  const Scalar t817 = t122 + ((((Scalar(0.010680452843509228) * t806) - (Scalar(3.57e-06) * t808)) - (Scalar(1.2919999999999997e-05) * t811)) + (Scalar(0.036480000000000005) * t816));
   const Scalar t818 = (sin_joint6 * t806) + (cos_joint6 * t811);
   const Scalar t819 = t57 + t818;
   const Scalar t820 = t798 - (Scalar(0.2) * t801);
@@ -1093,9 +1093,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t827 = (cos_joint6 * t806) - (sin_joint6 * t811);
   const Scalar t828 = t827 - t56;
   const Scalar t829 = t787 + ((Scalar(0.29552020666133966) * t828) + (Scalar(0.955336489125606) * t819));
-  const Scalar t830 = (t150 - ((Scalar(0.000430067404825638) * t819) + (Scalar(0.04726753550266307) * t826))) + ((Scalar(0.955336489125606) * t168) + (Scalar(0.00014776010333066982) * t829));
+  const Scalar t830 = (t150 - ((Scalar(0.0004300674048256379) * t819) + (Scalar(0.04726753550266307) * t826))) + ((Scalar(0.955336489125606) * t168) + (Scalar(0.00014776010333066982) * t829));
   const Scalar t831 = ((((((Scalar(107.74627073284883) * t774) + (t667 * t786)) + (t672 * t785)) + (t673 * t784)) - (t674 * t783)) + (t675 * t782)) + t808;
-  const Scalar t832 = (t152 + ((Scalar(0.0033246023249400717) * t826) - (((Scalar(0.000430067404825638) * t828) + (Scalar(3.12e-07) * t831)) + (Scalar(0.005179540006592342) * t819)))) + ((Scalar(0.000477668244562803) * t829) - (Scalar(0.29552020666133966) * t168));
+  const Scalar t832 = (t152 + ((Scalar(0.0033246023249400717) * t826) - (((Scalar(0.0004300674048256379) * t828) + (Scalar(3.12e-07) * t831)) + (Scalar(0.005179540006592342) * t819)))) + ((Scalar(0.000477668244562803) * t829) - (Scalar(0.29552020666133966) * t168));
   const Scalar t833 = t155 + ((Scalar(0.0033246023249400717) * t819) - (Scalar(0.04726753550266307) * t828));
   const Scalar t834 = t817 + (((cos_joint6 * t830) + (sin_joint6 * t832)) - (Scalar(0.19) * t833));
   const Scalar t835 = t123 - (((Scalar(3.57e-06) * t806) + (Scalar(0.0011613999999999995) * t811)) + (Scalar(0.00017) * t816));
@@ -1113,14 +1113,14 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t847 = t845 + (t125 - (Scalar(0.036480000000000005) * t811));
   const Scalar t848 = t833 + ((Scalar(0.00017) * t811) - t126);
   const Scalar t849 = (sin_joint5 * t847) + (cos_joint5 * t848);
-  const Scalar t850 = (t97 - (Scalar(1.3641999999999999) * t798)) + (((cos_joint5 * t834) - (sin_joint5 * t846)) - (Scalar(0.2) * t849));
+  const Scalar t850 = (t97 - (Scalar(1.3642) * t798)) + (((cos_joint5 * t834) - (sin_joint5 * t846)) - (Scalar(0.2) * t849));
   const Scalar t851 = t124 + (((Scalar(0.012880486843509217) * t811) - ((Scalar(1.2919999999999997e-05) * t806) + (Scalar(0.0011613999999999995) * t808))) + ((Scalar(0.00017) * t825) - (Scalar(0.036480000000000005) * t837)));
-  const Scalar t852 = (t99 + ((Scalar(0.004275000000000001) * t804) - (Scalar(0.435936717) * t810))) + (t851 + ((cos_joint6 * t832) - (sin_joint6 * t830)));
-  const Scalar t853 = t849 + (t101 - (Scalar(1.3641999999999999) * t801));
-  const Scalar t854 = (t82 + (t74 + (Scalar(0.4474035169999999) * t794))) + (((cos_joint4 * t850) - (sin_joint4 * t852)) - (Scalar(0.2) * t853));
+  const Scalar t852 = (t99 + ((Scalar(0.004275000000000001) * t804) - (Scalar(0.43593671700000003) * t810))) + (t851 + ((cos_joint6 * t832) - (sin_joint6 * t830)));
+  const Scalar t853 = t849 + (t101 - (Scalar(1.3642) * t801));
+  const Scalar t854 = (t82 + (t74 + (Scalar(0.44740351700000003) * t794))) + (((cos_joint4 * t850) - (sin_joint4 * t852)) - (Scalar(0.2) * t853));
   const Scalar t855 = (cos_joint5 * t847) - (sin_joint5 * t848);
-  const Scalar t856 = ((((Scalar(0.44103671699999997) * t804) + (Scalar(0.004275000000000001) * t810)) + (Scalar(1.3641999999999999) * t822)) - t98) + (((sin_joint5 * t834) + (cos_joint5 * t846)) + (Scalar(0.2) * t855));
-  const Scalar t857 = t855 + (t100 + (Scalar(1.3641999999999999) * t804));
+  const Scalar t856 = ((((Scalar(0.441036717) * t804) + (Scalar(0.004275000000000001) * t810)) + (Scalar(1.3642) * t822)) - t98) + (((sin_joint5 * t834) + (cos_joint5 * t846)) + (Scalar(0.2) * t855));
+  const Scalar t857 = t855 + (t100 + (Scalar(1.3642) * t804));
   const Scalar t858 = (t127 + ((Scalar(0.036480000000000005) * t806) - (Scalar(0.00017) * t808))) + ((cos_joint6 * t844) - (sin_joint6 * t843));
   const Scalar t859 = (cos_joint4 * t857) - (sin_joint4 * (t858 - t102));
   const Scalar t860 = (t83 + (Scalar(0.008428) * t799)) + (t856 + (Scalar(0.2) * t859));
@@ -1128,8 +1128,8 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
   const Scalar t862 = ((cos_joint3 * t854) - (sin_joint3 * t860)) - (Scalar(0.22) * ((sin_joint3 * t861) + (cos_joint3 * (t853 - t86))));
   const Scalar t863 = (t444 - (((t333 * t352) + (t331 * t788)) + (t334 * t789))) - ((((Scalar(0.00030010000000000003) * t790) - (Scalar(3.3299999999999996e-05) * t783)) - t69) + t862);
   const Scalar t864 = cos_joint2 * (t863 - (((t1 * t349) + (t0 * t351)) + (t1 * t339)));
-  const Scalar t865 = (t84 + (((Scalar(0.008428) * t803) + (Scalar(0.453603517) * t799)) - (Scalar(0.0006000000000000033) * t813))) + ((sin_joint4 * t850) + (cos_joint4 * t852));
-  const Scalar t866 = t865 - (t70 + (((Scalar(0.00030010000000000003) * t792) + (Scalar(0.01279) * t783)) + (Scalar(1.4336696670000002) * t790)));
+  const Scalar t865 = (t84 + (((Scalar(0.008428) * t803) + (Scalar(0.45360351700000007) * t799)) - (Scalar(0.0006000000000000033) * t813))) + ((sin_joint4 * t850) + (cos_joint4 * t852));
+  const Scalar t866 = t865 - (t70 + (((Scalar(0.00030010000000000003) * t792) + (Scalar(0.01279) * t783)) + (Scalar(1.433669667) * t790)));
   const Scalar t867 = t866 - ((t38 * t319) + (((t330 * t352) + (t327 * t788)) + (t331 * t789)));
   rhs[1] = t628 - (t864 - (sin_joint2 * (((t0 * t339) - ((t1 * t347) + (t0 * t349))) + t867)));
   const Scalar t868 = t802 - (t1 * t353);
@@ -1280,4 +1280,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 7, 24>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_5d6e3c42f770
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_2eabc79fa80b

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::bias_derivatives_6d40beeef01f {
+namespace rbdc_gen::arm7::common::bias_derivatives_ddc9a4af4c21 {
 
 /// Derivatives of the bias c + g (inverse dynamics at a = 0).
 ///
@@ -149,43 +149,43 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Scalar t85 = t84 - t83;
   const Scalar t86 = Scalar(3.3299999999999996e-05) * t0;
   const Scalar t87 = Scalar(0.01279) * t1;
-  const Scalar t88 = (t86 + (Scalar(1.4426703330000004) * v[1])) - t87;
+  const Scalar t88 = (t86 + (Scalar(1.4426703330000001) * v[1])) - t87;
   const Scalar t89 = Scalar(0.00030010000000000003) * t0;
   const Scalar t90 = Scalar(0.01279) * v[1];
-  const Scalar t91 = (t89 + t90) + (Scalar(1.4336696670000002) * t1);
+  const Scalar t91 = (t89 + t90) + (Scalar(1.433669667) * t1);
   const Scalar t92 = Scalar(0.0006002000000000001) * v[1];
   const Scalar t93 = Scalar(6.659999999999999e-05) * t1;
   const Scalar t94 = Scalar(0.02558) * t0;
   // derivatives: outward pass, forces: body 3 link3
-  const Scalar t95 = Scalar(0.4474035169999999) * t6;
+  const Scalar t95 = Scalar(0.44740351700000003) * t6;
   const Scalar t96 = Scalar(0.008428) * t10;
   const Scalar t97 = Scalar(0.008428) * t7;
   const Scalar t98 = Scalar(0.0006000000000000033) * t8;
-  const Scalar t99 = (t97 + (Scalar(0.453603517) * t10)) - t98;
+  const Scalar t99 = (t97 + (Scalar(0.45360351700000007) * t10)) - t98;
   const Scalar t100 = Scalar(0.0006000000000000033) * t10;
   const Scalar t101 = Scalar(0.0006000000000000033) * t6;
   const Scalar t102 = (t10 * t100) + (t6 * t101);
-  const Scalar t103 = ((Scalar(0.4474035169999999) * t48) + (Scalar(0.005886000000000033) * cos_joint2)) + (((t7 * t99) - (t10 * t96)) + (t9 * t101));
-  const Scalar t104 = (((Scalar(0.008428) * t49) - (Scalar(0.453603517) * t41)) - (Scalar(0.0006000000000000033) * t50)) + (((t6 * t96) - (t7 * t95)) + (t9 * t100));
+  const Scalar t103 = ((Scalar(0.44740351700000003) * t48) + (Scalar(0.005886000000000033) * cos_joint2)) + (((t7 * t99) - (t10 * t96)) + (t9 * t101));
+  const Scalar t104 = (((Scalar(0.008428) * t49) - (Scalar(0.45360351700000007) * t41)) - (Scalar(0.0006000000000000033) * t50)) + (((t6 * t96) - (t7 * t95)) + (t9 * t100));
   const Scalar t105 = Scalar(0.0012000000000000066) * t9;
   const Scalar t106 = Scalar(0.016856) * t6;
   // derivatives: outward pass, forces: body 4 link4
   const Scalar t107 = Scalar(0.004275000000000001) * t14;
   const Scalar t108 = Scalar(0.004275000000000001) * t17;
-  const Scalar t109 = t108 - (Scalar(0.435936717) * t14);
-  const Scalar t110 = Scalar(1.3641999999999999) * t12;
-  const Scalar t111 = Scalar(1.3641999999999999) * t15;
-  const Scalar t112 = ((Scalar(0.44103671699999997) * t17) + t107) + t111;
-  const Scalar t113 = Scalar(1.3641999999999999) * t17;
-  const Scalar t114 = Scalar(1.3641999999999999) * t13;
+  const Scalar t109 = t108 - (Scalar(0.43593671700000003) * t14);
+  const Scalar t110 = Scalar(1.3642) * t12;
+  const Scalar t111 = Scalar(1.3642) * t15;
+  const Scalar t112 = ((Scalar(0.441036717) * t17) + t107) + t111;
+  const Scalar t113 = Scalar(1.3642) * t17;
+  const Scalar t114 = Scalar(1.3642) * t13;
   const Scalar t115 = (t13 * t114) + (t17 * t113);
-  const Scalar t116 = (((t17 * t109) - (t14 * t112)) - (t16 * t114)) - (Scalar(1.3641999999999999) * t53);
-  const Scalar t117 = (((Scalar(0.44103671699999997) * t49) - (Scalar(0.004275000000000001) * t60)) + (Scalar(1.3641999999999999) * t61)) - (((t14 * t110) + (t13 * t109)) + (t16 * t113));
-  const Scalar t118 = Scalar(2.7283999999999997) * t16;
+  const Scalar t116 = (((t17 * t109) - (t14 * t112)) - (t16 * t114)) - (Scalar(1.3642) * t53);
+  const Scalar t117 = (((Scalar(0.441036717) * t49) - (Scalar(0.004275000000000001) * t60)) + (Scalar(1.3642) * t61)) - (((t14 * t110) + (t13 * t109)) + (t16 * t113));
+  const Scalar t118 = Scalar(2.7284) * t16;
   const Scalar t119 = Scalar(0.008550000000000002) * t13;
   const Scalar t120 = t118 + t119;
   // derivatives: outward pass, forces: body 5 link5
-  const Scalar t121 = (((Scalar(0.010680452843509214) * t69) - (Scalar(3.57e-06) * t70)) + (Scalar(1.2919999999999997e-05) * t60)) + (Scalar(0.036480000000000005) * t62);
+  const Scalar t121 = (((Scalar(0.010680452843509228) * t69) - (Scalar(3.57e-06) * t70)) + (Scalar(1.2919999999999997e-05) * t60)) + (Scalar(0.036480000000000005) * t62);
   const Scalar t122 = ((Scalar(0.00017) * t72) - (Scalar(0.036480000000000005) * t71)) - (((Scalar(1.2919999999999997e-05) * t69) + (Scalar(0.0011613999999999995) * t70)) + (Scalar(0.012880486843509217) * t60));
   const Scalar t123 = Scalar(3.57e-06) * t21;
   const Scalar t124 = Scalar(1.2919999999999997e-05) * t24;
@@ -197,7 +197,7 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Scalar t130 = Scalar(0.00017) * t16;
   const Scalar t131 = Scalar(0.00017) * t23;
   const Scalar t132 = Scalar(0.036480000000000005) * t22;
-  const Scalar t133 = (((Scalar(0.010680452843509214) * t20) - t123) - t124) - t129;
+  const Scalar t133 = (((Scalar(0.010680452843509228) * t20) - t123) - t124) - t129;
   const Scalar t134 = t130 - (t125 + t126);
   const Scalar t135 = ((Scalar(0.012880486843509217) * t24) - (t127 + t128)) + (t131 - t132);
   const Scalar t136 = Scalar(0.036480000000000005) * t24;
@@ -213,11 +213,11 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Scalar t146 = Scalar(0.00034) * t22;
   // derivatives: outward pass, forces: body 6 link6
   const Scalar t147 = ((Scalar(0.009281063680426091) * t70) - (Scalar(3.12e-07) * t81)) + ((Scalar(0.04726753550266307) * (t78 - (v[5] * t32))) - (Scalar(0.0033246023249400717) * (t79 + (v[5] * t29))));
-  const Scalar t148 = (Scalar(0.0033246023249400717) * t74) - (((Scalar(0.000430067404825638) * t80) + (Scalar(3.12e-07) * t70)) + (Scalar(0.005179540006592342) * t81));
+  const Scalar t148 = (Scalar(0.0033246023249400717) * t74) - (((Scalar(0.0004300674048256379) * t80) + (Scalar(3.12e-07) * t70)) + (Scalar(0.005179540006592342) * t81));
   const Scalar t149 = Scalar(0.04726753550266307) * t70;
-  const Scalar t150 = Scalar(0.000430067404825638) * t28;
+  const Scalar t150 = Scalar(0.0004300674048256379) * t28;
   const Scalar t151 = Scalar(3.12e-07) * t28;
-  const Scalar t152 = Scalar(0.000430067404825638) * t27;
+  const Scalar t152 = Scalar(0.0004300674048256379) * t27;
   const Scalar t153 = Scalar(3.12e-07) * t33;
   const Scalar t154 = Scalar(0.04726753550266307) * t26;
   const Scalar t155 = Scalar(0.04726753550266307) * t29;
@@ -235,11 +235,11 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Scalar t167 = t28 * t163;
   const Scalar t168 = (t33 * t162) + t167;
   const Scalar t169 = t27 * t163;
-  const Scalar t170 = (((t33 * t160) - t164) - ((t26 * t162) + (t32 * t163))) - ((Scalar(0.000430067404825638) * t81) + (Scalar(0.04726753550266307) * t74));
+  const Scalar t170 = (((t33 * t160) - t164) - ((t26 * t162) + (t32 * t163))) - ((Scalar(0.0004300674048256379) * t81) + (Scalar(0.04726753550266307) * t74));
   const Scalar t171 = t149 - t168;
   const Scalar t172 = ((Scalar(0.0033246023249400717) * t81) - (Scalar(0.04726753550266307) * t80)) + ((t28 * t161) + (t27 * t162));
   const Scalar t173 = (t169 - (t33 * t161)) - (Scalar(0.0033246023249400717) * t70);
-  const Scalar t174 = Scalar(0.000860134809651276) * t33;
+  const Scalar t174 = Scalar(0.0008601348096512758) * t33;
   const Scalar t175 = Scalar(0.09453507100532614) * t32;
   const Scalar t176 = Scalar(6.24e-07) * t27;
   const Scalar t177 = Scalar(0.006649204649880143) * t29;
@@ -294,7 +294,7 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Scalar t221 = (Scalar(0.19) * t219) - t220;
   const Scalar t222 = Scalar(0.009281063680426091) - t221;
   const Scalar t223 = Scalar(0.00017) + t209;
-  const Scalar t224 = Scalar(0.010680452843509214) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t213)) - (sin_joint6 * (t214 + (Scalar(0.004723206102864922) * sin_joint6)))) - t221);
+  const Scalar t224 = Scalar(0.010680452843509228) + (((cos_joint6 * ((Scalar(4.366609627258045e-05) * cos_joint6) - t213)) - (sin_joint6 * (t214 + (Scalar(0.004723206102864922) * sin_joint6)))) - t221);
   const Scalar t225 = Scalar(-3.57e-06) - t216;
   const Scalar t226 = (((sin_joint6 * t218) - (cos_joint6 * t215)) - (Scalar(0.19) * t209)) - Scalar(1.2919999999999997e-05);
   const Scalar t227 = Scalar(-0.0011613999999999995) - t217;
@@ -317,8 +317,8 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Scalar t244 = Scalar(0.19) * t232;
   const Scalar t245 = t244 + t244;
   const Scalar t246 = ((t143 - t142) + t144) + (((cos_joint6 * ((cos_joint6 * t197) + t240)) + (sin_joint6 * (t241 + (sin_joint6 * t201)))) - t245);
-  const Scalar t247 = ((((t127 - t128) + (Scalar(0.010680452843509214) * t24)) - t132) - t131) + ((cos_joint6 * t198) + (sin_joint6 * t200));
-  const Scalar t248 = (t130 + (t126 + ((Scalar(0.0022000340000000035) * t21) - t125))) + (((cos_joint6 * t242) + (sin_joint6 * t243)) + (Scalar(0.19) * (t230 - t229)));
+  const Scalar t247 = ((((t127 - t128) + (Scalar(0.010680452843509228) * t24)) - t132) - t131) + ((cos_joint6 * t198) + (sin_joint6 * t200));
+  const Scalar t248 = (t130 + (t126 + ((Scalar(0.0022000339999999896) * t21) - t125))) + (((cos_joint6 * t242) + (sin_joint6 * t243)) + (Scalar(0.19) * (t230 - t229)));
   const Scalar t249 = ((t145 - t143) + t146) + (t178 - t245);
   const Scalar t250 = (t129 + ((t123 - (Scalar(0.012880486843509217) * t20)) - t124)) + (((cos_joint6 * t200) - (sin_joint6 * t198)) - t233);
   const Scalar t251 = (t144 + (t146 + (t142 - t145))) + ((cos_joint6 * t243) - (sin_joint6 * t242));
@@ -326,9 +326,9 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Scalar t252 = (cos_joint5 * t206) - (sin_joint5 * t207);
   const Scalar t253 = (sin_joint5 * t206) + (cos_joint5 * t207);
   const Scalar t254 = t116 + (((cos_joint5 * t203) - (sin_joint5 * t204)) - (Scalar(0.2) * t253));
-  const Scalar t255 = (((Scalar(0.004275000000000001) * t49) + (Scalar(0.435936717) * t60)) + (((t13 * t112) + (t17 * t110)) - ((t15 * t114) + (t12 * t113)))) + t205;
-  const Scalar t256 = ((Scalar(1.3641999999999999) * t49) + (t14 * t114)) + t252;
-  const Scalar t257 = ((t14 * t113) - (Scalar(1.3641999999999999) * t59)) + t253;
+  const Scalar t255 = (((Scalar(0.004275000000000001) * t49) + (Scalar(0.43593671700000003) * t60)) + (((t13 * t112) + (t17 * t110)) - ((t15 * t114) + (t12 * t113)))) + t205;
+  const Scalar t256 = ((Scalar(1.3642) * t49) + (t14 * t114)) + t252;
+  const Scalar t257 = ((t14 * t113) - (Scalar(1.3642) * t59)) + t253;
   const Scalar t258 = cos_joint5 * t223;
   const Scalar t259 = Scalar(0.036480000000000005) * sin_joint5;
   const Scalar t260 = t258 - t259;
@@ -348,10 +348,10 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Scalar t274 = t266 + (Scalar(0.2) * (t259 - t258));
   const Scalar t275 = ((sin_joint5 * t226) + (cos_joint5 * t227)) - t270;
   const Scalar t276 = t266 - t271;
-  const Scalar t277 = Scalar(1.3641999999999999) + t212;
-  const Scalar t278 = Scalar(0.44103671699999997) + (((sin_joint5 * t264) + (cos_joint5 * t265)) - t272);
+  const Scalar t277 = Scalar(1.3642) + t212;
+  const Scalar t278 = Scalar(0.441036717) + (((sin_joint5 * t264) + (cos_joint5 * t265)) - t272);
   const Scalar t279 = Scalar(0.004275000000000001) + t275;
-  const Scalar t280 = t228 - Scalar(0.435936717);
+  const Scalar t280 = t228 - Scalar(0.43593671700000003);
   const Scalar t281 = cos_joint5 * t237;
   const Scalar t282 = sin_joint5 * t238;
   const Scalar t283 = t281 - t282;
@@ -370,9 +370,9 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Scalar t296 = (Scalar(0.2) * t295) - (Scalar(0.2) * t239);
   const Scalar t297 = ((sin_joint5 * t293) + (cos_joint5 * t294)) - t296;
   const Scalar t298 = (((cos_joint5 * ((cos_joint5 * t246) - t291)) - (sin_joint5 * (t292 - (sin_joint5 * t249)))) - t296) - t118;
-  const Scalar t299 = (t108 - (Scalar(0.44103671699999997) * t14)) + ((cos_joint5 * t293) - (sin_joint5 * t294));
-  const Scalar t300 = (((cos_joint5 * t248) - (sin_joint5 * t250)) + (Scalar(0.2) * (t282 - t281))) - (t111 + (t107 + (Scalar(0.435936717) * t17)));
-  const Scalar t301 = ((Scalar(0.8769734339999999) * t13) - t110) + (((sin_joint5 * t248) + (cos_joint5 * t250)) - t285);
+  const Scalar t299 = (t108 - (Scalar(0.441036717) * t14)) + ((cos_joint5 * t293) - (sin_joint5 * t294));
+  const Scalar t300 = (((cos_joint5 * t248) - (sin_joint5 * t250)) + (Scalar(0.2) * (t282 - t281))) - (t111 + (t107 + (Scalar(0.43593671700000003) * t17)));
+  const Scalar t301 = ((Scalar(0.876973434) * t13) - t110) + (((sin_joint5 * t248) + (cos_joint5 * t250)) - t285);
   const Scalar t302 = t119 + t251;
   // derivatives: inward pass, composites: body 4 link4
   const Scalar t303 = (cos_joint4 * t256) - (sin_joint4 * (t208 - t115));
@@ -396,9 +396,9 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Scalar t321 = ((cos_joint4 * t314) - (sin_joint4 * t318)) + (Scalar(0.2) * (t309 - t308));
   const Scalar t322 = t278 + t320;
   const Scalar t323 = Scalar(0.0006000000000000033) + t261;
-  const Scalar t324 = Scalar(0.4474035169999999) + (((cos_joint4 * ((cos_joint4 * t273) - t312)) - (sin_joint4 * (t313 - (sin_joint4 * t280)))) + t320);
+  const Scalar t324 = Scalar(0.44740351700000003) + (((cos_joint4 * ((cos_joint4 * t273) - t312)) - (sin_joint4 * (t313 - (sin_joint4 * t280)))) + t320);
   const Scalar t325 = Scalar(0.008428) + (((sin_joint4 * t269) + t317) - t270);
-  const Scalar t326 = Scalar(0.453603517) + ((sin_joint4 * t314) + (cos_joint4 * t318));
+  const Scalar t326 = Scalar(0.45360351700000007) + ((sin_joint4 * t314) + (cos_joint4 * t318));
   const Scalar t327 = cos_joint4 * t289;
   const Scalar t328 = sin_joint4 * t239;
   const Scalar t329 = t327 - t328;
@@ -417,14 +417,14 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Scalar t342 = Scalar(0.2) * t330;
   const Scalar t343 = t342 + t342;
   const Scalar t344 = t105 + (((cos_joint4 * ((cos_joint4 * t298) - t337)) - (sin_joint4 * (t338 - (sin_joint4 * t302)))) + t343);
-  const Scalar t345 = ((t97 + (Scalar(0.4474035169999999) * t10)) - t98) + ((cos_joint4 * t299) - (sin_joint4 * t301));
-  const Scalar t346 = ((Scalar(0.006200000000000094) * t7) - t96) + (((cos_joint4 * t339) - (sin_joint4 * t340)) + (Scalar(0.2) * (t328 - t327)));
+  const Scalar t345 = ((t97 + (Scalar(0.44740351700000003) * t10)) - t98) + ((cos_joint4 * t299) - (sin_joint4 * t301));
+  const Scalar t346 = ((Scalar(0.006200000000000039) * t7) - t96) + (((cos_joint4 * t339) - (sin_joint4 * t340)) + (Scalar(0.2) * (t328 - t327)));
   const Scalar t347 = ((t297 - t120) + t343) - t106;
-  const Scalar t348 = (((sin_joint4 * t299) + (cos_joint4 * t301)) - t331) - (Scalar(0.453603517) * t6);
+  const Scalar t348 = (((sin_joint4 * t299) + (cos_joint4 * t301)) - t331) - (Scalar(0.45360351700000007) * t6);
   const Scalar t349 = (t105 + t106) + ((sin_joint4 * t339) + (cos_joint4 * t340));
   // derivatives: inward pass, composites: body 3 link3
   const Scalar t350 = ((cos_joint3 * t305) - (sin_joint3 * t306)) - (Scalar(0.22) * ((sin_joint3 * t307) + (cos_joint3 * (t257 - t102))));
-  const Scalar t351 = (((Scalar(1.4336696670000002) * t41) - (Scalar(0.00030010000000000003) * t40)) - ((t0 * t88) + (v[1] * t85))) + (t104 + ((sin_joint4 * t254) + (cos_joint4 * t255)));
+  const Scalar t351 = (((Scalar(1.433669667) * t41) - (Scalar(0.00030010000000000003) * t40)) - ((t0 * t88) + (v[1] * t85))) + (t104 + ((sin_joint4 * t254) + (cos_joint4 * t255)));
   const Scalar t352 = cos_joint3 * t310;
   const Scalar t353 = sin_joint3 * t323;
   const Scalar t354 = t352 - t353;
@@ -453,9 +453,9 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   const Scalar t377 = Scalar(0.22) * t336;
   const Scalar t378 = t377 + t377;
   const Scalar t379 = (t92 + t93) + (((cos_joint3 * ((cos_joint3 * t344) - t373)) - (sin_joint3 * (t374 - (sin_joint3 * t347)))) + t378);
-  const Scalar t380 = ((t89 - t90) - (Scalar(1.4426703330000004) * t1)) + ((cos_joint3 * t375) - (sin_joint3 * t376));
-  const Scalar t381 = (t87 + (t86 - (Scalar(1.4336696670000002) * v[1]))) + (((cos_joint3 * t346) - (sin_joint3 * t348)) + (Scalar(0.22) * (t368 - t367)));
-  const Scalar t382 = (t84 + (t83 - (Scalar(2.876340000000001) * t0))) + (((sin_joint3 * t346) + (cos_joint3 * t348)) - t369);
+  const Scalar t380 = ((t89 - t90) - (Scalar(1.4426703330000001) * t1)) + ((cos_joint3 * t375) - (sin_joint3 * t376));
+  const Scalar t381 = (t87 + (t86 - (Scalar(1.433669667) * v[1]))) + (((cos_joint3 * t346) - (sin_joint3 * t348)) + (Scalar(0.22) * (t368 - t367)));
+  const Scalar t382 = (t84 + (t83 - (Scalar(2.87634) * t0))) + (((sin_joint3 * t346) + (cos_joint3 * t348)) - t369);
   dbias_dv[1] = (cos_joint2 * (t370 + t382)) - (sin_joint2 * (t380 - t372));
   const Scalar t383 = (t94 - t92) + t349;
   dbias_dv[0] = (cos_joint2 * ((cos_joint2 * t383) - (sin_joint2 * t381))) - (sin_joint2 * ((cos_joint2 * t381) - (sin_joint2 * t379)));
@@ -597,11 +597,11 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   dbias_dq[12] = t484 - ((t1 * t461) + (t0 * t460));
   const Scalar t485 = (t449 * t478) - ((((cos_joint3 * t452) - (sin_joint3 * t453)) - (Scalar(0.22) * ((sin_joint3 * t450) + (cos_joint3 * t445)))) * t477);
   dbias_dv[12] = ((sin_joint3 * t459) + (cos_joint3 * t458)) + t485;
-  const Scalar t486 = ((t38 * (Scalar(0.0011099999999999999) + t354)) - (t39 * (Scalar(3.7500000000000004) + t311))) - ((Scalar(1.4426703330000004) + (((sin_joint3 * t358) + (cos_joint3 * t359)) + t362)) * t384);
+  const Scalar t486 = ((t38 * (Scalar(0.0011099999999999999) + t354)) - (t39 * (Scalar(3.7500000000000004) + t311))) - ((Scalar(1.4426703330000001) + (((sin_joint3 * t358) + (cos_joint3 * t359)) + t362)) * t384);
   dbias_dq[8] = t486 + (((t1 * t372) - (t0 * t370)) - ((t1 * t380) + (t0 * t382)));
   const Scalar t487 = (((Scalar(0.00030010000000000003) * t41) + ((v[1] * t91) + (t1 * t88))) - t350) + (t479 - (t366 * t384));
   const Scalar t488 = ((((cos_joint3 * ((cos_joint3 * t324) - t356)) - (sin_joint3 * (t357 - (sin_joint3 * t322)))) + t362) * t477) + (t365 * t478);
-  dbias_dv[7] = (cos_joint2 * ((t382 - t370) - ((t365 * t477) + ((t326 - Scalar(1.4336696670000002)) * t478)))) - (sin_joint2 * ((t372 + t380) - t488));
+  dbias_dv[7] = (cos_joint2 * ((t382 - t370) - ((t365 * t477) + ((t326 - Scalar(1.433669667)) * t478)))) - (sin_joint2 * ((t372 + t380) - t488));
   // derivatives: ancestor entries: body 2 link2
   const Scalar t489 = sin_joint2 * ((t351 - ((t364 * t384) + (t38 * t355))) + ((t0 * t371) - ((t1 * t379) + (t0 * t381))));
   dbias_dq[7] = (cos_joint2 * (t487 - (((t1 * t381) + (t0 * t383)) + (t1 * t371)))) - t489;
@@ -834,4 +834,4 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   dbias_dq[44] = t649;
 }
 
-}  // namespace rbdc_gen::arm7::common::bias_derivatives_6d40beeef01f
+}  // namespace rbdc_gen::arm7::common::bias_derivatives_ddc9a4af4c21

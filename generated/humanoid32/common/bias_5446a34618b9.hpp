@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::bias_d73361c47210 {
+namespace rbdc_gen::humanoid32::common::bias_5446a34618b9 {
 
 /// Bias c + g in one pass (inverse dynamics at a = 0, without the acceleration terms).
 ///
@@ -106,13 +106,13 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Scalar t5 = ((v[1] * v[3]) - (v[0] * v[4])) + (Scalar(9.81) * (Scalar(1) - ((q[4] * t0) + (q[5] * t1))));
   // outward pass: body 0 pelvis
   const Scalar t6 = Scalar(0.28349666669999996) * v[2];
-  const Scalar t7 = (Scalar(4.039851666744001) * v[0]) - (Scalar(2.0625) * v[4]);
-  const Scalar t8 = (Scalar(3.809688333444001) * v[1]) + (Scalar(2.0625) * v[3]);
+  const Scalar t7 = (Scalar(4.039851666744001) * v[0]) - (Scalar(2.062499999999999) * v[4]);
+  const Scalar t8 = (Scalar(3.809688333444001) * v[1]) + (Scalar(2.062499999999999) * v[3]);
   const Scalar t9 = Scalar(66.95) * v[5];
-  const Scalar t10 = (Scalar(66.95) * v[3]) + (Scalar(2.0625) * v[1]);
-  const Scalar t11 = (Scalar(66.95) * v[4]) - (Scalar(2.0625) * v[0]);
-  const Scalar t12 = (((v[1] * t6) - (v[2] * t8)) + ((v[4] * t9) - (v[5] * t11))) - (Scalar(2.0625) * t4);
-  const Scalar t13 = (Scalar(2.0625) * t3) + (((v[2] * t7) - (v[0] * t6)) + ((v[5] * t10) - (v[3] * t9)));
+  const Scalar t10 = (Scalar(66.95) * v[3]) + (Scalar(2.062499999999999) * v[1]);
+  const Scalar t11 = (Scalar(66.95) * v[4]) - (Scalar(2.062499999999999) * v[0]);
+  const Scalar t12 = (((v[1] * t6) - (v[2] * t8)) + ((v[4] * t9) - (v[5] * t11))) - (Scalar(2.062499999999999) * t4);
+  const Scalar t13 = (Scalar(2.062499999999999) * t3) + (((v[2] * t7) - (v[0] * t6)) + ((v[5] * t10) - (v[3] * t9)));
   // outward pass: body 1 l_hip_yaw_link/r_hip_yaw_link
   const Lane t14 = v[3] - ((v[2] * lane_c[0]) + (Scalar(0.07) * v[1]));
   const Scalar t15 = v[4] + (Scalar(0.07) * v[0]);
@@ -252,13 +252,13 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Scalar t141 = ((cos_waist_pitch * t130) - (t5 * sin_waist_pitch)) - (v[19] * t137);
   const Scalar t142 = ((sin_waist_pitch * t130) + (t5 * cos_waist_pitch)) + (v[19] * t136);
   const Scalar t143 = Scalar(0.012) * t133;
-  const Scalar t144 = (Scalar(1.0410841074056743) * t138) + ((Scalar(0.012) * t136) - (Scalar(0.16) * t137));
-  const Scalar t145 = (Scalar(1.0401241074056744) * t135) + (Scalar(0.16) * t133);
+  const Scalar t144 = (Scalar(1.0410841074056745) * t138) + ((Scalar(0.012) * t136) - (Scalar(0.16) * t137));
+  const Scalar t145 = (Scalar(1.0401241074056746) * t135) + (Scalar(0.16) * t133);
   const Scalar t146 = Scalar(0.012) * t138;
   const Scalar t147 = Scalar(0.16) * t138;
   const Scalar t148 = (Scalar(0.16) * t135) - (Scalar(0.012) * t134);
   const Scalar t149 = ((t137 * t146) + (t136 * t147)) - ((t135 * t143) + (t134 * t145));
-  const Scalar t150 = ((Scalar(1.0401241074056744) * t140) + (Scalar(0.16) * t131)) + (((t134 * t144) + (t138 * t143)) + ((t136 * t148) - (t133 * t146)));
+  const Scalar t150 = ((Scalar(1.0401241074056746) * t140) + (Scalar(0.16) * t131)) + (((t134 * t144) + (t138 * t143)) + ((t136 * t148) - (t133 * t146)));
   // outward pass: body 9 torso
   const Scalar t151 = (t138 * cos_waist_roll) + (t135 * sin_waist_roll);
   const Scalar t152 = (t135 * cos_waist_roll) - (t138 * sin_waist_roll);
@@ -271,7 +271,7 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Scalar t159 = ((t142 * cos_waist_roll) - (t131 * sin_waist_roll)) - (v[20] * t153);
   const Scalar t160 = Scalar(0.032) * t155;
   const Scalar t161 = ((Scalar(4.379874803165694) * t155) - (Scalar(0.032) * t152)) - (Scalar(9.530453494576028) * t153);
-  const Scalar t162 = (Scalar(2.4329332543543454) * t151) + (Scalar(9.530453494576028) * t136);
+  const Scalar t162 = (Scalar(2.432933254354345) * t151) + (Scalar(9.530453494576028) * t136);
   const Scalar t163 = Scalar(9.530453494576028) * t151;
   const Scalar t164 = Scalar(9.530453494576028) * t155;
   const Scalar t165 = (((Scalar(4.379874803165694) * t139) - (Scalar(0.032) * t157)) - (Scalar(9.530453494576028) * t158)) + ((t154 * t164) - ((t151 * t160) + (t152 * t162)));
@@ -364,12 +364,12 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Lane t246 = ((t233 * cos_lanes_shoulder_roll) - (t217 * sin_lanes_shoulder_roll)) - (t240 * lane_v[7]);
   const Lane t247 = ((t219 * cos_lanes_shoulder_roll) + (sin_lanes_shoulder_roll * t237)) + (t243 * lane_v[7]);
   const Lane t248 = ((cos_lanes_shoulder_roll * t237) - (t219 * sin_lanes_shoulder_roll)) - (t242 * lane_v[7]);
-  const Lane t249 = (Scalar(0.295408333333) * t244) + (Scalar(1.0805) * t242);
-  const Lane t250 = (Scalar(0.294755) * t240) - (Scalar(1.0805) * t238);
-  const Lane t251 = Scalar(1.0805) * t240;
-  const Lane t252 = Scalar(1.0805) * t244;
-  const Lane t253 = ((Scalar(0.295408333333) * t232) + (Scalar(1.0805) * t247)) - ((t241 * t250) + (t243 * t252));
-  const Lane t254 = ((Scalar(0.294755) * t245) - (Scalar(1.0805) * t236)) + ((t241 * t249) - (t243 * t251));
+  const Lane t249 = (Scalar(0.295408333333) * t244) + (Scalar(1.0804999999999998) * t242);
+  const Lane t250 = (Scalar(0.294755) * t240) - (Scalar(1.0804999999999998) * t238);
+  const Lane t251 = Scalar(1.0804999999999998) * t240;
+  const Lane t252 = Scalar(1.0804999999999998) * t244;
+  const Lane t253 = ((Scalar(0.295408333333) * t232) + (Scalar(1.0804999999999998) * t247)) - ((t241 * t250) + (t243 * t252));
+  const Lane t254 = ((Scalar(0.294755) * t245) - (Scalar(1.0804999999999998) * t236)) + ((t241 * t249) - (t243 * t251));
   // outward pass: body 15 l_upper_arm/r_upper_arm
   const Lane t255 = t236 - (Scalar(0.03) * t245);
   const Lane t256 = t247 + (Scalar(0.03) * t232);
@@ -383,7 +383,7 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Lane t264 = ((t232 * cos_lanes_shoulder_yaw) + (t245 * sin_lanes_shoulder_yaw)) + (t260 * lane_v[8]);
   const Lane t265 = ((t245 * cos_lanes_shoulder_yaw) - (t232 * sin_lanes_shoulder_yaw)) - (t259 * lane_v[8]);
   const Lane t266 = Scalar(0.10778583333300001) * t259;
-  const Lane t267 = Scalar(0.11002583333300002) * t263;
+  const Lane t267 = Scalar(0.110025833333) * t263;
   // outward pass: body 16 l_forearm/r_forearm
   const Lane t268 = (((cos_lanes_shoulder_yaw * t255) + (sin_lanes_shoulder_yaw * t256)) + (t262 * lane_v[8])) - (Scalar(0.28) * t265);
   const Lane t269 = (((cos_lanes_shoulder_yaw * t256) - (sin_lanes_shoulder_yaw * t255)) - (t261 * lane_v[8])) + (Scalar(0.28) * t264);
@@ -398,13 +398,13 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Lane t278 = ((t264 * sin_lanes_elbow) + (t246 * cos_lanes_elbow)) + (t272 * lane_v[9]);
   const Lane t279 = ((cos_lanes_elbow * t268) - (t248 * sin_lanes_elbow)) - (t275 * lane_v[9]);
   const Lane t280 = ((sin_lanes_elbow * t268) + (t248 * cos_lanes_elbow)) + (t274 * lane_v[9]);
-  const Lane t281 = Scalar(0.10680583333300002) * t273;
+  const Lane t281 = Scalar(0.106805833333) * t273;
   const Lane t282 = Scalar(0.447) * t271;
-  const Lane t283 = (Scalar(0.10778583333300001) * t276) - (Scalar(0.447) * t274);
+  const Lane t283 = (Scalar(0.107785833333) * t276) - (Scalar(0.447) * t274);
   const Lane t284 = Scalar(0.447) * t276;
   const Lane t285 = Scalar(0.447) * t272;
   const Lane t286 = (Scalar(0.447) * t269) - (((t276 * t281) + (t273 * t283)) + (t275 * t285));
-  const Lane t287 = ((Scalar(0.10778583333300001) * t265) - (Scalar(0.447) * t279)) + (((t273 * t282) + (t272 * t281)) - (t275 * t284));
+  const Lane t287 = ((Scalar(0.107785833333) * t265) - (Scalar(0.447) * t279)) + (((t273 * t282) + (t272 * t281)) - (t275 * t284));
   // outward pass: body 17 l_wrist_yaw_link/r_wrist_yaw_link
   const Lane t288 = t279 - (Scalar(0.25) * t265);
   const Lane t289 = t269 + (Scalar(0.25) * t277);
@@ -469,7 +469,7 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Lane t341 = (sin_lanes_wrist_yaw * t336) + (cos_lanes_wrist_yaw * t331);
   const Lane t342 = t286 + (((cos_lanes_wrist_yaw * t337) - (sin_lanes_wrist_yaw * t338)) + (Scalar(0.25) * t341));
   const Lane t343 = t287 + (((sin_lanes_wrist_yaw * t337) + (cos_lanes_wrist_yaw * t338)) - (Scalar(0.25) * t340));
-  const Lane t344 = ((((t272 * t283) - (t276 * t282)) + ((t274 * t285) + (t271 * t284))) - (Scalar(0.10680583333300002) * t278)) + t339;
+  const Lane t344 = ((((t272 * t283) - (t276 * t282)) + ((t274 * t285) + (t271 * t284))) - (Scalar(0.106805833333) * t278)) + t339;
   const Lane t345 = t340 - ((Scalar(0.447) * t265) + (t273 * t285));
   const Lane t346 = ((Scalar(0.447) * t277) - (t273 * t284)) + t341;
   const Lane t347 = ((t272 * t285) + (t276 * t284)) + ((sin_lanes_wrist_pitch * t329) + (cos_lanes_wrist_pitch * t332));
@@ -477,7 +477,7 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Lane t348 = (cos_lanes_elbow * t345) + (sin_lanes_elbow * t347);
   const Lane t349 = ((Scalar(0.10778583333300001) * t264) + (t260 * t267)) + (((cos_lanes_elbow * t342) + (sin_lanes_elbow * t344)) + (Scalar(0.28) * t346));
   const Lane t350 = ((t263 * t266) - (t259 * t267)) + (t343 - (Scalar(0.28) * t348));
-  const Lane t351 = ((Scalar(0.11002583333300002) * t246) - (t260 * t266)) + ((cos_lanes_elbow * t344) - (sin_lanes_elbow * t342));
+  const Lane t351 = ((Scalar(0.110025833333) * t246) - (t260 * t266)) + ((cos_lanes_elbow * t344) - (sin_lanes_elbow * t342));
   // inward pass: body 15 l_upper_arm/r_upper_arm
   const Lane t352 = (cos_lanes_shoulder_yaw * t348) - (sin_lanes_shoulder_yaw * t346);
   const Lane t353 = (sin_lanes_shoulder_yaw * t348) + (cos_lanes_shoulder_yaw * t346);
@@ -485,8 +485,8 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   store_lanes(cg + 32, make_lanes(t354[1], t351[1], t343[1], t339[1]));
   const Lane t355 = t254 + (((sin_lanes_shoulder_yaw * t349) + (cos_lanes_shoulder_yaw * t350)) - (Scalar(0.03) * t352));
   const Lane t356 = (((t244 * t250) - (t240 * t249)) + ((t238 * t252) + (t242 * t251))) + t351;
-  const Lane t357 = t352 - ((Scalar(1.0805) * t245) + (t241 * t252));
-  const Lane t358 = ((Scalar(1.0805) * t232) - (t241 * t251)) + t353;
+  const Lane t357 = t352 - ((Scalar(1.0804999999999998) * t245) + (t241 * t252));
+  const Lane t358 = ((Scalar(1.0804999999999998) * t232) - (t241 * t251)) + t353;
   const Lane t359 = ((t244 * t252) + (t240 * t251)) + ((cos_lanes_elbow * t347) - (sin_lanes_elbow * t345));
   // inward pass: body 14 l_shoulder_roll_link/r_shoulder_roll_link
   const Lane t360 = (cos_lanes_shoulder_roll * t358) - (sin_lanes_shoulder_roll * t359);
@@ -505,7 +505,7 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Lane t370 = ((cos_lanes_shoulder_pitch * t362) + (sin_lanes_shoulder_pitch * t364)) + ((lane_c[5] * t369) - (Scalar(0.36) * t368));
   const Lane t371 = ((Scalar(0.9800665778412416) * t363) + (lane_c[4] * t365)) + (Scalar(0.36) * t366);
   const Lane t372 = ((lane_c[3] * t363) + (Scalar(0.9800665778412416) * t365)) - (lane_c[5] * t366);
-  const Scalar t373 = (((Scalar(2.4329332543543454) * t156) + (Scalar(9.530453494576028) * t141)) + (((t152 * t161) + (t155 * t160)) + (t154 * t163))) + (t371[0] + t371[1]);
+  const Scalar t373 = (((Scalar(2.432933254354345) * t156) + (Scalar(9.530453494576028) * t141)) + (((t152 * t161) + (t155 * t160)) + (t154 * t163))) + (t371[0] + t371[1]);
   // inward pass: body 12 head
   const Scalar t374 = (((t187 * t192) - (t184 * t191)) - ((t182 * t194) + (t186 * t193))) + t210;
   const Scalar t375 = (((Scalar(0.019757499966999995) * t176) - (Scalar(0.064) * t190)) + ((t185 * t194) - (t183 * t192))) + ((cos_neck_roll * t211) - (sin_neck_roll * t212));
@@ -531,7 +531,7 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Scalar t390 = ((t369[0] + t369[1]) - ((t155 * t164) + (t151 * t163))) + ((cos_neck_pitch * t379) - (sin_neck_pitch * t377));
   // inward pass: body 9 torso
   const Scalar t391 = ((((t138 * t145) - (t135 * t144)) - ((t133 * t147) + (t137 * t148))) - (Scalar(0.012) * t131)) + t386;
-  const Scalar t392 = ((((Scalar(0.012) * t141) - (Scalar(0.16) * t142)) - (Scalar(1.0410841074056743) * t127)) + t149) + ((cos_waist_roll * t387) - (sin_waist_roll * t388));
+  const Scalar t392 = ((((Scalar(0.012) * t141) - (Scalar(0.16) * t142)) - (Scalar(1.0410841074056745) * t127)) + t149) + ((cos_waist_roll * t387) - (sin_waist_roll * t388));
   cg[19] = t392;
   const Scalar t393 = t150 + ((sin_waist_roll * t387) + (cos_waist_roll * t388));
   const Scalar t394 = ((((Scalar(9.530453494576028) * t156) + (t152 * t164)) + (t366[0] + t366[1])) + t384) - ((Scalar(0.012) * t127) + ((t138 * t147) + (t135 * t148)));
@@ -601,4 +601,4 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   cg[2] = ((((v[0] * t8) - (v[1] * t7)) + ((v[3] * t11) - (v[4] * t10))) + t400) + (t437[0] + t437[1]);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::bias_d73361c47210
+}  // namespace rbdc_gen::humanoid32::common::bias_5446a34618b9

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::gravity_derivatives_83fb298f18f7 {
+namespace rbdc_gen::humanoid32::common::gravity_derivatives_b93e12d65243 {
 
 /// Derivative of the gravity terms g.
 ///
@@ -581,15 +581,15 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   const Lane t78 = (sin_lanes_elbow * t67) + (cos_lanes_elbow * t72);
   const Lane t79 = t75 - t76;
   // derivatives: inward pass, composites: body 15 l_upper_arm/r_upper_arm
-  const Lane t80 = (Scalar(1.0805) * t33) + ((cos_lanes_shoulder_yaw * t73) - (sin_lanes_shoulder_yaw * t66));
-  const Lane t81 = ((sin_lanes_shoulder_yaw * t73) + (cos_lanes_shoulder_yaw * t66)) - (Scalar(1.0805) * t31);
+  const Lane t80 = (Scalar(1.0804999999999998) * t33) + ((cos_lanes_shoulder_yaw * t73) - (sin_lanes_shoulder_yaw * t66));
+  const Lane t81 = ((sin_lanes_shoulder_yaw * t73) + (cos_lanes_shoulder_yaw * t66)) - (Scalar(1.0804999999999998) * t31);
   const Lane t82 = cos_lanes_shoulder_yaw * t77;
   const Lane t83 = sin_lanes_shoulder_yaw * t70;
   const Lane t84 = t82 - t83;
   const Lane t85 = sin_lanes_shoulder_yaw * t77;
   const Lane t86 = t85 + (cos_lanes_shoulder_yaw * t70);
   const Lane t87 = t83 - t82;
-  const Lane t88 = t78 - Scalar(1.0805);
+  const Lane t88 = t78 - Scalar(1.0804999999999998);
   // derivatives: inward pass, composites: body 14 l_shoulder_roll_link/r_shoulder_roll_link
   const Lane t89 = (cos_lanes_shoulder_roll * t81) + (sin_lanes_shoulder_roll * t74);
   const Lane t90 = (sin_lanes_shoulder_roll * t81) - (cos_lanes_shoulder_roll * t74);
@@ -692,7 +692,7 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   const Scalar t169 = (t133 + (cos_waist_yaw * t125)) + (t167[0] + t167[1]);
   dg_dq[38] = t6 * t169;
   dg_dq[40] = t8 * t169;
-  const Scalar t170 = (Scalar(2.0625) + t130) + (t162[0] + t162[1]);
+  const Scalar t170 = (Scalar(2.062499999999999) + t130) + (t162[0] + t162[1]);
   dg_dq[76] = t6 * t170;
   dg_dq[77] = t7 * t170;
   // derivatives: rows: body 1 l_hip_yaw_link/r_hip_yaw_link
@@ -1585,4 +1585,4 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   dg_dq[113] = t681[1];
 }
 
-}  // namespace rbdc_gen::humanoid32::common::gravity_derivatives_83fb298f18f7
+}  // namespace rbdc_gen::humanoid32::common::gravity_derivatives_b93e12d65243

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::center_of_mass_jacobian_338a2789398b {
+namespace rbdc_gen::arm7::common::center_of_mass_jacobian_47a53fa3fc5d {
 
 /// Centre-of-mass Jacobian J_c, ċ = J_c v, world frame.
 ///
@@ -81,9 +81,9 @@ RBDC_HOST_DEVICE inline void center_of_mass_jacobian(const Scalar* q, Scalar* J_
   const Scalar t29 = ((Scalar(0.00017) * t22) + (Scalar(0.036480000000000005) * t23)) + t26;
   J_c[12] = Scalar(0.04962779156327543) * ((t15 * t29) - (t17 * t28));
   J_c[13] = Scalar(0.04962779156327543) * ((t17 * t27) - (t13 * t29));
-  const Scalar t30 = (Scalar(1.3641999999999999) * t13) + t27;
-  const Scalar t31 = (Scalar(1.3641999999999999) * t15) + t28;
-  const Scalar t32 = (Scalar(1.3641999999999999) * t17) + t29;
+  const Scalar t30 = (Scalar(1.3642) * t13) + t27;
+  const Scalar t31 = (Scalar(1.3642) * t15) + t28;
+  const Scalar t32 = (Scalar(1.3642) * t17) + t29;
   J_c[10] = Scalar(-0.04962779156327543) * ((t11 * t30) + (t5 * t32));
   const Scalar t33 = t30 - (Scalar(0.0006000000000000033) * t5);
   const Scalar t34 = (Scalar(0.0006000000000000033) * t9) + t31;
@@ -106,4 +106,4 @@ RBDC_HOST_DEVICE inline void center_of_mass_jacobian(const Scalar* q, Scalar* J_
   J_c[11] = Scalar(0.04962779156327543) * ((t5 * t31) - (t30 * t39));
 }
 
-}  // namespace rbdc_gen::arm7::common::center_of_mass_jacobian_338a2789398b
+}  // namespace rbdc_gen::arm7::common::center_of_mass_jacobian_47a53fa3fc5d

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::quadratic_velocity_terms_42c2a59e4cfe {
+namespace rbdc_gen::humanoid32::common::quadratic_velocity_terms_3cd8478e0712 {
 
 /// Quadratic velocity terms c (paper 000 Alg. 2).
 ///
@@ -97,13 +97,13 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t2 = (v[1] * v[3]) - (v[0] * v[4]);
   // outward pass: body 0 pelvis
   const Scalar t3 = Scalar(0.28349666669999996) * v[2];
-  const Scalar t4 = (Scalar(4.039851666744001) * v[0]) - (Scalar(2.0625) * v[4]);
-  const Scalar t5 = (Scalar(3.809688333444001) * v[1]) + (Scalar(2.0625) * v[3]);
+  const Scalar t4 = (Scalar(4.039851666744001) * v[0]) - (Scalar(2.062499999999999) * v[4]);
+  const Scalar t5 = (Scalar(3.809688333444001) * v[1]) + (Scalar(2.062499999999999) * v[3]);
   const Scalar t6 = Scalar(66.95) * v[5];
-  const Scalar t7 = (Scalar(66.95) * v[3]) + (Scalar(2.0625) * v[1]);
-  const Scalar t8 = (Scalar(66.95) * v[4]) - (Scalar(2.0625) * v[0]);
-  const Scalar t9 = (((v[1] * t3) - (v[2] * t5)) + ((v[4] * t6) - (v[5] * t8))) - (Scalar(2.0625) * t1);
-  const Scalar t10 = (Scalar(2.0625) * t0) + (((v[2] * t4) - (v[0] * t3)) + ((v[5] * t7) - (v[3] * t6)));
+  const Scalar t7 = (Scalar(66.95) * v[3]) + (Scalar(2.062499999999999) * v[1]);
+  const Scalar t8 = (Scalar(66.95) * v[4]) - (Scalar(2.062499999999999) * v[0]);
+  const Scalar t9 = (((v[1] * t3) - (v[2] * t5)) + ((v[4] * t6) - (v[5] * t8))) - (Scalar(2.062499999999999) * t1);
+  const Scalar t10 = (Scalar(2.062499999999999) * t0) + (((v[2] * t4) - (v[0] * t3)) + ((v[5] * t7) - (v[3] * t6)));
   // outward pass: body 1 l_hip_yaw_link
   const Scalar t11 = Scalar(0.09) * v[2];
   const Scalar t12 = Scalar(0.07) * v[1];
@@ -357,13 +357,13 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t245 = ((cos_waist_pitch * t234) - (t2 * sin_waist_pitch)) - (v[19] * t241);
   const Scalar t246 = ((sin_waist_pitch * t234) + (t2 * cos_waist_pitch)) + (v[19] * t240);
   const Scalar t247 = Scalar(0.012) * t237;
-  const Scalar t248 = (Scalar(1.0410841074056743) * t242) + ((Scalar(0.012) * t240) - (Scalar(0.16) * t241));
-  const Scalar t249 = (Scalar(1.0401241074056744) * t239) + (Scalar(0.16) * t237);
+  const Scalar t248 = (Scalar(1.0410841074056745) * t242) + ((Scalar(0.012) * t240) - (Scalar(0.16) * t241));
+  const Scalar t249 = (Scalar(1.0401241074056746) * t239) + (Scalar(0.16) * t237);
   const Scalar t250 = Scalar(0.012) * t242;
   const Scalar t251 = Scalar(0.16) * t242;
   const Scalar t252 = (Scalar(0.16) * t239) - (Scalar(0.012) * t238);
   const Scalar t253 = ((t241 * t250) + (t240 * t251)) - ((t239 * t247) + (t238 * t249));
-  const Scalar t254 = ((Scalar(1.0401241074056744) * t244) + (Scalar(0.16) * t235)) + (((t238 * t248) + (t242 * t247)) + ((t240 * t252) - (t237 * t250)));
+  const Scalar t254 = ((Scalar(1.0401241074056746) * t244) + (Scalar(0.16) * t235)) + (((t238 * t248) + (t242 * t247)) + ((t240 * t252) - (t237 * t250)));
   // outward pass: body 15 torso
   const Scalar t255 = (t242 * cos_waist_roll) + (t239 * sin_waist_roll);
   const Scalar t256 = (t239 * cos_waist_roll) - (t242 * sin_waist_roll);
@@ -376,11 +376,11 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t263 = ((t246 * cos_waist_roll) - (t235 * sin_waist_roll)) - (v[20] * t257);
   const Scalar t264 = Scalar(0.032) * t259;
   const Scalar t265 = ((Scalar(4.379874803165694) * t259) - (Scalar(0.032) * t256)) - (Scalar(9.530453494576028) * t257);
-  const Scalar t266 = (Scalar(2.4329332543543454) * t255) + (Scalar(9.530453494576028) * t240);
+  const Scalar t266 = (Scalar(2.432933254354345) * t255) + (Scalar(9.530453494576028) * t240);
   const Scalar t267 = Scalar(9.530453494576028) * t255;
   const Scalar t268 = Scalar(9.530453494576028) * t259;
   const Scalar t269 = (((Scalar(4.379874803165694) * t243) - (Scalar(0.032) * t261)) - (Scalar(9.530453494576028) * t262)) + ((t258 * t268) - ((t255 * t264) + (t256 * t266)));
-  const Scalar t270 = ((Scalar(2.4329332543543454) * t260) + (Scalar(9.530453494576028) * t245)) + (((t256 * t265) + (t259 * t264)) + (t258 * t267));
+  const Scalar t270 = ((Scalar(2.432933254354345) * t260) + (Scalar(9.530453494576028) * t245)) + (((t256 * t265) + (t259 * t264)) + (t258 * t267));
   const Scalar t271 = (((t259 * t266) - (t255 * t265)) - ((t240 * t268) + (t257 * t267))) - (Scalar(0.032) * t243);
   // outward pass: body 16 neck_yaw_link
   const Scalar t272 = t245 + (Scalar(0.44) * t260);
@@ -489,12 +489,12 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t370 = ((t357 * cos_l_shoulder_roll) - (t328 * sin_l_shoulder_roll)) - (v[25] * t364);
   const Scalar t371 = ((t333 * cos_l_shoulder_roll) + (sin_l_shoulder_roll * t361)) + (v[25] * t367);
   const Scalar t372 = ((cos_l_shoulder_roll * t361) - (t333 * sin_l_shoulder_roll)) - (v[25] * t366);
-  const Scalar t373 = (Scalar(0.295408333333) * t368) + (Scalar(1.0805) * t366);
-  const Scalar t374 = (Scalar(0.294755) * t364) - (Scalar(1.0805) * t362);
-  const Scalar t375 = Scalar(1.0805) * t364;
-  const Scalar t376 = Scalar(1.0805) * t368;
-  const Scalar t377 = ((Scalar(0.295408333333) * t356) + (Scalar(1.0805) * t371)) - ((t365 * t374) + (t367 * t376));
-  const Scalar t378 = ((Scalar(0.294755) * t369) - (Scalar(1.0805) * t360)) + ((t365 * t373) - (t367 * t375));
+  const Scalar t373 = (Scalar(0.295408333333) * t368) + (Scalar(1.0804999999999998) * t366);
+  const Scalar t374 = (Scalar(0.294755) * t364) - (Scalar(1.0804999999999998) * t362);
+  const Scalar t375 = Scalar(1.0804999999999998) * t364;
+  const Scalar t376 = Scalar(1.0804999999999998) * t368;
+  const Scalar t377 = ((Scalar(0.295408333333) * t356) + (Scalar(1.0804999999999998) * t371)) - ((t365 * t374) + (t367 * t376));
+  const Scalar t378 = ((Scalar(0.294755) * t369) - (Scalar(1.0804999999999998) * t360)) + ((t365 * t373) - (t367 * t375));
   // outward pass: body 21 l_upper_arm
   const Scalar t379 = t360 - (Scalar(0.03) * t369);
   const Scalar t380 = t371 + (Scalar(0.03) * t356);
@@ -508,7 +508,7 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t388 = ((t356 * cos_l_shoulder_yaw) + (t369 * sin_l_shoulder_yaw)) + (v[26] * t384);
   const Scalar t389 = ((t369 * cos_l_shoulder_yaw) - (t356 * sin_l_shoulder_yaw)) - (v[26] * t383);
   const Scalar t390 = Scalar(0.10778583333300001) * t383;
-  const Scalar t391 = Scalar(0.11002583333300002) * t387;
+  const Scalar t391 = Scalar(0.110025833333) * t387;
   // outward pass: body 22 l_forearm
   const Scalar t392 = (((cos_l_shoulder_yaw * t379) + (sin_l_shoulder_yaw * t380)) + (v[26] * t386)) - (Scalar(0.28) * t389);
   const Scalar t393 = (((cos_l_shoulder_yaw * t380) - (sin_l_shoulder_yaw * t379)) - (v[26] * t385)) + (Scalar(0.28) * t388);
@@ -523,13 +523,13 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t402 = ((t388 * sin_l_elbow) + (t370 * cos_l_elbow)) + (v[27] * t396);
   const Scalar t403 = ((cos_l_elbow * t392) - (t372 * sin_l_elbow)) - (v[27] * t399);
   const Scalar t404 = ((sin_l_elbow * t392) + (t372 * cos_l_elbow)) + (v[27] * t398);
-  const Scalar t405 = Scalar(0.10680583333300002) * t397;
+  const Scalar t405 = Scalar(0.106805833333) * t397;
   const Scalar t406 = Scalar(0.447) * t395;
-  const Scalar t407 = (Scalar(0.10778583333300001) * t400) - (Scalar(0.447) * t398);
+  const Scalar t407 = (Scalar(0.107785833333) * t400) - (Scalar(0.447) * t398);
   const Scalar t408 = Scalar(0.447) * t400;
   const Scalar t409 = Scalar(0.447) * t396;
   const Scalar t410 = (Scalar(0.447) * t393) - (((t400 * t405) + (t397 * t407)) + (t399 * t409));
-  const Scalar t411 = ((Scalar(0.10778583333300001) * t389) - (Scalar(0.447) * t403)) + (((t397 * t406) + (t396 * t405)) - (t399 * t408));
+  const Scalar t411 = ((Scalar(0.107785833333) * t389) - (Scalar(0.447) * t403)) + (((t397 * t406) + (t396 * t405)) - (t399 * t408));
   // outward pass: body 23 l_wrist_yaw_link
   const Scalar t412 = t403 - (Scalar(0.25) * t389);
   const Scalar t413 = t393 + (Scalar(0.25) * t401);
@@ -612,12 +612,12 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t485 = ((t472 * cos_r_shoulder_roll) - (t457 * sin_r_shoulder_roll)) - (v[32] * t479);
   const Scalar t486 = ((t459 * cos_r_shoulder_roll) + (sin_r_shoulder_roll * t476)) + (v[32] * t482);
   const Scalar t487 = ((cos_r_shoulder_roll * t476) - (t459 * sin_r_shoulder_roll)) - (v[32] * t481);
-  const Scalar t488 = (Scalar(0.295408333333) * t483) + (Scalar(1.0805) * t481);
-  const Scalar t489 = (Scalar(0.294755) * t479) - (Scalar(1.0805) * t477);
-  const Scalar t490 = Scalar(1.0805) * t479;
-  const Scalar t491 = Scalar(1.0805) * t483;
-  const Scalar t492 = ((Scalar(0.295408333333) * t471) + (Scalar(1.0805) * t486)) - ((t480 * t489) + (t482 * t491));
-  const Scalar t493 = ((Scalar(0.294755) * t484) - (Scalar(1.0805) * t475)) + ((t480 * t488) - (t482 * t490));
+  const Scalar t488 = (Scalar(0.295408333333) * t483) + (Scalar(1.0804999999999998) * t481);
+  const Scalar t489 = (Scalar(0.294755) * t479) - (Scalar(1.0804999999999998) * t477);
+  const Scalar t490 = Scalar(1.0804999999999998) * t479;
+  const Scalar t491 = Scalar(1.0804999999999998) * t483;
+  const Scalar t492 = ((Scalar(0.295408333333) * t471) + (Scalar(1.0804999999999998) * t486)) - ((t480 * t489) + (t482 * t491));
+  const Scalar t493 = ((Scalar(0.294755) * t484) - (Scalar(1.0804999999999998) * t475)) + ((t480 * t488) - (t482 * t490));
   // outward pass: body 28 r_upper_arm
   const Scalar t494 = t475 - (Scalar(0.03) * t484);
   const Scalar t495 = t486 + (Scalar(0.03) * t471);
@@ -631,7 +631,7 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t503 = ((t471 * cos_r_shoulder_yaw) + (t484 * sin_r_shoulder_yaw)) + (v[33] * t499);
   const Scalar t504 = ((t484 * cos_r_shoulder_yaw) - (t471 * sin_r_shoulder_yaw)) - (v[33] * t498);
   const Scalar t505 = Scalar(0.10778583333300001) * t498;
-  const Scalar t506 = Scalar(0.11002583333300002) * t502;
+  const Scalar t506 = Scalar(0.110025833333) * t502;
   // outward pass: body 29 r_forearm
   const Scalar t507 = (((cos_r_shoulder_yaw * t494) + (sin_r_shoulder_yaw * t495)) + (v[33] * t501)) - (Scalar(0.28) * t504);
   const Scalar t508 = (((cos_r_shoulder_yaw * t495) - (sin_r_shoulder_yaw * t494)) - (v[33] * t500)) + (Scalar(0.28) * t503);
@@ -646,13 +646,13 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t517 = ((t503 * sin_r_elbow) + (t485 * cos_r_elbow)) + (v[34] * t511);
   const Scalar t518 = ((cos_r_elbow * t507) - (t487 * sin_r_elbow)) - (v[34] * t514);
   const Scalar t519 = ((sin_r_elbow * t507) + (t487 * cos_r_elbow)) + (v[34] * t513);
-  const Scalar t520 = Scalar(0.10680583333300002) * t512;
+  const Scalar t520 = Scalar(0.106805833333) * t512;
   const Scalar t521 = Scalar(0.447) * t510;
-  const Scalar t522 = (Scalar(0.10778583333300001) * t515) - (Scalar(0.447) * t513);
+  const Scalar t522 = (Scalar(0.107785833333) * t515) - (Scalar(0.447) * t513);
   const Scalar t523 = Scalar(0.447) * t515;
   const Scalar t524 = Scalar(0.447) * t511;
   const Scalar t525 = (Scalar(0.447) * t508) - (((t515 * t520) + (t512 * t522)) + (t514 * t524));
-  const Scalar t526 = ((Scalar(0.10778583333300001) * t504) - (Scalar(0.447) * t518)) + (((t512 * t521) + (t511 * t520)) - (t514 * t523));
+  const Scalar t526 = ((Scalar(0.107785833333) * t504) - (Scalar(0.447) * t518)) + (((t512 * t521) + (t511 * t520)) - (t514 * t523));
   // outward pass: body 30 r_wrist_yaw_link
   const Scalar t527 = t518 - (Scalar(0.25) * t504);
   const Scalar t528 = t508 + (Scalar(0.25) * t516);
@@ -719,7 +719,7 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t581 = t525 + (((cos_r_wrist_yaw * t576) - (sin_r_wrist_yaw * t577)) + (Scalar(0.25) * t580));
   const Scalar t582 = t526 + (((sin_r_wrist_yaw * t576) + (cos_r_wrist_yaw * t577)) - (Scalar(0.25) * t579));
   c[34] = t582;
-  const Scalar t583 = ((((t511 * t522) - (t515 * t521)) + ((t513 * t524) + (t510 * t523))) - (Scalar(0.10680583333300002) * t517)) + t578;
+  const Scalar t583 = ((((t511 * t522) - (t515 * t521)) + ((t513 * t524) + (t510 * t523))) - (Scalar(0.106805833333) * t517)) + t578;
   const Scalar t584 = t579 - ((Scalar(0.447) * t504) + (t512 * t524));
   const Scalar t585 = ((Scalar(0.447) * t516) - (t512 * t523)) + t580;
   const Scalar t586 = ((t511 * t524) + (t515 * t523)) + ((sin_r_wrist_pitch * t568) + (cos_r_wrist_pitch * t571));
@@ -727,7 +727,7 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t587 = (cos_r_elbow * t584) + (sin_r_elbow * t586);
   const Scalar t588 = ((Scalar(0.10778583333300001) * t503) + (t499 * t506)) + (((cos_r_elbow * t581) + (sin_r_elbow * t583)) + (Scalar(0.28) * t585));
   const Scalar t589 = ((t502 * t505) - (t498 * t506)) + (t582 - (Scalar(0.28) * t587));
-  const Scalar t590 = ((Scalar(0.11002583333300002) * t485) - (t499 * t505)) + ((cos_r_elbow * t583) - (sin_r_elbow * t581));
+  const Scalar t590 = ((Scalar(0.110025833333) * t485) - (t499 * t505)) + ((cos_r_elbow * t583) - (sin_r_elbow * t581));
   c[33] = t590;
   // inward pass: body 28 r_upper_arm
   const Scalar t591 = (cos_r_shoulder_yaw * t587) - (sin_r_shoulder_yaw * t585);
@@ -736,8 +736,8 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   c[32] = t593;
   const Scalar t594 = t493 + (((sin_r_shoulder_yaw * t588) + (cos_r_shoulder_yaw * t589)) - (Scalar(0.03) * t591));
   const Scalar t595 = (((t483 * t489) - (t479 * t488)) + ((t477 * t491) + (t481 * t490))) + t590;
-  const Scalar t596 = t591 - ((Scalar(1.0805) * t484) + (t480 * t491));
-  const Scalar t597 = ((Scalar(1.0805) * t471) - (t480 * t490)) + t592;
+  const Scalar t596 = t591 - ((Scalar(1.0804999999999998) * t484) + (t480 * t491));
+  const Scalar t597 = ((Scalar(1.0804999999999998) * t471) - (t480 * t490)) + t592;
   const Scalar t598 = ((t483 * t491) + (t479 * t490)) + ((cos_r_elbow * t586) - (sin_r_elbow * t584));
   // inward pass: body 27 r_shoulder_roll_link
   const Scalar t599 = (cos_r_shoulder_roll * t597) - (sin_r_shoulder_roll * t598);
@@ -772,7 +772,7 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t621 = t410 + (((cos_l_wrist_yaw * t616) - (sin_l_wrist_yaw * t617)) + (Scalar(0.25) * t620));
   const Scalar t622 = t411 + (((sin_l_wrist_yaw * t616) + (cos_l_wrist_yaw * t617)) - (Scalar(0.25) * t619));
   c[27] = t622;
-  const Scalar t623 = ((((t396 * t407) - (t400 * t406)) + ((t398 * t409) + (t395 * t408))) - (Scalar(0.10680583333300002) * t402)) + t618;
+  const Scalar t623 = ((((t396 * t407) - (t400 * t406)) + ((t398 * t409) + (t395 * t408))) - (Scalar(0.106805833333) * t402)) + t618;
   const Scalar t624 = t619 - ((Scalar(0.447) * t389) + (t397 * t409));
   const Scalar t625 = ((Scalar(0.447) * t401) - (t397 * t408)) + t620;
   const Scalar t626 = ((t396 * t409) + (t400 * t408)) + ((sin_l_wrist_pitch * t453) + (cos_l_wrist_pitch * t611));
@@ -780,7 +780,7 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t627 = (cos_l_elbow * t624) + (sin_l_elbow * t626);
   const Scalar t628 = ((Scalar(0.10778583333300001) * t388) + (t384 * t391)) + (((cos_l_elbow * t621) + (sin_l_elbow * t623)) + (Scalar(0.28) * t625));
   const Scalar t629 = ((t387 * t390) - (t383 * t391)) + (t622 - (Scalar(0.28) * t627));
-  const Scalar t630 = ((Scalar(0.11002583333300002) * t370) - (t384 * t390)) + ((cos_l_elbow * t623) - (sin_l_elbow * t621));
+  const Scalar t630 = ((Scalar(0.110025833333) * t370) - (t384 * t390)) + ((cos_l_elbow * t623) - (sin_l_elbow * t621));
   c[26] = t630;
   // inward pass: body 21 l_upper_arm
   const Scalar t631 = (cos_l_shoulder_yaw * t627) - (sin_l_shoulder_yaw * t625);
@@ -789,8 +789,8 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   c[25] = t633;
   const Scalar t634 = t378 + (((sin_l_shoulder_yaw * t628) + (cos_l_shoulder_yaw * t629)) - (Scalar(0.03) * t631));
   const Scalar t635 = (((t368 * t374) - (t364 * t373)) + ((t362 * t376) + (t366 * t375))) + t630;
-  const Scalar t636 = t631 - ((Scalar(1.0805) * t369) + (t365 * t376));
-  const Scalar t637 = ((Scalar(1.0805) * t356) - (t365 * t375)) + t632;
+  const Scalar t636 = t631 - ((Scalar(1.0804999999999998) * t369) + (t365 * t376));
+  const Scalar t637 = ((Scalar(1.0804999999999998) * t356) - (t365 * t375)) + t632;
   const Scalar t638 = ((t368 * t376) + (t364 * t375)) + ((cos_l_elbow * t626) - (sin_l_elbow * t624));
   // inward pass: body 20 l_shoulder_roll_link
   const Scalar t639 = (cos_l_shoulder_roll * t637) - (sin_l_shoulder_roll * t638);
@@ -833,7 +833,7 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t668 = ((t608 - ((t259 * t268) + (t255 * t267))) + t648) + ((cos_neck_pitch * t657) - (sin_neck_pitch * t655));
   // inward pass: body 15 torso
   const Scalar t669 = ((((t242 * t249) - (t239 * t248)) - ((t237 * t251) + (t241 * t252))) - (Scalar(0.012) * t235)) + t664;
-  const Scalar t670 = ((((Scalar(0.012) * t245) - (Scalar(0.16) * t246)) - (Scalar(1.0410841074056743) * t231)) + t253) + ((cos_waist_roll * t665) - (sin_waist_roll * t666));
+  const Scalar t670 = ((((Scalar(0.012) * t245) - (Scalar(0.16) * t246)) - (Scalar(1.0410841074056745) * t231)) + t253) + ((cos_waist_roll * t665) - (sin_waist_roll * t666));
   c[19] = t670;
   const Scalar t671 = t254 + ((sin_waist_roll * t665) + (cos_waist_roll * t666));
   const Scalar t672 = (((((Scalar(9.530453494576028) * t260) + (t256 * t268)) + t605) + t645) + t662) - ((Scalar(0.012) * t231) + ((t242 * t251) + (t239 * t252)));
@@ -947,4 +947,4 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   c[4] = ((((Scalar(66.95) * t1) + ((v[2] * t7) - (v[0] * t6))) + t680) + t712) + t748;
 }
 
-}  // namespace rbdc_gen::humanoid32::common::quadratic_velocity_terms_42c2a59e4cfe
+}  // namespace rbdc_gen::humanoid32::common::quadratic_velocity_terms_3cd8478e0712

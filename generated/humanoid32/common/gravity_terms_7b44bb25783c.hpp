@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::gravity_terms_cd3e0a7c91db {
+namespace rbdc_gen::humanoid32::common::gravity_terms_7b44bb25783c {
 
 /// Gravity terms g (paper 000 Alg. 3).
 ///
@@ -218,9 +218,9 @@ RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept 
   const Scalar t79 = (sin_r_elbow * t76) + (cos_r_elbow * t75);
   g[33] = -t79;
   // inward pass: body 28 r_upper_arm
-  const Scalar t80 = (Scalar(1.0805) * t63) + ((cos_r_shoulder_yaw * t78) - (sin_r_shoulder_yaw * t77));
+  const Scalar t80 = (Scalar(1.0804999999999998) * t63) + ((cos_r_shoulder_yaw * t78) - (sin_r_shoulder_yaw * t77));
   g[32] = t80;
-  const Scalar t81 = ((sin_r_shoulder_yaw * t78) + (cos_r_shoulder_yaw * t77)) - (Scalar(1.0805) * t61);
+  const Scalar t81 = ((sin_r_shoulder_yaw * t78) + (cos_r_shoulder_yaw * t77)) - (Scalar(1.0804999999999998) * t61);
   // inward pass: body 27 r_shoulder_roll_link
   const Scalar t82 = (cos_r_shoulder_roll * t81) + (sin_r_shoulder_roll * t79);
   g[31] = t82;
@@ -244,9 +244,9 @@ RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept 
   const Scalar t92 = (sin_l_elbow * t89) + (cos_l_elbow * t88);
   g[26] = -t92;
   // inward pass: body 21 l_upper_arm
-  const Scalar t93 = (Scalar(1.0805) * t50) + ((cos_l_shoulder_yaw * t91) - (sin_l_shoulder_yaw * t90));
+  const Scalar t93 = (Scalar(1.0804999999999998) * t50) + ((cos_l_shoulder_yaw * t91) - (sin_l_shoulder_yaw * t90));
   g[25] = t93;
-  const Scalar t94 = ((sin_l_shoulder_yaw * t91) + (cos_l_shoulder_yaw * t90)) - (Scalar(1.0805) * t48);
+  const Scalar t94 = ((sin_l_shoulder_yaw * t91) + (cos_l_shoulder_yaw * t90)) - (Scalar(1.0804999999999998) * t48);
   // inward pass: body 20 l_shoulder_roll_link
   const Scalar t95 = (cos_l_shoulder_roll * t94) + (sin_l_shoulder_roll * t92);
   g[24] = t95;
@@ -301,8 +301,8 @@ RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept 
   const Scalar t124 = (cos_r_hip_roll * t122) - (sin_r_hip_roll * t121);
   g[12] = t124;
   // inward pass: body 7 r_hip_yaw_link
-  const Scalar t125 = (((cos_waist_yaw * t110) - (sin_waist_yaw * t108)) - (Scalar(20.233125) * t4)) + ((cos_r_hip_yaw * t120) + (sin_r_hip_yaw * t123));
-  const Scalar t126 = ((Scalar(20.233125) * t3) + ((sin_waist_yaw * t110) + (cos_waist_yaw * t108))) + ((sin_r_hip_yaw * t120) - (cos_r_hip_yaw * t123));
+  const Scalar t125 = (((cos_waist_yaw * t110) - (sin_waist_yaw * t108)) - (Scalar(20.233124999999994) * t4)) + ((cos_r_hip_yaw * t120) + (sin_r_hip_yaw * t123));
+  const Scalar t126 = ((Scalar(20.233124999999994) * t3) + ((sin_waist_yaw * t110) + (cos_waist_yaw * t108))) + ((sin_r_hip_yaw * t120) - (cos_r_hip_yaw * t123));
   // inward pass: body 6 l_sole
   const Scalar t127 = (Scalar(0.03) * t17) + (cos_l_ankle_roll * t19);
   g[10] = -t127;
@@ -332,4 +332,4 @@ RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept 
   g[6] = t139;
 }
 
-}  // namespace rbdc_gen::humanoid32::common::gravity_terms_cd3e0a7c91db
+}  // namespace rbdc_gen::humanoid32::common::gravity_terms_7b44bb25783c

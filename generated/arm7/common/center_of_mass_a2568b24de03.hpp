@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::center_of_mass_ff3222da7517 {
+namespace rbdc_gen::arm7::common::center_of_mass_a2568b24de03 {
 
 /// Centre of mass and its velocity, world frame (bodies and rotors).
 ///
@@ -72,11 +72,11 @@ RBDC_HOST_DEVICE inline void center_of_mass(const Scalar* q, const Scalar* v, Sc
   const Scalar t26 = (t20 * cos_joint6) - (t15 * sin_joint6);
   const Scalar t27 = (t20 * sin_joint6) + (t15 * cos_joint6);
   // centre of mass
-  const Scalar t28 = ((Scalar(1.3641999999999999) * t11) + (((Scalar(0.00017) * t16) - (Scalar(0.036480000000000005) * t17)) + ((Scalar(0.0033246023249400717) * t22) + (Scalar(0.04726753550266307) * t23)))) - (Scalar(0.0006000000000000033) * t5);
+  const Scalar t28 = ((Scalar(1.3642) * t11) + (((Scalar(0.00017) * t16) - (Scalar(0.036480000000000005) * t17)) + ((Scalar(0.0033246023249400717) * t22) + (Scalar(0.04726753550266307) * t23)))) - (Scalar(0.0006000000000000033) * t5);
   com[0] = Scalar(0.04962779156327543) * (((((Scalar(0.0011099999999999999) * t0) + (Scalar(3.7500000000000004) * t1)) + t28) - (Scalar(0.02099999999999999) * sin_joint1)) - Scalar(0.084));
-  const Scalar t29 = (Scalar(0.0006000000000000033) * t7) + ((Scalar(1.3641999999999999) * t13) + (((Scalar(0.00017) * t18) + (Scalar(0.036480000000000005) * t19)) + ((Scalar(0.0033246023249400717) * t24) + (Scalar(0.04726753550266307) * t25))));
+  const Scalar t29 = (Scalar(0.0006000000000000033) * t7) + ((Scalar(1.3642) * t13) + (((Scalar(0.00017) * t18) + (Scalar(0.036480000000000005) * t19)) + ((Scalar(0.0033246023249400717) * t24) + (Scalar(0.04726753550266307) * t25))));
   com[1] = Scalar(0.04962779156327543) * ((Scalar(0.02099999999999999) * cos_joint1) + (((Scalar(0.0011099999999999999) * t2) + (Scalar(3.7500000000000004) * t3)) + t29));
-  const Scalar t30 = (Scalar(0.0006000000000000033) * t9) + ((Scalar(1.3641999999999999) * t15) + (((Scalar(0.00017) * t20) + (Scalar(0.036480000000000005) * t21)) + ((Scalar(0.0033246023249400717) * t26) + (Scalar(0.04726753550266307) * t27))));
+  const Scalar t30 = (Scalar(0.0006000000000000033) * t9) + ((Scalar(1.3642) * t15) + (((Scalar(0.00017) * t20) + (Scalar(0.036480000000000005) * t21)) + ((Scalar(0.0033246023249400717) * t26) + (Scalar(0.04726753550266307) * t27))));
   com[2] = Scalar(0.04962779156327543) * (Scalar(5.423) + (((Scalar(3.7500000000000004) * cos_joint2) - (Scalar(0.0011099999999999999) * sin_joint2)) + t30));
   // outward pass, velocities: body 2 link2
   const Scalar t31 = sin_joint2 * v[0];
@@ -100,8 +100,8 @@ RBDC_HOST_DEVICE inline void center_of_mass(const Scalar* q, const Scalar* v, Sc
   const Scalar t44 = Scalar(0.0011099999999999999) * v[1];
   const Scalar t45 = Scalar(0.0006000000000000033) * t34;
   const Scalar t46 = Scalar(0.0006000000000000033) * t33;
-  const Scalar t47 = Scalar(1.3641999999999999) * t36;
-  const Scalar t48 = Scalar(1.3641999999999999) * t35;
+  const Scalar t47 = Scalar(1.3642) * t36;
+  const Scalar t48 = Scalar(1.3642) * t35;
   const Scalar t49 = Scalar(0.036480000000000005) * t39;
   const Scalar t50 = Scalar(0.00017) * t39;
   const Scalar t51 = (Scalar(0.036480000000000005) * t37) - (Scalar(0.00017) * t38);
@@ -120,4 +120,4 @@ RBDC_HOST_DEVICE inline void center_of_mass(const Scalar* q, const Scalar* v, Sc
   com_velocity[2] = Scalar(0.04962779156327543) * t60;
 }
 
-}  // namespace rbdc_gen::arm7::common::center_of_mass_ff3222da7517
+}  // namespace rbdc_gen::arm7::common::center_of_mass_a2568b24de03

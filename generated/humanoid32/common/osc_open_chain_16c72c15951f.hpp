@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::osc_open_chain_9087c0adeae8 {
+namespace rbdc_gen::humanoid32::common::osc_open_chain_16c72c15951f {
 
 /// Trunk operational-space Λ, J̄ᵀ, b with measured foot forces (paper 001 Table 1).
 ///
@@ -359,11 +359,11 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Scalar t227 = v[37] + t218;
   // outward pass, inertias and bias forces: body 0 pelvis
   const Scalar t228 = Scalar(0.28349666669999996) * v[2];
-  const Scalar t229 = (Scalar(4.039851666744001) * v[0]) - (Scalar(2.0625) * v[4]);
-  const Scalar t230 = (Scalar(3.809688333444001) * v[1]) + (Scalar(2.0625) * v[3]);
+  const Scalar t229 = (Scalar(4.039851666744001) * v[0]) - (Scalar(2.062499999999999) * v[4]);
+  const Scalar t230 = (Scalar(3.809688333444001) * v[1]) + (Scalar(2.062499999999999) * v[3]);
   const Scalar t231 = Scalar(66.95) * v[5];
-  const Scalar t232 = (Scalar(66.95) * v[3]) + (Scalar(2.0625) * v[1]);
-  const Scalar t233 = (Scalar(66.95) * v[4]) - (Scalar(2.0625) * v[0]);
+  const Scalar t232 = (Scalar(66.95) * v[3]) + (Scalar(2.062499999999999) * v[1]);
+  const Scalar t233 = (Scalar(66.95) * v[4]) - (Scalar(2.062499999999999) * v[0]);
   const Scalar t234 = ((v[1] * t228) - (v[2] * t230)) + ((v[4] * t231) - (v[5] * t233));
   const Scalar t235 = ((v[2] * t229) - (v[0] * t228)) + ((v[5] * t232) - (v[3] * t231));
   // outward pass, inertias and bias forces: body 1 l_hip_yaw_link
@@ -437,15 +437,15 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Scalar t291 = Scalar(0.00381333333) * t86;
   // outward pass, inertias and bias forces: body 14 waist_pitch_link
   const Scalar t292 = Scalar(0.012) * t88;
-  const Scalar t293 = (Scalar(1.0410841074056743) * t93) + ((Scalar(0.012) * t91) - (Scalar(0.16) * t92));
-  const Scalar t294 = (Scalar(1.0401241074056744) * t90) + (Scalar(0.16) * t88);
+  const Scalar t293 = (Scalar(1.0410841074056745) * t93) + ((Scalar(0.012) * t91) - (Scalar(0.16) * t92));
+  const Scalar t294 = (Scalar(1.0401241074056746) * t90) + (Scalar(0.16) * t88);
   const Scalar t295 = Scalar(0.012) * t93;
   const Scalar t296 = Scalar(0.16) * t93;
   const Scalar t297 = (Scalar(0.16) * t90) - (Scalar(0.012) * t89);
   // outward pass, inertias and bias forces: body 15 torso
   const Scalar t298 = Scalar(0.032) * t98;
   const Scalar t299 = ((Scalar(4.379874803165694) * t98) - (Scalar(0.032) * t95)) - (Scalar(9.530453494576028) * t96);
-  const Scalar t300 = (Scalar(2.4329332543543454) * t94) + (Scalar(9.530453494576028) * t91);
+  const Scalar t300 = (Scalar(2.432933254354345) * t94) + (Scalar(9.530453494576028) * t91);
   const Scalar t301 = Scalar(9.530453494576028) * t94;
   const Scalar t302 = Scalar(9.530453494576028) * t98;
   const Scalar t303 = ((t98 * t300) - (t94 * t299)) - ((t91 * t302) + (t96 * t301));
@@ -468,17 +468,17 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Scalar t316 = Scalar(0.001388333333) * t137;
   const Scalar t317 = Scalar(0.0006533333329999998) * t134;
   // outward pass, inertias and bias forces: body 20 l_shoulder_roll_link
-  const Scalar t318 = (Scalar(0.295408333333) * t144) + (Scalar(1.0805) * t142);
-  const Scalar t319 = (Scalar(0.294755) * t140) - (Scalar(1.0805) * t138);
-  const Scalar t320 = Scalar(1.0805) * t140;
-  const Scalar t321 = Scalar(1.0805) * t144;
+  const Scalar t318 = (Scalar(0.295408333333) * t144) + (Scalar(1.0804999999999998) * t142);
+  const Scalar t319 = (Scalar(0.294755) * t140) - (Scalar(1.0804999999999998) * t138);
+  const Scalar t320 = Scalar(1.0804999999999998) * t140;
+  const Scalar t321 = Scalar(1.0804999999999998) * t144;
   // outward pass, inertias and bias forces: body 21 l_upper_arm
   const Scalar t322 = Scalar(0.10778583333300001) * t147;
-  const Scalar t323 = Scalar(0.11002583333300002) * t151;
+  const Scalar t323 = Scalar(0.110025833333) * t151;
   // outward pass, inertias and bias forces: body 22 l_forearm
-  const Scalar t324 = Scalar(0.10680583333300002) * t155;
+  const Scalar t324 = Scalar(0.106805833333) * t155;
   const Scalar t325 = Scalar(0.447) * t153;
-  const Scalar t326 = (Scalar(0.10778583333300001) * t158) - (Scalar(0.447) * t156);
+  const Scalar t326 = (Scalar(0.107785833333) * t158) - (Scalar(0.447) * t156);
   const Scalar t327 = Scalar(0.447) * t158;
   const Scalar t328 = Scalar(0.447) * t154;
   // outward pass, inertias and bias forces: body 23 l_wrist_yaw_link
@@ -497,17 +497,17 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Scalar t338 = Scalar(0.001388333333) * t187;
   const Scalar t339 = Scalar(0.0006533333329999998) * t184;
   // outward pass, inertias and bias forces: body 27 r_shoulder_roll_link
-  const Scalar t340 = (Scalar(0.295408333333) * t194) + (Scalar(1.0805) * t192);
-  const Scalar t341 = (Scalar(0.294755) * t190) - (Scalar(1.0805) * t188);
-  const Scalar t342 = Scalar(1.0805) * t190;
-  const Scalar t343 = Scalar(1.0805) * t194;
+  const Scalar t340 = (Scalar(0.295408333333) * t194) + (Scalar(1.0804999999999998) * t192);
+  const Scalar t341 = (Scalar(0.294755) * t190) - (Scalar(1.0804999999999998) * t188);
+  const Scalar t342 = Scalar(1.0804999999999998) * t190;
+  const Scalar t343 = Scalar(1.0804999999999998) * t194;
   // outward pass, inertias and bias forces: body 28 r_upper_arm
   const Scalar t344 = Scalar(0.10778583333300001) * t197;
-  const Scalar t345 = Scalar(0.11002583333300002) * t201;
+  const Scalar t345 = Scalar(0.110025833333) * t201;
   // outward pass, inertias and bias forces: body 29 r_forearm
-  const Scalar t346 = Scalar(0.10680583333300002) * t205;
+  const Scalar t346 = Scalar(0.106805833333) * t205;
   const Scalar t347 = Scalar(0.447) * t203;
-  const Scalar t348 = (Scalar(0.10778583333300001) * t208) - (Scalar(0.447) * t206);
+  const Scalar t348 = (Scalar(0.107785833333) * t208) - (Scalar(0.447) * t206);
   const Scalar t349 = Scalar(0.447) * t208;
   const Scalar t350 = Scalar(0.447) * t204;
   // outward pass, inertias and bias forces: body 30 r_wrist_yaw_link
@@ -919,9 +919,9 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Scalar t719 = ((cos_r_wrist_yaw * t670) - (sin_r_wrist_yaw * t675)) + (Scalar(0.25) * t697);
   const Scalar t720 = ((sin_r_wrist_yaw * t670) + (cos_r_wrist_yaw * t675)) - (Scalar(0.25) * t696);
   const Scalar t721 = Scalar(0.447) + t712;
-  const Scalar t722 = Scalar(0.10778583333300001) + ((((sin_r_wrist_yaw * t690) + (cos_r_wrist_yaw * t691)) - (Scalar(0.25) * t700)) - (Scalar(0.25) * t714));
+  const Scalar t722 = Scalar(0.107785833333) + ((((sin_r_wrist_yaw * t690) + (cos_r_wrist_yaw * t691)) - (Scalar(0.25) * t700)) - (Scalar(0.25) * t714));
   const Scalar t723 = t714 - Scalar(0.447);
-  const Scalar t724 = (t644 - (t644 * t657)) - Scalar(0.10680583333300002);
+  const Scalar t724 = (t644 - (t644 * t657)) - Scalar(0.106805833333);
   const Scalar t725 = (t648 + ((((t643 * t661) - (t639 * t662)) + (t634 * t663)) - (t635 * t664))) - (t655 * t666);
   const Scalar t726 = (t649 + ((((t639 * t661) - (t640 * t662)) + (t637 * t663)) - (t633 * t664))) - (t656 * t666);
   const Scalar t727 = (t647 + ((((t634 * t661) - (t637 * t662)) - (t631 * t663)) + (t628 * t664))) - (t658 * t666);
@@ -1016,7 +1016,7 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Scalar t815 = ((cos_r_elbow * t786) + (sin_r_elbow * t787)) + (Scalar(0.28) * t796);
   const Scalar t816 = ((cos_r_elbow * t771) - (sin_r_elbow * t766)) - (Scalar(0.28) * t795);
   const Scalar t817 = Scalar(0.10778583333300001) + ((((cos_r_elbow * ((cos_r_elbow * t765) + t784)) + (sin_r_elbow * (t785 + (sin_r_elbow * t774)))) + (Scalar(0.28) * t794)) + (Scalar(0.28) * t808));
-  const Scalar t818 = Scalar(0.11002583333300002) + ((cos_r_elbow * t787) - (sin_r_elbow * t786));
+  const Scalar t818 = Scalar(0.110025833333) + ((cos_r_elbow * t787) - (sin_r_elbow * t786));
   const Scalar t819 = (t731 + ((((t719 * t760) - (t717 * t759)) - (t711 * t761)) + (t713 * t762))) - (t753 * t764);
   const Scalar t820 = (t733 + ((((t724 * t760) - (t719 * t759)) - (t696 * t761)) + (t681 * t762))) - (t755 * t764);
   const Scalar t821 = ((t729 - (t205 * t350)) + ((((t696 * t760) - (t711 * t759)) + (t707 * t761)) + (t705 * t762))) - (t756 * t764);
@@ -1117,9 +1117,9 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Scalar t915 = ((cos_r_shoulder_yaw * t866) - (sin_r_shoulder_yaw * t871)) + (Scalar(0.03) * t894);
   const Scalar t916 = ((sin_r_shoulder_yaw * t866) + (cos_r_shoulder_yaw * t871)) - (Scalar(0.03) * t893);
   const Scalar t917 = Scalar(0.295408333333) + ((((cos_r_shoulder_yaw * ((cos_r_shoulder_yaw * t864) - t885)) - (sin_r_shoulder_yaw * (t886 - (sin_r_shoulder_yaw * t870)))) + (Scalar(0.03) * t896)) + (Scalar(0.03) * t909));
-  const Scalar t918 = Scalar(1.0805) + t909;
+  const Scalar t918 = Scalar(1.0804999999999998) + t909;
   const Scalar t919 = Scalar(0.294755) + ((((sin_r_shoulder_yaw * t887) + (cos_r_shoulder_yaw * t888)) - (Scalar(0.03) * t897)) - (Scalar(0.03) * t911));
-  const Scalar t920 = t911 - Scalar(1.0805);
+  const Scalar t920 = t911 - Scalar(1.0804999999999998);
   const Scalar t921 = (t825 + ((((t817 * t857) - (t813 * t858)) + (t807 * t859)) - (t808 * t860))) - (t851 * t862);
   const Scalar t922 = (t826 + ((((t813 * t857) - (t814 * t858)) + (t810 * t859)) - (t811 * t860))) - (t852 * t862);
   const Scalar t923 = (t824 + ((((t807 * t857) - (t810 * t858)) + (t804 * t859)) - (t801 * t860))) - (t854 * t862);
@@ -1375,7 +1375,7 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Scalar t1171 = (((Scalar(0.9800665778412416) * t1140) + (Scalar(0.19866933079506124) * t1141)) + (Scalar(0.21) * t1148)) + (Scalar(0.36) * t1166);
   const Scalar t1172 = (((Scalar(0.9800665778412416) * t1141) - (Scalar(0.19866933079506124) * t1140)) + (Scalar(0.21) * t1149)) + (Scalar(0.21) * t1166);
   const Scalar t1173 = ((((Scalar(0.9800665778412416) * t1115) - (Scalar(0.19866933079506124) * t1112)) + (Scalar(0.21) * t1123)) - ((Scalar(0.36) * t1167) + (Scalar(0.21) * t1168))) - Scalar(0.032);
-  const Scalar t1174 = Scalar(2.4329332543543454) + ((((Scalar(0.9800665778412416) * ((Scalar(0.9800665778412416) * t1094) + t1138)) + (Scalar(0.19866933079506124) * (t1139 + (Scalar(0.19866933079506124) * t1116)))) + (Scalar(0.36) * t1148)) + (Scalar(0.36) * t1163));
+  const Scalar t1174 = Scalar(2.432933254354345) + ((((Scalar(0.9800665778412416) * ((Scalar(0.9800665778412416) * t1094) + t1138)) + (Scalar(0.19866933079506124) * (t1139 + (Scalar(0.19866933079506124) * t1116)))) + (Scalar(0.36) * t1148)) + (Scalar(0.36) * t1163));
   const Scalar t1175 = (t1035 + ((((t1025 * t1082) - (t1023 * t1081)) - (t1017 * t1083)) + (t1019 * t1084))) - (t1075 * t1086);
   const Scalar t1176 = t1086 - (t1076 * t1086);
   const Scalar t1177 = (t1036 + ((((t1028 * t1082) - (t1025 * t1081)) - (t1020 * t1083)) + (t1022 * t1084))) - (t1077 * t1086);
@@ -1613,9 +1613,9 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Scalar t1406 = ((cos_l_wrist_yaw * t1357) - (sin_l_wrist_yaw * t1362)) + (Scalar(0.25) * t1384);
   const Scalar t1407 = ((sin_l_wrist_yaw * t1357) + (cos_l_wrist_yaw * t1362)) - (Scalar(0.25) * t1383);
   const Scalar t1408 = Scalar(0.447) + t1399;
-  const Scalar t1409 = Scalar(0.10778583333300001) + ((((sin_l_wrist_yaw * t1377) + (cos_l_wrist_yaw * t1378)) - (Scalar(0.25) * t1387)) - (Scalar(0.25) * t1401));
+  const Scalar t1409 = Scalar(0.107785833333) + ((((sin_l_wrist_yaw * t1377) + (cos_l_wrist_yaw * t1378)) - (Scalar(0.25) * t1387)) - (Scalar(0.25) * t1401));
   const Scalar t1410 = t1401 - Scalar(0.447);
-  const Scalar t1411 = (t1331 - (t1331 * t1344)) - Scalar(0.10680583333300002);
+  const Scalar t1411 = (t1331 - (t1331 * t1344)) - Scalar(0.106805833333);
   const Scalar t1412 = (t1335 + ((((t1330 * t1348) - (t1326 * t1349)) + (t1321 * t1350)) - (t1322 * t1351))) - (t1342 * t1353);
   const Scalar t1413 = (t1336 + ((((t1326 * t1348) - (t1327 * t1349)) + (t1324 * t1350)) - (t1320 * t1351))) - (t1343 * t1353);
   const Scalar t1414 = (t1334 + ((((t1321 * t1348) - (t1324 * t1349)) - (t1318 * t1350)) + (t1315 * t1351))) - (t1345 * t1353);
@@ -1710,7 +1710,7 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Scalar t1502 = ((cos_l_elbow * t1473) + (sin_l_elbow * t1474)) + (Scalar(0.28) * t1483);
   const Scalar t1503 = ((cos_l_elbow * t1458) - (sin_l_elbow * t1453)) - (Scalar(0.28) * t1482);
   const Scalar t1504 = Scalar(0.10778583333300001) + ((((cos_l_elbow * ((cos_l_elbow * t1452) + t1471)) + (sin_l_elbow * (t1472 + (sin_l_elbow * t1461)))) + (Scalar(0.28) * t1481)) + (Scalar(0.28) * t1495));
-  const Scalar t1505 = Scalar(0.11002583333300002) + ((cos_l_elbow * t1474) - (sin_l_elbow * t1473));
+  const Scalar t1505 = Scalar(0.110025833333) + ((cos_l_elbow * t1474) - (sin_l_elbow * t1473));
   const Scalar t1506 = (t1418 + ((((t1406 * t1447) - (t1404 * t1446)) - (t1398 * t1448)) + (t1400 * t1449))) - (t1440 * t1451);
   const Scalar t1507 = (t1420 + ((((t1411 * t1447) - (t1406 * t1446)) - (t1383 * t1448)) + (t1368 * t1449))) - (t1442 * t1451);
   const Scalar t1508 = ((t1416 - (t155 * t328)) + ((((t1383 * t1447) - (t1398 * t1446)) + (t1394 * t1448)) + (t1392 * t1449))) - (t1443 * t1451);
@@ -1811,9 +1811,9 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Scalar t1602 = ((cos_l_shoulder_yaw * t1553) - (sin_l_shoulder_yaw * t1558)) + (Scalar(0.03) * t1581);
   const Scalar t1603 = ((sin_l_shoulder_yaw * t1553) + (cos_l_shoulder_yaw * t1558)) - (Scalar(0.03) * t1580);
   const Scalar t1604 = Scalar(0.295408333333) + ((((cos_l_shoulder_yaw * ((cos_l_shoulder_yaw * t1551) - t1572)) - (sin_l_shoulder_yaw * (t1573 - (sin_l_shoulder_yaw * t1557)))) + (Scalar(0.03) * t1583)) + (Scalar(0.03) * t1596));
-  const Scalar t1605 = Scalar(1.0805) + t1596;
+  const Scalar t1605 = Scalar(1.0804999999999998) + t1596;
   const Scalar t1606 = Scalar(0.294755) + ((((sin_l_shoulder_yaw * t1574) + (cos_l_shoulder_yaw * t1575)) - (Scalar(0.03) * t1584)) - (Scalar(0.03) * t1598));
-  const Scalar t1607 = t1598 - Scalar(1.0805);
+  const Scalar t1607 = t1598 - Scalar(1.0804999999999998);
   const Scalar t1608 = (t1512 + ((((t1504 * t1544) - (t1500 * t1545)) + (t1494 * t1546)) - (t1495 * t1547))) - (t1538 * t1549);
   const Scalar t1609 = (t1513 + ((((t1500 * t1544) - (t1501 * t1545)) + (t1497 * t1546)) - (t1498 * t1547))) - (t1539 * t1549);
   const Scalar t1610 = (t1511 + ((((t1494 * t1544) - (t1497 * t1545)) + (t1491 * t1546)) - (t1488 * t1547))) - (t1541 * t1549);
@@ -2425,10 +2425,10 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Scalar t2210 = (cos_waist_roll * t2208) - (sin_waist_roll * t2209);
   const Scalar t2211 = (sin_waist_roll * t2208) + (cos_waist_roll * t2209);
   const Scalar t2212 = ((cos_waist_roll * t2172) - (sin_waist_roll * t2173)) - Scalar(0.012);
-  const Scalar t2213 = Scalar(1.0410841074056743) + ((cos_waist_roll * ((cos_waist_roll * t2174) - t2191)) - (sin_waist_roll * (t2192 - (sin_waist_roll * t2179))));
+  const Scalar t2213 = Scalar(1.0410841074056745) + ((cos_waist_roll * ((cos_waist_roll * t2174) - t2191)) - (sin_waist_roll * (t2192 - (sin_waist_roll * t2179))));
   const Scalar t2214 = Scalar(0.012) + ((cos_waist_roll * t2176) - (sin_waist_roll * t2180));
   const Scalar t2215 = ((cos_waist_roll * t2198) - (sin_waist_roll * t2200)) - Scalar(0.16);
-  const Scalar t2216 = Scalar(1.0401241074056744) + ((sin_waist_roll * t2193) + (cos_waist_roll * t2194));
+  const Scalar t2216 = Scalar(1.0401241074056746) + ((sin_waist_roll * t2193) + (cos_waist_roll * t2194));
   const Scalar t2217 = Scalar(0.16) + ((sin_waist_roll * t2197) + (cos_waist_roll * t2199));
   const Scalar t2218 = (t2132 + ((((t2112 * t2159) - (t2113 * t2160)) + (t2115 * t2161)) - (t2116 * t2162))) - (t2154 * t2164);
   const Scalar t2219 = t2165 - (t2155 * t2164);
@@ -4102,7 +4102,7 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Scalar t3709 = ((t2558 - t2570) + (t3151 + (t3164 - t3165))) + (t3680 + (t3693 + t3694));
   Lambda[3] = t3709;
   Lambda[18] = t3709;
-  const Scalar t3710 = ((t2571 - Scalar(2.0625)) + t3166) + t3695;
+  const Scalar t3710 = ((t2571 - Scalar(2.062499999999999)) + t3166) + t3695;
   Lambda[4] = t3710;
   Lambda[24] = t3710;
   const Scalar t3711 = ((((cos_waist_yaw * t2535) - (sin_waist_yaw * t2540)) - (Scalar(0.1) * t2566)) + t3167) + t3696;
@@ -4111,7 +4111,7 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   const Scalar t3712 = ((((sin_waist_yaw * t2532) + (cos_waist_yaw * t2537)) + (Scalar(0.1) * t2556)) + t3177) + t3706;
   Lambda[8] = t3712;
   Lambda[13] = t3712;
-  const Scalar t3713 = ((Scalar(2.0625) + t2572) + t3168) + t3697;
+  const Scalar t3713 = ((Scalar(2.062499999999999) + t2572) + t3168) + t3697;
   Lambda[9] = t3713;
   Lambda[19] = t3713;
   const Scalar t3714 = (t2573 + t3169) + t3698;
@@ -4241,4 +4241,4 @@ RBDC_HOST_DEVICE inline void osc_open_chain(const Scalar* q, const Scalar* v, co
   b[5] = t3734 - (((t3721 * t3774) + (t3723 * t3775)) + (t3724 * t3776));
 }
 
-}  // namespace rbdc_gen::humanoid32::common::osc_open_chain_9087c0adeae8
+}  // namespace rbdc_gen::humanoid32::common::osc_open_chain_16c72c15951f

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::bias_04f6038d0f29 {
+namespace rbdc_gen::arm7::common::bias_0762b0bc59e7 {
 
 /// Bias c + g in one pass (inverse dynamics at a = 0, without the acceleration terms).
 ///
@@ -45,8 +45,8 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Scalar t4 = v[1] * t3;
   const Scalar t5 = v[1] * t2;
   const Scalar t6 = (Scalar(0.00030010000000000003) * t3) - (Scalar(3.3299999999999996e-05) * v[1]);
-  const Scalar t7 = ((Scalar(3.3299999999999996e-05) * t2) + (Scalar(1.4426703330000004) * v[1])) - (Scalar(0.01279) * t3);
-  const Scalar t8 = ((Scalar(0.00030010000000000003) * t2) + (Scalar(0.01279) * v[1])) + (Scalar(1.4336696670000002) * t3);
+  const Scalar t7 = ((Scalar(3.3299999999999996e-05) * t2) + (Scalar(1.4426703330000001) * v[1])) - (Scalar(0.01279) * t3);
+  const Scalar t8 = ((Scalar(0.00030010000000000003) * t2) + (Scalar(0.01279) * v[1])) + (Scalar(1.433669667) * t3);
   const Scalar t9 = (((Scalar(3.3299999999999996e-05) * t4) + (Scalar(0.01279) * t5)) - ((Scalar(36.78750000000001) * sin_joint2) + (Scalar(0.010889099999999999) * cos_joint2))) + ((t3 * t6) - (t2 * t8));
   // outward pass: body 3 link3
   const Scalar t10 = Scalar(0.22) * t4;
@@ -60,13 +60,13 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Scalar t18 = (v[2] * t14) - (t4 * cos_joint3);
   const Scalar t19 = (t4 * sin_joint3) - (v[2] * t13);
   const Scalar t20 = ((sin_joint3 * t10) - (t0 * cos_joint3)) + (v[2] * t16);
-  const Scalar t21 = Scalar(0.4474035169999999) * t13;
+  const Scalar t21 = Scalar(0.44740351700000003) * t13;
   const Scalar t22 = Scalar(0.008428) * t17;
-  const Scalar t23 = ((Scalar(0.008428) * t14) + (Scalar(0.453603517) * t17)) - (Scalar(0.0006000000000000033) * t15);
+  const Scalar t23 = ((Scalar(0.008428) * t14) + (Scalar(0.45360351700000007) * t17)) - (Scalar(0.0006000000000000033) * t15);
   const Scalar t24 = Scalar(0.0006000000000000033) * t17;
   const Scalar t25 = Scalar(0.0006000000000000033) * t13;
-  const Scalar t26 = ((Scalar(0.4474035169999999) * t18) + (Scalar(0.005886000000000033) * cos_joint2)) + (((t14 * t23) - (t17 * t22)) + (t16 * t25));
-  const Scalar t27 = (((Scalar(0.008428) * t19) - (Scalar(0.453603517) * t5)) - (Scalar(0.0006000000000000033) * t20)) + (((t13 * t22) - (t14 * t21)) + (t16 * t24));
+  const Scalar t26 = ((Scalar(0.44740351700000003) * t18) + (Scalar(0.005886000000000033) * cos_joint2)) + (((t14 * t23) - (t17 * t22)) + (t16 * t25));
+  const Scalar t27 = (((Scalar(0.008428) * t19) - (Scalar(0.45360351700000007) * t5)) - (Scalar(0.0006000000000000033) * t20)) + (((t13 * t22) - (t14 * t21)) + (t16 * t24));
   // outward pass: body 4 link4
   const Scalar t28 = Scalar(0.2) * t19;
   const Scalar t29 = t20 + t28;
@@ -82,13 +82,13 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Scalar t39 = ((t18 * sin_joint4) + (t5 * cos_joint4)) + (v[3] * t33);
   const Scalar t40 = ((cos_joint4 * t29) + (t1 * sin_joint4)) - (v[3] * t36);
   const Scalar t41 = ((t1 * cos_joint4) - (sin_joint4 * t29)) - (v[3] * t35);
-  const Scalar t42 = (Scalar(0.004275000000000001) * t37) - (Scalar(0.435936717) * t34);
-  const Scalar t43 = Scalar(1.3641999999999999) * t32;
-  const Scalar t44 = ((Scalar(0.44103671699999997) * t37) + (Scalar(0.004275000000000001) * t34)) + (Scalar(1.3641999999999999) * t35);
-  const Scalar t45 = Scalar(1.3641999999999999) * t37;
-  const Scalar t46 = Scalar(1.3641999999999999) * t33;
-  const Scalar t47 = (((t37 * t42) - (t34 * t44)) - (t36 * t46)) - (Scalar(1.3641999999999999) * t30);
-  const Scalar t48 = (((Scalar(0.44103671699999997) * t19) - (Scalar(0.004275000000000001) * t39)) + (Scalar(1.3641999999999999) * t40)) - (((t34 * t43) + (t33 * t42)) + (t36 * t45));
+  const Scalar t42 = (Scalar(0.004275000000000001) * t37) - (Scalar(0.43593671700000003) * t34);
+  const Scalar t43 = Scalar(1.3642) * t32;
+  const Scalar t44 = ((Scalar(0.441036717) * t37) + (Scalar(0.004275000000000001) * t34)) + (Scalar(1.3642) * t35);
+  const Scalar t45 = Scalar(1.3642) * t37;
+  const Scalar t46 = Scalar(1.3642) * t33;
+  const Scalar t47 = (((t37 * t42) - (t34 * t44)) - (t36 * t46)) - (Scalar(1.3642) * t30);
+  const Scalar t48 = (((Scalar(0.441036717) * t19) - (Scalar(0.004275000000000001) * t39)) + (Scalar(1.3642) * t40)) - (((t34 * t43) + (t33 * t42)) + (t36 * t45));
   // outward pass: body 5 link5
   const Scalar t49 = t28 + t40;
   const Scalar t50 = t30 - (Scalar(0.2) * t38);
@@ -103,9 +103,9 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Scalar t59 = ((t19 * cos_joint5) - (t38 * sin_joint5)) - (v[4] * t53);
   const Scalar t60 = ((cos_joint5 * t49) + (sin_joint5 * t50)) + (v[4] * t56);
   const Scalar t61 = ((cos_joint5 * t50) - (sin_joint5 * t49)) - (v[4] * t55);
-  const Scalar t62 = (((Scalar(0.010680452843509214) * t58) - (Scalar(3.57e-06) * t59)) + (Scalar(1.2919999999999997e-05) * t39)) + (Scalar(0.036480000000000005) * t41);
+  const Scalar t62 = (((Scalar(0.010680452843509228) * t58) - (Scalar(3.57e-06) * t59)) + (Scalar(1.2919999999999997e-05) * t39)) + (Scalar(0.036480000000000005) * t41);
   const Scalar t63 = ((Scalar(0.00017) * t61) - (Scalar(0.036480000000000005) * t60)) - (((Scalar(1.2919999999999997e-05) * t58) + (Scalar(0.0011613999999999995) * t59)) + (Scalar(0.012880486843509217) * t39));
-  const Scalar t64 = (((Scalar(0.010680452843509214) * t53) - (Scalar(3.57e-06) * t54)) - (Scalar(1.2919999999999997e-05) * t57)) - (Scalar(0.036480000000000005) * t36);
+  const Scalar t64 = (((Scalar(0.010680452843509228) * t53) - (Scalar(3.57e-06) * t54)) - (Scalar(1.2919999999999997e-05) * t57)) - (Scalar(0.036480000000000005) * t36);
   const Scalar t65 = (Scalar(0.00017) * t36) - ((Scalar(3.57e-06) * t53) + (Scalar(0.0011613999999999995) * t57));
   const Scalar t66 = ((Scalar(0.012880486843509217) * t57) - ((Scalar(1.2919999999999997e-05) * t53) + (Scalar(0.0011613999999999995) * t54))) + ((Scalar(0.00017) * t56) - (Scalar(0.036480000000000005) * t55));
   const Scalar t67 = Scalar(0.036480000000000005) * t57;
@@ -127,14 +127,14 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Scalar t82 = ((t58 * sin_joint6) - (t39 * cos_joint6)) + (v[5] * t76);
   const Scalar t83 = Scalar(0.04726753550266307) * (((cos_joint6 * t72) - (t41 * sin_joint6)) - (v[5] * t79));
   const Scalar t84 = ((Scalar(0.009281063680426091) * t59) - (Scalar(3.12e-07) * t82)) + (t83 - (Scalar(0.0033246023249400717) * (((sin_joint6 * t72) + (t41 * cos_joint6)) + (v[5] * t78))));
-  const Scalar t85 = (Scalar(0.0033246023249400717) * t73) - (((Scalar(0.000430067404825638) * t81) + (Scalar(3.12e-07) * t59)) + (Scalar(0.005179540006592342) * t82));
-  const Scalar t86 = (Scalar(0.000430067404825638) * t77) + (Scalar(0.04726753550266307) * t75);
+  const Scalar t85 = (Scalar(0.0033246023249400717) * t73) - (((Scalar(0.0004300674048256379) * t81) + (Scalar(3.12e-07) * t59)) + (Scalar(0.005179540006592342) * t82));
+  const Scalar t86 = (Scalar(0.0004300674048256379) * t77) + (Scalar(0.04726753550266307) * t75);
   const Scalar t87 = ((Scalar(0.009281063680426091) * t80) - (Scalar(3.12e-07) * t77)) + ((Scalar(0.04726753550266307) * t78) - (Scalar(0.0033246023249400717) * t79));
-  const Scalar t88 = (Scalar(0.0033246023249400717) * t75) - (((Scalar(0.000430067404825638) * t76) + (Scalar(3.12e-07) * t80)) + (Scalar(0.005179540006592342) * t77));
+  const Scalar t88 = (Scalar(0.0033246023249400717) * t75) - (((Scalar(0.0004300674048256379) * t76) + (Scalar(3.12e-07) * t80)) + (Scalar(0.005179540006592342) * t77));
   const Scalar t89 = Scalar(0.04726753550266307) * t80;
   const Scalar t90 = Scalar(0.0033246023249400717) * t80;
   const Scalar t91 = (Scalar(0.0033246023249400717) * t77) - (Scalar(0.04726753550266307) * t76);
-  const Scalar t92 = (((t80 * t88) - (t77 * t87)) - ((t75 * t90) + (t79 * t91))) - ((Scalar(0.000430067404825638) * t82) + (Scalar(0.04726753550266307) * t73));
+  const Scalar t92 = (((t80 * t88) - (t77 * t87)) - ((t75 * t90) + (t79 * t91))) - ((Scalar(0.0004300674048256379) * t82) + (Scalar(0.04726753550266307) * t73));
   const Scalar t93 = (Scalar(0.04726753550266307) * t59) - ((t80 * t90) + (t77 * t91));
   const Scalar t94 = ((Scalar(0.0033246023249400717) * t82) - (Scalar(0.04726753550266307) * t81)) + ((t77 * t89) + (t76 * t90));
   const Scalar t95 = ((t76 * t91) - (t80 * t89)) - (Scalar(0.0033246023249400717) * t59);
@@ -166,10 +166,10 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Scalar t114 = t47 + (((cos_joint5 * t106) - (sin_joint5 * t107)) - (Scalar(0.2) * t113));
   const Scalar t115 = t48 + (((sin_joint5 * t106) + (cos_joint5 * t107)) + (Scalar(0.2) * t112));
   cg[3] = -t115;
-  const Scalar t116 = (((Scalar(0.004275000000000001) * t19) + (Scalar(0.435936717) * t39)) + (((t33 * t44) + (t37 * t43)) - ((t35 * t46) + (t32 * t45)))) + t108;
-  const Scalar t117 = ((t34 * t45) - (Scalar(1.3641999999999999) * t38)) + t113;
+  const Scalar t116 = (((Scalar(0.004275000000000001) * t19) + (Scalar(0.43593671700000003) * t39)) + (((t33 * t44) + (t37 * t43)) - ((t35 * t46) + (t32 * t45)))) + t108;
+  const Scalar t117 = ((t34 * t45) - (Scalar(1.3642) * t38)) + t113;
   // inward pass: body 4 link4
-  const Scalar t118 = (cos_joint4 * (((Scalar(1.3641999999999999) * t19) + (t34 * t46)) + t112)) - (sin_joint4 * (t111 - ((t33 * t46) + (t37 * t45))));
+  const Scalar t118 = (cos_joint4 * (((Scalar(1.3642) * t19) + (t34 * t46)) + t112)) - (sin_joint4 * (t111 - ((t33 * t46) + (t37 * t45))));
   const Scalar t119 = t26 + (((cos_joint4 * t114) - (sin_joint4 * t116)) - (Scalar(0.2) * t117));
   const Scalar t120 = ((((t17 * t21) - (t13 * t23)) - (t15 * t25)) - (Scalar(0.008428) * t5)) + (t115 + (Scalar(0.2) * t118));
   const Scalar t121 = t27 + ((sin_joint4 * t114) + (cos_joint4 * t116));
@@ -180,9 +180,9 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   // inward pass: body 3 link3
   const Scalar t124 = ((cos_joint3 * t119) - (sin_joint3 * t120)) - (Scalar(0.22) * ((sin_joint3 * t122) + (cos_joint3 * t123)));
   // inward pass: body 2 link2
-  const Scalar t125 = cos_joint2 * ((((Scalar(1.4336696670000002) * t5) - (Scalar(0.00030010000000000003) * t4)) - ((t2 * t7) + (v[1] * t6))) + t121);
+  const Scalar t125 = cos_joint2 * ((((Scalar(1.433669667) * t5) - (Scalar(0.00030010000000000003) * t4)) - ((t2 * t7) + (v[1] * t6))) + t121);
   // outputs
   cg[0] = t125 - (sin_joint2 * (t124 - ((Scalar(0.00030010000000000003) * t5) + ((v[1] * t8) + (t3 * t7)))));
 }
 
-}  // namespace rbdc_gen::arm7::common::bias_04f6038d0f29
+}  // namespace rbdc_gen::arm7::common::bias_0762b0bc59e7

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/lanes.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_a5d972443775 {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_29bbba073812 {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
 /// algorithm where that is cheaper: the schedule line says which).
@@ -199,11 +199,11 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t69 = (t67 * sin_lanes_wrist_pitch) + (t66 * cos_lanes_wrist_pitch);
   // ABA: outward pass, velocities, velocity products and bias forces: body 0 pelvis
   const Scalar t70 = Scalar(0.28349666669999996) * v[2];
-  const Scalar t71 = (Scalar(4.039851666744001) * v[0]) - (Scalar(2.0625) * v[4]);
-  const Scalar t72 = (Scalar(3.809688333444001) * v[1]) + (Scalar(2.0625) * v[3]);
+  const Scalar t71 = (Scalar(4.039851666744001) * v[0]) - (Scalar(2.062499999999999) * v[4]);
+  const Scalar t72 = (Scalar(3.809688333444001) * v[1]) + (Scalar(2.062499999999999) * v[3]);
   const Scalar t73 = Scalar(66.95) * v[5];
-  const Scalar t74 = (Scalar(66.95) * v[3]) + (Scalar(2.0625) * v[1]);
-  const Scalar t75 = (Scalar(66.95) * v[4]) - (Scalar(2.0625) * v[0]);
+  const Scalar t74 = (Scalar(66.95) * v[3]) + (Scalar(2.062499999999999) * v[1]);
+  const Scalar t75 = (Scalar(66.95) * v[4]) - (Scalar(2.062499999999999) * v[0]);
   const Scalar t76 = ((v[1] * t70) - (v[2] * t72)) + ((v[4] * t73) - (v[5] * t75));
   const Scalar t77 = ((v[2] * t71) - (v[0] * t70)) + ((v[5] * t74) - (v[3] * t73));
   // ABA: outward pass, velocities, velocity products and bias forces: body 1 l_hip_yaw_link/r_hip_yaw_link
@@ -329,8 +329,8 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t190 = v[19] * t186;
   const Scalar t191 = v[19] * t185;
   const Scalar t192 = Scalar(0.012) * t182;
-  const Scalar t193 = (Scalar(1.0410841074056743) * t187) + ((Scalar(0.012) * t185) - (Scalar(0.16) * t186));
-  const Scalar t194 = (Scalar(1.0401241074056744) * t184) + (Scalar(0.16) * t182);
+  const Scalar t193 = (Scalar(1.0410841074056745) * t187) + ((Scalar(0.012) * t185) - (Scalar(0.16) * t186));
+  const Scalar t194 = (Scalar(1.0401241074056746) * t184) + (Scalar(0.16) * t182);
   const Scalar t195 = Scalar(0.012) * t187;
   const Scalar t196 = Scalar(0.16) * t187;
   const Scalar t197 = (Scalar(0.16) * t184) - (Scalar(0.012) * t183);
@@ -346,7 +346,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t206 = v[20] * t200;
   const Scalar t207 = Scalar(0.032) * t202;
   const Scalar t208 = ((Scalar(4.379874803165694) * t202) - (Scalar(0.032) * t199)) - (Scalar(9.530453494576028) * t200);
-  const Scalar t209 = (Scalar(2.4329332543543454) * t198) + (Scalar(9.530453494576028) * t185);
+  const Scalar t209 = (Scalar(2.432933254354345) * t198) + (Scalar(9.530453494576028) * t185);
   const Scalar t210 = Scalar(9.530453494576028) * t198;
   const Scalar t211 = Scalar(9.530453494576028) * t202;
   // ABA: outward pass, velocities, velocity products and bias forces: body 10 neck_yaw_link
@@ -422,10 +422,10 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t277 = t273 * lane_v[7];
   const Lane t278 = t275 * lane_v[7];
   const Lane t279 = t274 * lane_v[7];
-  const Lane t280 = (Scalar(0.295408333333) * t276) + (Scalar(1.0805) * t274);
-  const Lane t281 = (Scalar(0.294755) * t272) - (Scalar(1.0805) * t270);
-  const Lane t282 = Scalar(1.0805) * t272;
-  const Lane t283 = Scalar(1.0805) * t276;
+  const Lane t280 = (Scalar(0.295408333333) * t276) + (Scalar(1.0804999999999998) * t274);
+  const Lane t281 = (Scalar(0.294755) * t272) - (Scalar(1.0804999999999998) * t270);
+  const Lane t282 = Scalar(1.0804999999999998) * t272;
+  const Lane t283 = Scalar(1.0804999999999998) * t276;
   // ABA: outward pass, velocities, velocity products and bias forces: body 15 l_upper_arm/r_upper_arm
   const Lane t284 = t270 - (Scalar(0.03) * t272);
   const Lane t285 = t274 + (Scalar(0.03) * t276);
@@ -439,7 +439,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t293 = t289 * lane_v[8];
   const Lane t294 = t288 * lane_v[8];
   const Lane t295 = Scalar(0.10778583333300001) * t286;
-  const Lane t296 = Scalar(0.11002583333300002) * t290;
+  const Lane t296 = Scalar(0.110025833333) * t290;
   // ABA: outward pass, velocities, velocity products and bias forces: body 16 l_forearm/r_forearm
   const Lane t297 = t288 - (Scalar(0.28) * t287);
   const Lane t298 = t289 + (Scalar(0.28) * t286);
@@ -452,9 +452,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t305 = t299 * lane_v[9];
   const Lane t306 = t302 * lane_v[9];
   const Lane t307 = t301 * lane_v[9];
-  const Lane t308 = Scalar(0.10680583333300002) * t300;
+  const Lane t308 = Scalar(0.106805833333) * t300;
   const Lane t309 = Scalar(0.447) * t298;
-  const Lane t310 = (Scalar(0.10778583333300001) * t303) - (Scalar(0.447) * t301);
+  const Lane t310 = (Scalar(0.107785833333) * t303) - (Scalar(0.447) * t301);
   const Lane t311 = Scalar(0.447) * t303;
   const Lane t312 = Scalar(0.447) * t299;
   // ABA: outward pass, velocities, velocity products and bias forces: body 17 l_wrist_yaw_link/r_wrist_yaw_link
@@ -592,7 +592,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t439 = ((sin_lanes_wrist_yaw * t406) - (cos_lanes_wrist_yaw * t407)) - (Scalar(0.25) * t430);
   const Lane t440 = (((cos_lanes_wrist_yaw * ((cos_lanes_wrist_yaw * t400) - t415)) - (sin_lanes_wrist_yaw * (t416 + (sin_lanes_wrist_yaw * t402)))) + (Scalar(0.25) * t424)) + (Scalar(0.25) * t436);
   const Lane t441 = (((cos_lanes_wrist_yaw * t417) - (sin_lanes_wrist_yaw * t418)) - (Scalar(0.25) * t423)) + (Scalar(0.25) * t438);
-  const Lane t442 = Scalar(0.10778583333300001) + ((((sin_lanes_wrist_yaw * t417) + (cos_lanes_wrist_yaw * t418)) - (Scalar(0.25) * t425)) - (Scalar(0.25) * t437));
+  const Lane t442 = Scalar(0.107785833333) + ((((sin_lanes_wrist_yaw * t417) + (cos_lanes_wrist_yaw * t418)) - (Scalar(0.25) * t425)) - (Scalar(0.25) * t437));
   const Lane t443 = t437 - Scalar(0.447);
   const Lane t444 = (cos_lanes_wrist_yaw * t414) - (sin_lanes_wrist_yaw * t410);
   const Lane t445 = (sin_lanes_wrist_yaw * t414) + (cos_lanes_wrist_yaw * t410);
@@ -614,14 +614,14 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t460 = t430 - (t439 * t450);
   const Lane t461 = t431 - (t439 * t451);
   const Lane t462 = (((sin_lanes_wrist_pitch * t382) + (cos_lanes_wrist_pitch * t385)) + (t381 * t399)) + (t439 * t452);
-  const Lane t463 = ((((t299 * t310) - (t303 * t309)) + ((t301 * t312) + (t298 * t311))) + lane_tau[10]) - (Scalar(0.10680583333300002) * t305);
+  const Lane t463 = ((((t299 * t310) - (t303 * t309)) + ((t301 * t312) + (t298 * t311))) + lane_tau[10]) - (Scalar(0.106805833333) * t305);
   const Lane t464 = (((t299 * t312) + (t303 * t311)) + (t411 - (t395 * t399))) - (((t304 * t459) + (t306 * t460)) + (t307 * t462));
   const Lane t465 = (t446 + ((t307 * t459) - ((t304 * t453) + (t306 * t454)))) + (t448 * t449);
   const Lane t466 = ((t444 - (t300 * t312)) + ((t307 * t460) - ((t304 * t454) + (t306 * t455)))) + (t448 * t450);
   const Lane t467 = ((t445 - (t300 * t311)) + ((t307 * t461) - ((t304 * t456) + (t306 * t457)))) + (t448 * t451);
   const Lane t468 = t464 + (t448 * t452);
   const Lane t469 = sin_lanes_elbow * t453;
-  const Lane t470 = Scalar(0.10680583333300002) * cos_lanes_elbow;
+  const Lane t470 = Scalar(0.106805833333) * cos_lanes_elbow;
   const Lane t471 = (cos_lanes_elbow * t454) + (sin_lanes_elbow * t459);
   const Lane t472 = (cos_lanes_elbow * t459) - (sin_lanes_elbow * t454);
   const Lane t473 = cos_lanes_elbow * t471;
@@ -641,7 +641,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t487 = t474 - (Scalar(0.28) * t458);
   const Lane t488 = ((cos_lanes_elbow * t469) + (sin_lanes_elbow * t470)) + (Scalar(0.28) * t476);
   const Lane t489 = Scalar(0.28) * t475;
-  const Lane t490 = Scalar(0.11002583333300002) + ((sin_lanes_elbow * t469) - (cos_lanes_elbow * t470));
+  const Lane t490 = Scalar(0.110025833333) + ((sin_lanes_elbow * t469) - (cos_lanes_elbow * t470));
   const Lane t491 = (cos_lanes_elbow * t466) + (sin_lanes_elbow * t468);
   const Lane t492 = (t287 * t296) + (((cos_lanes_elbow * t465) + (sin_lanes_elbow * t463)) + (Scalar(0.28) * t467));
   // ABA: inward pass, articulated inertias: body 15 l_upper_arm/r_upper_arm
@@ -652,7 +652,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t497 = t475 * t493;
   const Lane t498 = t476 * t493;
   const Lane t499 = t477 * t493;
-  const Lane t500 = (Scalar(0.10778583333300001) + ((((cos_lanes_elbow * (cos_lanes_elbow * t453)) - (sin_lanes_elbow * (Scalar(0.10680583333300002) * sin_lanes_elbow))) + (Scalar(0.28) * t474)) + (Scalar(0.28) * t487))) - (t488 * t495);
+  const Lane t500 = (Scalar(0.10778583333300001) + ((((cos_lanes_elbow * (cos_lanes_elbow * t453)) - (sin_lanes_elbow * (Scalar(0.106805833333) * sin_lanes_elbow))) + (Scalar(0.28) * t474)) + (Scalar(0.28) * t487))) - (t488 * t495);
   const Lane t501 = (t489 * t495) - ((Scalar(0.28) * t473) + (Scalar(0.07840000000000001) * t481));
   const Lane t502 = (Scalar(0.07840000000000001) * t484) - (t489 * t496);
   const Lane t503 = (t473 + t486) - (t475 * t495);
@@ -700,7 +700,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t545 = ((sin_lanes_shoulder_yaw * t525) + (cos_lanes_shoulder_yaw * t527)) - t540;
   const Lane t546 = (((cos_lanes_shoulder_yaw * t522) - (sin_lanes_shoulder_yaw * t523)) - (Scalar(0.03) * t528)) + (Scalar(0.03) * t545);
   const Lane t547 = Scalar(0.295408333333) + ((((cos_lanes_shoulder_yaw * ((cos_lanes_shoulder_yaw * t500) - t520)) - (sin_lanes_shoulder_yaw * (t521 - (sin_lanes_shoulder_yaw * t502)))) + (Scalar(0.03) * t529)) + (Scalar(0.03) * t542));
-  const Lane t548 = Scalar(1.0805) + t542;
+  const Lane t548 = Scalar(1.0804999999999998) + t542;
   const Lane t549 = (cos_lanes_shoulder_yaw * t518) - (sin_lanes_shoulder_yaw * t519);
   const Lane t550 = (sin_lanes_shoulder_yaw * t518) + (cos_lanes_shoulder_yaw * t519);
   const Lane t551 = ((t273 * t280) - (t275 * t282)) + (((sin_lanes_shoulder_yaw * t516) + (cos_lanes_shoulder_yaw * t517)) - (Scalar(0.03) * t549));
@@ -713,7 +713,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Lane t557 = t548 * t553;
   const Lane t558 = t543 * t553;
   const Lane t559 = (Scalar(0.294755) + ((((sin_lanes_shoulder_yaw * t522) + (cos_lanes_shoulder_yaw * t523)) - (Scalar(0.03) * t530)) - (Scalar(0.03) * t544))) - (t546 * t555);
-  const Lane t560 = (t544 - Scalar(1.0805)) - (t541 * t555);
+  const Lane t560 = (t544 - Scalar(1.0804999999999998)) - (t541 * t555);
   const Lane t561 = t537 - (t541 * t556);
   const Lane t562 = t545 - (t548 * t555);
   const Lane t563 = t538 - (t548 * t556);
@@ -982,7 +982,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t821 = t810 * t817;
   const Scalar t822 = t811 * t817;
   const Scalar t823 = t812 * t817;
-  const Scalar t824 = ((Scalar(2.4329332543543454) + (t678[0] + t678[1])) + ((((sin_neck_yaw * t785) + (cos_neck_yaw * t786)) + (Scalar(0.44) * t793)) + (Scalar(0.44) * t805))) - (t809 * t819);
+  const Scalar t824 = ((Scalar(2.432933254354345) + (t678[0] + t678[1])) + ((((sin_neck_yaw * t785) + (cos_neck_yaw * t786)) + (Scalar(0.44) * t793)) + (Scalar(0.44) * t805))) - (t809 * t819);
   const Scalar t825 = (t680[0] + t680[1]) - (t682 * t819);
   const Scalar t826 = (t681[0] + t681[1]) - (t682 * t820);
   const Scalar t827 = ((Scalar(9.530453494576028) + (t669[0] + t669[1])) + t805) - (t810 * t819);
@@ -1017,7 +1017,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t856 = cos_waist_roll * t836;
   const Scalar t857 = (sin_waist_roll * t832) + t856;
   const Scalar t858 = t855 + (cos_waist_roll * t837);
-  const Scalar t859 = Scalar(1.0410841074056743) + ((cos_waist_roll * ((cos_waist_roll * t824) - t845)) - (sin_waist_roll * (t846 - (sin_waist_roll * t826))));
+  const Scalar t859 = Scalar(1.0410841074056745) + ((cos_waist_roll * ((cos_waist_roll * t824) - t845)) - (sin_waist_roll * (t846 - (sin_waist_roll * t826))));
   const Scalar t860 = Scalar(0.012) + ((cos_waist_roll * t827) - (sin_waist_roll * t828));
   const Scalar t861 = ((cos_waist_roll * t851) - (sin_waist_roll * t853)) - Scalar(0.16);
   const Scalar t862 = (((t187 * t194) - (t184 * t193)) - ((t182 * t196) + (t186 * t197))) + tau[14];
@@ -1031,7 +1031,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t869 = t860 * t866;
   const Scalar t870 = t854 * t866;
   const Scalar t871 = t861 * t866;
-  const Scalar t872 = (Scalar(1.0401241074056744) + ((sin_waist_roll * t847) + (cos_waist_roll * t848))) - (t849 * t868);
+  const Scalar t872 = (Scalar(1.0401241074056746) + ((sin_waist_roll * t847) + (cos_waist_roll * t848))) - (t849 * t868);
   const Scalar t873 = ((sin_waist_roll * t827) + (cos_waist_roll * t828)) - (t860 * t868);
   const Scalar t874 = (((t648[0] + t648[1]) + t800) - (t810 * t821)) - (t860 * t869);
   const Scalar t875 = (Scalar(0.16) + ((sin_waist_roll * t850) + (cos_waist_roll * t852))) - (t854 * t868);
@@ -1416,7 +1416,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1247 = t1244[0] + t1244[1];
   const Scalar t1248 = ((((cos_waist_yaw * t939) - (sin_waist_yaw * t940)) + (Scalar(0.1) * t945)) - (Scalar(0.1) * t960)) + (t1242[0] + t1242[1]);
   const Scalar t1249 = (t945 - t957) + (t1234[0] + t1234[1]);
-  const Scalar t1250 = (t958 - Scalar(2.0625)) + (t1235[0] + t1235[1]);
+  const Scalar t1250 = (t958 - Scalar(2.062499999999999)) + (t1235[0] + t1235[1]);
   const Scalar t1251 = (((cos_waist_yaw * t927) - (sin_waist_yaw * t928)) - (Scalar(0.1) * t953)) + (t1236[0] + t1236[1]);
   const Lane t1252 = (cos_lanes_hip_yaw * t1206) - (sin_lanes_hip_yaw * t1207);
   const Lane t1253 = (sin_lanes_hip_yaw * t1206) + (cos_lanes_hip_yaw * t1207);
@@ -1435,7 +1435,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t1265 = Scalar(1) / t1264;
   const Scalar t1266 = (t1245[0] + t1245[1]) - (t1248 * t1260);
   const Scalar t1267 = t1265 * t1266;
-  const Scalar t1268 = ((Scalar(2.0625) + t959) + (t1237[0] + t1237[1])) - (t1248 * t1261);
+  const Scalar t1268 = ((Scalar(2.062499999999999) + t959) + (t1237[0] + t1237[1])) - (t1248 * t1261);
   const Scalar t1269 = t1265 * t1268;
   const Scalar t1270 = (t960 + (t1238[0] + t1238[1])) - (t1248 * t1262);
   const Scalar t1271 = t1265 * t1270;
@@ -1652,4 +1652,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[37] = t1439[1];
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_a5d972443775
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_29bbba073812

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::centroidal_bias_24262871f542 {
+namespace rbdc_gen::arm7::common::centroidal_bias_c6d5505c5bcb {
 
 /// Centroidal momentum drift Ȧ_G v: the rate of h_G at a = 0.
 ///
@@ -66,9 +66,9 @@ RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, S
   const Scalar t19 = (Scalar(0.0033246023249400717) * ((t16 * cos_joint6) - (t11 * sin_joint6))) + (Scalar(0.04726753550266307) * ((t16 * sin_joint6) + (t11 * cos_joint6)));
   const Scalar t20 = (Scalar(0.0033246023249400717) * ((t17 * cos_joint6) - (t13 * sin_joint6))) + (Scalar(0.04726753550266307) * ((t17 * sin_joint6) + (t13 * cos_joint6)));
   const Scalar t21 = (Scalar(0.0033246023249400717) * ((t18 * cos_joint6) - (t15 * sin_joint6))) + (Scalar(0.04726753550266307) * ((t18 * sin_joint6) + (t15 * cos_joint6)));
-  const Scalar t22 = ((Scalar(1.3641999999999999) * t11) + (((Scalar(0.00017) * t16) - (Scalar(0.036480000000000005) * ((t10 * sin_joint5) + (t5 * cos_joint5)))) + t19)) - (Scalar(0.0006000000000000033) * t5);
-  const Scalar t23 = (Scalar(0.0006000000000000033) * t7) + ((Scalar(1.3641999999999999) * t13) + (((Scalar(0.00017) * t17) + (Scalar(0.036480000000000005) * ((t7 * cos_joint5) - (t12 * sin_joint5)))) + t20));
-  const Scalar t24 = (Scalar(0.0006000000000000033) * t9) + ((Scalar(1.3641999999999999) * t15) + (((Scalar(0.00017) * t18) + (Scalar(0.036480000000000005) * ((t9 * cos_joint5) - (t14 * sin_joint5)))) + t21));
+  const Scalar t22 = ((Scalar(1.3642) * t11) + (((Scalar(0.00017) * t16) - (Scalar(0.036480000000000005) * ((t10 * sin_joint5) + (t5 * cos_joint5)))) + t19)) - (Scalar(0.0006000000000000033) * t5);
+  const Scalar t23 = (Scalar(0.0006000000000000033) * t7) + ((Scalar(1.3642) * t13) + (((Scalar(0.00017) * t17) + (Scalar(0.036480000000000005) * ((t7 * cos_joint5) - (t12 * sin_joint5)))) + t20));
+  const Scalar t24 = (Scalar(0.0006000000000000033) * t9) + ((Scalar(1.3642) * t15) + (((Scalar(0.00017) * t18) + (Scalar(0.036480000000000005) * ((t9 * cos_joint5) - (t14 * sin_joint5)))) + t21));
   const Scalar t25 = Scalar(0.04962779156327543) * (((((Scalar(0.0011099999999999999) * t0) + (Scalar(3.7500000000000004) * t1)) + t22) - (Scalar(0.02099999999999999) * sin_joint1)) - Scalar(0.084));
   const Scalar t26 = Scalar(0.04962779156327543) * ((Scalar(0.02099999999999999) * cos_joint1) + (((Scalar(0.0011099999999999999) * t2) + (Scalar(3.7500000000000004) * t3)) + t23));
   const Scalar t27 = Scalar(0.04962779156327543) * (Scalar(5.423) + (((Scalar(3.7500000000000004) * cos_joint2) - (Scalar(0.0011099999999999999) * sin_joint2)) + t24));
@@ -78,8 +78,8 @@ RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, S
   const Scalar t30 = v[1] * t29;
   const Scalar t31 = v[1] * t28;
   const Scalar t32 = (Scalar(0.00030010000000000003) * t29) - (Scalar(3.3299999999999996e-05) * v[1]);
-  const Scalar t33 = ((Scalar(3.3299999999999996e-05) * t28) + (Scalar(1.4426703330000004) * v[1])) - (Scalar(0.01279) * t29);
-  const Scalar t34 = ((Scalar(0.00030010000000000003) * t28) + (Scalar(0.01279) * v[1])) + (Scalar(1.4336696670000002) * t29);
+  const Scalar t33 = ((Scalar(3.3299999999999996e-05) * t28) + (Scalar(1.4426703330000001) * v[1])) - (Scalar(0.01279) * t29);
+  const Scalar t34 = ((Scalar(0.00030010000000000003) * t28) + (Scalar(0.01279) * v[1])) + (Scalar(1.433669667) * t29);
   const Scalar t35 = Scalar(3.7500000000000004) * v[1];
   const Scalar t36 = (Scalar(3.7500000000000004) * t28) + (Scalar(0.0011099999999999999) * t29);
   const Scalar t37 = Scalar(0.0011099999999999999) * v[1];
@@ -96,13 +96,13 @@ RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, S
   const Scalar t47 = (v[2] * t43) - (cos_joint3 * t30);
   const Scalar t48 = (sin_joint3 * t30) - (v[2] * t42);
   const Scalar t49 = (sin_joint3 * t39) + (v[2] * t45);
-  const Scalar t50 = Scalar(0.4474035169999999) * t42;
+  const Scalar t50 = Scalar(0.44740351700000003) * t42;
   const Scalar t51 = Scalar(0.008428) * t46;
-  const Scalar t52 = ((Scalar(0.008428) * t43) + (Scalar(0.453603517) * t46)) - (Scalar(0.0006000000000000033) * t44);
+  const Scalar t52 = ((Scalar(0.008428) * t43) + (Scalar(0.45360351700000007) * t46)) - (Scalar(0.0006000000000000033) * t44);
   const Scalar t53 = Scalar(0.0006000000000000033) * t46;
   const Scalar t54 = Scalar(0.0006000000000000033) * t42;
-  const Scalar t55 = (Scalar(0.4474035169999999) * t47) + (((t43 * t52) - (t46 * t51)) + (t45 * t54));
-  const Scalar t56 = (((Scalar(0.008428) * t48) - (Scalar(0.453603517) * t31)) - (Scalar(0.0006000000000000033) * t49)) + (((t42 * t51) - (t43 * t50)) + (t45 * t53));
+  const Scalar t55 = (Scalar(0.44740351700000003) * t47) + (((t43 * t52) - (t46 * t51)) + (t45 * t54));
+  const Scalar t56 = (((Scalar(0.008428) * t48) - (Scalar(0.45360351700000007) * t31)) - (Scalar(0.0006000000000000033) * t49)) + (((t42 * t51) - (t43 * t50)) + (t45 * t53));
   // outward pass: body 4 link4
   const Scalar t57 = Scalar(0.2) * t48;
   const Scalar t58 = t49 + t57;
@@ -118,13 +118,13 @@ RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, S
   const Scalar t68 = ((sin_joint4 * t47) + (cos_joint4 * t31)) + (v[3] * t62);
   const Scalar t69 = (cos_joint4 * t58) - (v[3] * t65);
   const Scalar t70 = (sin_joint4 * t58) + (v[3] * t64);
-  const Scalar t71 = (Scalar(0.004275000000000001) * t66) - (Scalar(0.435936717) * t63);
-  const Scalar t72 = Scalar(1.3641999999999999) * t61;
-  const Scalar t73 = ((Scalar(0.44103671699999997) * t66) + (Scalar(0.004275000000000001) * t63)) + (Scalar(1.3641999999999999) * t64);
-  const Scalar t74 = Scalar(1.3641999999999999) * t66;
-  const Scalar t75 = Scalar(1.3641999999999999) * t62;
-  const Scalar t76 = (((t66 * t71) - (t63 * t73)) - (t65 * t75)) - (Scalar(1.3641999999999999) * t59);
-  const Scalar t77 = (((Scalar(0.44103671699999997) * t48) - (Scalar(0.004275000000000001) * t68)) + (Scalar(1.3641999999999999) * t69)) - (((t63 * t72) + (t62 * t71)) + (t65 * t74));
+  const Scalar t71 = (Scalar(0.004275000000000001) * t66) - (Scalar(0.43593671700000003) * t63);
+  const Scalar t72 = Scalar(1.3642) * t61;
+  const Scalar t73 = ((Scalar(0.441036717) * t66) + (Scalar(0.004275000000000001) * t63)) + (Scalar(1.3642) * t64);
+  const Scalar t74 = Scalar(1.3642) * t66;
+  const Scalar t75 = Scalar(1.3642) * t62;
+  const Scalar t76 = (((t66 * t71) - (t63 * t73)) - (t65 * t75)) - (Scalar(1.3642) * t59);
+  const Scalar t77 = (((Scalar(0.441036717) * t48) - (Scalar(0.004275000000000001) * t68)) + (Scalar(1.3642) * t69)) - (((t63 * t72) + (t62 * t71)) + (t65 * t74));
   // outward pass: body 5 link5
   const Scalar t78 = t57 + t69;
   const Scalar t79 = t59 - (Scalar(0.2) * t67);
@@ -139,9 +139,9 @@ RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, S
   const Scalar t88 = ((cos_joint5 * t48) - (sin_joint5 * t67)) - (v[4] * t82);
   const Scalar t89 = ((cos_joint5 * t78) + (sin_joint5 * t79)) + (v[4] * t85);
   const Scalar t90 = ((cos_joint5 * t79) - (sin_joint5 * t78)) - (v[4] * t84);
-  const Scalar t91 = (((Scalar(0.010680452843509214) * t87) - (Scalar(3.57e-06) * t88)) + (Scalar(1.2919999999999997e-05) * t68)) - (Scalar(0.036480000000000005) * t70);
+  const Scalar t91 = (((Scalar(0.010680452843509228) * t87) - (Scalar(3.57e-06) * t88)) + (Scalar(1.2919999999999997e-05) * t68)) - (Scalar(0.036480000000000005) * t70);
   const Scalar t92 = ((Scalar(0.00017) * t90) - (Scalar(0.036480000000000005) * t89)) - (((Scalar(1.2919999999999997e-05) * t87) + (Scalar(0.0011613999999999995) * t88)) + (Scalar(0.012880486843509217) * t68));
-  const Scalar t93 = (((Scalar(0.010680452843509214) * t82) - (Scalar(3.57e-06) * t83)) - (Scalar(1.2919999999999997e-05) * t86)) - (Scalar(0.036480000000000005) * t65);
+  const Scalar t93 = (((Scalar(0.010680452843509228) * t82) - (Scalar(3.57e-06) * t83)) - (Scalar(1.2919999999999997e-05) * t86)) - (Scalar(0.036480000000000005) * t65);
   const Scalar t94 = (Scalar(0.00017) * t65) - ((Scalar(3.57e-06) * t82) + (Scalar(0.0011613999999999995) * t86));
   const Scalar t95 = ((Scalar(0.012880486843509217) * t86) - ((Scalar(1.2919999999999997e-05) * t82) + (Scalar(0.0011613999999999995) * t83))) + ((Scalar(0.00017) * t85) - (Scalar(0.036480000000000005) * t84));
   const Scalar t96 = Scalar(0.036480000000000005) * t86;
@@ -163,14 +163,14 @@ RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, S
   const Scalar t111 = ((sin_joint6 * t87) - (cos_joint6 * t68)) + (v[5] * t105);
   const Scalar t112 = Scalar(0.04726753550266307) * (((cos_joint6 * t101) + (sin_joint6 * t70)) - (v[5] * t108));
   const Scalar t113 = ((Scalar(0.009281063680426091) * t88) - (Scalar(3.12e-07) * t111)) + (t112 - (Scalar(0.0033246023249400717) * (((sin_joint6 * t101) - (cos_joint6 * t70)) + (v[5] * t107))));
-  const Scalar t114 = (Scalar(0.0033246023249400717) * t102) - (((Scalar(0.000430067404825638) * t110) + (Scalar(3.12e-07) * t88)) + (Scalar(0.005179540006592342) * t111));
-  const Scalar t115 = (Scalar(0.000430067404825638) * t106) + (Scalar(0.04726753550266307) * t104);
+  const Scalar t114 = (Scalar(0.0033246023249400717) * t102) - (((Scalar(0.0004300674048256379) * t110) + (Scalar(3.12e-07) * t88)) + (Scalar(0.005179540006592342) * t111));
+  const Scalar t115 = (Scalar(0.0004300674048256379) * t106) + (Scalar(0.04726753550266307) * t104);
   const Scalar t116 = ((Scalar(0.009281063680426091) * t109) - (Scalar(3.12e-07) * t106)) + ((Scalar(0.04726753550266307) * t107) - (Scalar(0.0033246023249400717) * t108));
-  const Scalar t117 = (Scalar(0.0033246023249400717) * t104) - (((Scalar(0.000430067404825638) * t105) + (Scalar(3.12e-07) * t109)) + (Scalar(0.005179540006592342) * t106));
+  const Scalar t117 = (Scalar(0.0033246023249400717) * t104) - (((Scalar(0.0004300674048256379) * t105) + (Scalar(3.12e-07) * t109)) + (Scalar(0.005179540006592342) * t106));
   const Scalar t118 = Scalar(0.04726753550266307) * t109;
   const Scalar t119 = Scalar(0.0033246023249400717) * t109;
   const Scalar t120 = (Scalar(0.0033246023249400717) * t106) - (Scalar(0.04726753550266307) * t105);
-  const Scalar t121 = (((t109 * t117) - (t106 * t116)) - ((t104 * t119) + (t108 * t120))) - ((Scalar(0.000430067404825638) * t111) + (Scalar(0.04726753550266307) * t102));
+  const Scalar t121 = (((t109 * t117) - (t106 * t116)) - ((t104 * t119) + (t108 * t120))) - ((Scalar(0.0004300674048256379) * t111) + (Scalar(0.04726753550266307) * t102));
   const Scalar t122 = (Scalar(0.04726753550266307) * t88) - ((t109 * t119) + (t106 * t120));
   const Scalar t123 = ((Scalar(0.0033246023249400717) * t111) - (Scalar(0.04726753550266307) * t110)) + ((t106 * t118) + (t105 * t119));
   const Scalar t124 = ((t105 * t120) - (t109 * t118)) - (Scalar(0.0033246023249400717) * t88);
@@ -197,9 +197,9 @@ RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, S
   const Scalar t141 = (cos_joint5 * t138) - (sin_joint5 * t139);
   const Scalar t142 = (sin_joint5 * t138) + (cos_joint5 * t139);
   const Scalar t143 = t76 + (((cos_joint5 * t135) - (sin_joint5 * t136)) - (Scalar(0.2) * t142));
-  const Scalar t144 = (((Scalar(0.004275000000000001) * t48) + (Scalar(0.435936717) * t68)) + (((t62 * t73) + (t66 * t72)) - ((t64 * t75) + (t61 * t74)))) + t137;
-  const Scalar t145 = ((Scalar(1.3641999999999999) * t48) + (t63 * t75)) + t141;
-  const Scalar t146 = ((t63 * t74) - (Scalar(1.3641999999999999) * t67)) + t142;
+  const Scalar t144 = (((Scalar(0.004275000000000001) * t48) + (Scalar(0.43593671700000003) * t68)) + (((t62 * t73) + (t66 * t72)) - ((t64 * t75) + (t61 * t74)))) + t137;
+  const Scalar t145 = ((Scalar(1.3642) * t48) + (t63 * t75)) + t141;
+  const Scalar t146 = ((t63 * t74) - (Scalar(1.3642) * t67)) + t142;
   const Scalar t147 = t140 - ((t62 * t75) + (t66 * t74));
   // inward pass: body 4 link4
   const Scalar t148 = (cos_joint4 * t145) - (sin_joint4 * t147);
@@ -212,7 +212,7 @@ RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, S
   const Scalar t154 = (cos_joint3 * t152) - (sin_joint3 * t153);
   const Scalar t155 = (sin_joint3 * t152) + (cos_joint3 * t153);
   const Scalar t156 = (((cos_joint3 * t150) - (sin_joint3 * t151)) - (Scalar(0.22) * t155)) - ((Scalar(0.00030010000000000003) * t31) + ((v[1] * t34) + (t29 * t33)));
-  const Scalar t157 = (((Scalar(1.4336696670000002) * t31) - (Scalar(0.00030010000000000003) * t30)) - ((t28 * t33) + (v[1] * t32))) + (t56 + ((sin_joint4 * t143) + (cos_joint4 * t144)));
+  const Scalar t157 = (((Scalar(1.433669667) * t31) - (Scalar(0.00030010000000000003) * t30)) - ((t28 * t33) + (v[1] * t32))) + (t56 + ((sin_joint4 * t143) + (cos_joint4 * t144)));
   const Scalar t158 = t154 - ((v[1] * t37) + (t29 * t36));
   const Scalar t159 = (((Scalar(3.7500000000000004) * t30) - (Scalar(0.0011099999999999999) * t31)) + ((t29 * t35) - (t28 * t37))) + t155;
   const Scalar t160 = (((Scalar(0.0006000000000000033) * t47) + (t43 * t53)) + ((sin_joint4 * t145) + (cos_joint4 * t147))) - ((t28 * t36) + (v[1] * t35));
@@ -234,4 +234,4 @@ RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, S
   Adot_v[4] = t167;
 }
 
-}  // namespace rbdc_gen::arm7::common::centroidal_bias_24262871f542
+}  // namespace rbdc_gen::arm7::common::centroidal_bias_c6d5505c5bcb

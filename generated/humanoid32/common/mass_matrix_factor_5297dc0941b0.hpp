@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::humanoid32::common::mass_matrix_factor_c2a0c2c2ba5e {
+namespace rbdc_gen::humanoid32::common::mass_matrix_factor_5297dc0941b0 {
 
 /// M = Lᵀ D L over the tree's dofs (CRBA + the sparse factorisation forward_dynamics uses).
 ///
@@ -305,8 +305,8 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   const Scalar t118 = t111 + (Scalar(0.25) * t108);
   const Scalar t119 = t111 - (Scalar(0.25) * t113);
   const Scalar t120 = Scalar(-0.447) - t52;
-  const Scalar t121 = Scalar(0.10778583333300001) + (((sin_r_wrist_yaw * t109) + (cos_r_wrist_yaw * t110)) + t115);
-  const Scalar t122 = t62 - Scalar(0.10680583333300002);
+  const Scalar t121 = Scalar(0.107785833333) + (((sin_r_wrist_yaw * t109) + (cos_r_wrist_yaw * t110)) + t115);
+  const Scalar t122 = t62 - Scalar(0.106805833333);
   const Scalar t123 = cos_r_elbow * t117;
   const Scalar t124 = sin_r_elbow * t117;
   const Scalar t125 = (cos_r_elbow * t62) - t124;
@@ -356,7 +356,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   const Scalar t168 = t121 - t166;
   const Scalar t169 = t162 + (Scalar(0.28) * t108);
   const Scalar t170 = Scalar(0.10778583333300001) + (((cos_r_elbow * (t124 + (cos_r_elbow * t116))) + (sin_r_elbow * (t123 + (sin_r_elbow * t122)))) - t166);
-  const Scalar t171 = Scalar(0.11002583333300002) + ((cos_r_elbow * t163) - (sin_r_elbow * t160));
+  const Scalar t171 = Scalar(0.110025833333) + ((cos_r_elbow * t163) - (sin_r_elbow * t160));
   const Scalar t172 = t121 - t165;
   const Scalar t173 = cos_r_shoulder_yaw * t161;
   const Scalar t174 = sin_r_shoulder_yaw * t161;
@@ -402,7 +402,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   const Scalar t213 = t212 + t212;
   const Scalar t214 = t208 - (Scalar(0.03) * t211);
   const Scalar t215 = t209 + (Scalar(0.03) * t205);
-  const Scalar t216 = t159 - Scalar(1.0805);
+  const Scalar t216 = t159 - Scalar(1.0804999999999998);
   const Scalar t217 = Scalar(0.295408333333) + (((cos_r_shoulder_yaw * ((cos_r_shoulder_yaw * t170) - t174)) - (sin_r_shoulder_yaw * (t173 - (sin_r_shoulder_yaw * t168)))) - t213);
   const Scalar t218 = Scalar(0.294755) + (((sin_r_shoulder_yaw * t206) + (cos_r_shoulder_yaw * t207)) - t213);
   const Scalar t219 = (cos_r_shoulder_yaw * t113) - t204;
@@ -496,7 +496,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   const Scalar t305 = Scalar(0.36) * (t295 - t296);
   const Scalar t306 = ((Scalar(0.9800665778412416) * t301) + (Scalar(0.19866933079506124) * t302)) - ((Scalar(0.36) * t294) - (Scalar(0.21) * t297));
   const Scalar t307 = Scalar(4.379874803165694) + (((cos_r_shoulder_pitch * (t265 + (cos_r_shoulder_pitch * t259))) + (sin_r_shoulder_pitch * (t266 + (sin_r_shoulder_pitch * t263)))) - ((t304 - t303) + (t304 + t305)));
-  const Scalar t308 = Scalar(2.4329332543543454) + (((Scalar(0.9800665778412416) * t299) + (Scalar(0.19866933079506124) * (t300 + (Scalar(0.19866933079506124) * t293)))) - (t305 - t303));
+  const Scalar t308 = Scalar(2.432933254354345) + (((Scalar(0.9800665778412416) * t299) + (Scalar(0.19866933079506124) * (t300 + (Scalar(0.19866933079506124) * t293)))) - (t305 - t303));
   const Scalar t309 = t286 + (sin_r_shoulder_pitch * t211);
   const Scalar t310 = (cos_r_shoulder_pitch * t211) - t284;
   const Scalar t311 = Scalar(0.19866933079506124) * t310;
@@ -638,8 +638,8 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   const Scalar t443 = t436 + (Scalar(0.25) * t433);
   const Scalar t444 = t436 - (Scalar(0.25) * t438);
   const Scalar t445 = Scalar(-0.447) - t377;
-  const Scalar t446 = Scalar(0.10778583333300001) + (((sin_l_wrist_yaw * t434) + (cos_l_wrist_yaw * t435)) + t440);
-  const Scalar t447 = t387 - Scalar(0.10680583333300002);
+  const Scalar t446 = Scalar(0.107785833333) + (((sin_l_wrist_yaw * t434) + (cos_l_wrist_yaw * t435)) + t440);
+  const Scalar t447 = t387 - Scalar(0.106805833333);
   const Scalar t448 = cos_l_elbow * t442;
   const Scalar t449 = sin_l_elbow * t442;
   const Scalar t450 = (cos_l_elbow * t387) - t449;
@@ -689,7 +689,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   const Scalar t493 = t446 - t491;
   const Scalar t494 = t487 + (Scalar(0.28) * t433);
   const Scalar t495 = Scalar(0.10778583333300001) + (((cos_l_elbow * (t449 + (cos_l_elbow * t441))) + (sin_l_elbow * (t448 + (sin_l_elbow * t447)))) - t491);
-  const Scalar t496 = Scalar(0.11002583333300002) + ((cos_l_elbow * t488) - (sin_l_elbow * t485));
+  const Scalar t496 = Scalar(0.110025833333) + ((cos_l_elbow * t488) - (sin_l_elbow * t485));
   const Scalar t497 = t446 - t490;
   const Scalar t498 = cos_l_shoulder_yaw * t486;
   const Scalar t499 = sin_l_shoulder_yaw * t486;
@@ -735,7 +735,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   const Scalar t538 = t537 + t537;
   const Scalar t539 = t533 - (Scalar(0.03) * t536);
   const Scalar t540 = t534 + (Scalar(0.03) * t530);
-  const Scalar t541 = t484 - Scalar(1.0805);
+  const Scalar t541 = t484 - Scalar(1.0804999999999998);
   const Scalar t542 = Scalar(0.295408333333) + (((cos_l_shoulder_yaw * ((cos_l_shoulder_yaw * t495) - t499)) - (sin_l_shoulder_yaw * (t498 - (sin_l_shoulder_yaw * t493)))) - t538);
   const Scalar t543 = Scalar(0.294755) + (((sin_l_shoulder_yaw * t531) + (cos_l_shoulder_yaw * t532)) - t538);
   const Scalar t544 = (cos_l_shoulder_yaw * t438) - t529;
@@ -956,8 +956,8 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   const Scalar t753 = (cos_waist_roll * t751) - (sin_waist_roll * t752);
   const Scalar t754 = Scalar(0.16) + ((t285 + t610) + t715);
   const Scalar t755 = Scalar(0.012) + t746;
-  const Scalar t756 = Scalar(1.0410841074056743) + ((cos_waist_roll * ((cos_waist_roll * t731) - t749)) - (sin_waist_roll * (t750 - (sin_waist_roll * t733))));
-  const Scalar t757 = Scalar(1.0401241074056744) + ((sin_waist_roll * t751) + (cos_waist_roll * t752));
+  const Scalar t756 = Scalar(1.0410841074056745) + ((cos_waist_roll * ((cos_waist_roll * t731) - t749)) - (sin_waist_roll * (t750 - (sin_waist_roll * t733))));
+  const Scalar t757 = Scalar(1.0401241074056746) + ((sin_waist_roll * t751) + (cos_waist_roll * t752));
   const Scalar t758 = sin_waist_pitch * t748;
   const Scalar t759 = (cos_waist_pitch * t728) + t758;
   const Scalar t760 = cos_waist_pitch * t748;
@@ -1345,7 +1345,7 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   const Scalar t1128 = t1126 - t1127;
   const Scalar t1129 = ((t788 - t789) + t952) + t1119;
   const Scalar t1130 = (t791 + t954) + t1121;
-  const Scalar t1131 = ((Scalar(2.0625) + t770) + t932) + t1099;
+  const Scalar t1131 = ((Scalar(2.062499999999999) + t770) + t932) + t1099;
   const Scalar t1132 = ((t795 - (Scalar(0.1) * t791)) + (t958 + ((Scalar(0.07) * t954) + (Scalar(0.09) * t932)))) + (t1125 - ((Scalar(0.09) * t1099) - (Scalar(0.07) * t1121)));
   const Scalar t1133 = (cos_l_hip_yaw * t1104) - t1120;
   const Scalar t1134 = t1117 + (sin_l_hip_yaw * t1104);
@@ -2592,4 +2592,4 @@ RBDC_HOST_DEVICE inline void mass_matrix_factor(const Scalar* q, Scalar* L, Scal
   D_inv[0] = Scalar(1) / t1975;
 }
 
-}  // namespace rbdc_gen::humanoid32::common::mass_matrix_factor_c2a0c2c2ba5e
+}  // namespace rbdc_gen::humanoid32::common::mass_matrix_factor_5297dc0941b0
