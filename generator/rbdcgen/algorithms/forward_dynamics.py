@@ -135,7 +135,7 @@ def packed_starts(parents):
 def factor_entries(robot):
     """How many entries packed_factor holds (at least one)."""
     parents = dof_parents(robot)
-    return max(sum(len(dof_ancestors(parents, i)) for i in range(robot.nv)), 1)
+    return max(sum(dof_depths(parents)), 1)
 
 
 def factor_outputs(L, inv_diag, parents):

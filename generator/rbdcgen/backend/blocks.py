@@ -78,9 +78,12 @@ def split(body, parameters, function_name, max_statements=MAX_STATEMENTS):
                 readers.setdefault(name, set()).add(block_of[i])
     place, size = _places(readers, defined)
     parts = []
-    passed = sorted(readers, key=lambda n: place[n])
+    read_in = [[] for _ in range(len(cuts) - 1)]  # per block, the passed names it reads, by place
+    for name in sorted(readers, key=lambda n: place[n]):
+        for b in readers[name]:
+            read_in[b].append(name)
     for b in range(len(cuts) - 1):
-        loads = [_load(name, defined[name][0], place[name]) for name in passed if b in readers[name]]
+        loads = [_load(name, defined[name][0], place[name]) for name in read_in[b]]
         stored = []
         used = set().union(*(_references(s) for s in loads), *references[cuts[b]:cuts[b + 1]])
         for statement in body[cuts[b]:cuts[b + 1]]:

@@ -84,14 +84,16 @@ def schedule(fn):
                   key=lambda n: (n.args[0].value, n.op == "cos"))
     temp_ids = set()
     size = {}  # operations in a node's inlined text
-    for n in order:
-        if n.op in ("const", "sym") or _is_joint_trig(n):
+    for n in order:  # (this runs for every node: no calls it can do without)
+        op = n.op
+        # a lane_get is read where used: its lane value stays live instead (one register, not one per
+        # lane), and no view's late extraction holds it to the end
+        if op == "const" or op == "sym" or op == "lane_get" or _is_joint_trig(n):
             size[n.id] = 0
             continue
-        if n.op == "lane_get":  # read where used: its lane value stays live instead (one register,
-            size[n.id] = 0      # not one per lane), and no view's late extraction holds it to the end
-            continue
-        inlined = 1 + sum([size[a.id] for a in n.args])
+        inlined = 1
+        for a in n.args:
+            inlined += size[a.id]
         while inlined > MAX_INLINE_OPS:
             largest = max(n.args, key=lambda a: size[a.id])  # give it its own statement
             temp_ids.add(largest.id)

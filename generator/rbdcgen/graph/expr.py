@@ -480,18 +480,24 @@ def absorb_negations(outputs):
         return None
 
     graph = outputs[0].graph if outputs else None
-    for node in order:
-        graph.label, graph.position = node.label, node.position  # rewrites stand where node stood
-        args = tuple(new[a.id] for a in node.args)
+    for node in order:  # (this runs for every node: no generators)
+        args = tuple([new[a.id] for a in node.args])
+        changed = False
+        for a, b in zip(args, node.args):
+            if a is not b:
+                changed = True
+                break
+        if node.op == "neg" or changed:
+            graph.label, graph.position = node.label, node.position  # rewrites stand where node stood
         rewritten = free_negation(args[0]) if node.op == "neg" else None
         if rewritten is not None:
             new[node.id] = rewritten
-        elif any(a is not b for a, b in zip(args, node.args)):
+        elif changed:
             new[node.id] = intern(node.op, args, node.value)
         else:
             new[node.id] = node
     if graph is not None:
-        graph.position = None
+        graph.label, graph.position = order[-1].label, None  # as after the last node's turn
     return [new[node.id] for node in outputs]
 
 

@@ -56,6 +56,8 @@ def limb_groups(robot):
     groups = []
 
     def search(body):
+        if len(robot.children[body]) == 1:  # a chain's link: no group here (and no O(depth) shape per link)
+            return search(robot.children[body][0])
         by_shape = {}
         for child in robot.children[body]:
             limb = tuple(sorted(robot.subtree[child]))

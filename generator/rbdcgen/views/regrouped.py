@@ -21,7 +21,7 @@ handed up: inverse dynamics 10 % more operations)."""
 
 from __future__ import annotations
 
-import functools
+import collections
 import itertools
 import sys
 
@@ -30,7 +30,12 @@ from ..graph import spatial as sp
 from ..graph.spatial import inertia_at_origin, snap_axis, snap_rotation
 
 
-@functools.lru_cache(maxsize=8)
+# The last few trees' parameters, by identity: a Robot's hash walks all its bodies and joints, and
+# the views ask once per body (a 200-body chain: 1.3 million hashes, a second of its generation).
+_KEPT = collections.OrderedDict()  # id(tree) -> (tree, parameters); holding the tree keeps its id
+KEPT_TREES = 8
+
+
 def body_parameters(tree):
     """((m, h, Ī), …) per body of the tree, floats: mass, first moment and rotational inertia about
     the body origin, body coordinates, after the regrouping that leaves fewer non-zeros to multiply
@@ -40,6 +45,15 @@ def body_parameters(tree):
     cancelled in the trunk (126 non-zeros every piece handed up, 138 by the local count; chain100,
     tilted, 1 582 and 699). Traced, the whole-tree count chose the fewer operations on every robot
     of the harness."""
+    kept = _KEPT.get(id(tree))
+    if kept is None:
+        kept = _KEPT[id(tree)] = (tree, _fewest_nonzeros(tree))
+        if len(_KEPT) > KEPT_TREES:
+            _KEPT.popitem(last=False)
+    return kept[1]
+
+
+def _fewest_nonzeros(tree):
     every = _regrouped(tree, lambda options: options[0])
     fewest = _regrouped(tree, lambda options: min(options, key=lambda option: option[0]))
     read = slice(0 if tree.floating_base else 1, None)  # a fixed root's inertia is never read
