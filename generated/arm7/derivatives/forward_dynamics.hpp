@@ -7,11 +7,11 @@
 // forward_dynamics for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   arm7/common/forward_dynamics_679b4b089db7.hpp
+//   arm7/common/forward_dynamics_14dc79ce7c7f.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_679b4b089db7.hpp"
+#include "arm7/common/forward_dynamics_14dc79ce7c7f.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -25,9 +25,9 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param a out 7x1: acceleration
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             667  501    5     0    14    0   1187
-/// schedule: scalar tree: 1187 arithmetic instructions, articulated-body algorithm 1313
-using ::rbdc_gen::arm7::common::forward_dynamics_679b4b089db7::forward_dynamics;
+///             645  473    5     0    14    0   1137
+/// schedule: scalar tree: 1137 arithmetic instructions, articulated-body algorithm 1251
+using ::rbdc_gen::arm7::common::forward_dynamics_14dc79ce7c7f::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

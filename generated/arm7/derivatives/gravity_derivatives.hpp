@@ -7,11 +7,11 @@
 // gravity_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   arm7/common/gravity_derivatives_e38d7a337ebd.hpp
+//   arm7/common/gravity_derivatives_8b066fbff17e.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/gravity_derivatives_e38d7a337ebd.hpp"
+#include "arm7/common/gravity_derivatives_8b066fbff17e.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::arm7::derivatives {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             147   86    0     0    10    5    248
 /// schedule: scalar tree: 248 arithmetic instructions, looped RNEA derivatives 1942 (cost 2709)
-using ::rbdc_gen::arm7::common::gravity_derivatives_e38d7a337ebd::gravity_derivatives;
+using ::rbdc_gen::arm7::common::gravity_derivatives_8b066fbff17e::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

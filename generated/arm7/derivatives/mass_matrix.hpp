@@ -7,11 +7,11 @@
 // mass_matrix for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   arm7/common/mass_matrix_14109eca399b.hpp
+//   arm7/common/mass_matrix_d72e8fc9a53d.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/mass_matrix_14109eca399b.hpp"
+#include "arm7/common/mass_matrix_d72e8fc9a53d.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -21,9 +21,9 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param M out 7x7: mass matrix, full symmetric
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             175  137    0     0    10    4    326
-/// schedule: scalar tree: 326 arithmetic instructions, looped CRBA 1484 (cost 2068)
-using ::rbdc_gen::arm7::common::mass_matrix_14109eca399b::mass_matrix;
+///             164  121    0     0    10    4    299
+/// schedule: scalar tree: 299 arithmetic instructions, looped CRBA 1484 (cost 2068)
+using ::rbdc_gen::arm7::common::mass_matrix_d72e8fc9a53d::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

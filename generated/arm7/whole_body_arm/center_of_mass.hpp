@@ -7,11 +7,11 @@
 // center_of_mass for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose center_of_mass is the same code:
-//   arm7/common/center_of_mass_a2568b24de03.hpp
+//   arm7/common/center_of_mass_c6b1584a5230.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/center_of_mass_a2568b24de03.hpp"
+#include "arm7/common/center_of_mass_c6b1584a5230.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::arm7::whole_body_arm {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             157   99    0     0    12    0    268
-using ::rbdc_gen::arm7::common::center_of_mass_a2568b24de03::center_of_mass;
+using ::rbdc_gen::arm7::common::center_of_mass_c6b1584a5230::center_of_mass;
 
 /// center_of_mass on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_force_term_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_term_derivatives is the same code:
-//   humanoid32/common/feet_force_term_derivatives_176579ee071b.hpp
+//   humanoid32/common/feet_force_term_derivatives_06fceaf552b5.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/feet_force_term_derivatives_176579ee071b.hpp"
+#include "humanoid32/common/feet_force_term_derivatives_06fceaf552b5.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -22,9 +22,9 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param dtau_e_dq out 38x38: ∂(Jᵀf)/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             1812  1298    0     0    46    0   3156
-/// schedule: scalar tree: 3156 arithmetic instructions, looped feet force terms 4839 (cost 12134)
-using ::rbdc_gen::humanoid32::common::feet_force_term_derivatives_176579ee071b::feet_force_term_derivatives;
+///             1671  1162    0     0    46    0   2879
+/// schedule: scalar tree: 2879 arithmetic instructions, looped feet force terms 4692 (cost 11987)
+using ::rbdc_gen::humanoid32::common::feet_force_term_derivatives_06fceaf552b5::feet_force_term_derivatives;
 
 /// feet_force_term_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_99b418b20b6a.hpp
+//   humanoid32/common/forward_dynamics_derivatives_a77a998f4cc8.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_99b418b20b6a.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_a77a998f4cc8.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -28,15 +28,15 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param da_df out 38x15: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations     mul     add  div  sqrt  trig  neg   total
-///             116705  105367   55     0    64  145  222336
+///             115470  104047   55     0    64  145  219781
 /// schedule: limb lanes and looped RNEA derivatives (M's factor and the terms traced with the
 ///   isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of fewer than 4
 ///   repeated to fill the lanes), ∂τ a loop over the bodies, the solve's right-hand sides
-///   in SIMD across columns): 63795 arithmetic instructions (cost 77967), scalar tree
-///   126140 (cost 297976), looped solve 66750 (cost 109274), limb lanes and a looped solve
-///   53167 (cost 92547), looped RNEA derivatives 69020 (cost 86012), looped CRBA 77074
-///   (cost 102403)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_99b418b20b6a::forward_dynamics_derivatives;
+///   in SIMD across columns): 63073 arithmetic instructions (cost 76426), scalar tree
+///   124427 (cost 293865), looped solve 64882 (cost 105306), limb lanes and a looped solve
+///   51916 (cost 89197), looped RNEA derivatives 68057 (cost 84216), looped CRBA 75761
+///   (cost 99767)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_a77a998f4cc8::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // gravity_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   humanoid32/common/gravity_derivatives_b93e12d65243.hpp
+//   humanoid32/common/gravity_derivatives_446c89dfd201.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/gravity_derivatives_b93e12d65243.hpp"
+#include "humanoid32/common/gravity_derivatives_446c89dfd201.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 1949 arithmetic
 ///   instructions, scalar tree 3390, looped RNEA derivatives 9856 (cost 13751)
-using ::rbdc_gen::humanoid32::common::gravity_derivatives_b93e12d65243::gravity_derivatives;
+using ::rbdc_gen::humanoid32::common::gravity_derivatives_446c89dfd201::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   humanoid32/common/inverse_dynamics_derivatives_154f9d6f4a21.hpp
+//   humanoid32/common/inverse_dynamics_derivatives_9de2e7c67fce.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/inverse_dynamics_derivatives_154f9d6f4a21.hpp"
+#include "humanoid32/common/inverse_dynamics_derivatives_9de2e7c67fce.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -26,9 +26,9 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// operations    mul    add  div  sqrt  trig  neg  total
 ///             32427  28524    0     0    64   30  61045
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
-///   21542 arithmetic instructions (cost 30112), scalar tree 22800 (cost 49960), limb lanes
-///   13231 (cost 36985)
-using ::rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_154f9d6f4a21::inverse_dynamics_derivatives;
+///   21542 arithmetic instructions (cost 30112), scalar tree 21684 (cost 47282), limb lanes
+///   12586 (cost 34775)
+using ::rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_9de2e7c67fce::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // bias for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   humanoid32/common/bias_5446a34618b9.hpp
+//   humanoid32/common/bias_36a80ac1b392.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/bias_5446a34618b9.hpp"
+#include "humanoid32/common/bias_36a80ac1b392.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -22,12 +22,12 @@ namespace rbdc_gen::humanoid32::full {
 /// @param cg out 38x1: quadratic velocity and gravity terms c + g
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             3138  2238    0     0    64    0   5440
+///             3030  2130    0     0    64    0   5224
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
-///   fewer than 4 repeated to fill the lanes); the rest scalar): 1883 arithmetic
-///   instructions, scalar tree 3074, limb lanes with the pairs' spare lanes used 1778 (cost
-///   2123)
-using ::rbdc_gen::humanoid32::common::bias_5446a34618b9::bias;
+///   fewer than 4 repeated to fill the lanes); the rest scalar): 1811 arithmetic
+///   instructions, scalar tree 2954, limb lanes with the pairs' spare lanes used 1722 (cost
+///   2067)
+using ::rbdc_gen::humanoid32::common::bias_36a80ac1b392::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

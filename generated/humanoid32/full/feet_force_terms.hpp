@@ -7,11 +7,11 @@
 // feet_force_terms for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_terms is the same code:
-//   humanoid32/common/feet_force_terms_4e294d0a442d.hpp
+//   humanoid32/common/feet_force_terms_9d0f78492abd.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/feet_force_terms_4e294d0a442d.hpp"
+#include "humanoid32/common/feet_force_terms_9d0f78492abd.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::humanoid32::full {
 /// @param tau_e out 38x1: τ_e = Jᵀ f
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             522  320    0     0    64    8    914
-using ::rbdc_gen::humanoid32::common::feet_force_terms_4e294d0a442d::feet_force_terms;
+///             490  294    0     0    64   10    858
+using ::rbdc_gen::humanoid32::common::feet_force_terms_9d0f78492abd::feet_force_terms;
 
 /// feet_force_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   humanoid32/common/inverse_dynamics_22175d7b4ab1.hpp
+//   humanoid32/common/inverse_dynamics_eed26b946d9c.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/inverse_dynamics_22175d7b4ab1.hpp"
+#include "humanoid32/common/inverse_dynamics_eed26b946d9c.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -23,12 +23,12 @@ namespace rbdc_gen::humanoid32::full {
 /// @param tau out 38x1: generalised forces M a + c + g
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             3190  2354    0     0    64    0   5608
+///             3082  2246    0     0    64    0   5392
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
-///   fewer than 4 repeated to fill the lanes); the rest scalar): 1955 arithmetic
-///   instructions, scalar tree 3176, limb lanes with the pairs' spare lanes used 1847 (cost
-///   2192)
-using ::rbdc_gen::humanoid32::common::inverse_dynamics_22175d7b4ab1::inverse_dynamics;
+///   fewer than 4 repeated to fill the lanes); the rest scalar): 1883 arithmetic
+///   instructions, scalar tree 3056, limb lanes with the pairs' spare lanes used 1791 (cost
+///   2136)
+using ::rbdc_gen::humanoid32::common::inverse_dynamics_eed26b946d9c::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   humanoid32/common/mass_matrix_a1c7843ea1e7.hpp
+//   humanoid32/common/mass_matrix_aef696a974ae.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/mass_matrix_a1c7843ea1e7.hpp"
+#include "humanoid32/common/mass_matrix_aef696a974ae.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -21,13 +21,13 @@ namespace rbdc_gen::humanoid32::full {
 /// @param M out 38x38: mass matrix, full symmetric
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             3100  2087    0     0    64   10   5261
+///             2922  1869    0     0    64   10   4865
 /// schedule: limb lanes with the pairs' spare lanes used (the isomorphic limbs in SIMD lanes: 2 of
 ///   pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes); the rest
 ///   scalar; a pair body's column of M in lanes 0-1, a child's in 2-3, so that one walk to
-///   the root serves both): 1689 arithmetic instructions, scalar tree 3483 (cost 3599),
-///   limb lanes 1985, looped CRBA 7746 (cost 10804)
-using ::rbdc_gen::humanoid32::common::mass_matrix_a1c7843ea1e7::mass_matrix;
+///   the root serves both): 1554 arithmetic instructions, scalar tree 3155, limb lanes
+///   1796, looped CRBA 7746 (cost 10804)
+using ::rbdc_gen::humanoid32::common::mass_matrix_aef696a974ae::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix_factor for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   humanoid32/common/mass_matrix_factor_5297dc0941b0.hpp
+//   humanoid32/common/mass_matrix_factor_78c7eef0fb55.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/mass_matrix_factor_5297dc0941b0.hpp"
+#include "humanoid32/common/mass_matrix_factor_78c7eef0fb55.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -23,10 +23,10 @@ namespace rbdc_gen::humanoid32::full {
 /// @param D_inv out 38x1: their inverses, so that a solve multiplies
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             4049  3161   33     0    64   18   7325
-/// schedule: scalar tree: 7325 arithmetic instructions (cost 12820), looped factor 7760 (cost
-///   18569), looped CRBA 12023 (cost 25773)
-using ::rbdc_gen::humanoid32::common::mass_matrix_factor_5297dc0941b0::mass_matrix_factor;
+///             3897  2985   33     0    64   18   6997
+/// schedule: scalar tree: 6997 arithmetic instructions (cost 12033), looped factor 7432 (cost
+///   18124), looped CRBA 12023 (cost 25773)
+using ::rbdc_gen::humanoid32::common::mass_matrix_factor_78c7eef0fb55::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_closed_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   humanoid32/common/osc_closed_chain_e09efd1f5b2c.hpp
+//   humanoid32/common/osc_closed_chain_fdd28474fbf9.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_closed_chain_e09efd1f5b2c.hpp"
+#include "humanoid32/common/osc_closed_chain_fdd28474fbf9.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -25,10 +25,10 @@ namespace rbdc_gen::humanoid32::full {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             7506  5426   28     0    64    9  13033
-/// schedule: scalar tree: 13033 arithmetic instructions (cost 26519), looped operational-space
-///   columns 18887 (cost 33063)
-using ::rbdc_gen::humanoid32::common::osc_closed_chain_e09efd1f5b2c::osc_closed_chain;
+///             7220  5126   28     0    64    9  12447
+/// schedule: scalar tree: 12447 arithmetic instructions (cost 25113), looped operational-space
+///   columns 18436 (cost 31980)
+using ::rbdc_gen::humanoid32::common::osc_closed_chain_fdd28474fbf9::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_open_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   humanoid32/common/osc_open_chain_16c72c15951f.hpp
+//   humanoid32/common/osc_open_chain_507af59dc66c.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_open_chain_16c72c15951f.hpp"
+#include "humanoid32/common/osc_open_chain_507af59dc66c.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -25,10 +25,10 @@ namespace rbdc_gen::humanoid32::full {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             7706  5536   27     0    64   13  13346
-/// schedule: scalar tree: 13346 arithmetic instructions (cost 27270), looped operational-space
-///   columns 18843 (cost 32957)
-using ::rbdc_gen::humanoid32::common::osc_open_chain_16c72c15951f::osc_open_chain;
+///             7420  5236   27     0    64   13  12760
+/// schedule: scalar tree: 12760 arithmetic instructions (cost 25864), looped operational-space
+///   columns 18392 (cost 31875)
+using ::rbdc_gen::humanoid32::common::osc_open_chain_507af59dc66c::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // quadratic_velocity_terms for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose quadratic_velocity_terms is the same code:
-//   humanoid32/common/quadratic_velocity_terms_3cd8478e0712.hpp
+//   humanoid32/common/quadratic_velocity_terms_11d5620efdc9.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/quadratic_velocity_terms_3cd8478e0712.hpp"
+#include "humanoid32/common/quadratic_velocity_terms_11d5620efdc9.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::humanoid32::full {
 /// @param c out 38x1: Coriolis and centrifugal terms
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             1737  1254    0     0    64    0   3055
-using ::rbdc_gen::humanoid32::common::quadratic_velocity_terms_3cd8478e0712::quadratic_velocity_terms;
+///             1677  1194    0     0    64    0   2935
+using ::rbdc_gen::humanoid32::common::quadratic_velocity_terms_11d5620efdc9::quadratic_velocity_terms;
 
 /// quadratic_velocity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -1,11 +1,13 @@
 """Operation counts of a compilation, generated vs generic, as a readable table or as JSON, with the
 generated code's critical path (graph/latency.py: the cycles no schedule of it can beat in one call).
 A derivative quantity is also compared with its primal function (derivatives.PRIMAL, traced for the
-same robot and scene): the targets of issue 12 are ratios to one primal call."""
+same robot and scene, on the view trace_scene traces: views/origins.py): the targets of issue 12 are
+ratios to one primal call."""
 from ..passes.differentiate import PRIMAL
 from ..graph.flops import count_ops, generic_ops
 from ..graph.latency import critical_path
 from ..passes.trace import trace_function
+from ..views import origins
 
 KINDS = ("mul", "add", "div", "sqrt", "trig", "neg", "total")
 
@@ -20,7 +22,8 @@ def rows(compilation) -> list[dict]:
         if f.name in PRIMAL:
             name = PRIMAL[f.name]
             if name not in primal_counts:
-                primal_counts[name] = count_ops(trace_function(compilation.robot, compilation.scene, name))
+                primal = trace_function(origins.slid(compilation.robot), compilation.scene, name)
+                primal_counts[name] = count_ops(primal)
             row["primal"] = {"function": name, "ops": primal_counts[name]}
         result.append(row)
     return result
