@@ -56,6 +56,14 @@ def max_relative_error(got, want):
     return max(abs(g - w) for g, w in zip(got, want)) / scale
 
 
+def assert_agree(test, got, want, tolerance=1e-12, **labels):
+    """Each output of `want` (evaluate's {name: values}) within `tolerance` of `got`'s
+    (max_relative_error), one subTest per output with `labels`."""
+    for output in want:
+        with test.subTest(output=output, **labels):
+            test.assertLess(max_relative_error(got[output], want[output]), tolerance)
+
+
 _CONSTANT = re.compile(r"Scalar\([^)]*\)")
 # joint_trig.sin[i] / .cos[i]: one trig operation each (joint_sincos computes them all at once).
 _OPERATOR = re.compile(r" [-+*/] |(?:^|[(\s])-(?=[\w(])|\b(?:sin|cos|sqrt)\(|\bjoint_trig\.(?:sin|cos)\[")

@@ -11,7 +11,7 @@ import unittest
 
 import mini_cheetah
 from mini_cheetah import model_tool, skip_reason
-from numeric_check import evaluate, max_relative_error, random_state
+from numeric_check import assert_agree, evaluate, random_state
 from rbdcgen.frontend.ir import load_ir
 from rbdcgen.frontend.random_robot import random_actuated_topology, random_urdf
 from rbdcgen.frontend.scene import Scene
@@ -80,9 +80,7 @@ class SlidOrigins(unittest.TestCase):
             for name in names:
                 got = evaluate(trace_function(moved, scene, name), state)
                 want = evaluate(trace_function(robot, scene, name), state)
-                for output in want:
-                    with self.subTest(robot=label, function=name, output=output):
-                        self.assertLess(max_relative_error(got[output], want[output]), 1e-12)
+                assert_agree(self, got, want, robot=label, function=name)
 
 
 if __name__ == "__main__":

@@ -8,7 +8,7 @@ from unittest import mock
 
 import mini_cheetah
 from mini_cheetah import skip_reason
-from numeric_check import evaluate, max_relative_error, random_state
+from numeric_check import assert_agree, evaluate, random_state
 from rbdcgen.frontend.random_robot import random_urdf
 from rbdcgen.frontend.scene import Scene
 from rbdcgen.graph.flops import count_ops
@@ -63,9 +63,7 @@ class Regrouping(unittest.TestCase):
                 got = evaluate(trace_function(robot, scene, name), state)
                 with mock.patch.object(regrouped, "body_parameters", as_given):
                     want = evaluate(trace_function(robot, scene, name), state)
-                for output in want:
-                    with self.subTest(seed=seed, function=name, output=output):
-                        self.assertLess(max_relative_error(got[output], want[output]), 1e-12)
+                assert_agree(self, got, want, seed=seed, function=name)
 
 
 if __name__ == "__main__":
