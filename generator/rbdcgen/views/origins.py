@@ -8,15 +8,19 @@ it, r_i' = r_i − d_λ a_λ + d_i E_Tᵀ a_i, and everything given in body i's 
 coordinates, masses and every world quantity are unchanged, so are M, c, g, τ, q̈, their derivatives,
 the feet's and frames' poses, velocities and Jacobians. This is the freedom Denavit and Hartenberg's
 convention spends on placing each origin on the common normal: where an axis points along a
-placement, one entry of it (or of a child's) can be made zero. iiwa14's placements (0, 0, 0.2025)
-with its axes alternating z and y become, after one slide, (0, 0, 0) and the child's (0, 0.2045, 0)
-stays: 7 non-zero translation entries become 3, its inverse dynamics 11 % fewer operations.
+placement, one entry of it (or of a child's) can be made zero. iiwa14's placements (0, 0, 0.1575),
+(0, 0, 0.2025), (0, 0.2045, 0), (0, 0, 0.2155), … along axes that alternate between its links' z and
+y become 0, (0, 0, 0.36), 0, (0, 0, 0.42), 0, (0, 0, 0.4), 0: 7 non-zero translation entries become 3,
+its inverse dynamics 11 % fewer operations.
 
 Each d_i is chosen from the root outward among the values that zero an entry of the joint's own
-placement or of a child's (or 0), by the fewest non-zero entries they leave in both, the smallest
-slide on a tie; a slide never adds a non-zero placement entry over the tree. The body's inertia about
-its new origin changes too (its first moment along a, which views/regrouped.py hands to the parent
-anyway, and two products of inertia); the count leaves it out."""
+placement, of a child's or of a foot's on the body (or 0), by the fewest non-zero entries they leave
+in all of them, the smallest slide on a tie; a slide never adds a non-zero entry to them over the
+tree. (A foot on the joint axis counts: slid off the origin it would cost the feet's functions a
+lever arm whose torque about the axis is a round-off residue, not an exact zero.) The body's inertia
+about its new origin changes too (its first moment along a, which views/regrouped.py hands to the
+parent anyway, and two products of inertia), and so do the frames at its origin, which only the
+frame functions read; the count leaves both out."""
 
 from __future__ import annotations
 
@@ -67,13 +71,14 @@ def _slides(robot):
         if slides[parent]:
             own = _shifted(own, snap_axis(robot.joints[parent].axis), -slides[parent])
         along, axis = _axis_in_parent(joint), snap_axis(joint.axis)
-        children = [robot.joints[c].translation for c in robot.children[i]]
+        carried = [robot.joints[c].translation for c in robot.children[i]]  # in body i's coordinates
+        carried += [foot.offset for foot in robot.feet if foot.body == i]
         candidates = {0.0}
         candidates.update(-x / u for x, u in zip(own, along) if u != 0.0)
-        candidates.update(x / a for child in children for x, a in zip(child, axis) if a != 0.0)
+        candidates.update(x / a for point in carried for x, a in zip(point, axis) if a != 0.0)
 
         def left(d):
-            entries = _shifted(own, along, d) + tuple(x for child in children for x in _shifted(child, axis, -d))
+            entries = _shifted(own, along, d) + tuple(x for point in carried for x in _shifted(point, axis, -d))
             return sum(x != 0.0 for x in entries), abs(d)
 
         slides[i] = min(sorted(candidates), key=left)

@@ -1,7 +1,7 @@
 """Origins slid along the joint axes (views/origins.py): arm7's placements lose non-zero entries and its
 dynamics operations; on random robots (with mimic couplings, with geared rotors) and arm7 (frames, a
-foot) the traced quantities equal those traced on the robot as given, and no placement gains a
-non-zero."""
+foot) the traced quantities equal those traced on the robot as given, and no placement or foot offset
+gains a non-zero."""
 
 import json
 import os
@@ -26,7 +26,10 @@ FRAMES = ("frame_placements", "frame_jacobians")  # for a scene with frames
 
 
 def placement_nonzeros(robot):
-    return sum(x != 0.0 for joint in robot.joints[1:] for x in joint.translation)
+    """Non-zero entries of the joints' placements and the feet's offsets (a foot slid along the axis it
+    sits on would cost a lever arm whose torque about that axis is round-off, not an exact zero)."""
+    return (sum(x != 0.0 for joint in robot.joints[1:] for x in joint.translation)
+            + sum(x != 0.0 for foot in robot.feet for x in foot.offset))
 
 
 def operations(robot, name):
@@ -45,11 +48,13 @@ def actuated(seed, floating):
 
 
 def cases():
-    """(label, robot, scene): random robots (two with mimic couplings, two with rotors), arm7 with all
-    its frames."""
+    """(label, robot, scene): random robots (two with mimic couplings, two with rotors, one with a foot
+    on its joint axis), arm7 with all its frames."""
     for seed in range(4):
         base = "floating" if seed % 2 == 0 else "fixed"
         yield "random %d" % seed, load(random_urdf(seed, max_links=8, mimic=seed >= 2), base), Scene(base=base)
+    # one link whose foot sits at its origin, on the joint axis: sliding it would move the foot
+    yield "random 19", load(random_urdf(19), "fixed"), Scene(base="fixed")
     for seed in range(2):
         robot = actuated(seed, seed == 0)
         yield "actuated %d" % seed, robot, Scene(base="floating" if robot.floating_base else "fixed")
@@ -67,7 +72,7 @@ class SlidOrigins(unittest.TestCase):
             with self.subTest(function=name):
                 self.assertLess(operations(moved, name), operations(robot, name))
 
-    def test_no_placement_gains_a_nonzero(self):
+    def test_no_placement_or_foot_gains_a_nonzero(self):
         for label, robot, _ in cases():
             with self.subTest(robot=label):
                 self.assertLessEqual(placement_nonzeros(origins.slid(robot)), placement_nonzeros(robot))
