@@ -15,6 +15,7 @@ KINDS = ("mul", "add", "div", "sqrt", "trig", "neg", "total")
 def rows(compilation) -> list[dict]:
     result = []
     primal_counts = {}
+    traced = origins.slid(compilation.robot)  # the robot trace_scene traced the functions on
     for f in compilation.functions:
         row = {"function": f.name, "generated": count_ops(f), "critical_path": critical_path(f),
                "looped": f.solve is not None,
@@ -22,8 +23,7 @@ def rows(compilation) -> list[dict]:
         if f.name in PRIMAL:
             name = PRIMAL[f.name]
             if name not in primal_counts:
-                primal = trace_function(origins.slid(compilation.robot), compilation.scene, name)
-                primal_counts[name] = count_ops(primal)
+                primal_counts[name] = count_ops(trace_function(traced, compilation.scene, name))
             row["primal"] = {"function": name, "ops": primal_counts[name]}
         result.append(row)
     return result

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import functools
 import math
+import sys
 
 from . import expr as ex
 
@@ -189,6 +190,18 @@ def _snap(x):
     if abs(abs(x) - 1.0) <= _SNAP_TOLERANCE:
         return math.copysign(1.0, x)
     return x
+
+
+# A sum within this many ulp of its largest term is a cancellation that means zero: a left and a right
+# limb's inertia pieces meeting in the trunk (views/regrouped.py), a placement slid by its own length
+# (views/origins.py). Left as 1e-17, it would cost a multiplication each.
+ROUND_OFF_ULPS = 8
+
+
+def snapped_sum(values):
+    """The floats' sum, or 0.0 where it is within ROUND_OFF_ULPS ulp of the largest of them."""
+    total = sum(values)
+    return 0.0 if abs(total) <= ROUND_OFF_ULPS * sys.float_info.epsilon * max(map(abs, values)) else total
 
 
 def snap_rotation(rows):

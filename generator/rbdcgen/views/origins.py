@@ -24,14 +24,9 @@ frame functions read; the count leaves both out."""
 
 from __future__ import annotations
 
-import sys
 from dataclasses import replace
 
-from ..graph.spatial import snap_axis, snap_rotation
-
-# A sum within this many ulp of its larger term is the zero a slide meant (0.2025 − 0.2025 through a
-# rotation's snapped entries, or a tilted axis's quotient): it would cost a multiplication each.
-ROUND_OFF_ULPS = 8
+from ..graph.spatial import snap_axis, snap_rotation, snapped_sum
 
 
 def slid(robot):
@@ -40,8 +35,8 @@ def slid(robot):
     if not any(slides):
         return robot
 
-    def moved(i, point):  # a point given in body i's coordinates, in its slid ones
-        return _shifted(point, snap_axis(robot.joints[i].axis), -slides[i]) if slides[i] else tuple(point)
+    def moved(i, point):
+        return _moved(robot, slides, i, point)
 
     joints = [robot.joints[0]]
     for i, joint in enumerate(robot.joints[1:], start=1):
@@ -66,10 +61,7 @@ def _slides(robot):
         joint = robot.joints[i]
         if joint.type not in ("revolute", "prismatic"):
             continue
-        parent = robot.parent[i]
-        own = joint.translation
-        if slides[parent]:
-            own = _shifted(own, snap_axis(robot.joints[parent].axis), -slides[parent])
+        own = _moved(robot, slides, robot.parent[i], joint.translation)
         along, axis = _axis_in_parent(joint), snap_axis(joint.axis)
         carried = [robot.joints[c].translation for c in robot.children[i]]  # in body i's coordinates
         carried += [foot.offset for foot in robot.feet if foot.body == i]
@@ -85,6 +77,11 @@ def _slides(robot):
     return slides
 
 
+def _moved(robot, slides, i, point):
+    """A point given in body i's coordinates, in its slid ones."""
+    return _shifted(point, snap_axis(robot.joints[i].axis), -slides[i]) if slides[i] else tuple(point)
+
+
 def _axis_in_parent(joint):
     """The joint axis in the parent's coordinates, E_Tᵀ a."""
     rotation, axis = snap_rotation(joint.rotation), snap_axis(joint.axis)
@@ -92,10 +89,6 @@ def _axis_in_parent(joint):
 
 
 def _shifted(point, direction, d):
-    """point + d · direction, entry by entry, a round-off residue (ROUND_OFF_ULPS) made the zero it
-    stands for."""
-    def entry(x, u):
-        total = x + d * u
-        return 0.0 if abs(total) <= ROUND_OFF_ULPS * sys.float_info.epsilon * max(abs(x), abs(d * u)) else total
-
-    return tuple(entry(x, u) for x, u in zip(point, direction))
+    """point + d · direction, entry by entry (spatial.snapped_sum: 0.2025 − 0.2025 through a rotation's
+    snapped entries, or a tilted axis's quotient, is the zero a slide meant)."""
+    return tuple(snapped_sum([x, d * u]) for x, u in zip(point, direction))

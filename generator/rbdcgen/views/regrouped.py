@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import collections
 import itertools
-import sys
 
 from ..graph import expr as ex
 from ..graph import spatial as sp
@@ -130,19 +129,11 @@ def _cost(parameters):
             + 2 * sum(ibar[r][c] != 0.0 for r in range(3) for c in range(r + 1, 3)))
 
 
-# A sum within this many ulp of its largest term is round-off: the pieces of a left and a right limb
-# cancel in the trunk up to 1e-17, which would cost a multiplication each (humanoid32's bias 12 more
-# operations, Solo12's ID 16).
-ROUND_OFF_ULPS = 8
-
-
 def _sum(terms):
-    """The parameters' sum, entry by entry, a round-off residue (ROUND_OFF_ULPS) made the zero it
-    stands for."""
-    def entry(values):
-        total = sum(values)
-        return 0.0 if abs(total) <= ROUND_OFF_ULPS * sys.float_info.epsilon * max(map(abs, values)) else total
-
+    """The parameters' sum, entry by entry (spatial.snapped_sum: the pieces of a left and a right limb
+    cancel in the trunk to an exact zero; as 1e-17 they cost humanoid32's bias 12 operations, Solo12's
+    ID 16)."""
+    entry = sp.snapped_sum
     return (entry([t[0] for t in terms]), tuple(entry([t[1][k] for t in terms]) for k in range(3)),
             _rows([[entry([t[2][r][c] for t in terms]) for c in range(3)] for r in range(3)]))
 
