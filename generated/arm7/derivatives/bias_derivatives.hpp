@@ -7,11 +7,11 @@
 // bias_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   arm7/common/bias_derivatives_1a05395d1e84.hpp
+//   arm7/common/bias_derivatives_9a260a322ded.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/bias_derivatives_1a05395d1e84.hpp"
+#include "arm7/common/bias_derivatives_9a260a322ded.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -23,9 +23,9 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param dbias_dv out 7x7: ∂c/∂v
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             1271  1074    0     0    12    8   2365
-/// schedule: scalar tree: 2365 arithmetic instructions, looped RNEA derivatives 4021 (cost 5620)
-using ::rbdc_gen::arm7::common::bias_derivatives_1a05395d1e84::bias_derivatives;
+///             1245  1061    0     0    12   10   2328
+/// schedule: scalar tree: 2328 arithmetic instructions, looped RNEA derivatives 4019 (cost 5618)
+using ::rbdc_gen::arm7::common::bias_derivatives_9a260a322ded::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

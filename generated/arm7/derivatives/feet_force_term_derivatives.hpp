@@ -7,11 +7,11 @@
 // feet_force_term_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_term_derivatives is the same code:
-//   arm7/common/feet_force_term_derivatives_8c89a0d0503b.hpp
+//   arm7/common/feet_force_term_derivatives_5145d525c3b3.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/feet_force_term_derivatives_8c89a0d0503b.hpp"
+#include "arm7/common/feet_force_term_derivatives_5145d525c3b3.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -22,9 +22,9 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param dtau_e_dq out 7x7: ∂(Jᵀf)/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             197  117    0     0    12    3    329
-/// schedule: scalar tree: 329 arithmetic instructions, looped feet force terms 459 (cost 1002)
-using ::rbdc_gen::arm7::common::feet_force_term_derivatives_8c89a0d0503b::feet_force_term_derivatives;
+///             191  115    0     0    12    3    321
+/// schedule: scalar tree: 321 arithmetic instructions, looped feet force terms 451 (cost 994)
+using ::rbdc_gen::arm7::common::feet_force_term_derivatives_5145d525c3b3::feet_force_term_derivatives;
 
 /// feet_force_term_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

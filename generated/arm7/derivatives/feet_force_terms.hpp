@@ -7,11 +7,11 @@
 // feet_force_terms for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_terms is the same code:
-//   arm7/common/feet_force_terms_811ca4e4fdac.hpp
+//   arm7/common/feet_force_terms_2ef72589a8cf.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/feet_force_terms_811ca4e4fdac.hpp"
+#include "arm7/common/feet_force_terms_2ef72589a8cf.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param tau_e out 7x1: τ_e = Jᵀ f
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///              86   44    0     0    14    1    145
-using ::rbdc_gen::arm7::common::feet_force_terms_811ca4e4fdac::feet_force_terms;
+///              76   40    0     0    14    1    131
+using ::rbdc_gen::arm7::common::feet_force_terms_2ef72589a8cf::feet_force_terms;
 
 /// feet_force_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

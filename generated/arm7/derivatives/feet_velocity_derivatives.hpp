@@ -7,11 +7,11 @@
 // feet_velocity_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_velocity_derivatives is the same code:
-//   arm7/common/feet_velocity_derivatives_20e61919870d.hpp
+//   arm7/common/feet_velocity_derivatives_d6955c64bf53.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/feet_velocity_derivatives_20e61919870d.hpp"
+#include "arm7/common/feet_velocity_derivatives_d6955c64bf53.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param dpdot_dq out 3x7: ∂ṗ/∂q, rows 3k + r: foot k, world axis r; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             205  157    0     0    12    2    376
-using ::rbdc_gen::arm7::common::feet_velocity_derivatives_20e61919870d::feet_velocity_derivatives;
+///             199  155    0     0    12    2    368
+using ::rbdc_gen::arm7::common::feet_velocity_derivatives_d6955c64bf53::feet_velocity_derivatives;
 
 /// feet_velocity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

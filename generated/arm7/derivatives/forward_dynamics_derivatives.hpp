@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_788f7f050e7d.hpp
+//   arm7/common/forward_dynamics_derivatives_8d84d82a0f57.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_788f7f050e7d.hpp"
+#include "arm7/common/forward_dynamics_derivatives_8d84d82a0f57.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -28,11 +28,11 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param da_df out 7x3: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2977  2535    5     0    14   18   5549
-/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 3911 arithmetic
-///   instructions, scalar tree 5149 (cost 7598), looped RNEA derivatives 6012 (cost 6420),
-///   looped CRBA 7804 (cost 9354)
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_788f7f050e7d::forward_dynamics_derivatives;
+///             2932  2516    5     0    14   16   5483
+/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 3845 arithmetic
+///   instructions, scalar tree 5087 (cost 7449), looped RNEA derivatives 5974 (cost 6382),
+///   looped CRBA 7802 (cost 9352)
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_8d84d82a0f57::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

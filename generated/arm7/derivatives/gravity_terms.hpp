@@ -7,11 +7,11 @@
 // gravity_terms for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_terms is the same code:
-//   arm7/common/gravity_terms_084cd34cb1c4.hpp
+//   arm7/common/gravity_terms_bdf94cdbb8d0.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/gravity_terms_084cd34cb1c4.hpp"
+#include "arm7/common/gravity_terms_bdf94cdbb8d0.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -21,8 +21,8 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param g out 7x1: gravity terms
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///              48   26    0     0    10    1     85
-using ::rbdc_gen::arm7::common::gravity_terms_084cd34cb1c4::gravity_terms;
+///              48   27    0     0    10    1     86
+using ::rbdc_gen::arm7::common::gravity_terms_bdf94cdbb8d0::gravity_terms;
 
 /// gravity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   arm7/common/inverse_dynamics_derivatives_2c0318a87ede.hpp
+//   arm7/common/inverse_dynamics_derivatives_c72816fe7f3f.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/inverse_dynamics_derivatives_2c0318a87ede.hpp"
+#include "arm7/common/inverse_dynamics_derivatives_c72816fe7f3f.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -24,9 +24,9 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param dtau_dv out 7x7: ∂τ/∂v
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             1294  1099    0     0    12    8   2413
-/// schedule: scalar tree: 2413 arithmetic instructions, looped RNEA derivatives 4063 (cost 5679)
-using ::rbdc_gen::arm7::common::inverse_dynamics_derivatives_2c0318a87ede::inverse_dynamics_derivatives;
+///             1268  1086    0     0    12   10   2376
+/// schedule: scalar tree: 2376 arithmetic instructions, looped RNEA derivatives 4061 (cost 5677)
+using ::rbdc_gen::arm7::common::inverse_dynamics_derivatives_c72816fe7f3f::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

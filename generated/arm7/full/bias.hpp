@@ -7,11 +7,11 @@
 // bias for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   arm7/common/bias_b3df6e6694da.hpp
+//   arm7/common/bias_9e5a9cb3051d.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/bias_b3df6e6694da.hpp"
+#include "arm7/common/bias_9e5a9cb3051d.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::arm7::full {
 /// @param cg out 7x1: quadratic velocity and gravity terms c + g
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             320  227    0     0    12    1    560
-using ::rbdc_gen::arm7::common::bias_b3df6e6694da::bias;
+///             314  227    0     0    12    1    554
+using ::rbdc_gen::arm7::common::bias_9e5a9cb3051d::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_jacobian for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_jacobian is the same code:
-//   arm7/common/feet_jacobian_22d135a8869b.hpp
+//   arm7/common/feet_jacobian_4a382f97b553.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/feet_jacobian_22d135a8869b.hpp"
+#include "arm7/common/feet_jacobian_4a382f97b553.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -21,8 +21,8 @@ namespace rbdc_gen::arm7::full {
 /// @param J out 3x7: feet Jacobian, world-frame foot velocities from v
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             102   62    0     0    12    4    180
-using ::rbdc_gen::arm7::common::feet_jacobian_22d135a8869b::feet_jacobian;
+///              96   60    0     0    12    4    172
+using ::rbdc_gen::arm7::common::feet_jacobian_4a382f97b553::feet_jacobian;
 
 /// feet_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   arm7/common/forward_dynamics_14dc79ce7c7f.hpp
+//   arm7/common/forward_dynamics_cf9c6bc0298c.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/forward_dynamics_14dc79ce7c7f.hpp"
+#include "arm7/common/forward_dynamics_cf9c6bc0298c.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -25,9 +25,9 @@ namespace rbdc_gen::arm7::full {
 /// @param a out 7x1: acceleration
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             645  473    5     0    14    0   1137
-/// schedule: scalar tree: 1137 arithmetic instructions, articulated-body algorithm 1251
-using ::rbdc_gen::arm7::common::forward_dynamics_14dc79ce7c7f::forward_dynamics;
+///             627  467    5     0    14    0   1113
+/// schedule: scalar tree: 1113 arithmetic instructions, articulated-body algorithm 1261
+using ::rbdc_gen::arm7::common::forward_dynamics_cf9c6bc0298c::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   arm7/common/inverse_dynamics_b5abc1b4eaf7.hpp
+//   arm7/common/inverse_dynamics_abeb8230d99f.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/inverse_dynamics_b5abc1b4eaf7.hpp"
+#include "arm7/common/inverse_dynamics_abeb8230d99f.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::arm7::full {
 /// @param tau out 7x1: generalised forces M a + c + g
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             329  241    0     0    12    1    583
-using ::rbdc_gen::arm7::common::inverse_dynamics_b5abc1b4eaf7::inverse_dynamics;
+///             323  241    0     0    12    1    577
+using ::rbdc_gen::arm7::common::inverse_dynamics_abeb8230d99f::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   arm7/common/mass_matrix_d72e8fc9a53d.hpp
+//   arm7/common/mass_matrix_f2db9d9f23d7.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/mass_matrix_d72e8fc9a53d.hpp"
+#include "arm7/common/mass_matrix_f2db9d9f23d7.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -21,9 +21,9 @@ namespace rbdc_gen::arm7::full {
 /// @param M out 7x7: mass matrix, full symmetric
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             164  121    0     0    10    4    299
-/// schedule: scalar tree: 299 arithmetic instructions, looped CRBA 1484 (cost 2068)
-using ::rbdc_gen::arm7::common::mass_matrix_d72e8fc9a53d::mass_matrix;
+///             161  120    0     0    10    3    294
+/// schedule: scalar tree: 294 arithmetic instructions, looped CRBA 1482 (cost 2066)
+using ::rbdc_gen::arm7::common::mass_matrix_f2db9d9f23d7::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

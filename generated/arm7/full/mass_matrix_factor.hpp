@@ -7,11 +7,11 @@
 // mass_matrix_factor for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   arm7/common/mass_matrix_factor_5d76e842eeb2.hpp
+//   arm7/common/mass_matrix_factor_0044d750ab8c.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/mass_matrix_factor_5d76e842eeb2.hpp"
+#include "arm7/common/mass_matrix_factor_0044d750ab8c.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -23,10 +23,10 @@ namespace rbdc_gen::arm7::full {
 /// @param D_inv out 7x1: their inverses, so that a solve multiplies
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             234  171    5     0    10    5    425
-/// schedule: scalar tree: 425 arithmetic instructions, looped factor 522 (cost 1080), looped CRBA
-///   1707 (cost 2848)
-using ::rbdc_gen::arm7::common::mass_matrix_factor_5d76e842eeb2::mass_matrix_factor;
+///             230  170    5     0    10    3    418
+/// schedule: scalar tree: 418 arithmetic instructions, looped factor 517 (cost 1074), looped CRBA
+///   1705 (cost 2846)
+using ::rbdc_gen::arm7::common::mass_matrix_factor_0044d750ab8c::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // quadratic_velocity_terms for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose quadratic_velocity_terms is the same code:
-//   arm7/common/quadratic_velocity_terms_91df6eac3f37.hpp
+//   arm7/common/quadratic_velocity_terms_f5e6dc24a791.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/quadratic_velocity_terms_91df6eac3f37.hpp"
+#include "arm7/common/quadratic_velocity_terms_f5e6dc24a791.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::arm7::full {
 /// @param c out 7x1: Coriolis and centrifugal terms
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             311  220    0     0    12    1    544
-using ::rbdc_gen::arm7::common::quadratic_velocity_terms_91df6eac3f37::quadratic_velocity_terms;
+///             305  220    0     0    12    1    538
+using ::rbdc_gen::arm7::common::quadratic_velocity_terms_f5e6dc24a791::quadratic_velocity_terms;
 
 /// quadratic_velocity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

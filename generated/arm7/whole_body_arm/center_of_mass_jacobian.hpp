@@ -7,11 +7,11 @@
 // center_of_mass_jacobian for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose center_of_mass_jacobian is the same code:
-//   arm7/common/center_of_mass_jacobian_28a57df591b8.hpp
+//   arm7/common/center_of_mass_jacobian_35bfdf67f83a.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/center_of_mass_jacobian_28a57df591b8.hpp"
+#include "arm7/common/center_of_mass_jacobian_35bfdf67f83a.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -21,8 +21,8 @@ namespace rbdc_gen::arm7::whole_body_arm {
 /// @param J_c out 3x7: centre-of-mass Jacobian
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             121   59    0     0    12    0    192
-using ::rbdc_gen::arm7::common::center_of_mass_jacobian_28a57df591b8::center_of_mass_jacobian;
+///             121   60    0     0    12    0    193
+using ::rbdc_gen::arm7::common::center_of_mass_jacobian_35bfdf67f83a::center_of_mass_jacobian;
 
 /// center_of_mass_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

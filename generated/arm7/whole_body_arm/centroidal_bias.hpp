@@ -7,11 +7,11 @@
 // centroidal_bias for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_bias is the same code:
-//   arm7/common/centroidal_bias_ee6b35105dda.hpp
+//   arm7/common/centroidal_bias_a0dbfabe0c11.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/centroidal_bias_ee6b35105dda.hpp"
+#include "arm7/common/centroidal_bias_a0dbfabe0c11.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::arm7::whole_body_arm {
 /// @param Adot_v out 6x1: (k̇_G; l̇) at a = 0, world axes
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             431  296    0     0    14    0    741
-using ::rbdc_gen::arm7::common::centroidal_bias_ee6b35105dda::centroidal_bias;
+///             426  296    0     0    14    0    736
+using ::rbdc_gen::arm7::common::centroidal_bias_a0dbfabe0c11::centroidal_bias;
 
 /// centroidal_bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // frame_jacobians for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_jacobians is the same code:
-//   arm7/common/frame_jacobians_ee5fe92f86d1.hpp
+//   arm7/common/frame_jacobians_95bc8c39aa9f.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/frame_jacobians_ee5fe92f86d1.hpp"
+#include "arm7/common/frame_jacobians_95bc8c39aa9f.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::arm7::whole_body_arm {
 /// @param J_world out 12x7: rows 6k … 6k+5: frame k's J, world axes (J v = v_world)
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             274  169    0     0    14    9    466
-using ::rbdc_gen::arm7::common::frame_jacobians_ee5fe92f86d1::frame_jacobians;
+///             262  164    0     0    14    9    449
+using ::rbdc_gen::arm7::common::frame_jacobians_95bc8c39aa9f::frame_jacobians;
 
 /// frame_jacobians on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

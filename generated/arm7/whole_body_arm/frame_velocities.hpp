@@ -7,11 +7,11 @@
 // frame_velocities for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_velocities is the same code:
-//   arm7/common/frame_velocities_d4f1e1180f42.hpp
+//   arm7/common/frame_velocities_1d90392fe41a.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/frame_velocities_d4f1e1180f42.hpp"
+#include "arm7/common/frame_velocities_1d90392fe41a.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::arm7::whole_body_arm {
 /// @param v_world out 6x2: world axes (LOCAL_WORLD_ALIGNED, rows angular first)
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             166   91    0     0    14    1    272
-using ::rbdc_gen::arm7::common::frame_velocities_d4f1e1180f42::frame_velocities;
+///             146   82    0     0    14    1    243
+using ::rbdc_gen::arm7::common::frame_velocities_1d90392fe41a::frame_velocities;
 
 /// frame_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

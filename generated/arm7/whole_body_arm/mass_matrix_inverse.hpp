@@ -7,11 +7,11 @@
 // mass_matrix_inverse for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_inverse is the same code:
-//   arm7/common/mass_matrix_inverse_3260638b0b1c.hpp
+//   arm7/common/mass_matrix_inverse_67a98c570516.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/mass_matrix_inverse_3260638b0b1c.hpp"
+#include "arm7/common/mass_matrix_inverse_67a98c570516.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -21,8 +21,8 @@ namespace rbdc_gen::arm7::whole_body_arm {
 /// @param M_inv out 7x7: inverse mass matrix, full symmetric
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             339  255    5     0    10    3    612
-using ::rbdc_gen::arm7::common::mass_matrix_inverse_3260638b0b1c::mass_matrix_inverse;
+///             335  254    5     0    10    2    606
+using ::rbdc_gen::arm7::common::mass_matrix_inverse_67a98c570516::mass_matrix_inverse;
 
 /// mass_matrix_inverse on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

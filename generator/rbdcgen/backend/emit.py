@@ -67,7 +67,17 @@ def _signed_operands(node):
 
 
 def _is_joint_trig(node):
-    return node.op in ("sin", "cos") and node.args[0].op == "sym"
+    return node.op in ("sin", "cos") and _is_joint_angle(node.args[0])
+
+
+def _is_joint_angle(node):
+    """A joint angle: q_k, or q_k + φ on a turned body (views/turns.py)."""
+    return node.op == "sym" or (node.op == "add" and {a.op for a in node.args} == {"sym", "const"})
+
+
+def _angle_symbol(angle):
+    """The input symbol of a joint angle."""
+    return angle if angle.op == "sym" else next(a for a in angle.args if a.op == "sym")
 
 
 def schedule(fn):
@@ -81,14 +91,15 @@ def schedule(fn):
     for node in outputs:
         uses[node.id] = uses.get(node.id, 0) + 1
     trig = sorted((n for n in order if _is_joint_trig(n)),
-                  key=lambda n: (n.args[0].value, n.op == "cos"))
+                  key=lambda n: (_angle_symbol(n.args[0]).value, n.op == "cos"))
+    angles = {n.args[0].id for n in trig}  # written into joint_sincos's array, never a statement
     temp_ids = set()
     size = {}  # operations in a node's inlined text
     for n in order:  # (this runs for every node: no calls it can do without)
         op = n.op
         # a lane_get is read where used: its lane value stays live instead (one register, not one per
         # lane), and no view's late extraction holds it to the end
-        if op == "const" or op == "sym" or op == "lane_get" or _is_joint_trig(n):
+        if op == "const" or op == "sym" or op == "lane_get" or _is_joint_trig(n) or n.id in angles:
             size[n.id] = 0
             continue
         inlined = 1
@@ -167,7 +178,8 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
     lines.append("const auto joint_trig = joint_sincos(joint_angle);")
     for node in trig:
         angle = node.args[0]
-        name = "%s_%s" % (node.op, angle_names.get(angle.value) or "%s_%d" % angle.value)
+        symbol = _angle_symbol(angle).value
+        name = "%s_%s" % (node.op, angle_names.get(symbol) or "%s_%d" % symbol)
         if node.lane:
             load = ("load_lanes" if width(angle) == ex.LANES
                     else "load_repeated_lanes<%d>" % width(angle))

@@ -7,7 +7,7 @@ from ..passes.differentiate import PRIMAL
 from ..graph.flops import count_ops, generic_ops
 from ..graph.latency import critical_path
 from ..passes.trace import trace_function
-from ..views import origins
+from ..views import origins, turns
 
 KINDS = ("mul", "add", "div", "sqrt", "trig", "neg", "total")
 
@@ -15,7 +15,7 @@ KINDS = ("mul", "add", "div", "sqrt", "trig", "neg", "total")
 def rows(compilation) -> list[dict]:
     result = []
     primal_counts = {}
-    traced = origins.slid(compilation.robot)  # the robot trace_scene traced the functions on
+    traced = origins.slid(turns.turned(compilation.robot))  # the robot trace_scene traced the functions on
     for f in compilation.functions:
         row = {"function": f.name, "generated": count_ops(f), "critical_path": critical_path(f),
                "looped": f.solve is not None,

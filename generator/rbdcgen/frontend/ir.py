@@ -62,6 +62,7 @@ class Joint:
     lower: Optional[float]
     upper: Optional[float]
     actuator: Optional[Actuator] = None   # absent on joints without armature or rotor
+    angle_offset: float = 0.0  # the traced angle is q + angle_offset (views/turns.py); 0 in every IR
 
 
 @dataclass(frozen=True)

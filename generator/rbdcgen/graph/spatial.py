@@ -215,6 +215,12 @@ def snap_axis(axis):
     return tuple(_snap(x) for x in axis)
 
 
+def snap_vector(vector):
+    """Any constant vector with the same snapping: a point turned by views/turns.py, whose zero
+    entries come out as 1e-17."""
+    return tuple(_snap(x) for x in vector)
+
+
 # --- transforms -------------------------------------------------------------------------------
 
 class Transform:

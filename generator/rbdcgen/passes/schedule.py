@@ -32,7 +32,7 @@ from ..algorithms import aba
 from ..algorithms.forward_dynamics import dof_parents
 from ..graph import expr as ex
 from ..views.coupled import tree_view
-from ..views import limbs, origins
+from ..views import limbs, origins, turns
 from ..views.limbs import LimbError
 from . import (body_tree, lane_functions, looped_crba, looped_factor, looped_feet_forces, looped_osc,
                looped_rnea_derivatives, looped_solve, singular_mass)
@@ -293,7 +293,7 @@ def trace_scene(robot, scene, progress=None):
     scene.QUANTITIES, then its derivatives in the order of scene.DERIVATIVES. `progress(function,
     seconds)`, if given, hears of each as it is done. They are traced on the robot with its bodies'
     origins slid along their joint axes (views/origins.py): the same functions, fewer operations."""
-    robot = origins.slid(robot)
+    robot = origins.slid(turns.turned(robot))
     names = singular_mass.applicable(robot, scene, scene.quantities_for(robot) + scene.derivatives_for(robot))
     functions = []
     for name in names:

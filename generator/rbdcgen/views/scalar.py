@@ -138,6 +138,8 @@ class TracedModel:
         """X_J(q_i) (Eq. 9): a rotation about the axis by q_i, or a translation along it."""
         q = self.qi(i)
         if self.joint(i).type == "revolute":
+            if self.joint(i).angle_offset:
+                q = q + ex.const(self.joint(i).angle_offset)
             return sp.Transform(sp.coordinate_rotation(self.axis(i), ex.cos(q), ex.sin(q)), None)
         return sp.Transform(None, tuple(q * a for a in sp.vec(self.axis(i))))
 

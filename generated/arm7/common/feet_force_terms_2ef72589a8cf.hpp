@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::feet_force_terms_811ca4e4fdac {
+namespace rbdc_gen::arm7::common::feet_force_terms_2ef72589a8cf {
 
 /// Generalised forces of the world foot forces (paper 000 Alg. 4).
 ///
@@ -19,11 +19,11 @@ namespace rbdc_gen::arm7::common::feet_force_terms_811ca4e4fdac {
 /// @param tau_e out 7x1: τ_e = Jᵀ f
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///              86   44    0     0    14    1    145
+///              76   40    0     0    14    1    131
 template <class Scalar>
 RBDC_HOST_DEVICE inline void feet_force_terms(const Scalar* q, const Scalar* f, Scalar* tau_e) noexcept {
   // sines and cosines of the joint angles
-  const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
+  const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], Scalar(0.30000000000000004) + q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);
   const Scalar sin_joint1 = joint_trig.sin[0];
   const Scalar cos_joint1 = joint_trig.cos[0];
@@ -53,41 +53,36 @@ RBDC_HOST_DEVICE inline void feet_force_terms(const Scalar* q, const Scalar* f, 
   const Scalar t9 = (t5 * cos_joint5) - (t6 * sin_joint5);
   const Scalar t10 = (t8 * cos_joint6) - (t7 * sin_joint6);
   const Scalar t11 = (t8 * sin_joint6) + (t7 * cos_joint6);
-  const Scalar t12 = (Scalar(0.955336489125606) * t10) - (Scalar(0.29552020666133966) * t11);
-  const Scalar t13 = (Scalar(0.29552020666133966) * t10) + (Scalar(0.955336489125606) * t11);
-  const Scalar t14 = (cos_joint7 * t12) + (t9 * sin_joint7);
-  const Scalar t15 = (t9 * cos_joint7) - (sin_joint7 * t12);
-  const Scalar t16 = Scalar(0.11) * t15;
-  const Scalar t17 = Scalar(0.11) * t14;
+  const Scalar t12 = (t10 * cos_joint7) + (t9 * sin_joint7);
+  const Scalar t13 = (t9 * cos_joint7) - (t10 * sin_joint7);
+  const Scalar t14 = Scalar(0.1864269191300485) * t13;
+  const Scalar t15 = Scalar(0.1864269191300485) * t12;
   // inward pass: body 7 link7
-  const Scalar t18 = (cos_joint7 * t16) + (sin_joint7 * t17);
-  const Scalar t19 = (cos_joint7 * t14) - (sin_joint7 * t15);
-  const Scalar t20 = (sin_joint7 * t14) + (cos_joint7 * t15);
-  const Scalar t21 = Scalar(0.29552020666133966) * t18;
-  const Scalar t22 = (Scalar(0.955336489125606) * t19) + (Scalar(0.29552020666133966) * t13);
-  const Scalar t23 = (Scalar(0.955336489125606) * t13) - (Scalar(0.29552020666133966) * t19);
-  const Scalar t24 = (Scalar(0.955336489125606) * t18) + (Scalar(0.08) * t20);
-  const Scalar t25 = ((cos_joint7 * t17) - (sin_joint7 * t16)) + (Scalar(0.08) * t22);
-  tau_e[5] = t25;
+  const Scalar t16 = (cos_joint7 * t14) + (sin_joint7 * t15);
+  const Scalar t17 = (cos_joint7 * t12) - (sin_joint7 * t13);
+  const Scalar t18 = (sin_joint7 * t12) + (cos_joint7 * t13);
+  const Scalar t19 = Scalar(0.023641616532907167) * t18;
+  const Scalar t20 = ((cos_joint7 * t15) - (sin_joint7 * t14)) + (Scalar(0.023641616532907167) * t11);
+  tau_e[5] = t20;
   // inward pass: body 6 link6
-  const Scalar t26 = (sin_joint6 * t21) - (cos_joint6 * t24);
-  const Scalar t27 = (sin_joint6 * t24) + (cos_joint6 * t21);
-  tau_e[4] = t27;
-  const Scalar t28 = (cos_joint6 * t22) + (sin_joint6 * t23);
+  const Scalar t21 = (cos_joint6 * t16) + (sin_joint6 * t19);
+  const Scalar t22 = (sin_joint6 * t16) - (cos_joint6 * t19);
+  tau_e[4] = t22;
+  const Scalar t23 = (cos_joint6 * t17) + (sin_joint6 * t11);
   // inward pass: body 5 link5
-  const Scalar t29 = (cos_joint5 * t28) - (sin_joint5 * t20);
-  const Scalar t30 = (sin_joint5 * t28) + (cos_joint5 * t20);
-  const Scalar t31 = ((cos_joint5 * t26) - (sin_joint5 * t25)) - (Scalar(0.39) * t30);
-  const Scalar t32 = ((sin_joint5 * t26) + (cos_joint5 * t25)) + (Scalar(0.39) * t29);
-  tau_e[3] = -t32;
+  const Scalar t24 = (cos_joint5 * t23) - (sin_joint5 * t18);
+  const Scalar t25 = (sin_joint5 * t23) + (cos_joint5 * t18);
+  const Scalar t26 = ((cos_joint5 * t21) + (sin_joint5 * t20)) + (Scalar(0.39) * t25);
+  const Scalar t27 = ((cos_joint5 * t20) - (sin_joint5 * t21)) + (Scalar(0.39) * t24);
+  tau_e[3] = -t27;
   // inward pass: body 4 link4
-  const Scalar t33 = (cos_joint4 * t31) - (sin_joint4 * t27);
-  const Scalar t34 = (sin_joint4 * t31) + (cos_joint4 * t27);
-  tau_e[2] = t34;
-  const Scalar t35 = (cos_joint4 * t29) - (sin_joint4 * ((cos_joint6 * t23) - (sin_joint6 * t22)));
+  const Scalar t28 = (cos_joint4 * t26) + (sin_joint4 * t22);
+  const Scalar t29 = (cos_joint4 * t22) - (sin_joint4 * t26);
+  tau_e[2] = t29;
+  const Scalar t30 = (cos_joint4 * t24) - (sin_joint4 * ((cos_joint6 * t11) - (sin_joint6 * t17)));
   // outputs
-  tau_e[0] = (cos_joint2 * t34) - (sin_joint2 * (((cos_joint3 * t33) - (sin_joint3 * t32)) - (Scalar(0.42000000000000004) * ((sin_joint3 * t35) + (cos_joint3 * t30)))));
-  tau_e[1] = ((sin_joint3 * t33) + (cos_joint3 * t32)) + (Scalar(0.42000000000000004) * ((cos_joint3 * t35) - (sin_joint3 * t30)));
+  tau_e[0] = (sin_joint2 * (((cos_joint3 * t28) + (sin_joint3 * t27)) + (Scalar(0.42000000000000004) * ((sin_joint3 * t30) + (cos_joint3 * t25))))) + (cos_joint2 * t29);
+  tau_e[1] = ((cos_joint3 * t27) - (sin_joint3 * t28)) + (Scalar(0.42000000000000004) * ((cos_joint3 * t30) - (sin_joint3 * t25)));
 }
 
-}  // namespace rbdc_gen::arm7::common::feet_force_terms_811ca4e4fdac
+}  // namespace rbdc_gen::arm7::common::feet_force_terms_2ef72589a8cf

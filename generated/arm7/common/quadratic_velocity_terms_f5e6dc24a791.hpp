@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::quadratic_velocity_terms_91df6eac3f37 {
+namespace rbdc_gen::arm7::common::quadratic_velocity_terms_f5e6dc24a791 {
 
 /// Quadratic velocity terms c (paper 000 Alg. 2).
 ///
@@ -19,11 +19,11 @@ namespace rbdc_gen::arm7::common::quadratic_velocity_terms_91df6eac3f37 {
 /// @param c out 7x1: Coriolis and centrifugal terms
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             311  220    0     0    12    1    544
+///             305  220    0     0    12    1    538
 template <class Scalar>
 RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Scalar* v, Scalar* c) noexcept {
   // sines and cosines of the joint angles
-  const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
+  const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], Scalar(0.30000000000000004) + q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);
   const Scalar sin_joint2 = joint_trig.sin[0];
   const Scalar cos_joint2 = joint_trig.cos[0];
@@ -95,11 +95,11 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t51 = ((t16 * cos_joint5) - (t30 * sin_joint5)) - (v[4] * t45);
   const Scalar t52 = ((cos_joint5 * t41) + (sin_joint5 * t42)) + (v[4] * t48);
   const Scalar t53 = ((cos_joint5 * t42) - (sin_joint5 * t41)) - (v[4] * t47);
-  const Scalar t54 = (((Scalar(0.010680452843509228) * t50) - (Scalar(3.57e-06) * t51)) - (Scalar(1.9380000000000004e-05) * t31)) - (Scalar(0.036480000000000005) * t33);
-  const Scalar t55 = (((Scalar(1.9380000000000004e-05) * t50) + (Scalar(0.005769800000000001) * t51)) - (Scalar(0.012880486843509217) * t31)) + ((Scalar(0.00017) * t53) - (Scalar(0.036480000000000005) * t52));
-  const Scalar t56 = (((Scalar(0.010680452843509228) * t45) - (Scalar(3.57e-06) * t46)) + (Scalar(1.9380000000000004e-05) * t49)) - (Scalar(0.036480000000000005) * t28);
+  const Scalar t54 = (((Scalar(0.010470946581545473) * t50) - (Scalar(3.57e-06) * t51)) - (Scalar(1.9380000000000004e-05) * t31)) - (Scalar(0.036480000000000005) * t33);
+  const Scalar t55 = (((Scalar(1.9380000000000004e-05) * t50) + (Scalar(0.005769800000000001) * t51)) - (Scalar(0.012670980581545463) * t31)) + ((Scalar(0.00017) * t53) - (Scalar(0.036480000000000005) * t52));
+  const Scalar t56 = (((Scalar(0.010470946581545473) * t45) - (Scalar(3.57e-06) * t46)) + (Scalar(1.9380000000000004e-05) * t49)) - (Scalar(0.036480000000000005) * t28);
   const Scalar t57 = ((Scalar(0.005769800000000001) * t49) - (Scalar(3.57e-06) * t45)) + (Scalar(0.00017) * t28);
-  const Scalar t58 = (((Scalar(1.9380000000000004e-05) * t45) + (Scalar(0.005769800000000001) * t46)) + (Scalar(0.012880486843509217) * t49)) + ((Scalar(0.00017) * t48) - (Scalar(0.036480000000000005) * t47));
+  const Scalar t58 = (((Scalar(1.9380000000000004e-05) * t45) + (Scalar(0.005769800000000001) * t46)) + (Scalar(0.012670980581545463) * t49)) + ((Scalar(0.00017) * t48) - (Scalar(0.036480000000000005) * t47));
   const Scalar t59 = Scalar(0.036480000000000005) * t49;
   const Scalar t60 = Scalar(0.00017) * t49;
   const Scalar t61 = (Scalar(0.036480000000000005) * t45) - (Scalar(0.00017) * t46);
@@ -112,63 +112,62 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   const Scalar t67 = v[5] + t46;
   const Scalar t68 = ((t50 * cos_joint6) + (t31 * sin_joint6)) - (v[5] * t64);
   const Scalar t69 = ((t50 * sin_joint6) - (t31 * cos_joint6)) + (v[5] * t63);
-  const Scalar t70 = Scalar(0.04726753550266307) * (((t52 * cos_joint6) + (t33 * sin_joint6)) - (v[5] * t66));
-  const Scalar t71 = ((Scalar(0.009281063680426091) * t51) - (Scalar(3.12e-07) * t69)) + (t70 - (Scalar(0.0033246023249400717) * (((t52 * sin_joint6) - (t33 * cos_joint6)) + (v[5] * t65))));
-  const Scalar t72 = (Scalar(0.0033246023249400717) * t53) - (((Scalar(0.0004300674048256379) * t68) + (Scalar(3.12e-07) * t51)) + (Scalar(0.005179540006592342) * t69));
-  const Scalar t73 = (Scalar(0.0004300674048256379) * t64) + (Scalar(0.04726753550266307) * t48);
-  const Scalar t74 = ((Scalar(0.009281063680426091) * t67) - (Scalar(3.12e-07) * t64)) + ((Scalar(0.04726753550266307) * t65) - (Scalar(0.0033246023249400717) * t66));
-  const Scalar t75 = (Scalar(0.0033246023249400717) * t48) - (((Scalar(0.0004300674048256379) * t63) + (Scalar(3.12e-07) * t67)) + (Scalar(0.005179540006592342) * t64));
-  const Scalar t76 = Scalar(0.04726753550266307) * t67;
-  const Scalar t77 = Scalar(0.0033246023249400717) * t67;
-  const Scalar t78 = (Scalar(0.0033246023249400717) * t64) - (Scalar(0.04726753550266307) * t63);
-  const Scalar t79 = (((t67 * t75) - (t64 * t74)) - ((t48 * t77) + (t66 * t78))) - ((Scalar(0.0004300674048256379) * t69) + (Scalar(0.04726753550266307) * t53));
-  const Scalar t80 = (Scalar(0.04726753550266307) * t51) - ((t67 * t77) + (t64 * t78));
-  const Scalar t81 = ((Scalar(0.0033246023249400717) * t69) - (Scalar(0.04726753550266307) * t68)) + ((t64 * t76) + (t63 * t77));
-  const Scalar t82 = ((t63 * t78) - (t67 * t76)) - (Scalar(0.0033246023249400717) * t51);
+  const Scalar t70 = Scalar(0.04613888858286713) * (((t52 * cos_joint6) + (t33 * sin_joint6)) - (v[5] * t66));
+  const Scalar t71 = t70 + (Scalar(0.010792397947272122) * (((t52 * sin_joint6) - (t33 * cos_joint6)) + (v[5] * t65)));
+  const Scalar t72 = (((Scalar(0.001107344194171041) * t68) - (Scalar(2.980649846071891e-07) * t51)) - (Scalar(0.004760527482664834) * t69)) - (Scalar(0.010792397947272122) * t53);
+  const Scalar t73 = ((Scalar(9.220230447833797e-08) * t67) + (Scalar(0.001107344194171041) * t64)) - (Scalar(0.04613888858286713) * t48);
+  const Scalar t74 = (((Scalar(9.220230447833797e-08) * t63) + (Scalar(0.00928106368042609) * t67)) - (Scalar(2.980649846071891e-07) * t64)) + ((Scalar(0.04613888858286713) * t65) + (Scalar(0.010792397947272122) * t66));
+  const Scalar t75 = (((Scalar(0.001107344194171041) * t63) - (Scalar(2.980649846071891e-07) * t67)) - (Scalar(0.004760527482664834) * t64)) - (Scalar(0.010792397947272122) * t48);
+  const Scalar t76 = Scalar(0.04613888858286713) * t67;
+  const Scalar t77 = (Scalar(0.04613888858286713) * t63) + (Scalar(0.010792397947272122) * t64);
+  const Scalar t78 = Scalar(0.010792397947272122) * t67;
+  const Scalar t79 = ((t67 * t75) - (t64 * t74)) + ((t48 * t78) + (t66 * t77));
+  const Scalar t80 = ((t64 * t73) - (t63 * t75)) + ((t66 * t76) - (t65 * t78));
+  const Scalar t81 = (Scalar(0.04613888858286713) * t51) + ((t67 * t78) + (t64 * t77));
+  const Scalar t82 = ((t64 * t76) - (t63 * t78)) - ((Scalar(0.04613888858286713) * t68) + (Scalar(0.010792397947272122) * t69));
+  const Scalar t83 = (Scalar(0.010792397947272122) * t51) - ((t63 * t77) + (t67 * t76));
   // outward pass: body 7 link7
-  const Scalar t83 = (Scalar(0.29552020666133966) * t68) + (Scalar(0.955336489125606) * t69);
-  c[6] = Scalar(0.0005) * t83;
-  const Scalar t84 = (Scalar(0.955336489125606) * t63) - (Scalar(0.29552020666133966) * t64);
-  const Scalar t85 = Scalar(0.0005) * (v[6] + ((Scalar(0.29552020666133966) * t63) + (Scalar(0.955336489125606) * t64)));
-  const Scalar t86 = ((t67 * cos_joint7) - (sin_joint7 * t84)) * t85;
-  const Scalar t87 = ((cos_joint7 * t84) + (t67 * sin_joint7)) * t85;
+  const Scalar t84 = Scalar(0.0005) * t69;
+  c[6] = t84;
+  const Scalar t85 = Scalar(0.0005) * (v[6] + t64);
+  const Scalar t86 = ((t67 * cos_joint7) - (t63 * sin_joint7)) * t85;
+  const Scalar t87 = ((t63 * cos_joint7) + (t67 * sin_joint7)) * t85;
   // inward pass: body 7 link7
-  const Scalar t88 = (cos_joint7 * t86) + (sin_joint7 * t87);
-  const Scalar t89 = t79 + ((Scalar(0.955336489125606) * t88) + (Scalar(0.00014776010333066982) * t83));
-  const Scalar t90 = (t71 + (((t66 * t76) + (t65 * t77)) - ((t64 * t73) + (t63 * t75)))) + ((sin_joint7 * t86) - (cos_joint7 * t87));
-  c[5] = t90;
-  const Scalar t91 = (t72 + (((t63 * t74) + (t67 * t73)) + ((t65 * t78) - (t48 * t76)))) + ((Scalar(0.000477668244562803) * t83) - (Scalar(0.29552020666133966) * t88));
+  const Scalar t88 = ((((Scalar(9.220230447833797e-08) * t51) + (Scalar(0.001107344194171041) * t69)) - (Scalar(0.04613888858286713) * t53)) + t79) + ((cos_joint7 * t86) + (sin_joint7 * t87));
+  const Scalar t89 = (((((Scalar(9.220230447833797e-08) * t68) + (Scalar(0.00928106368042609) * t51)) - (Scalar(2.980649846071891e-07) * t69)) + t71) + t80) + ((sin_joint7 * t86) - (cos_joint7 * t87));
+  c[5] = t89;
+  const Scalar t90 = (t72 + (((t63 * t74) - (t67 * t73)) - ((t65 * t77) + (t48 * t76)))) + t84;
   // inward pass: body 6 link6
-  const Scalar t92 = (t54 + (((t46 * t58) - (t49 * t57)) + ((t48 * t61) + (t28 * t60)))) + ((cos_joint6 * t89) + (sin_joint6 * t91));
-  const Scalar t93 = (((Scalar(0.00017) * t33) - ((Scalar(3.57e-06) * t50) + (Scalar(0.005769800000000001) * t31))) + t62) + t90;
-  const Scalar t94 = (t55 + (((t45 * t57) - (t46 * t56)) + ((t47 * t60) + (t48 * t59)))) + ((cos_joint6 * t91) - (sin_joint6 * t89));
-  c[4] = t94;
-  const Scalar t95 = ((Scalar(0.036480000000000005) * t31) + ((t46 * t61) - (t49 * t60))) + ((cos_joint6 * t80) + (sin_joint6 * t82));
-  const Scalar t96 = t81 - ((Scalar(0.00017) * t31) + ((t49 * t59) + (t45 * t61)));
-  const Scalar t97 = (((Scalar(0.036480000000000005) * t50) - (Scalar(0.00017) * t51)) + ((t45 * t60) + (t46 * t59))) + ((cos_joint6 * t82) - (sin_joint6 * t80));
+  const Scalar t91 = (t54 + (((t46 * t58) - (t49 * t57)) + ((t48 * t61) + (t28 * t60)))) + ((cos_joint6 * t88) + (sin_joint6 * t90));
+  const Scalar t92 = (((Scalar(0.00017) * t33) - ((Scalar(3.57e-06) * t50) + (Scalar(0.005769800000000001) * t31))) + t62) + t89;
+  const Scalar t93 = (t55 + (((t45 * t57) - (t46 * t56)) + ((t47 * t60) + (t48 * t59)))) + ((cos_joint6 * t90) - (sin_joint6 * t88));
+  c[4] = t93;
+  const Scalar t94 = ((Scalar(0.036480000000000005) * t31) + ((t46 * t61) - (t49 * t60))) + ((cos_joint6 * t81) + (sin_joint6 * t83));
+  const Scalar t95 = t82 - ((Scalar(0.00017) * t31) + ((t49 * t59) + (t45 * t61)));
+  const Scalar t96 = (((Scalar(0.036480000000000005) * t50) - (Scalar(0.00017) * t51)) + ((t45 * t60) + (t46 * t59))) + ((cos_joint6 * t83) - (sin_joint6 * t81));
   // inward pass: body 5 link5
-  const Scalar t98 = (cos_joint5 * t95) - (sin_joint5 * t96);
-  const Scalar t99 = (sin_joint5 * t95) + (cos_joint5 * t96);
-  const Scalar t100 = t39 + (((cos_joint5 * t92) - (sin_joint5 * t93)) - (Scalar(0.39) * t99));
-  const Scalar t101 = t40 + (((sin_joint5 * t92) + (cos_joint5 * t93)) + (Scalar(0.39) * t98));
-  c[3] = -t101;
-  const Scalar t102 = (((Scalar(0.004275000000000001) * t16) + (Scalar(0.4359367170000001) * t31)) + (((t25 * t36) + (t29 * t35)) - ((t27 * t38) + (t13 * t37)))) + t94;
+  const Scalar t97 = (cos_joint5 * t94) - (sin_joint5 * t95);
+  const Scalar t98 = (sin_joint5 * t94) + (cos_joint5 * t95);
+  const Scalar t99 = t39 + (((cos_joint5 * t91) - (sin_joint5 * t92)) - (Scalar(0.39) * t98));
+  const Scalar t100 = t40 + (((sin_joint5 * t91) + (cos_joint5 * t92)) + (Scalar(0.39) * t97));
+  c[3] = -t100;
+  const Scalar t101 = (((Scalar(0.004275000000000001) * t16) + (Scalar(0.4359367170000001) * t31)) + (((t25 * t36) + (t29 * t35)) - ((t27 * t38) + (t13 * t37)))) + t93;
   // inward pass: body 4 link4
-  const Scalar t103 = (cos_joint4 * (((Scalar(1.3642000000000003) * t16) + (t26 * t38)) + t98)) - (sin_joint4 * (t97 - ((t25 * t38) + (t29 * t37))));
-  const Scalar t104 = ((Scalar(0.44740351700000014) * t15) + (((t11 * t21) - (t14 * t20)) + (t13 * t23))) + ((cos_joint4 * t100) - (sin_joint4 * t102));
-  const Scalar t105 = ((((t14 * t19) - (t10 * t21)) - (t12 * t23)) - (Scalar(0.008548000000000002) * t3)) + t101;
-  const Scalar t106 = t24 + ((sin_joint4 * t100) + (cos_joint4 * t102));
-  c[2] = t106;
-  const Scalar t107 = ((Scalar(0.0006000000000000033) * t3) + (t11 * t23)) + t103;
-  const Scalar t108 = (((t26 * t37) - (Scalar(1.3642000000000003) * t30)) + t99) - ((t14 * t22) + (t10 * t23));
+  const Scalar t102 = (cos_joint4 * (((Scalar(1.3642000000000003) * t16) + (t26 * t38)) + t97)) - (sin_joint4 * (t96 - ((t25 * t38) + (t29 * t37))));
+  const Scalar t103 = ((Scalar(0.44740351700000014) * t15) + (((t11 * t21) - (t14 * t20)) + (t13 * t23))) + ((cos_joint4 * t99) - (sin_joint4 * t101));
+  const Scalar t104 = ((((t14 * t19) - (t10 * t21)) - (t12 * t23)) - (Scalar(0.008548000000000002) * t3)) + t100;
+  const Scalar t105 = t24 + ((sin_joint4 * t99) + (cos_joint4 * t101));
+  c[2] = t105;
+  const Scalar t106 = ((Scalar(0.0006000000000000033) * t3) + (t11 * t23)) + t102;
+  const Scalar t107 = (((t26 * t37) - (Scalar(1.3642000000000003) * t30)) + t98) - ((t14 * t22) + (t10 * t23));
   // inward pass: body 3 link3
-  const Scalar t109 = ((cos_joint3 * t104) - (sin_joint3 * t105)) - (Scalar(0.42000000000000004) * ((sin_joint3 * t107) + (cos_joint3 * t108)));
-  const Scalar t110 = ((sin_joint3 * t104) + (cos_joint3 * t105)) + (Scalar(0.42000000000000004) * ((cos_joint3 * t107) - (sin_joint3 * t108)));
-  c[1] = (((Scalar(3.3299999999999996e-05) * t2) + (Scalar(0.01279) * t3)) + ((t1 * t4) - (t0 * t6))) + t110;
+  const Scalar t108 = ((cos_joint3 * t103) - (sin_joint3 * t104)) - (Scalar(0.42000000000000004) * ((sin_joint3 * t106) + (cos_joint3 * t107)));
+  const Scalar t109 = ((sin_joint3 * t103) + (cos_joint3 * t104)) + (Scalar(0.42000000000000004) * ((cos_joint3 * t106) - (sin_joint3 * t107)));
+  c[1] = (((Scalar(3.3299999999999996e-05) * t2) + (Scalar(0.01279) * t3)) + ((t1 * t4) - (t0 * t6))) + t109;
   // inward pass: body 2 link2
-  const Scalar t111 = cos_joint2 * ((((Scalar(1.4336696670000004) * t3) - (Scalar(0.00030010000000000003) * t2)) - ((t0 * t5) + (v[1] * t4))) + t106);
+  const Scalar t110 = cos_joint2 * ((((Scalar(1.4336696670000004) * t3) - (Scalar(0.00030010000000000003) * t2)) - ((t0 * t5) + (v[1] * t4))) + t105);
   // outputs
-  c[0] = t111 - (sin_joint2 * (t109 - ((Scalar(0.00030010000000000003) * t3) + ((v[1] * t6) + (t1 * t5)))));
+  c[0] = t110 - (sin_joint2 * (t108 - ((Scalar(0.00030010000000000003) * t3) + ((v[1] * t6) + (t1 * t5)))));
 }
 
-}  // namespace rbdc_gen::arm7::common::quadratic_velocity_terms_91df6eac3f37
+}  // namespace rbdc_gen::arm7::common::quadratic_velocity_terms_f5e6dc24a791

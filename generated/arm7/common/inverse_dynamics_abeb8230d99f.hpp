@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::inverse_dynamics_b5abc1b4eaf7 {
+namespace rbdc_gen::arm7::common::inverse_dynamics_abeb8230d99f {
 
 /// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3).
 ///
@@ -20,11 +20,11 @@ namespace rbdc_gen::arm7::common::inverse_dynamics_b5abc1b4eaf7 {
 /// @param tau out 7x1: generalised forces M a + c + g
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             329  241    0     0    12    1    583
+///             323  241    0     0    12    1    577
 template <class Scalar>
 RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
   // sines and cosines of the joint angles
-  const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
+  const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], Scalar(0.30000000000000004) + q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);
   const Scalar sin_joint2 = joint_trig.sin[0];
   const Scalar cos_joint2 = joint_trig.cos[0];
@@ -103,11 +103,11 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t58 = ((cos_joint5 * t47) + (sin_joint5 * t48)) + (v[4] * t54);
   const Scalar t59 = ((cos_joint5 * t48) - (sin_joint5 * t47)) - (v[4] * t53);
   const Scalar t60 = a[4] + t36;
-  const Scalar t61 = (((Scalar(0.010680452843509228) * t56) - (Scalar(3.57e-06) * t57)) + (Scalar(1.9380000000000004e-05) * t60)) + (Scalar(0.036480000000000005) * t38);
-  const Scalar t62 = (((Scalar(1.9380000000000004e-05) * t56) + (Scalar(0.005769800000000001) * t57)) + (Scalar(0.012880486843509217) * t60)) + ((Scalar(0.00017) * t59) - (Scalar(0.036480000000000005) * t58));
-  const Scalar t63 = (((Scalar(0.010680452843509228) * t51) - (Scalar(3.57e-06) * t52)) + (Scalar(1.9380000000000004e-05) * t55)) - (Scalar(0.036480000000000005) * t33);
+  const Scalar t61 = (((Scalar(0.010470946581545473) * t56) - (Scalar(3.57e-06) * t57)) + (Scalar(1.9380000000000004e-05) * t60)) + (Scalar(0.036480000000000005) * t38);
+  const Scalar t62 = (((Scalar(1.9380000000000004e-05) * t56) + (Scalar(0.005769800000000001) * t57)) + (Scalar(0.012670980581545463) * t60)) + ((Scalar(0.00017) * t59) - (Scalar(0.036480000000000005) * t58));
+  const Scalar t63 = (((Scalar(0.010470946581545473) * t51) - (Scalar(3.57e-06) * t52)) + (Scalar(1.9380000000000004e-05) * t55)) - (Scalar(0.036480000000000005) * t33);
   const Scalar t64 = ((Scalar(0.005769800000000001) * t55) - (Scalar(3.57e-06) * t51)) + (Scalar(0.00017) * t33);
-  const Scalar t65 = (((Scalar(1.9380000000000004e-05) * t51) + (Scalar(0.005769800000000001) * t52)) + (Scalar(0.012880486843509217) * t55)) + ((Scalar(0.00017) * t54) - (Scalar(0.036480000000000005) * t53));
+  const Scalar t65 = (((Scalar(1.9380000000000004e-05) * t51) + (Scalar(0.005769800000000001) * t52)) + (Scalar(0.012670980581545463) * t55)) + ((Scalar(0.00017) * t54) - (Scalar(0.036480000000000005) * t53));
   const Scalar t66 = Scalar(0.036480000000000005) * t55;
   const Scalar t67 = Scalar(0.00017) * t55;
   const Scalar t68 = (Scalar(0.036480000000000005) * t51) - (Scalar(0.00017) * t52);
@@ -121,63 +121,62 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   const Scalar t75 = ((t56 * cos_joint6) - (t60 * sin_joint6)) - (v[5] * t71);
   const Scalar t76 = ((t56 * sin_joint6) + (t60 * cos_joint6)) + (v[5] * t70);
   const Scalar t77 = a[5] + t57;
-  const Scalar t78 = Scalar(0.04726753550266307) * (((t58 * cos_joint6) - (t38 * sin_joint6)) - (v[5] * t73));
-  const Scalar t79 = ((Scalar(0.009281063680426091) * t77) - (Scalar(3.12e-07) * t76)) + (t78 - (Scalar(0.0033246023249400717) * (((t58 * sin_joint6) + (t38 * cos_joint6)) + (v[5] * t72))));
-  const Scalar t80 = (Scalar(0.0033246023249400717) * t59) - (((Scalar(0.0004300674048256379) * t75) + (Scalar(3.12e-07) * t77)) + (Scalar(0.005179540006592342) * t76));
-  const Scalar t81 = (Scalar(0.0004300674048256379) * t71) + (Scalar(0.04726753550266307) * t54);
-  const Scalar t82 = ((Scalar(0.009281063680426091) * t74) - (Scalar(3.12e-07) * t71)) + ((Scalar(0.04726753550266307) * t72) - (Scalar(0.0033246023249400717) * t73));
-  const Scalar t83 = (Scalar(0.0033246023249400717) * t54) - (((Scalar(0.0004300674048256379) * t70) + (Scalar(3.12e-07) * t74)) + (Scalar(0.005179540006592342) * t71));
-  const Scalar t84 = Scalar(0.04726753550266307) * t74;
-  const Scalar t85 = Scalar(0.0033246023249400717) * t74;
-  const Scalar t86 = (Scalar(0.0033246023249400717) * t71) - (Scalar(0.04726753550266307) * t70);
-  const Scalar t87 = (((t74 * t83) - (t71 * t82)) - ((t54 * t85) + (t73 * t86))) - ((Scalar(0.0004300674048256379) * t76) + (Scalar(0.04726753550266307) * t59));
-  const Scalar t88 = (Scalar(0.04726753550266307) * t77) - ((t74 * t85) + (t71 * t86));
-  const Scalar t89 = ((Scalar(0.0033246023249400717) * t76) - (Scalar(0.04726753550266307) * t75)) + ((t71 * t84) + (t70 * t85));
-  const Scalar t90 = ((t70 * t86) - (t74 * t84)) - (Scalar(0.0033246023249400717) * t77);
+  const Scalar t78 = Scalar(0.04613888858286713) * (((t58 * cos_joint6) - (t38 * sin_joint6)) - (v[5] * t73));
+  const Scalar t79 = t78 + (Scalar(0.010792397947272122) * (((t58 * sin_joint6) + (t38 * cos_joint6)) + (v[5] * t72)));
+  const Scalar t80 = (((Scalar(0.001107344194171041) * t75) - (Scalar(2.980649846071891e-07) * t77)) - (Scalar(0.004760527482664834) * t76)) - (Scalar(0.010792397947272122) * t59);
+  const Scalar t81 = ((Scalar(9.220230447833797e-08) * t74) + (Scalar(0.001107344194171041) * t71)) - (Scalar(0.04613888858286713) * t54);
+  const Scalar t82 = (((Scalar(9.220230447833797e-08) * t70) + (Scalar(0.00928106368042609) * t74)) - (Scalar(2.980649846071891e-07) * t71)) + ((Scalar(0.04613888858286713) * t72) + (Scalar(0.010792397947272122) * t73));
+  const Scalar t83 = (((Scalar(0.001107344194171041) * t70) - (Scalar(2.980649846071891e-07) * t74)) - (Scalar(0.004760527482664834) * t71)) - (Scalar(0.010792397947272122) * t54);
+  const Scalar t84 = Scalar(0.04613888858286713) * t74;
+  const Scalar t85 = (Scalar(0.04613888858286713) * t70) + (Scalar(0.010792397947272122) * t71);
+  const Scalar t86 = Scalar(0.010792397947272122) * t74;
+  const Scalar t87 = ((t74 * t83) - (t71 * t82)) + ((t54 * t86) + (t73 * t85));
+  const Scalar t88 = ((t71 * t81) - (t70 * t83)) + ((t73 * t84) - (t72 * t86));
+  const Scalar t89 = (Scalar(0.04613888858286713) * t77) + ((t74 * t86) + (t71 * t85));
+  const Scalar t90 = ((t71 * t84) - (t70 * t86)) - ((Scalar(0.04613888858286713) * t75) + (Scalar(0.010792397947272122) * t76));
+  const Scalar t91 = (Scalar(0.010792397947272122) * t77) - ((t70 * t85) + (t74 * t84));
   // outward pass: body 7 link7
-  const Scalar t91 = (Scalar(0.955336489125606) * t70) - (Scalar(0.29552020666133966) * t71);
-  const Scalar t92 = a[6] + ((Scalar(0.29552020666133966) * t75) + (Scalar(0.955336489125606) * t76));
-  tau[6] = Scalar(0.0005) * t92;
-  const Scalar t93 = Scalar(0.0005) * (v[6] + ((Scalar(0.29552020666133966) * t70) + (Scalar(0.955336489125606) * t71)));
-  const Scalar t94 = ((t74 * cos_joint7) - (sin_joint7 * t91)) * t93;
-  const Scalar t95 = ((cos_joint7 * t91) + (t74 * sin_joint7)) * t93;
+  const Scalar t92 = Scalar(0.0005) * (a[6] + t76);
+  tau[6] = t92;
+  const Scalar t93 = Scalar(0.0005) * (v[6] + t71);
+  const Scalar t94 = ((t74 * cos_joint7) - (t70 * sin_joint7)) * t93;
+  const Scalar t95 = ((t70 * cos_joint7) + (t74 * sin_joint7)) * t93;
   // inward pass: body 7 link7
-  const Scalar t96 = (cos_joint7 * t94) + (sin_joint7 * t95);
-  const Scalar t97 = t87 + ((Scalar(0.955336489125606) * t96) + (Scalar(0.00014776010333066982) * t92));
-  const Scalar t98 = (t79 + (((t73 * t84) + (t72 * t85)) - ((t71 * t81) + (t70 * t83)))) + ((sin_joint7 * t94) - (cos_joint7 * t95));
-  tau[5] = t98;
-  const Scalar t99 = (t80 + (((t70 * t82) + (t74 * t81)) + ((t72 * t86) - (t54 * t84)))) + ((Scalar(0.000477668244562803) * t92) - (Scalar(0.29552020666133966) * t96));
+  const Scalar t96 = ((((Scalar(9.220230447833797e-08) * t77) + (Scalar(0.001107344194171041) * t76)) - (Scalar(0.04613888858286713) * t59)) + t87) + ((cos_joint7 * t94) + (sin_joint7 * t95));
+  const Scalar t97 = (((((Scalar(9.220230447833797e-08) * t75) + (Scalar(0.00928106368042609) * t77)) - (Scalar(2.980649846071891e-07) * t76)) + t79) + t88) + ((sin_joint7 * t94) - (cos_joint7 * t95));
+  tau[5] = t97;
+  const Scalar t98 = (t80 + (((t70 * t82) - (t74 * t81)) - ((t72 * t85) + (t54 * t84)))) + t92;
   // inward pass: body 6 link6
-  const Scalar t100 = (t61 + (((t52 * t65) - (t55 * t64)) + ((t54 * t68) + (t33 * t67)))) + ((cos_joint6 * t97) + (sin_joint6 * t99));
-  const Scalar t101 = ((((Scalar(0.005769800000000001) * t60) - (Scalar(3.57e-06) * t56)) - (Scalar(0.00017) * t38)) + t69) + t98;
-  const Scalar t102 = (t62 + (((t51 * t64) - (t52 * t63)) + ((t53 * t67) + (t54 * t66)))) + ((cos_joint6 * t99) - (sin_joint6 * t97));
-  tau[4] = t102;
-  const Scalar t103 = (((t52 * t68) - (t55 * t67)) - (Scalar(0.036480000000000005) * t60)) + ((cos_joint6 * t88) + (sin_joint6 * t90));
-  const Scalar t104 = ((Scalar(0.00017) * t60) - ((t55 * t66) + (t51 * t68))) + t89;
-  const Scalar t105 = (((Scalar(0.036480000000000005) * t56) - (Scalar(0.00017) * t57)) + ((t51 * t67) + (t52 * t66))) + ((cos_joint6 * t90) - (sin_joint6 * t88));
+  const Scalar t99 = (t61 + (((t52 * t65) - (t55 * t64)) + ((t54 * t68) + (t33 * t67)))) + ((cos_joint6 * t96) + (sin_joint6 * t98));
+  const Scalar t100 = ((((Scalar(0.005769800000000001) * t60) - (Scalar(3.57e-06) * t56)) - (Scalar(0.00017) * t38)) + t69) + t97;
+  const Scalar t101 = (t62 + (((t51 * t64) - (t52 * t63)) + ((t53 * t67) + (t54 * t66)))) + ((cos_joint6 * t98) - (sin_joint6 * t96));
+  tau[4] = t101;
+  const Scalar t102 = (((t52 * t68) - (t55 * t67)) - (Scalar(0.036480000000000005) * t60)) + ((cos_joint6 * t89) + (sin_joint6 * t91));
+  const Scalar t103 = ((Scalar(0.00017) * t60) - ((t55 * t66) + (t51 * t68))) + t90;
+  const Scalar t104 = (((Scalar(0.036480000000000005) * t56) - (Scalar(0.00017) * t57)) + ((t51 * t67) + (t52 * t66))) + ((cos_joint6 * t91) - (sin_joint6 * t89));
   // inward pass: body 5 link5
-  const Scalar t106 = (cos_joint5 * t103) - (sin_joint5 * t104);
-  const Scalar t107 = (sin_joint5 * t103) + (cos_joint5 * t104);
-  const Scalar t108 = t45 + (((cos_joint5 * t100) - (sin_joint5 * t101)) - (Scalar(0.39) * t107));
-  const Scalar t109 = t46 + (((sin_joint5 * t100) + (cos_joint5 * t101)) + (Scalar(0.39) * t106));
-  tau[3] = -t109;
-  const Scalar t110 = (((Scalar(0.004275000000000001) * t39) - (Scalar(0.4359367170000001) * t36)) + (((t30 * t42) + (t34 * t41)) - ((t32 * t44) + (t16 * t43)))) + t102;
+  const Scalar t105 = (cos_joint5 * t102) - (sin_joint5 * t103);
+  const Scalar t106 = (sin_joint5 * t102) + (cos_joint5 * t103);
+  const Scalar t107 = t45 + (((cos_joint5 * t99) - (sin_joint5 * t100)) - (Scalar(0.39) * t106));
+  const Scalar t108 = t46 + (((sin_joint5 * t99) + (cos_joint5 * t100)) + (Scalar(0.39) * t105));
+  tau[3] = -t108;
+  const Scalar t109 = (((Scalar(0.004275000000000001) * t39) - (Scalar(0.4359367170000001) * t36)) + (((t30 * t42) + (t34 * t41)) - ((t32 * t44) + (t16 * t43)))) + t101;
   // inward pass: body 4 link4
-  const Scalar t111 = (cos_joint4 * (((Scalar(1.3642000000000003) * t39) + (t31 * t44)) + t106)) - (sin_joint4 * (t105 - ((t30 * t44) + (t34 * t43))));
-  const Scalar t112 = t28 + ((cos_joint4 * t108) - (sin_joint4 * t110));
-  const Scalar t113 = ((Scalar(0.008548000000000002) * t22) + (((t17 * t23) - (t13 * t25)) - (t15 * t27))) + t109;
-  const Scalar t114 = t29 + ((sin_joint4 * t108) + (cos_joint4 * t110));
-  tau[2] = t114;
-  const Scalar t115 = ((t14 * t27) - (Scalar(0.0006000000000000033) * t22)) + t111;
-  const Scalar t116 = (((t31 * t43) - (Scalar(1.3642000000000003) * t35)) + t107) - ((t17 * t26) + (t13 * t27));
+  const Scalar t110 = (cos_joint4 * (((Scalar(1.3642000000000003) * t39) + (t31 * t44)) + t105)) - (sin_joint4 * (t104 - ((t30 * t44) + (t34 * t43))));
+  const Scalar t111 = t28 + ((cos_joint4 * t107) - (sin_joint4 * t109));
+  const Scalar t112 = ((Scalar(0.008548000000000002) * t22) + (((t17 * t23) - (t13 * t25)) - (t15 * t27))) + t108;
+  const Scalar t113 = t29 + ((sin_joint4 * t107) + (cos_joint4 * t109));
+  tau[2] = t113;
+  const Scalar t114 = ((t14 * t27) - (Scalar(0.0006000000000000033) * t22)) + t110;
+  const Scalar t115 = (((t31 * t43) - (Scalar(1.3642000000000003) * t35)) + t106) - ((t17 * t26) + (t13 * t27));
   // inward pass: body 3 link3
-  const Scalar t117 = ((cos_joint3 * t112) - (sin_joint3 * t113)) - (Scalar(0.42000000000000004) * ((sin_joint3 * t115) + (cos_joint3 * t116)));
-  const Scalar t118 = ((sin_joint3 * t112) + (cos_joint3 * t113)) + (Scalar(0.42000000000000004) * ((cos_joint3 * t115) - (sin_joint3 * t116)));
-  tau[1] = (t5 + ((t2 * t6) - (t1 * t8))) + t118;
+  const Scalar t116 = ((cos_joint3 * t111) - (sin_joint3 * t112)) - (Scalar(0.42000000000000004) * ((sin_joint3 * t114) + (cos_joint3 * t115)));
+  const Scalar t117 = ((sin_joint3 * t111) + (cos_joint3 * t112)) + (Scalar(0.42000000000000004) * ((cos_joint3 * t114) - (sin_joint3 * t115)));
+  tau[1] = (t5 + ((t2 * t6) - (t1 * t8))) + t117;
   // inward pass: body 2 link2
-  const Scalar t119 = cos_joint2 * (t114 - ((((Scalar(0.00030010000000000003) * t3) + (Scalar(0.01279) * a[1])) + (Scalar(1.4336696670000004) * t4)) + ((t1 * t7) + (v[1] * t6))));
+  const Scalar t118 = cos_joint2 * (t113 - ((((Scalar(0.00030010000000000003) * t3) + (Scalar(0.01279) * a[1])) + (Scalar(1.4336696670000004) * t4)) + ((t1 * t7) + (v[1] * t6))));
   // outputs
-  tau[0] = (Scalar(1.4602500000000005) * a[0]) + (t119 - (sin_joint2 * ((((Scalar(0.00030010000000000003) * t4) - (Scalar(3.3299999999999996e-05) * a[1])) - ((v[1] * t8) + (t2 * t7))) + t117)));
+  tau[0] = (Scalar(1.4602500000000005) * a[0]) + (t118 - (sin_joint2 * ((((Scalar(0.00030010000000000003) * t4) - (Scalar(3.3299999999999996e-05) * a[1])) - ((v[1] * t8) + (t2 * t7))) + t116)));
 }
 
-}  // namespace rbdc_gen::arm7::common::inverse_dynamics_b5abc1b4eaf7
+}  // namespace rbdc_gen::arm7::common::inverse_dynamics_abeb8230d99f

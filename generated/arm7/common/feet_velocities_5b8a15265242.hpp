@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::feet_velocities_5fcad138c5b1 {
+namespace rbdc_gen::arm7::common::feet_velocities_5b8a15265242 {
 
 /// World linear velocities of the feet.
 ///
@@ -19,11 +19,11 @@ namespace rbdc_gen::arm7::common::feet_velocities_5fcad138c5b1 {
 /// @param pdot out 3x1: foot velocities, world frame, one column per foot
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             137   71    0     0    14    0    222
+///             119   63    0     0    14    0    196
 template <class Scalar>
 RBDC_HOST_DEVICE inline void feet_velocities(const Scalar* q, const Scalar* v, Scalar* pdot) noexcept {
   // sines and cosines of the joint angles
-  const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
+  const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], Scalar(0.30000000000000004) + q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);
   const Scalar sin_joint1 = joint_trig.sin[0];
   const Scalar cos_joint1 = joint_trig.cos[0];
@@ -67,53 +67,43 @@ RBDC_HOST_DEVICE inline void feet_velocities(const Scalar* q, const Scalar* v, S
   const Scalar t21 = (t9 * cos_joint5) - (t14 * sin_joint5);
   // world frames: body 6 link6
   const Scalar t22 = (t16 * cos_joint6) - (t11 * sin_joint6);
-  const Scalar t23 = (t16 * sin_joint6) + (t11 * cos_joint6);
-  const Scalar t24 = (t18 * cos_joint6) - (t13 * sin_joint6);
-  const Scalar t25 = (t18 * sin_joint6) + (t13 * cos_joint6);
-  const Scalar t26 = (t20 * cos_joint6) - (t15 * sin_joint6);
-  const Scalar t27 = (t20 * sin_joint6) + (t15 * cos_joint6);
-  // world frames: body 7 link7
-  const Scalar t28 = (Scalar(0.955336489125606) * t22) - (Scalar(0.29552020666133966) * t23);
-  const Scalar t29 = (Scalar(0.955336489125606) * t24) - (Scalar(0.29552020666133966) * t25);
-  const Scalar t30 = (Scalar(0.955336489125606) * t26) - (Scalar(0.29552020666133966) * t27);
+  const Scalar t23 = (t18 * cos_joint6) - (t13 * sin_joint6);
+  const Scalar t24 = (t20 * cos_joint6) - (t15 * sin_joint6);
   // outward pass, velocities: body 2 link2
-  const Scalar t31 = sin_joint2 * v[0];
+  const Scalar t25 = sin_joint2 * v[0];
   // outward pass, velocities: body 3 link3
-  const Scalar t32 = Scalar(0.42000000000000004) * v[1];
-  const Scalar t33 = Scalar(0.42000000000000004) * t31;
-  const Scalar t34 = (sin_joint3 * v[1]) - (cos_joint3 * t31);
-  const Scalar t35 = (cos_joint3 * t32) + (sin_joint3 * t33);
-  const Scalar t36 = v[2] + (cos_joint2 * v[0]);
+  const Scalar t26 = Scalar(0.42000000000000004) * v[1];
+  const Scalar t27 = Scalar(0.42000000000000004) * t25;
+  const Scalar t28 = (sin_joint3 * v[1]) - (cos_joint3 * t25);
+  const Scalar t29 = (cos_joint3 * t26) + (sin_joint3 * t27);
+  const Scalar t30 = v[2] + (cos_joint2 * v[0]);
   // outward pass, velocities: body 4 link4
-  const Scalar t37 = (cos_joint4 * t34) + (sin_joint4 * t36);
-  const Scalar t38 = sin_joint4 * t35;
-  const Scalar t39 = ((sin_joint3 * t31) + (cos_joint3 * v[1])) - v[3];
+  const Scalar t31 = (cos_joint4 * t28) + (sin_joint4 * t30);
+  const Scalar t32 = sin_joint4 * t29;
+  const Scalar t33 = ((sin_joint3 * t25) + (cos_joint3 * v[1])) - v[3];
   // outward pass, velocities: body 5 link5
-  const Scalar t40 = (cos_joint4 * t35) + (Scalar(0.39) * t39);
-  const Scalar t41 = ((cos_joint3 * t33) - (sin_joint3 * t32)) - (Scalar(0.39) * t37);
-  const Scalar t42 = (cos_joint5 * t37) + (sin_joint5 * t39);
-  const Scalar t43 = (cos_joint5 * t40) + (sin_joint5 * t41);
-  const Scalar t44 = v[4] + ((cos_joint4 * t36) - (sin_joint4 * t34));
+  const Scalar t34 = (cos_joint4 * t29) + (Scalar(0.39) * t33);
+  const Scalar t35 = ((cos_joint3 * t27) - (sin_joint3 * t26)) - (Scalar(0.39) * t31);
+  const Scalar t36 = (cos_joint5 * t31) + (sin_joint5 * t33);
+  const Scalar t37 = (cos_joint5 * t34) + (sin_joint5 * t35);
+  const Scalar t38 = v[4] + ((cos_joint4 * t30) - (sin_joint4 * t28));
   // outward pass, velocities: body 6 link6
-  const Scalar t45 = (cos_joint6 * t42) - (sin_joint6 * t44);
-  const Scalar t46 = (sin_joint6 * t43) - (cos_joint6 * t38);
-  const Scalar t47 = v[5] + ((cos_joint5 * t39) - (sin_joint5 * t37));
+  const Scalar t39 = (cos_joint6 * t36) - (sin_joint6 * t38);
+  const Scalar t40 = (cos_joint6 * t37) + (sin_joint6 * t32);
+  const Scalar t41 = v[5] + ((cos_joint5 * t33) - (sin_joint5 * t31));
   // outward pass, velocities: body 7 link7
-  const Scalar t48 = ((cos_joint6 * t43) + (sin_joint6 * t38)) + (Scalar(0.08) * t47);
-  const Scalar t49 = ((cos_joint5 * t41) - (sin_joint5 * t40)) - (Scalar(0.08) * t45);
-  const Scalar t50 = (Scalar(0.955336489125606) * t45) - (Scalar(0.29552020666133966) * ((sin_joint6 * t42) + (cos_joint6 * t44)));
-  const Scalar t51 = (Scalar(0.955336489125606) * t48) - (Scalar(0.29552020666133966) * t46);
-  const Scalar t52 = (Scalar(0.29552020666133966) * t48) + (Scalar(0.955336489125606) * t46);
+  const Scalar t42 = ((cos_joint5 * t35) - (sin_joint5 * t34)) - (Scalar(0.023641616532907167) * ((sin_joint6 * t36) + (cos_joint6 * t38)));
+  const Scalar t43 = ((sin_joint6 * t37) - (cos_joint6 * t32)) + (Scalar(0.023641616532907167) * t41);
   // foot tool_foot
-  const Scalar t53 = ((cos_joint7 * t51) + (sin_joint7 * t49)) + (Scalar(0.11) * ((cos_joint7 * t47) - (sin_joint7 * t50)));
-  const Scalar t54 = ((cos_joint7 * t49) - (sin_joint7 * t51)) - (Scalar(0.11) * ((cos_joint7 * t50) + (sin_joint7 * t47)));
-  const Scalar t55 = (((cos_joint7 * t28) - (t17 * sin_joint7)) * t53) - (((sin_joint7 * t28) + (t17 * cos_joint7)) * t54);
-  pdot[0] = t55 + (((Scalar(0.29552020666133966) * t22) + (Scalar(0.955336489125606) * t23)) * t52);
-  const Scalar t56 = (((cos_joint7 * t29) + (t19 * sin_joint7)) * t53) + (((t19 * cos_joint7) - (sin_joint7 * t29)) * t54);
-  pdot[1] = t56 + (((Scalar(0.29552020666133966) * t24) + (Scalar(0.955336489125606) * t25)) * t52);
-  const Scalar t57 = (((cos_joint7 * t30) + (t21 * sin_joint7)) * t53) + (((t21 * cos_joint7) - (sin_joint7 * t30)) * t54);
+  const Scalar t44 = ((cos_joint7 * t40) + (sin_joint7 * t42)) + (Scalar(0.1864269191300485) * ((cos_joint7 * t41) - (sin_joint7 * t39)));
+  const Scalar t45 = ((cos_joint7 * t42) - (sin_joint7 * t40)) - (Scalar(0.1864269191300485) * ((cos_joint7 * t39) + (sin_joint7 * t41)));
+  const Scalar t46 = (((t22 * cos_joint7) - (t17 * sin_joint7)) * t44) - (((t22 * sin_joint7) + (t17 * cos_joint7)) * t45);
+  pdot[0] = t46 + (((t16 * sin_joint6) + (t11 * cos_joint6)) * t43);
+  const Scalar t47 = (((t23 * cos_joint7) + (t19 * sin_joint7)) * t44) + (((t19 * cos_joint7) - (t23 * sin_joint7)) * t45);
+  pdot[1] = t47 + (((t18 * sin_joint6) + (t13 * cos_joint6)) * t43);
+  const Scalar t48 = (((t24 * cos_joint7) + (t21 * sin_joint7)) * t44) + (((t21 * cos_joint7) - (t24 * sin_joint7)) * t45);
   // outputs
-  pdot[2] = t57 + (((Scalar(0.29552020666133966) * t26) + (Scalar(0.955336489125606) * t27)) * t52);
+  pdot[2] = t48 + (((t20 * sin_joint6) + (t15 * cos_joint6)) * t43);
 }
 
-}  // namespace rbdc_gen::arm7::common::feet_velocities_5fcad138c5b1
+}  // namespace rbdc_gen::arm7::common::feet_velocities_5b8a15265242

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::feet_jacobian_22d135a8869b {
+namespace rbdc_gen::arm7::common::feet_jacobian_4a382f97b553 {
 
 /// Stacked feet Jacobian J (paper 000 Alg. 6, App. B).
 ///
@@ -18,11 +18,11 @@ namespace rbdc_gen::arm7::common::feet_jacobian_22d135a8869b {
 /// @param J out 3x7: feet Jacobian, world-frame foot velocities from v
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             102   62    0     0    12    4    180
+///              96   60    0     0    12    4    172
 template <class Scalar>
 RBDC_HOST_DEVICE inline void feet_jacobian(const Scalar* q, Scalar* J) noexcept {
   // sines and cosines of the joint angles
-  const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], q[5]};
+  const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], Scalar(0.30000000000000004) + q[5]};
   const auto joint_trig = joint_sincos(joint_angle);
   const Scalar sin_joint1 = joint_trig.sin[0];
   const Scalar cos_joint1 = joint_trig.cos[0];
@@ -76,49 +76,46 @@ RBDC_HOST_DEVICE inline void feet_jacobian(const Scalar* q, Scalar* J) noexcept 
   const Scalar t31 = (t26 * sin_joint6) + (t18 * cos_joint6);
   const Scalar t32 = (t28 * sin_joint6) + (t20 * cos_joint6);
   // world frames: body 7 link7
-  const Scalar t33 = t21 + (Scalar(0.08) * t30);
-  const Scalar t34 = t22 + (Scalar(0.08) * t31);
-  const Scalar t35 = t23 + (Scalar(0.08) * t32);
-  const Scalar t36 = (Scalar(0.29552020666133966) * ((t24 * cos_joint6) - (t16 * sin_joint6))) + (Scalar(0.955336489125606) * t30);
-  const Scalar t37 = (Scalar(0.29552020666133966) * ((t26 * cos_joint6) - (t18 * sin_joint6))) + (Scalar(0.955336489125606) * t31);
-  const Scalar t38 = (Scalar(0.29552020666133966) * ((t28 * cos_joint6) - (t20 * sin_joint6))) + (Scalar(0.955336489125606) * t32);
+  const Scalar t33 = t21 - (Scalar(0.023641616532907167) * ((t24 * cos_joint6) - (t16 * sin_joint6)));
+  const Scalar t34 = t22 - (Scalar(0.023641616532907167) * ((t26 * cos_joint6) - (t18 * sin_joint6)));
+  const Scalar t35 = t23 - (Scalar(0.023641616532907167) * ((t28 * cos_joint6) - (t20 * sin_joint6)));
   // foot tool_foot
-  const Scalar t39 = t33 + (Scalar(0.11) * t36);
-  J[1] = t39;
-  const Scalar t40 = t34 + (Scalar(0.11) * t37);
-  J[0] = -t40;
-  J[5] = -((sin_joint1 * t40) + (cos_joint1 * t39));
-  const Scalar t41 = t35 + (Scalar(0.11) * t38);
+  const Scalar t36 = t33 + (Scalar(0.1864269191300485) * t30);
+  J[1] = t36;
+  const Scalar t37 = t34 + (Scalar(0.1864269191300485) * t31);
+  J[0] = -t37;
+  J[5] = -((sin_joint1 * t37) + (cos_joint1 * t36));
+  const Scalar t38 = t35 + (Scalar(0.1864269191300485) * t32);
   // Jacobian of foot tool_foot
-  const Scalar t42 = t41 - Scalar(0.33999999999999997);
-  J[3] = cos_joint1 * t42;
-  J[4] = sin_joint1 * t42;
-  const Scalar t43 = t39 - t4;
-  const Scalar t44 = t40 - t5;
-  J[8] = (t1 * t44) - (t3 * t43);
-  const Scalar t45 = t41 - t6;
-  J[6] = (t3 * t45) - (cos_joint2 * t44);
-  J[7] = (cos_joint2 * t43) - (t1 * t45);
-  J[10] = -((t14 * t43) + (t8 * t45));
-  const Scalar t46 = t10 - t11;
-  J[9] = (t45 * t46) + (t14 * t44);
-  J[11] = (t8 * t44) - (t43 * t46);
-  const Scalar t47 = t39 - t21;
-  const Scalar t48 = t40 - t22;
-  J[14] = (t16 * t48) - (t18 * t47);
-  J[17] = -((t25 * t48) + (t27 * t47));
-  const Scalar t49 = t41 - t23;
-  J[12] = (t18 * t49) - (t20 * t48);
-  J[13] = (t20 * t47) - (t16 * t49);
-  J[15] = (t27 * t49) - (t29 * t48);
-  J[16] = (t29 * t47) + (t25 * t49);
-  const Scalar t50 = t39 - t33;
-  const Scalar t51 = t40 - t34;
-  J[20] = (t36 * t51) - (t37 * t50);
-  const Scalar t52 = t41 - t35;
+  const Scalar t39 = t38 - Scalar(0.33999999999999997);
+  J[3] = cos_joint1 * t39;
+  J[4] = sin_joint1 * t39;
+  const Scalar t40 = t36 - t4;
+  const Scalar t41 = t37 - t5;
+  J[8] = (t1 * t41) - (t3 * t40);
+  const Scalar t42 = t38 - t6;
+  J[6] = (t3 * t42) - (cos_joint2 * t41);
+  J[7] = (cos_joint2 * t40) - (t1 * t42);
+  J[10] = -((t14 * t40) + (t8 * t42));
+  const Scalar t43 = t10 - t11;
+  J[9] = (t42 * t43) + (t14 * t41);
+  J[11] = (t8 * t41) - (t40 * t43);
+  const Scalar t44 = t36 - t21;
+  const Scalar t45 = t37 - t22;
+  J[14] = (t16 * t45) - (t18 * t44);
+  J[17] = -((t25 * t45) + (t27 * t44));
+  const Scalar t46 = t38 - t23;
+  J[12] = (t18 * t46) - (t20 * t45);
+  J[13] = (t20 * t44) - (t16 * t46);
+  J[15] = (t27 * t46) - (t29 * t45);
+  J[16] = (t29 * t44) + (t25 * t46);
+  const Scalar t47 = t36 - t33;
+  const Scalar t48 = t37 - t34;
+  J[20] = (t30 * t48) - (t31 * t47);
+  const Scalar t49 = t38 - t35;
   // outputs
-  J[18] = (t37 * t52) - (t38 * t51);
-  J[19] = (t38 * t50) - (t36 * t52);
+  J[18] = (t31 * t49) - (t32 * t48);
+  J[19] = (t32 * t47) - (t30 * t49);
 }
 
-}  // namespace rbdc_gen::arm7::common::feet_jacobian_22d135a8869b
+}  // namespace rbdc_gen::arm7::common::feet_jacobian_4a382f97b553

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::bias_b3df6e6694da {
+namespace rbdc_gen::arm7::common::bias_9e5a9cb3051d {
 
 /// Bias c + g in one pass (inverse dynamics at a = 0, without the acceleration terms).
 ///
@@ -19,11 +19,11 @@ namespace rbdc_gen::arm7::common::bias_b3df6e6694da {
 /// @param cg out 7x1: quadratic velocity and gravity terms c + g
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             320  227    0     0    12    1    560
+///             314  227    0     0    12    1    554
 template <class Scalar>
 RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
   // sines and cosines of the joint angles
-  const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], q[5], q[6]};
+  const Scalar joint_angle[6] = {q[1], q[2], q[3], q[4], Scalar(0.30000000000000004) + q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);
   const Scalar sin_joint2 = joint_trig.sin[0];
   const Scalar cos_joint2 = joint_trig.cos[0];
@@ -99,11 +99,11 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Scalar t55 = ((t19 * cos_joint5) - (t34 * sin_joint5)) - (v[4] * t49);
   const Scalar t56 = ((cos_joint5 * t45) + (sin_joint5 * t46)) + (v[4] * t52);
   const Scalar t57 = ((cos_joint5 * t46) - (sin_joint5 * t45)) - (v[4] * t51);
-  const Scalar t58 = (((Scalar(0.010680452843509228) * t54) - (Scalar(3.57e-06) * t55)) - (Scalar(1.9380000000000004e-05) * t35)) + (Scalar(0.036480000000000005) * t37);
-  const Scalar t59 = (((Scalar(1.9380000000000004e-05) * t54) + (Scalar(0.005769800000000001) * t55)) - (Scalar(0.012880486843509217) * t35)) + ((Scalar(0.00017) * t57) - (Scalar(0.036480000000000005) * t56));
-  const Scalar t60 = (((Scalar(0.010680452843509228) * t49) - (Scalar(3.57e-06) * t50)) + (Scalar(1.9380000000000004e-05) * t53)) - (Scalar(0.036480000000000005) * t32);
+  const Scalar t58 = (((Scalar(0.010470946581545473) * t54) - (Scalar(3.57e-06) * t55)) - (Scalar(1.9380000000000004e-05) * t35)) + (Scalar(0.036480000000000005) * t37);
+  const Scalar t59 = (((Scalar(1.9380000000000004e-05) * t54) + (Scalar(0.005769800000000001) * t55)) - (Scalar(0.012670980581545463) * t35)) + ((Scalar(0.00017) * t57) - (Scalar(0.036480000000000005) * t56));
+  const Scalar t60 = (((Scalar(0.010470946581545473) * t49) - (Scalar(3.57e-06) * t50)) + (Scalar(1.9380000000000004e-05) * t53)) - (Scalar(0.036480000000000005) * t32);
   const Scalar t61 = ((Scalar(0.005769800000000001) * t53) - (Scalar(3.57e-06) * t49)) + (Scalar(0.00017) * t32);
-  const Scalar t62 = (((Scalar(1.9380000000000004e-05) * t49) + (Scalar(0.005769800000000001) * t50)) + (Scalar(0.012880486843509217) * t53)) + ((Scalar(0.00017) * t52) - (Scalar(0.036480000000000005) * t51));
+  const Scalar t62 = (((Scalar(1.9380000000000004e-05) * t49) + (Scalar(0.005769800000000001) * t50)) + (Scalar(0.012670980581545463) * t53)) + ((Scalar(0.00017) * t52) - (Scalar(0.036480000000000005) * t51));
   const Scalar t63 = Scalar(0.036480000000000005) * t53;
   const Scalar t64 = Scalar(0.00017) * t53;
   const Scalar t65 = (Scalar(0.036480000000000005) * t49) - (Scalar(0.00017) * t50);
@@ -116,62 +116,61 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   const Scalar t71 = v[5] + t50;
   const Scalar t72 = ((t54 * cos_joint6) + (t35 * sin_joint6)) - (v[5] * t68);
   const Scalar t73 = ((t54 * sin_joint6) - (t35 * cos_joint6)) + (v[5] * t67);
-  const Scalar t74 = Scalar(0.04726753550266307) * (((t56 * cos_joint6) - (t37 * sin_joint6)) - (v[5] * t70));
-  const Scalar t75 = ((Scalar(0.009281063680426091) * t55) - (Scalar(3.12e-07) * t73)) + (t74 - (Scalar(0.0033246023249400717) * (((t56 * sin_joint6) + (t37 * cos_joint6)) + (v[5] * t69))));
-  const Scalar t76 = (Scalar(0.0033246023249400717) * t57) - (((Scalar(0.0004300674048256379) * t72) + (Scalar(3.12e-07) * t55)) + (Scalar(0.005179540006592342) * t73));
-  const Scalar t77 = (Scalar(0.0004300674048256379) * t68) + (Scalar(0.04726753550266307) * t52);
-  const Scalar t78 = ((Scalar(0.009281063680426091) * t71) - (Scalar(3.12e-07) * t68)) + ((Scalar(0.04726753550266307) * t69) - (Scalar(0.0033246023249400717) * t70));
-  const Scalar t79 = (Scalar(0.0033246023249400717) * t52) - (((Scalar(0.0004300674048256379) * t67) + (Scalar(3.12e-07) * t71)) + (Scalar(0.005179540006592342) * t68));
-  const Scalar t80 = Scalar(0.04726753550266307) * t71;
-  const Scalar t81 = Scalar(0.0033246023249400717) * t71;
-  const Scalar t82 = (Scalar(0.0033246023249400717) * t68) - (Scalar(0.04726753550266307) * t67);
-  const Scalar t83 = (((t71 * t79) - (t68 * t78)) - ((t52 * t81) + (t70 * t82))) - ((Scalar(0.0004300674048256379) * t73) + (Scalar(0.04726753550266307) * t57));
-  const Scalar t84 = (Scalar(0.04726753550266307) * t55) - ((t71 * t81) + (t68 * t82));
-  const Scalar t85 = ((Scalar(0.0033246023249400717) * t73) - (Scalar(0.04726753550266307) * t72)) + ((t68 * t80) + (t67 * t81));
-  const Scalar t86 = ((t67 * t82) - (t71 * t80)) - (Scalar(0.0033246023249400717) * t55);
+  const Scalar t74 = Scalar(0.04613888858286713) * (((t56 * cos_joint6) - (t37 * sin_joint6)) - (v[5] * t70));
+  const Scalar t75 = t74 + (Scalar(0.010792397947272122) * (((t56 * sin_joint6) + (t37 * cos_joint6)) + (v[5] * t69)));
+  const Scalar t76 = (((Scalar(0.001107344194171041) * t72) - (Scalar(2.980649846071891e-07) * t55)) - (Scalar(0.004760527482664834) * t73)) - (Scalar(0.010792397947272122) * t57);
+  const Scalar t77 = ((Scalar(9.220230447833797e-08) * t71) + (Scalar(0.001107344194171041) * t68)) - (Scalar(0.04613888858286713) * t52);
+  const Scalar t78 = (((Scalar(9.220230447833797e-08) * t67) + (Scalar(0.00928106368042609) * t71)) - (Scalar(2.980649846071891e-07) * t68)) + ((Scalar(0.04613888858286713) * t69) + (Scalar(0.010792397947272122) * t70));
+  const Scalar t79 = (((Scalar(0.001107344194171041) * t67) - (Scalar(2.980649846071891e-07) * t71)) - (Scalar(0.004760527482664834) * t68)) - (Scalar(0.010792397947272122) * t52);
+  const Scalar t80 = Scalar(0.04613888858286713) * t71;
+  const Scalar t81 = (Scalar(0.04613888858286713) * t67) + (Scalar(0.010792397947272122) * t68);
+  const Scalar t82 = Scalar(0.010792397947272122) * t71;
+  const Scalar t83 = ((t71 * t79) - (t68 * t78)) + ((t52 * t82) + (t70 * t81));
+  const Scalar t84 = ((t68 * t77) - (t67 * t79)) + ((t70 * t80) - (t69 * t82));
+  const Scalar t85 = (Scalar(0.04613888858286713) * t55) + ((t71 * t82) + (t68 * t81));
+  const Scalar t86 = ((t68 * t80) - (t67 * t82)) - ((Scalar(0.04613888858286713) * t72) + (Scalar(0.010792397947272122) * t73));
+  const Scalar t87 = (Scalar(0.010792397947272122) * t55) - ((t67 * t81) + (t71 * t80));
   // outward pass: body 7 link7
-  const Scalar t87 = (Scalar(0.29552020666133966) * t72) + (Scalar(0.955336489125606) * t73);
-  cg[6] = Scalar(0.0005) * t87;
-  const Scalar t88 = (Scalar(0.955336489125606) * t67) - (Scalar(0.29552020666133966) * t68);
-  const Scalar t89 = Scalar(0.0005) * (v[6] + ((Scalar(0.29552020666133966) * t67) + (Scalar(0.955336489125606) * t68)));
-  const Scalar t90 = ((t71 * cos_joint7) - (sin_joint7 * t88)) * t89;
-  const Scalar t91 = ((cos_joint7 * t88) + (t71 * sin_joint7)) * t89;
+  const Scalar t88 = Scalar(0.0005) * t73;
+  cg[6] = t88;
+  const Scalar t89 = Scalar(0.0005) * (v[6] + t68);
+  const Scalar t90 = ((t71 * cos_joint7) - (t67 * sin_joint7)) * t89;
+  const Scalar t91 = ((t67 * cos_joint7) + (t71 * sin_joint7)) * t89;
   // inward pass: body 7 link7
-  const Scalar t92 = (cos_joint7 * t90) + (sin_joint7 * t91);
-  const Scalar t93 = t83 + ((Scalar(0.955336489125606) * t92) + (Scalar(0.00014776010333066982) * t87));
-  const Scalar t94 = (t75 + (((t70 * t80) + (t69 * t81)) - ((t68 * t77) + (t67 * t79)))) + ((sin_joint7 * t90) - (cos_joint7 * t91));
-  cg[5] = t94;
-  const Scalar t95 = (t76 + (((t67 * t78) + (t71 * t77)) + ((t69 * t82) - (t52 * t80)))) + ((Scalar(0.000477668244562803) * t87) - (Scalar(0.29552020666133966) * t92));
+  const Scalar t92 = ((((Scalar(9.220230447833797e-08) * t55) + (Scalar(0.001107344194171041) * t73)) - (Scalar(0.04613888858286713) * t57)) + t83) + ((cos_joint7 * t90) + (sin_joint7 * t91));
+  const Scalar t93 = (((((Scalar(9.220230447833797e-08) * t72) + (Scalar(0.00928106368042609) * t55)) - (Scalar(2.980649846071891e-07) * t73)) + t75) + t84) + ((sin_joint7 * t90) - (cos_joint7 * t91));
+  cg[5] = t93;
+  const Scalar t94 = (t76 + (((t67 * t78) - (t71 * t77)) - ((t69 * t81) + (t52 * t80)))) + t88;
   // inward pass: body 6 link6
-  const Scalar t96 = (t58 + (((t50 * t62) - (t53 * t61)) + ((t52 * t65) + (t32 * t64)))) + ((cos_joint6 * t93) + (sin_joint6 * t95));
-  const Scalar t97 = (t66 - (((Scalar(3.57e-06) * t54) + (Scalar(0.005769800000000001) * t35)) + (Scalar(0.00017) * t37))) + t94;
-  const Scalar t98 = (t59 + (((t49 * t61) - (t50 * t60)) + ((t51 * t64) + (t52 * t63)))) + ((cos_joint6 * t95) - (sin_joint6 * t93));
-  cg[4] = t98;
-  const Scalar t99 = ((Scalar(0.036480000000000005) * t35) + ((t50 * t65) - (t53 * t64))) + ((cos_joint6 * t84) + (sin_joint6 * t86));
-  const Scalar t100 = t85 - ((Scalar(0.00017) * t35) + ((t53 * t63) + (t49 * t65)));
-  const Scalar t101 = (((Scalar(0.036480000000000005) * t54) - (Scalar(0.00017) * t55)) + ((t49 * t64) + (t50 * t63))) + ((cos_joint6 * t86) - (sin_joint6 * t84));
+  const Scalar t95 = (t58 + (((t50 * t62) - (t53 * t61)) + ((t52 * t65) + (t32 * t64)))) + ((cos_joint6 * t92) + (sin_joint6 * t94));
+  const Scalar t96 = (t66 - (((Scalar(3.57e-06) * t54) + (Scalar(0.005769800000000001) * t35)) + (Scalar(0.00017) * t37))) + t93;
+  const Scalar t97 = (t59 + (((t49 * t61) - (t50 * t60)) + ((t51 * t64) + (t52 * t63)))) + ((cos_joint6 * t94) - (sin_joint6 * t92));
+  cg[4] = t97;
+  const Scalar t98 = ((Scalar(0.036480000000000005) * t35) + ((t50 * t65) - (t53 * t64))) + ((cos_joint6 * t85) + (sin_joint6 * t87));
+  const Scalar t99 = t86 - ((Scalar(0.00017) * t35) + ((t53 * t63) + (t49 * t65)));
+  const Scalar t100 = (((Scalar(0.036480000000000005) * t54) - (Scalar(0.00017) * t55)) + ((t49 * t64) + (t50 * t63))) + ((cos_joint6 * t87) - (sin_joint6 * t85));
   // inward pass: body 5 link5
-  const Scalar t102 = (cos_joint5 * t99) - (sin_joint5 * t100);
-  const Scalar t103 = (sin_joint5 * t99) + (cos_joint5 * t100);
-  const Scalar t104 = t43 + (((cos_joint5 * t96) - (sin_joint5 * t97)) - (Scalar(0.39) * t103));
-  const Scalar t105 = t44 + (((sin_joint5 * t96) + (cos_joint5 * t97)) + (Scalar(0.39) * t102));
-  cg[3] = -t105;
-  const Scalar t106 = (((Scalar(0.004275000000000001) * t19) + (Scalar(0.4359367170000001) * t35)) + (((t29 * t40) + (t33 * t39)) - ((t31 * t42) + (t16 * t41)))) + t98;
+  const Scalar t101 = (cos_joint5 * t98) - (sin_joint5 * t99);
+  const Scalar t102 = (sin_joint5 * t98) + (cos_joint5 * t99);
+  const Scalar t103 = t43 + (((cos_joint5 * t95) - (sin_joint5 * t96)) - (Scalar(0.39) * t102));
+  const Scalar t104 = t44 + (((sin_joint5 * t95) + (cos_joint5 * t96)) + (Scalar(0.39) * t101));
+  cg[3] = -t104;
+  const Scalar t105 = (((Scalar(0.004275000000000001) * t19) + (Scalar(0.4359367170000001) * t35)) + (((t29 * t40) + (t33 * t39)) - ((t31 * t42) + (t16 * t41)))) + t97;
   // inward pass: body 4 link4
-  const Scalar t107 = (cos_joint4 * (((Scalar(1.3642000000000003) * t19) + (t30 * t42)) + t102)) - (sin_joint4 * (t101 - ((t29 * t42) + (t33 * t41))));
-  const Scalar t108 = t27 + ((cos_joint4 * t104) - (sin_joint4 * t106));
-  const Scalar t109 = ((((t17 * t22) - (t13 * t24)) - (t15 * t26)) - (Scalar(0.008548000000000002) * t5)) + t105;
-  const Scalar t110 = t28 + ((sin_joint4 * t104) + (cos_joint4 * t106));
-  cg[2] = t110;
-  const Scalar t111 = ((Scalar(0.0006000000000000033) * t5) + (t14 * t26)) + t107;
-  const Scalar t112 = (((t30 * t41) - (Scalar(1.3642000000000003) * t34)) + t103) - ((t17 * t25) + (t13 * t26));
-  cg[1] = t9 + (((sin_joint3 * t108) + (cos_joint3 * t109)) + (Scalar(0.42000000000000004) * ((cos_joint3 * t111) - (sin_joint3 * t112))));
+  const Scalar t106 = (cos_joint4 * (((Scalar(1.3642000000000003) * t19) + (t30 * t42)) + t101)) - (sin_joint4 * (t100 - ((t29 * t42) + (t33 * t41))));
+  const Scalar t107 = t27 + ((cos_joint4 * t103) - (sin_joint4 * t105));
+  const Scalar t108 = ((((t17 * t22) - (t13 * t24)) - (t15 * t26)) - (Scalar(0.008548000000000002) * t5)) + t104;
+  const Scalar t109 = t28 + ((sin_joint4 * t103) + (cos_joint4 * t105));
+  cg[2] = t109;
+  const Scalar t110 = ((Scalar(0.0006000000000000033) * t5) + (t14 * t26)) + t106;
+  const Scalar t111 = (((t30 * t41) - (Scalar(1.3642000000000003) * t34)) + t102) - ((t17 * t25) + (t13 * t26));
+  cg[1] = t9 + (((sin_joint3 * t107) + (cos_joint3 * t108)) + (Scalar(0.42000000000000004) * ((cos_joint3 * t110) - (sin_joint3 * t111))));
   // inward pass: body 3 link3
-  const Scalar t113 = ((cos_joint3 * t108) - (sin_joint3 * t109)) - (Scalar(0.42000000000000004) * ((sin_joint3 * t111) + (cos_joint3 * t112)));
+  const Scalar t112 = ((cos_joint3 * t107) - (sin_joint3 * t108)) - (Scalar(0.42000000000000004) * ((sin_joint3 * t110) + (cos_joint3 * t111)));
   // inward pass: body 2 link2
-  const Scalar t114 = cos_joint2 * ((((Scalar(1.4336696670000004) * t5) - (Scalar(0.00030010000000000003) * t4)) - ((t2 * t7) + (v[1] * t6))) + t110);
+  const Scalar t113 = cos_joint2 * ((((Scalar(1.4336696670000004) * t5) - (Scalar(0.00030010000000000003) * t4)) - ((t2 * t7) + (v[1] * t6))) + t109);
   // outputs
-  cg[0] = t114 - (sin_joint2 * (t113 - ((Scalar(0.00030010000000000003) * t5) + ((v[1] * t8) + (t3 * t7)))));
+  cg[0] = t113 - (sin_joint2 * (t112 - ((Scalar(0.00030010000000000003) * t5) + ((v[1] * t8) + (t3 * t7)))));
 }
 
-}  // namespace rbdc_gen::arm7::common::bias_b3df6e6694da
+}  // namespace rbdc_gen::arm7::common::bias_9e5a9cb3051d

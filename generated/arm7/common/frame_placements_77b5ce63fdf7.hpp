@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::frame_placements_9253a03eb356 {
+namespace rbdc_gen::arm7::common::frame_placements_77b5ce63fdf7 {
 
 /// Placements of the scene's frames: W_R_F and the origin (paper 000 Eqs. 15-18).
 ///
@@ -19,11 +19,11 @@ namespace rbdc_gen::arm7::common::frame_placements_9253a03eb356 {
 /// @param p out 3x2: frame origins, world frame, one column per frame
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///              86   44    0     0    14    2    146
+///              74   39    0     0    14    2    129
 template <class Scalar>
 RBDC_HOST_DEVICE inline void frame_placements(const Scalar* q, Scalar* R, Scalar* p) noexcept {
   // sines and cosines of the joint angles
-  const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
+  const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], Scalar(0.30000000000000004) + q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);
   const Scalar sin_joint1 = joint_trig.sin[0];
   const Scalar cos_joint1 = joint_trig.cos[0];
@@ -82,31 +82,24 @@ RBDC_HOST_DEVICE inline void frame_placements(const Scalar* q, Scalar* R, Scalar
   const Scalar t24 = (t12 * cos_joint5) - (t17 * sin_joint5);
   // world frames: body 6 link6
   const Scalar t25 = (t19 * cos_joint6) - (t14 * sin_joint6);
+  R[0] = (t25 * cos_joint7) - (t20 * sin_joint7);
+  R[3] = -((t25 * sin_joint7) + (t20 * cos_joint7));
   const Scalar t26 = (t19 * sin_joint6) + (t14 * cos_joint6);
+  R[6] = t26;
+  p[0] = ((t4 + (Scalar(0.39) * t14)) - (Scalar(0.023641616532907167) * t25)) + (Scalar(0.1864269191300485) * t26);
   const Scalar t27 = (t21 * cos_joint6) - (t16 * sin_joint6);
+  R[1] = (t27 * cos_joint7) + (t22 * sin_joint7);
+  R[4] = (t22 * cos_joint7) - (t27 * sin_joint7);
   const Scalar t28 = (t21 * sin_joint6) + (t16 * cos_joint6);
+  R[7] = t28;
+  p[1] = ((t5 + (Scalar(0.39) * t16)) - (Scalar(0.023641616532907167) * t27)) + (Scalar(0.1864269191300485) * t28);
   const Scalar t29 = (t23 * cos_joint6) - (t18 * sin_joint6);
+  R[2] = (t29 * cos_joint7) + (t24 * sin_joint7);
+  R[5] = (t24 * cos_joint7) - (t29 * sin_joint7);
   const Scalar t30 = (t23 * sin_joint6) + (t18 * cos_joint6);
-  // world frames: body 7 link7
-  const Scalar t31 = (Scalar(0.955336489125606) * t25) - (Scalar(0.29552020666133966) * t26);
-  R[0] = (cos_joint7 * t31) - (t20 * sin_joint7);
-  R[3] = -((sin_joint7 * t31) + (t20 * cos_joint7));
-  const Scalar t32 = (Scalar(0.29552020666133966) * t25) + (Scalar(0.955336489125606) * t26);
-  R[6] = t32;
-  p[0] = ((t4 + (Scalar(0.39) * t14)) + (Scalar(0.08) * t26)) + (Scalar(0.11) * t32);
-  const Scalar t33 = (Scalar(0.955336489125606) * t27) - (Scalar(0.29552020666133966) * t28);
-  R[1] = (cos_joint7 * t33) + (t22 * sin_joint7);
-  R[4] = (t22 * cos_joint7) - (sin_joint7 * t33);
-  const Scalar t34 = (Scalar(0.29552020666133966) * t27) + (Scalar(0.955336489125606) * t28);
-  R[7] = t34;
-  p[1] = ((t5 + (Scalar(0.39) * t16)) + (Scalar(0.08) * t28)) + (Scalar(0.11) * t34);
-  const Scalar t35 = (Scalar(0.955336489125606) * t29) - (Scalar(0.29552020666133966) * t30);
-  R[2] = (cos_joint7 * t35) + (t24 * sin_joint7);
-  R[5] = (t24 * cos_joint7) - (sin_joint7 * t35);
-  const Scalar t36 = (Scalar(0.29552020666133966) * t29) + (Scalar(0.955336489125606) * t30);
   // outputs
-  R[8] = t36;
-  p[2] = ((t6 + (Scalar(0.39) * t18)) + (Scalar(0.08) * t30)) + (Scalar(0.11) * t36);
+  R[8] = t30;
+  p[2] = ((t6 + (Scalar(0.39) * t18)) - (Scalar(0.023641616532907167) * t29)) + (Scalar(0.1864269191300485) * t30);
 }
 
-}  // namespace rbdc_gen::arm7::common::frame_placements_9253a03eb356
+}  // namespace rbdc_gen::arm7::common::frame_placements_77b5ce63fdf7

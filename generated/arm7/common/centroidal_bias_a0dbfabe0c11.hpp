@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::centroidal_bias_ee6b35105dda {
+namespace rbdc_gen::arm7::common::centroidal_bias_a0dbfabe0c11 {
 
 /// Centroidal momentum drift Ȧ_G v: the rate of h_G at a = 0.
 ///
@@ -19,11 +19,11 @@ namespace rbdc_gen::arm7::common::centroidal_bias_ee6b35105dda {
 /// @param Adot_v out 6x1: (k̇_G; l̇) at a = 0, world axes
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             431  296    0     0    14    0    741
+///             426  296    0     0    14    0    736
 template <class Scalar>
 RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, Scalar* Adot_v) noexcept {
   // sines and cosines of the joint angles
-  const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
+  const Scalar joint_angle[7] = {q[0], q[1], q[2], q[3], q[4], Scalar(0.30000000000000004) + q[5], q[6]};
   const auto joint_trig = joint_sincos(joint_angle);
   const Scalar sin_joint1 = joint_trig.sin[0];
   const Scalar cos_joint1 = joint_trig.cos[0];
@@ -63,9 +63,9 @@ RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, S
   const Scalar t17 = (t12 * cos_joint5) + (t7 * sin_joint5);
   const Scalar t18 = (t14 * cos_joint5) + (t9 * sin_joint5);
   // centre of mass
-  const Scalar t19 = (Scalar(0.0033246023249400717) * ((t16 * cos_joint6) - (t11 * sin_joint6))) + (Scalar(0.04726753550266307) * ((t16 * sin_joint6) + (t11 * cos_joint6)));
-  const Scalar t20 = (Scalar(0.0033246023249400717) * ((t17 * cos_joint6) - (t13 * sin_joint6))) + (Scalar(0.04726753550266307) * ((t17 * sin_joint6) + (t13 * cos_joint6)));
-  const Scalar t21 = (Scalar(0.0033246023249400717) * ((t18 * cos_joint6) - (t15 * sin_joint6))) + (Scalar(0.04726753550266307) * ((t18 * sin_joint6) + (t15 * cos_joint6)));
+  const Scalar t19 = (Scalar(0.04613888858286713) * ((t16 * sin_joint6) + (t11 * cos_joint6))) - (Scalar(0.010792397947272122) * ((t16 * cos_joint6) - (t11 * sin_joint6)));
+  const Scalar t20 = (Scalar(0.04613888858286713) * ((t17 * sin_joint6) + (t13 * cos_joint6))) - (Scalar(0.010792397947272122) * ((t17 * cos_joint6) - (t13 * sin_joint6)));
+  const Scalar t21 = (Scalar(0.04613888858286713) * ((t18 * sin_joint6) + (t15 * cos_joint6))) - (Scalar(0.010792397947272122) * ((t18 * cos_joint6) - (t15 * sin_joint6)));
   const Scalar t22 = ((Scalar(1.3642000000000003) * t11) + (((Scalar(0.00017) * t16) - (Scalar(0.036480000000000005) * ((t10 * sin_joint5) + (t5 * cos_joint5)))) + t19)) - (Scalar(0.0006000000000000033) * t5);
   const Scalar t23 = (Scalar(0.0006000000000000033) * t7) + ((Scalar(1.3642000000000003) * t13) + (((Scalar(0.00017) * t17) + (Scalar(0.036480000000000005) * ((t7 * cos_joint5) - (t12 * sin_joint5)))) + t20));
   const Scalar t24 = (Scalar(0.0006000000000000033) * t9) + ((Scalar(1.3642000000000003) * t15) + (((Scalar(0.00017) * t18) + (Scalar(0.036480000000000005) * ((t9 * cos_joint5) - (t14 * sin_joint5)))) + t21));
@@ -135,11 +135,11 @@ RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, S
   const Scalar t84 = ((cos_joint5 * t48) - (sin_joint5 * t63)) - (v[4] * t78);
   const Scalar t85 = ((cos_joint5 * t74) + (sin_joint5 * t75)) + (v[4] * t81);
   const Scalar t86 = ((cos_joint5 * t75) - (sin_joint5 * t74)) - (v[4] * t80);
-  const Scalar t87 = (((Scalar(0.010680452843509228) * t83) - (Scalar(3.57e-06) * t84)) - (Scalar(1.9380000000000004e-05) * t64)) - (Scalar(0.036480000000000005) * t66);
-  const Scalar t88 = (((Scalar(1.9380000000000004e-05) * t83) + (Scalar(0.005769800000000001) * t84)) - (Scalar(0.012880486843509217) * t64)) + ((Scalar(0.00017) * t86) - (Scalar(0.036480000000000005) * t85));
-  const Scalar t89 = (((Scalar(0.010680452843509228) * t78) - (Scalar(3.57e-06) * t79)) + (Scalar(1.9380000000000004e-05) * t82)) - (Scalar(0.036480000000000005) * t61);
+  const Scalar t87 = (((Scalar(0.010470946581545473) * t83) - (Scalar(3.57e-06) * t84)) - (Scalar(1.9380000000000004e-05) * t64)) - (Scalar(0.036480000000000005) * t66);
+  const Scalar t88 = (((Scalar(1.9380000000000004e-05) * t83) + (Scalar(0.005769800000000001) * t84)) - (Scalar(0.012670980581545463) * t64)) + ((Scalar(0.00017) * t86) - (Scalar(0.036480000000000005) * t85));
+  const Scalar t89 = (((Scalar(0.010470946581545473) * t78) - (Scalar(3.57e-06) * t79)) + (Scalar(1.9380000000000004e-05) * t82)) - (Scalar(0.036480000000000005) * t61);
   const Scalar t90 = ((Scalar(0.005769800000000001) * t82) - (Scalar(3.57e-06) * t78)) + (Scalar(0.00017) * t61);
-  const Scalar t91 = (((Scalar(1.9380000000000004e-05) * t78) + (Scalar(0.005769800000000001) * t79)) + (Scalar(0.012880486843509217) * t82)) + ((Scalar(0.00017) * t81) - (Scalar(0.036480000000000005) * t80));
+  const Scalar t91 = (((Scalar(1.9380000000000004e-05) * t78) + (Scalar(0.005769800000000001) * t79)) + (Scalar(0.012670980581545463) * t82)) + ((Scalar(0.00017) * t81) - (Scalar(0.036480000000000005) * t80));
   const Scalar t92 = Scalar(0.036480000000000005) * t82;
   const Scalar t93 = Scalar(0.00017) * t82;
   const Scalar t94 = (Scalar(0.036480000000000005) * t78) - (Scalar(0.00017) * t79);
@@ -152,73 +152,71 @@ RBDC_HOST_DEVICE inline void centroidal_bias(const Scalar* q, const Scalar* v, S
   const Scalar t100 = v[5] + t79;
   const Scalar t101 = ((cos_joint6 * t83) + (sin_joint6 * t64)) - (v[5] * t97);
   const Scalar t102 = ((sin_joint6 * t83) - (cos_joint6 * t64)) + (v[5] * t96);
-  const Scalar t103 = Scalar(0.04726753550266307) * (((cos_joint6 * t85) + (sin_joint6 * t66)) - (v[5] * t99));
-  const Scalar t104 = ((Scalar(0.009281063680426091) * t84) - (Scalar(3.12e-07) * t102)) + (t103 - (Scalar(0.0033246023249400717) * (((sin_joint6 * t85) - (cos_joint6 * t66)) + (v[5] * t98))));
-  const Scalar t105 = (Scalar(0.0033246023249400717) * t86) - (((Scalar(0.0004300674048256379) * t101) + (Scalar(3.12e-07) * t84)) + (Scalar(0.005179540006592342) * t102));
-  const Scalar t106 = (Scalar(0.0004300674048256379) * t97) + (Scalar(0.04726753550266307) * t81);
-  const Scalar t107 = ((Scalar(0.009281063680426091) * t100) - (Scalar(3.12e-07) * t97)) + ((Scalar(0.04726753550266307) * t98) - (Scalar(0.0033246023249400717) * t99));
-  const Scalar t108 = (Scalar(0.0033246023249400717) * t81) - (((Scalar(0.0004300674048256379) * t96) + (Scalar(3.12e-07) * t100)) + (Scalar(0.005179540006592342) * t97));
-  const Scalar t109 = Scalar(0.04726753550266307) * t100;
-  const Scalar t110 = Scalar(0.0033246023249400717) * t100;
-  const Scalar t111 = (Scalar(0.0033246023249400717) * t97) - (Scalar(0.04726753550266307) * t96);
-  const Scalar t112 = (((t100 * t108) - (t97 * t107)) - ((t81 * t110) + (t99 * t111))) - ((Scalar(0.0004300674048256379) * t102) + (Scalar(0.04726753550266307) * t86));
-  const Scalar t113 = (Scalar(0.04726753550266307) * t84) - ((t100 * t110) + (t97 * t111));
-  const Scalar t114 = ((Scalar(0.0033246023249400717) * t102) - (Scalar(0.04726753550266307) * t101)) + ((t97 * t109) + (t96 * t110));
-  const Scalar t115 = ((t96 * t111) - (t100 * t109)) - (Scalar(0.0033246023249400717) * t84);
+  const Scalar t103 = Scalar(0.04613888858286713) * (((cos_joint6 * t85) + (sin_joint6 * t66)) - (v[5] * t99));
+  const Scalar t104 = t103 + (Scalar(0.010792397947272122) * (((sin_joint6 * t85) - (cos_joint6 * t66)) + (v[5] * t98)));
+  const Scalar t105 = (((Scalar(0.001107344194171041) * t101) - (Scalar(2.980649846071891e-07) * t84)) - (Scalar(0.004760527482664834) * t102)) - (Scalar(0.010792397947272122) * t86);
+  const Scalar t106 = ((Scalar(9.220230447833797e-08) * t100) + (Scalar(0.001107344194171041) * t97)) - (Scalar(0.04613888858286713) * t81);
+  const Scalar t107 = (((Scalar(9.220230447833797e-08) * t96) + (Scalar(0.00928106368042609) * t100)) - (Scalar(2.980649846071891e-07) * t97)) + ((Scalar(0.04613888858286713) * t98) + (Scalar(0.010792397947272122) * t99));
+  const Scalar t108 = (((Scalar(0.001107344194171041) * t96) - (Scalar(2.980649846071891e-07) * t100)) - (Scalar(0.004760527482664834) * t97)) - (Scalar(0.010792397947272122) * t81);
+  const Scalar t109 = Scalar(0.04613888858286713) * t100;
+  const Scalar t110 = (Scalar(0.04613888858286713) * t96) + (Scalar(0.010792397947272122) * t97);
+  const Scalar t111 = Scalar(0.010792397947272122) * t100;
+  const Scalar t112 = ((t100 * t108) - (t97 * t107)) + ((t81 * t111) + (t99 * t110));
+  const Scalar t113 = ((t97 * t106) - (t96 * t108)) + ((t99 * t109) - (t98 * t111));
+  const Scalar t114 = (Scalar(0.04613888858286713) * t84) + ((t100 * t111) + (t97 * t110));
+  const Scalar t115 = ((t97 * t109) - (t96 * t111)) - ((Scalar(0.04613888858286713) * t101) + (Scalar(0.010792397947272122) * t102));
+  const Scalar t116 = (Scalar(0.010792397947272122) * t84) - ((t96 * t110) + (t100 * t109));
   // outward pass: body 7 link7
-  const Scalar t116 = (Scalar(0.29552020666133966) * t101) + (Scalar(0.955336489125606) * t102);
-  const Scalar t117 = (Scalar(0.955336489125606) * t96) - (Scalar(0.29552020666133966) * t97);
-  const Scalar t118 = Scalar(0.0005) * (v[6] + ((Scalar(0.29552020666133966) * t96) + (Scalar(0.955336489125606) * t97)));
-  const Scalar t119 = ((cos_joint7 * t100) - (sin_joint7 * t117)) * t118;
-  const Scalar t120 = ((cos_joint7 * t117) + (sin_joint7 * t100)) * t118;
+  const Scalar t117 = Scalar(0.0005) * (v[6] + t97);
+  const Scalar t118 = ((cos_joint7 * t100) - (sin_joint7 * t96)) * t117;
+  const Scalar t119 = ((cos_joint7 * t96) + (sin_joint7 * t100)) * t117;
   // inward pass: body 7 link7
-  const Scalar t121 = (cos_joint7 * t119) + (sin_joint7 * t120);
-  const Scalar t122 = t112 + ((Scalar(0.955336489125606) * t121) + (Scalar(0.00014776010333066982) * t116));
-  const Scalar t123 = (t104 + (((t99 * t109) + (t98 * t110)) - ((t97 * t106) + (t96 * t108)))) + ((sin_joint7 * t119) - (cos_joint7 * t120));
-  const Scalar t124 = (t105 + (((t96 * t107) + (t100 * t106)) + ((t98 * t111) - (t81 * t109)))) + ((Scalar(0.000477668244562803) * t116) - (Scalar(0.29552020666133966) * t121));
+  const Scalar t120 = ((((Scalar(9.220230447833797e-08) * t84) + (Scalar(0.001107344194171041) * t102)) - (Scalar(0.04613888858286713) * t86)) + t112) + ((cos_joint7 * t118) + (sin_joint7 * t119));
+  const Scalar t121 = (((((Scalar(9.220230447833797e-08) * t101) + (Scalar(0.00928106368042609) * t84)) - (Scalar(2.980649846071891e-07) * t102)) + t104) + t113) + ((sin_joint7 * t118) - (cos_joint7 * t119));
+  const Scalar t122 = (t105 + (((t96 * t107) - (t100 * t106)) - ((t98 * t110) + (t81 * t109)))) + (Scalar(0.0005) * t102);
   // inward pass: body 6 link6
-  const Scalar t125 = (t87 + (((t79 * t91) - (t82 * t90)) + ((t81 * t94) + (t61 * t93)))) + ((cos_joint6 * t122) + (sin_joint6 * t124));
-  const Scalar t126 = (((Scalar(0.00017) * t66) - ((Scalar(3.57e-06) * t83) + (Scalar(0.005769800000000001) * t64))) + t95) + t123;
-  const Scalar t127 = (t88 + (((t78 * t90) - (t79 * t89)) + ((t80 * t93) + (t81 * t92)))) + ((cos_joint6 * t124) - (sin_joint6 * t122));
-  const Scalar t128 = ((Scalar(0.036480000000000005) * t64) + ((t79 * t94) - (t82 * t93))) + ((cos_joint6 * t113) + (sin_joint6 * t115));
-  const Scalar t129 = t114 - ((Scalar(0.00017) * t64) + ((t82 * t92) + (t78 * t94)));
-  const Scalar t130 = (((Scalar(0.036480000000000005) * t83) - (Scalar(0.00017) * t84)) + ((t78 * t93) + (t79 * t92))) + ((cos_joint6 * t115) - (sin_joint6 * t113));
+  const Scalar t123 = (t87 + (((t79 * t91) - (t82 * t90)) + ((t81 * t94) + (t61 * t93)))) + ((cos_joint6 * t120) + (sin_joint6 * t122));
+  const Scalar t124 = (((Scalar(0.00017) * t66) - ((Scalar(3.57e-06) * t83) + (Scalar(0.005769800000000001) * t64))) + t95) + t121;
+  const Scalar t125 = (t88 + (((t78 * t90) - (t79 * t89)) + ((t80 * t93) + (t81 * t92)))) + ((cos_joint6 * t122) - (sin_joint6 * t120));
+  const Scalar t126 = ((Scalar(0.036480000000000005) * t64) + ((t79 * t94) - (t82 * t93))) + ((cos_joint6 * t114) + (sin_joint6 * t116));
+  const Scalar t127 = t115 - ((Scalar(0.00017) * t64) + ((t82 * t92) + (t78 * t94)));
+  const Scalar t128 = (((Scalar(0.036480000000000005) * t83) - (Scalar(0.00017) * t84)) + ((t78 * t93) + (t79 * t92))) + ((cos_joint6 * t116) - (sin_joint6 * t114));
   // inward pass: body 5 link5
-  const Scalar t131 = (cos_joint5 * t128) - (sin_joint5 * t129);
-  const Scalar t132 = (sin_joint5 * t128) + (cos_joint5 * t129);
-  const Scalar t133 = t72 + (((cos_joint5 * t125) - (sin_joint5 * t126)) - (Scalar(0.39) * t132));
-  const Scalar t134 = (((Scalar(0.004275000000000001) * t48) + (Scalar(0.4359367170000001) * t64)) + (((t58 * t69) + (t62 * t68)) - ((t60 * t71) + (t45 * t70)))) + t127;
-  const Scalar t135 = ((Scalar(1.3642000000000003) * t48) + (t59 * t71)) + t131;
-  const Scalar t136 = t130 - ((t58 * t71) + (t62 * t70));
+  const Scalar t129 = (cos_joint5 * t126) - (sin_joint5 * t127);
+  const Scalar t130 = (sin_joint5 * t126) + (cos_joint5 * t127);
+  const Scalar t131 = t72 + (((cos_joint5 * t123) - (sin_joint5 * t124)) - (Scalar(0.39) * t130));
+  const Scalar t132 = (((Scalar(0.004275000000000001) * t48) + (Scalar(0.4359367170000001) * t64)) + (((t58 * t69) + (t62 * t68)) - ((t60 * t71) + (t45 * t70)))) + t125;
+  const Scalar t133 = ((Scalar(1.3642000000000003) * t48) + (t59 * t71)) + t129;
+  const Scalar t134 = t128 - ((t58 * t71) + (t62 * t70));
   // inward pass: body 4 link4
-  const Scalar t137 = ((Scalar(0.44740351700000014) * t47) + (((t43 * t53) - (t46 * t52)) + (t45 * t55))) + ((cos_joint4 * t133) - (sin_joint4 * t134));
-  const Scalar t138 = t56 + (t73 + (((sin_joint5 * t125) + (cos_joint5 * t126)) + (Scalar(0.39) * t131)));
-  const Scalar t139 = ((Scalar(0.0006000000000000033) * t31) + (t43 * t55)) + ((cos_joint4 * t135) - (sin_joint4 * t136));
-  const Scalar t140 = (((t59 * t70) - (Scalar(1.3642000000000003) * t63)) + t132) - ((t46 * t54) + (t42 * t55));
+  const Scalar t135 = ((Scalar(0.44740351700000014) * t47) + (((t43 * t53) - (t46 * t52)) + (t45 * t55))) + ((cos_joint4 * t131) - (sin_joint4 * t132));
+  const Scalar t136 = t56 + (t73 + (((sin_joint5 * t123) + (cos_joint5 * t124)) + (Scalar(0.39) * t129)));
+  const Scalar t137 = ((Scalar(0.0006000000000000033) * t31) + (t43 * t55)) + ((cos_joint4 * t133) - (sin_joint4 * t134));
+  const Scalar t138 = (((t59 * t70) - (Scalar(1.3642000000000003) * t63)) + t130) - ((t46 * t54) + (t42 * t55));
   // inward pass: body 3 link3
-  const Scalar t141 = (cos_joint3 * t139) - (sin_joint3 * t140);
-  const Scalar t142 = (sin_joint3 * t139) + (cos_joint3 * t140);
-  const Scalar t143 = (((cos_joint3 * t137) - (sin_joint3 * t138)) - (Scalar(0.42000000000000004) * t142)) - ((Scalar(0.00030010000000000003) * t31) + ((v[1] * t34) + (t29 * t33)));
-  const Scalar t144 = (((Scalar(1.4336696670000004) * t31) - (Scalar(0.00030010000000000003) * t30)) - ((t28 * t33) + (v[1] * t32))) + (t57 + ((sin_joint4 * t133) + (cos_joint4 * t134)));
-  const Scalar t145 = t141 - ((v[1] * t37) + (t29 * t36));
-  const Scalar t146 = (((Scalar(3.7500000000000004) * t30) - (Scalar(0.0011099999999999999) * t31)) + ((t29 * t35) - (t28 * t37))) + t142;
-  const Scalar t147 = (((Scalar(0.0006000000000000033) * t47) + (t43 * t54)) + ((sin_joint4 * t135) + (cos_joint4 * t136))) - ((t28 * t36) + (v[1] * t35));
+  const Scalar t139 = (cos_joint3 * t137) - (sin_joint3 * t138);
+  const Scalar t140 = (sin_joint3 * t137) + (cos_joint3 * t138);
+  const Scalar t141 = (((cos_joint3 * t135) - (sin_joint3 * t136)) - (Scalar(0.42000000000000004) * t140)) - ((Scalar(0.00030010000000000003) * t31) + ((v[1] * t34) + (t29 * t33)));
+  const Scalar t142 = (((Scalar(1.4336696670000004) * t31) - (Scalar(0.00030010000000000003) * t30)) - ((t28 * t33) + (v[1] * t32))) + (t57 + ((sin_joint4 * t131) + (cos_joint4 * t132)));
+  const Scalar t143 = t139 - ((v[1] * t37) + (t29 * t36));
+  const Scalar t144 = (((Scalar(3.7500000000000004) * t30) - (Scalar(0.0011099999999999999) * t31)) + ((t29 * t35) - (t28 * t37))) + t140;
+  const Scalar t145 = (((Scalar(0.0006000000000000033) * t47) + (t43 * t54)) + ((sin_joint4 * t133) + (cos_joint4 * t134))) - ((t28 * t36) + (v[1] * t35));
   // inward pass: body 2 link2
-  const Scalar t148 = (cos_joint2 * t145) + (sin_joint2 * t147);
-  const Scalar t149 = (cos_joint2 * t147) - (sin_joint2 * t145);
-  Adot_v[5] = t149;
-  const Scalar t150 = (t38 + (((sin_joint3 * t137) + (cos_joint3 * t138)) + (Scalar(0.42000000000000004) * t141))) + (Scalar(0.33999999999999997) * t148);
-  const Scalar t151 = (v[0] * (Scalar(0.010339999999999995) * v[0])) + (((cos_joint2 * t143) + (sin_joint2 * t144)) - (Scalar(0.33999999999999997) * t146));
-  const Scalar t152 = t146 - (v[0] * (Scalar(0.02099999999999999) * v[0]));
+  const Scalar t146 = (cos_joint2 * t143) + (sin_joint2 * t145);
+  const Scalar t147 = (cos_joint2 * t145) - (sin_joint2 * t143);
+  Adot_v[5] = t147;
+  const Scalar t148 = (t38 + (((sin_joint3 * t135) + (cos_joint3 * t136)) + (Scalar(0.42000000000000004) * t139))) + (Scalar(0.33999999999999997) * t146);
+  const Scalar t149 = (v[0] * (Scalar(0.010339999999999995) * v[0])) + (((cos_joint2 * t141) + (sin_joint2 * t142)) - (Scalar(0.33999999999999997) * t144));
+  const Scalar t150 = t144 - (v[0] * (Scalar(0.02099999999999999) * v[0]));
   // inward pass: body 1 link1
-  const Scalar t153 = (cos_joint1 * t148) - (sin_joint1 * t152);
-  Adot_v[1] = ((sin_joint1 * t151) + (cos_joint1 * t150)) + ((t25 * t149) - (t27 * t153));
-  Adot_v[3] = t153;
-  const Scalar t154 = (sin_joint1 * t148) + (cos_joint1 * t152);
+  const Scalar t151 = (cos_joint1 * t146) - (sin_joint1 * t150);
+  Adot_v[1] = ((sin_joint1 * t149) + (cos_joint1 * t148)) + ((t25 * t147) - (t27 * t151));
+  Adot_v[3] = t151;
+  const Scalar t152 = (sin_joint1 * t146) + (cos_joint1 * t150);
   // outputs
-  Adot_v[0] = ((cos_joint1 * t151) - (sin_joint1 * t150)) + ((t27 * t154) - (t26 * t149));
-  Adot_v[2] = ((cos_joint2 * t144) - (sin_joint2 * t143)) + ((t26 * t153) - (t25 * t154));
-  Adot_v[4] = t154;
+  Adot_v[0] = ((cos_joint1 * t149) - (sin_joint1 * t148)) + ((t27 * t152) - (t26 * t147));
+  Adot_v[2] = ((cos_joint2 * t142) - (sin_joint2 * t141)) + ((t26 * t151) - (t25 * t152));
+  Adot_v[4] = t152;
 }
 
-}  // namespace rbdc_gen::arm7::common::centroidal_bias_ee6b35105dda
+}  // namespace rbdc_gen::arm7::common::centroidal_bias_a0dbfabe0c11

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::feet_positions_ab689e8ae6e8 {
+namespace rbdc_gen::arm7::common::feet_positions_1f2fa59578c5 {
 
 /// World positions of the feet (paper 000 Eqs. 16-18).
 ///
@@ -18,11 +18,11 @@ namespace rbdc_gen::arm7::common::feet_positions_ab689e8ae6e8 {
 /// @param p out 3x1: foot positions, world frame, one column per foot
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///              62   32    0     0    12    0    106
+///              56   30    0     0    12    0     98
 template <class Scalar>
 RBDC_HOST_DEVICE inline void feet_positions(const Scalar* q, Scalar* p) noexcept {
   // sines and cosines of the joint angles
-  const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], q[5]};
+  const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], Scalar(0.30000000000000004) + q[5]};
   const auto joint_trig = joint_sincos(joint_angle);
   const Scalar sin_joint1 = joint_trig.sin[0];
   const Scalar cos_joint1 = joint_trig.cos[0];
@@ -53,18 +53,14 @@ RBDC_HOST_DEVICE inline void feet_positions(const Scalar* q, Scalar* p) noexcept
   const Scalar t10 = (((t4 * cos_joint4) + (t1 * sin_joint4)) * cos_joint5) - (((t0 * sin_joint3) + (sin_joint1 * cos_joint3)) * sin_joint5);
   const Scalar t11 = (((t5 * cos_joint4) + (t3 * sin_joint4)) * cos_joint5) + (((cos_joint1 * cos_joint3) - (t2 * sin_joint3)) * sin_joint5);
   const Scalar t12 = (((cos_joint2 * sin_joint4) - (t6 * cos_joint4)) * cos_joint5) + ((sin_joint2 * sin_joint3) * sin_joint5);
-  // world frames: body 6 link6
-  const Scalar t13 = (t10 * sin_joint6) + (t7 * cos_joint6);
-  const Scalar t14 = (t11 * sin_joint6) + (t8 * cos_joint6);
-  const Scalar t15 = (t12 * sin_joint6) + (t9 * cos_joint6);
-  // foot tool_foot
-  const Scalar t16 = Scalar(0.11) * ((Scalar(0.29552020666133966) * ((t10 * cos_joint6) - (t7 * sin_joint6))) + (Scalar(0.955336489125606) * t13));
-  p[0] = (((Scalar(0.42000000000000004) * t1) + (Scalar(0.39) * t7)) + (Scalar(0.08) * t13)) + t16;
-  const Scalar t17 = Scalar(0.11) * ((Scalar(0.29552020666133966) * ((t11 * cos_joint6) - (t8 * sin_joint6))) + (Scalar(0.955336489125606) * t14));
-  p[1] = (((Scalar(0.42000000000000004) * t3) + (Scalar(0.39) * t8)) + (Scalar(0.08) * t14)) + t17;
-  const Scalar t18 = Scalar(0.11) * ((Scalar(0.29552020666133966) * ((t12 * cos_joint6) - (t9 * sin_joint6))) + (Scalar(0.955336489125606) * t15));
+  // world frames: body 7 link7
+  const Scalar t13 = ((Scalar(0.42000000000000004) * t1) + (Scalar(0.39) * t7)) - (Scalar(0.023641616532907167) * ((t10 * cos_joint6) - (t7 * sin_joint6)));
+  p[0] = t13 + (Scalar(0.1864269191300485) * ((t10 * sin_joint6) + (t7 * cos_joint6)));
+  const Scalar t14 = ((Scalar(0.42000000000000004) * t3) + (Scalar(0.39) * t8)) - (Scalar(0.023641616532907167) * ((t11 * cos_joint6) - (t8 * sin_joint6)));
+  p[1] = t14 + (Scalar(0.1864269191300485) * ((t11 * sin_joint6) + (t8 * cos_joint6)));
+  const Scalar t15 = ((Scalar(0.33999999999999997) + (Scalar(0.42000000000000004) * cos_joint2)) + (Scalar(0.39) * t9)) - (Scalar(0.023641616532907167) * ((t12 * cos_joint6) - (t9 * sin_joint6)));
   // outputs
-  p[2] = (((Scalar(0.33999999999999997) + (Scalar(0.42000000000000004) * cos_joint2)) + (Scalar(0.39) * t9)) + (Scalar(0.08) * t15)) + t18;
+  p[2] = t15 + (Scalar(0.1864269191300485) * ((t12 * sin_joint6) + (t9 * cos_joint6)));
 }
 
-}  // namespace rbdc_gen::arm7::common::feet_positions_ab689e8ae6e8
+}  // namespace rbdc_gen::arm7::common::feet_positions_1f2fa59578c5

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::gravity_derivatives_8b066fbff17e {
+namespace rbdc_gen::arm7::common::gravity_derivatives_2a45e3a5aa56 {
 
 /// Derivative of the gravity terms g.
 ///
@@ -19,11 +19,11 @@ namespace rbdc_gen::arm7::common::gravity_derivatives_8b066fbff17e {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             147   86    0     0    10    5    248
-/// schedule: scalar tree: 248 arithmetic instructions, looped RNEA derivatives 1942 (cost 2709)
+/// schedule: scalar tree: 248 arithmetic instructions, looped RNEA derivatives 1940 (cost 2707)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq) noexcept {
   // sines and cosines of the joint angles
-  const Scalar joint_angle[5] = {q[1], q[2], q[3], q[4], q[5]};
+  const Scalar joint_angle[5] = {q[1], q[2], q[3], q[4], Scalar(0.30000000000000004) + q[5]};
   const auto joint_trig = joint_sincos(joint_angle);
   const Scalar sin_joint2 = joint_trig.sin[0];
   const Scalar cos_joint2 = joint_trig.cos[0];
@@ -74,27 +74,28 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   // derivatives: outward pass, forces: body 5 link5
   const Scalar t12 = Scalar(0.00017) * t7;
   // derivatives: outward pass, forces: body 6 link6
-  const Scalar t13 = Scalar(0.04726753550266307) * t9;
-  const Scalar t14 = (Scalar(0.04726753550266307) * t10) - (Scalar(0.0033246023249400717) * t11);
-  const Scalar t15 = Scalar(0.0033246023249400717) * t9;
+  const Scalar t13 = Scalar(0.04613888858286713) * t9;
+  const Scalar t14 = (Scalar(0.04613888858286713) * t10) + (Scalar(0.010792397947272122) * t11);
+  const Scalar t15 = Scalar(0.010792397947272122) * t9;
   // derivatives: inward pass, composites: body 6 link6
-  const Scalar t16 = cos_joint6 * t13;
-  const Scalar t17 = sin_joint6 * t15;
-  const Scalar t18 = (sin_joint6 * t13) + (cos_joint6 * t15);
-  const Scalar t19 = (Scalar(0.036480000000000005) * t7) + (t17 - t16);
-  const Scalar t20 = t14 - t12;
-  const Scalar t21 = ((Scalar(0.00017) * t9) - (Scalar(0.036480000000000005) * t8)) + t18;
-  const Scalar t22 = (Scalar(0.0033246023249400717) * cos_joint6) + (Scalar(0.04726753550266307) * sin_joint6);
-  const Scalar t23 = (Scalar(0.04726753550266307) * cos_joint6) - (Scalar(0.0033246023249400717) * sin_joint6);
-  const Scalar t24 = Scalar(0.00017) + t22;
+  const Scalar t16 = (cos_joint6 * t13) + (sin_joint6 * t15);
+  dg_dq[39] = t16;
+  const Scalar t17 = (sin_joint6 * t13) - (cos_joint6 * t15);
+  const Scalar t18 = (Scalar(0.036480000000000005) * t7) - t16;
+  const Scalar t19 = t14 - t12;
+  const Scalar t20 = ((Scalar(0.00017) * t9) - (Scalar(0.036480000000000005) * t8)) + t17;
+  const Scalar t21 = Scalar(0.010792397947272122) * cos_joint6;
+  const Scalar t22 = Scalar(0.04613888858286713) * sin_joint6;
+  const Scalar t23 = (Scalar(0.010792397947272122) * sin_joint6) + (Scalar(0.04613888858286713) * cos_joint6);
+  const Scalar t24 = Scalar(0.00017) + (t22 - t21);
   // derivatives: inward pass, composites: body 5 link5
-  const Scalar t25 = ((cos_joint5 * t19) - (sin_joint5 * t20)) - (Scalar(1.3642000000000003) * t3);
-  const Scalar t26 = (Scalar(1.3642000000000003) * t6) + ((sin_joint5 * t19) + (cos_joint5 * t20));
+  const Scalar t25 = ((cos_joint5 * t18) - (sin_joint5 * t19)) - (Scalar(1.3642000000000003) * t3);
+  const Scalar t26 = (Scalar(1.3642000000000003) * t6) + ((sin_joint5 * t18) + (cos_joint5 * t19));
   const Scalar t27 = (cos_joint5 * t24) - (Scalar(0.036480000000000005) * sin_joint5);
   const Scalar t28 = (sin_joint5 * t24) + (Scalar(0.036480000000000005) * cos_joint5);
   const Scalar t29 = Scalar(1.3642000000000003) + t23;
   // derivatives: inward pass, composites: body 4 link4
-  const Scalar t30 = (Scalar(0.005886000000000033) * cos_joint2) + ((cos_joint4 * t25) - (sin_joint4 * t21));
+  const Scalar t30 = (Scalar(0.005886000000000033) * cos_joint2) + ((cos_joint4 * t25) - (sin_joint4 * t20));
   const Scalar t31 = (cos_joint4 * t27) - (sin_joint4 * t29);
   const Scalar t32 = (sin_joint4 * t27) + (cos_joint4 * t29);
   dg_dq[10] = (t1 * (cos_joint3 * t32)) - (t0 * t31);
@@ -109,75 +110,72 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   dg_dq[11] = (t1 * ((cos_joint3 * t36) + (sin_joint3 * t27))) + (t0 * (sin_joint4 * t28));
   dg_dq[18] = (t2 * t27) - (t3 * t36);
   // derivatives: rows: body 6 link6
-  const Scalar t37 = cos_joint5 * t23;
-  dg_dq[26] = (t7 * t37) - (t22 * t35);
-  const Scalar t38 = sin_joint5 * t23;
-  const Scalar t39 = (cos_joint4 * t37) + (sin_joint4 * t22);
-  dg_dq[12] = (t1 * ((sin_joint3 * t38) - (cos_joint3 * t39))) - (t0 * ((sin_joint4 * t37) - (cos_joint4 * t22)));
-  dg_dq[19] = (t3 * t39) + (t2 * t38);
+  const Scalar t37 = t21 - t22;
+  const Scalar t38 = cos_joint5 * t23;
+  dg_dq[26] = (t7 * t38) + (t35 * t37);
+  const Scalar t39 = sin_joint5 * t23;
+  const Scalar t40 = (cos_joint4 * t38) - (sin_joint4 * t37);
+  dg_dq[12] = (t1 * ((sin_joint3 * t39) - (cos_joint3 * t40))) - (t0 * ((sin_joint4 * t38) + (cos_joint4 * t37)));
+  dg_dq[19] = (t3 * t40) + (t2 * t39);
   // derivatives: subtree entries: body 2 link2
-  const Scalar t40 = t1 * t34;
-  dg_dq[9] = t40;
+  const Scalar t41 = t1 * t34;
+  dg_dq[9] = t41;
   // derivatives: ancestor entries: body 2 link2
-  const Scalar t41 = sin_joint2 * (((Scalar(0.0006000000000000033) * t2) + ((sin_joint4 * t25) + (cos_joint4 * t21))) - (t0 * t34));
-  dg_dq[7] = (cos_joint2 * (t40 + ((sin_joint3 * t26) - (cos_joint3 * t30)))) - t41;
+  const Scalar t42 = sin_joint2 * (((Scalar(0.0006000000000000033) * t2) + ((sin_joint4 * t25) + (cos_joint4 * t20))) - (t0 * t34));
+  dg_dq[7] = (cos_joint2 * (t41 + ((sin_joint3 * t26) - (cos_joint3 * t30)))) - t42;
   // derivatives: subtree entries: body 3 link3
-  const Scalar t42 = t3 * t32;
-  dg_dq[17] = -t42;
-  const Scalar t43 = (t2 * t31) - (t3 * t33);
-  dg_dq[16] = t43;
-  const Scalar t44 = t26 + (t2 * t32);
-  const Scalar t45 = t30 + t42;
-  dg_dq[14] = (sin_joint2 * ((cos_joint3 * t44) + (sin_joint3 * t45))) + (cos_joint2 * t43);
-  dg_dq[15] = (cos_joint3 * t45) - (sin_joint3 * t44);
+  const Scalar t43 = t3 * t32;
+  dg_dq[17] = -t43;
+  const Scalar t44 = (t2 * t31) - (t3 * t33);
+  dg_dq[16] = t44;
+  const Scalar t45 = t26 + (t2 * t32);
+  const Scalar t46 = t30 + t43;
+  dg_dq[14] = (sin_joint2 * ((cos_joint3 * t45) + (sin_joint3 * t46))) + (cos_joint2 * t44);
+  dg_dq[15] = (cos_joint3 * t46) - (sin_joint3 * t45);
   // derivatives: subtree entries: body 4 link4
-  const Scalar t46 = t7 * t28;
-  dg_dq[25] = -t46;
-  const Scalar t47 = t7 * t29;
-  const Scalar t48 = t27 * t35;
-  dg_dq[24] = t48 - t47;
-  const Scalar t49 = t47 - t48;
-  const Scalar t50 = (t28 * t35) - t21;
-  const Scalar t51 = t25 - t46;
+  const Scalar t47 = t7 * t28;
+  dg_dq[25] = -t47;
+  const Scalar t48 = t7 * t29;
+  const Scalar t49 = t27 * t35;
+  dg_dq[24] = t49 - t48;
+  const Scalar t50 = t48 - t49;
+  const Scalar t51 = (t28 * t35) - t20;
+  const Scalar t52 = t25 - t47;
   // derivatives: ancestor entries: body 4 link4
-  const Scalar t52 = (cos_joint4 * t50) - (sin_joint4 * t51);
-  dg_dq[22] = (sin_joint3 * t52) + (cos_joint3 * t49);
-  const Scalar t53 = (sin_joint4 * t50) + (cos_joint4 * t51);
-  dg_dq[21] = (cos_joint2 * t53) - (sin_joint2 * ((cos_joint3 * t52) - (sin_joint3 * t49)));
-  dg_dq[23] = t53;
+  const Scalar t53 = (cos_joint4 * t51) - (sin_joint4 * t52);
+  dg_dq[22] = (sin_joint3 * t53) + (cos_joint3 * t50);
+  const Scalar t54 = (sin_joint4 * t51) + (cos_joint4 * t52);
+  dg_dq[21] = (cos_joint2 * t54) - (sin_joint2 * ((cos_joint3 * t53) - (sin_joint3 * t50)));
+  dg_dq[23] = t54;
   // derivatives: subtree entries: body 5 link5
-  const Scalar t54 = t9 * t23;
-  dg_dq[33] = t54;
-  const Scalar t55 = (t8 * t24) + (Scalar(0.036480000000000005) * t9);
-  dg_dq[32] = -t55;
-  const Scalar t56 = (t12 - t14) + (t8 * t23);
-  const Scalar t57 = t19 + t54;
+  const Scalar t55 = t9 * t23;
+  dg_dq[33] = t55;
+  const Scalar t56 = (t8 * t24) + (Scalar(0.036480000000000005) * t9);
+  dg_dq[32] = -t56;
+  const Scalar t57 = (t12 - t14) + (t8 * t23);
+  const Scalar t58 = t18 + t55;
   // derivatives: ancestor entries: body 5 link5
-  const Scalar t58 = (cos_joint5 * t56) - (sin_joint5 * t57);
-  const Scalar t59 = (sin_joint5 * t56) + (cos_joint5 * t57);
-  dg_dq[31] = -t59;
-  const Scalar t60 = (cos_joint4 * t58) + (sin_joint4 * t55);
-  dg_dq[29] = (sin_joint3 * t60) + (cos_joint3 * t59);
-  const Scalar t61 = (sin_joint4 * t58) - (cos_joint4 * t55);
-  dg_dq[28] = (cos_joint2 * t61) - (sin_joint2 * ((cos_joint3 * t60) - (sin_joint3 * t59)));
-  dg_dq[30] = t61;
+  const Scalar t59 = (cos_joint5 * t57) - (sin_joint5 * t58);
+  const Scalar t60 = (sin_joint5 * t57) + (cos_joint5 * t58);
+  dg_dq[31] = -t60;
+  const Scalar t61 = (cos_joint4 * t59) + (sin_joint4 * t56);
+  dg_dq[29] = (sin_joint3 * t61) + (cos_joint3 * t60);
+  const Scalar t62 = (sin_joint4 * t59) - (cos_joint4 * t56);
+  dg_dq[28] = (cos_joint2 * t62) - (sin_joint2 * ((cos_joint3 * t61) - (sin_joint3 * t60)));
+  dg_dq[30] = t62;
   // derivatives: subtree entries: body 6 link6
-  const Scalar t62 = (Scalar(0.04726753550266307) * t11) + (Scalar(0.0033246023249400717) * t10);
-  dg_dq[40] = -t62;
+  const Scalar t63 = (Scalar(0.010792397947272122) * t10) - (Scalar(0.04613888858286713) * t11);
+  dg_dq[40] = t63;
   // derivatives: ancestor entries: body 6 link6
-  const Scalar t63 = t16 - t17;
-  dg_dq[39] = t63;
-  const Scalar t64 = (cos_joint5 * t18) + (sin_joint5 * t62);
-  const Scalar t65 = sin_joint5 * t18;
-  const Scalar t66 = cos_joint5 * t62;
-  dg_dq[38] = t66 - t65;
-  const Scalar t67 = t65 - t66;
-  const Scalar t68 = (cos_joint4 * t64) - (sin_joint4 * t63);
-  dg_dq[36] = (sin_joint3 * t68) + (cos_joint3 * t67);
-  const Scalar t69 = (sin_joint4 * t64) + (cos_joint4 * t63);
+  const Scalar t64 = (cos_joint5 * t17) - (sin_joint5 * t63);
+  const Scalar t65 = (sin_joint5 * t17) + (cos_joint5 * t63);
+  dg_dq[38] = -t65;
+  const Scalar t66 = (cos_joint4 * t64) - (sin_joint4 * t16);
+  dg_dq[36] = (sin_joint3 * t66) + (cos_joint3 * t65);
+  const Scalar t67 = (sin_joint4 * t64) + (cos_joint4 * t16);
   // outputs
-  dg_dq[35] = (cos_joint2 * t69) - (sin_joint2 * ((cos_joint3 * t68) - (sin_joint3 * t67)));
-  dg_dq[37] = t69;
+  dg_dq[35] = (cos_joint2 * t67) - (sin_joint2 * ((cos_joint3 * t66) - (sin_joint3 * t65)));
+  dg_dq[37] = t67;
 }
 
-}  // namespace rbdc_gen::arm7::common::gravity_derivatives_8b066fbff17e
+}  // namespace rbdc_gen::arm7::common::gravity_derivatives_2a45e3a5aa56

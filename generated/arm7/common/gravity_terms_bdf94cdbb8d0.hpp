@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::gravity_terms_084cd34cb1c4 {
+namespace rbdc_gen::arm7::common::gravity_terms_bdf94cdbb8d0 {
 
 /// Gravity terms g (paper 000 Alg. 3).
 ///
@@ -18,11 +18,11 @@ namespace rbdc_gen::arm7::common::gravity_terms_084cd34cb1c4 {
 /// @param g out 7x1: gravity terms
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///              48   26    0     0    10    1     85
+///              48   27    0     0    10    1     86
 template <class Scalar>
 RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept {
   // sines and cosines of the joint angles
-  const Scalar joint_angle[5] = {q[1], q[2], q[3], q[4], q[5]};
+  const Scalar joint_angle[5] = {q[1], q[2], q[3], q[4], Scalar(0.30000000000000004) + q[5]};
   const auto joint_trig = joint_sincos(joint_angle);
   const Scalar sin_joint2 = joint_trig.sin[0];
   const Scalar cos_joint2 = joint_trig.cos[0];
@@ -48,14 +48,14 @@ RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept 
   const Scalar t6 = (t4 * cos_joint5) + (t3 * sin_joint5);
   const Scalar t7 = (t3 * cos_joint5) - (t4 * sin_joint5);
   // outward pass: body 6 link6
-  const Scalar t8 = Scalar(0.04726753550266307) * t7;
-  const Scalar t9 = (Scalar(0.04726753550266307) * ((t6 * cos_joint6) - (t5 * sin_joint6))) - (Scalar(0.0033246023249400717) * ((t6 * sin_joint6) + (t5 * cos_joint6)));
+  const Scalar t8 = Scalar(0.04613888858286713) * t7;
+  const Scalar t9 = (Scalar(0.04613888858286713) * ((t6 * cos_joint6) - (t5 * sin_joint6))) + (Scalar(0.010792397947272122) * ((t6 * sin_joint6) + (t5 * cos_joint6)));
   g[5] = t9;
-  const Scalar t10 = Scalar(0.0033246023249400717) * t7;
+  const Scalar t10 = Scalar(0.010792397947272122) * t7;
   // inward pass: body 6 link6
-  const Scalar t11 = (Scalar(0.036480000000000005) * t5) + ((sin_joint6 * t10) - (cos_joint6 * t8));
+  const Scalar t11 = (Scalar(0.036480000000000005) * t5) - ((cos_joint6 * t8) + (sin_joint6 * t10));
   const Scalar t12 = t9 - (Scalar(0.00017) * t5);
-  const Scalar t13 = ((Scalar(0.00017) * t7) - (Scalar(0.036480000000000005) * t6)) + ((sin_joint6 * t8) + (cos_joint6 * t10));
+  const Scalar t13 = ((Scalar(0.00017) * t7) - (Scalar(0.036480000000000005) * t6)) + ((sin_joint6 * t8) - (cos_joint6 * t10));
   g[4] = t13;
   // inward pass: body 5 link5
   const Scalar t14 = ((cos_joint5 * t11) - (sin_joint5 * t12)) - (Scalar(1.3642000000000003) * t3);
@@ -70,4 +70,4 @@ RBDC_HOST_DEVICE inline void gravity_terms(const Scalar* q, Scalar* g) noexcept 
   g[2] = t17;
 }
 
-}  // namespace rbdc_gen::arm7::common::gravity_terms_084cd34cb1c4
+}  // namespace rbdc_gen::arm7::common::gravity_terms_bdf94cdbb8d0

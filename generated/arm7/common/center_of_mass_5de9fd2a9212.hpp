@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::center_of_mass_c6b1584a5230 {
+namespace rbdc_gen::arm7::common::center_of_mass_5de9fd2a9212 {
 
 /// Centre of mass and its velocity, world frame (bodies and rotors).
 ///
@@ -20,11 +20,11 @@ namespace rbdc_gen::arm7::common::center_of_mass_c6b1584a5230 {
 /// @param com_velocity out 3x1: its velocity
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             157   99    0     0    12    0    268
+///             157  100    0     0    12    0    269
 template <class Scalar>
 RBDC_HOST_DEVICE inline void center_of_mass(const Scalar* q, const Scalar* v, Scalar* com, Scalar* com_velocity) noexcept {
   // sines and cosines of the joint angles
-  const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], q[5]};
+  const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], Scalar(0.30000000000000004) + q[5]};
   const auto joint_trig = joint_sincos(joint_angle);
   const Scalar sin_joint1 = joint_trig.sin[0];
   const Scalar cos_joint1 = joint_trig.cos[0];
@@ -72,11 +72,11 @@ RBDC_HOST_DEVICE inline void center_of_mass(const Scalar* q, const Scalar* v, Sc
   const Scalar t26 = (t20 * cos_joint6) - (t15 * sin_joint6);
   const Scalar t27 = (t20 * sin_joint6) + (t15 * cos_joint6);
   // centre of mass
-  const Scalar t28 = ((Scalar(1.3642000000000003) * t11) + (((Scalar(0.00017) * t16) - (Scalar(0.036480000000000005) * t17)) + ((Scalar(0.0033246023249400717) * t22) + (Scalar(0.04726753550266307) * t23)))) - (Scalar(0.0006000000000000033) * t5);
+  const Scalar t28 = ((Scalar(1.3642000000000003) * t11) + (((Scalar(0.00017) * t16) - (Scalar(0.036480000000000005) * t17)) + ((Scalar(0.04613888858286713) * t23) - (Scalar(0.010792397947272122) * t22)))) - (Scalar(0.0006000000000000033) * t5);
   com[0] = Scalar(0.04962779156327543) * (((((Scalar(0.0011099999999999999) * t0) + (Scalar(3.7500000000000004) * t1)) + t28) - (Scalar(0.02099999999999999) * sin_joint1)) - Scalar(0.084));
-  const Scalar t29 = (Scalar(0.0006000000000000033) * t7) + ((Scalar(1.3642000000000003) * t13) + (((Scalar(0.00017) * t18) + (Scalar(0.036480000000000005) * t19)) + ((Scalar(0.0033246023249400717) * t24) + (Scalar(0.04726753550266307) * t25))));
+  const Scalar t29 = (Scalar(0.0006000000000000033) * t7) + ((Scalar(1.3642000000000003) * t13) + (((Scalar(0.00017) * t18) + (Scalar(0.036480000000000005) * t19)) + ((Scalar(0.04613888858286713) * t25) - (Scalar(0.010792397947272122) * t24))));
   com[1] = Scalar(0.04962779156327543) * ((Scalar(0.02099999999999999) * cos_joint1) + (((Scalar(0.0011099999999999999) * t2) + (Scalar(3.7500000000000004) * t3)) + t29));
-  const Scalar t30 = (Scalar(0.0006000000000000033) * t9) + ((Scalar(1.3642000000000003) * t15) + (((Scalar(0.00017) * t20) + (Scalar(0.036480000000000005) * t21)) + ((Scalar(0.0033246023249400717) * t26) + (Scalar(0.04726753550266307) * t27))));
+  const Scalar t30 = (Scalar(0.0006000000000000033) * t9) + ((Scalar(1.3642000000000003) * t15) + (((Scalar(0.00017) * t20) + (Scalar(0.036480000000000005) * t21)) + ((Scalar(0.04613888858286713) * t27) - (Scalar(0.010792397947272122) * t26))));
   com[2] = Scalar(0.04962779156327543) * (Scalar(5.423) + (((Scalar(3.7500000000000004) * cos_joint2) - (Scalar(0.0011099999999999999) * sin_joint2)) + t30));
   // outward pass, velocities: body 2 link2
   const Scalar t31 = sin_joint2 * v[0];
@@ -105,12 +105,12 @@ RBDC_HOST_DEVICE inline void center_of_mass(const Scalar* q, const Scalar* v, Sc
   const Scalar t49 = Scalar(0.036480000000000005) * t39;
   const Scalar t50 = Scalar(0.00017) * t39;
   const Scalar t51 = (Scalar(0.036480000000000005) * t37) - (Scalar(0.00017) * t38);
-  const Scalar t52 = Scalar(0.04726753550266307) * t40;
-  const Scalar t53 = (Scalar(0.0033246023249400717) * ((sin_joint6 * t37) + (cos_joint6 * t39))) - (Scalar(0.04726753550266307) * ((cos_joint6 * t37) - (sin_joint6 * t39)));
-  const Scalar t54 = Scalar(0.0033246023249400717) * t40;
-  const Scalar t55 = ((t11 * t51) - ((t16 * t49) + (t17 * t50))) + (((t22 * t52) - (t17 * t53)) - (t23 * t54));
-  const Scalar t56 = (((t19 * t50) - (t18 * t49)) + (t13 * t51)) + (((t24 * t52) + (t19 * t53)) - (t25 * t54));
-  const Scalar t57 = (((t21 * t50) - (t20 * t49)) + (t15 * t51)) + (((t26 * t52) + (t21 * t53)) - (t27 * t54));
+  const Scalar t52 = Scalar(0.04613888858286713) * t40;
+  const Scalar t53 = (Scalar(0.010792397947272122) * ((sin_joint6 * t37) + (cos_joint6 * t39))) + (Scalar(0.04613888858286713) * ((cos_joint6 * t37) - (sin_joint6 * t39)));
+  const Scalar t54 = Scalar(0.010792397947272122) * t40;
+  const Scalar t55 = ((t11 * t51) - ((t16 * t49) + (t17 * t50))) + (((t22 * t52) + (t17 * t53)) + (t23 * t54));
+  const Scalar t56 = (((t19 * t50) - (t18 * t49)) + (t13 * t51)) + (((t24 * t52) - (t19 * t53)) + (t25 * t54));
+  const Scalar t57 = (((t21 * t50) - (t20 * t49)) + (t15 * t51)) + (((t26 * t52) - (t21 * t53)) + (t27 * t54));
   const Scalar t58 = ((t1 * t46) - (t4 * t45)) + (((t10 * t47) + (t5 * t48)) + t55);
   com_velocity[0] = Scalar(0.04962779156327543) * (((((t0 * t42) - (sin_joint1 * t43)) - (t1 * t44)) + t58) - (cos_joint1 * t41));
   const Scalar t59 = ((t3 * t46) - (t6 * t45)) + (((t12 * t47) - (t7 * t48)) + t56);
@@ -120,4 +120,4 @@ RBDC_HOST_DEVICE inline void center_of_mass(const Scalar* q, const Scalar* v, Sc
   com_velocity[2] = Scalar(0.04962779156327543) * t60;
 }
 
-}  // namespace rbdc_gen::arm7::common::center_of_mass_c6b1584a5230
+}  // namespace rbdc_gen::arm7::common::center_of_mass_5de9fd2a9212

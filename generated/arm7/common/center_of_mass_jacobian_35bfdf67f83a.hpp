@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::center_of_mass_jacobian_28a57df591b8 {
+namespace rbdc_gen::arm7::common::center_of_mass_jacobian_35bfdf67f83a {
 
 /// Centre-of-mass Jacobian J_c, ċ = J_c v, world frame.
 ///
@@ -18,11 +18,11 @@ namespace rbdc_gen::arm7::common::center_of_mass_jacobian_28a57df591b8 {
 /// @param J_c out 3x7: centre-of-mass Jacobian
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             121   59    0     0    12    0    192
+///             121   60    0     0    12    0    193
 template <class Scalar>
 RBDC_HOST_DEVICE inline void center_of_mass_jacobian(const Scalar* q, Scalar* J_c) noexcept {
   // sines and cosines of the joint angles
-  const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], q[5]};
+  const Scalar joint_angle[6] = {q[0], q[1], q[2], q[3], q[4], Scalar(0.30000000000000004) + q[5]};
   const auto joint_trig = joint_sincos(joint_angle);
   const Scalar sin_joint1 = joint_trig.sin[0];
   const Scalar cos_joint1 = joint_trig.cos[0];
@@ -69,10 +69,10 @@ RBDC_HOST_DEVICE inline void center_of_mass_jacobian(const Scalar* q, Scalar* J_
   const Scalar t22 = (t16 * cos_joint5) + (t11 * sin_joint5);
   const Scalar t23 = (t11 * cos_joint5) - (t16 * sin_joint5);
   // centre of mass Jacobian, subtree moments
-  const Scalar t24 = (Scalar(0.0033246023249400717) * ((t18 * cos_joint6) - (t13 * sin_joint6))) + (Scalar(0.04726753550266307) * ((t18 * sin_joint6) + (t13 * cos_joint6)));
-  const Scalar t25 = (Scalar(0.0033246023249400717) * ((t20 * cos_joint6) - (t15 * sin_joint6))) + (Scalar(0.04726753550266307) * ((t20 * sin_joint6) + (t15 * cos_joint6)));
+  const Scalar t24 = (Scalar(0.04613888858286713) * ((t18 * sin_joint6) + (t13 * cos_joint6))) - (Scalar(0.010792397947272122) * ((t18 * cos_joint6) - (t13 * sin_joint6)));
+  const Scalar t25 = (Scalar(0.04613888858286713) * ((t20 * sin_joint6) + (t15 * cos_joint6))) - (Scalar(0.010792397947272122) * ((t20 * cos_joint6) - (t15 * sin_joint6)));
   J_c[17] = Scalar(-0.04962779156327543) * ((t19 * t25) + (t21 * t24));
-  const Scalar t26 = (Scalar(0.0033246023249400717) * ((t22 * cos_joint6) - (t17 * sin_joint6))) + (Scalar(0.04726753550266307) * ((t22 * sin_joint6) + (t17 * cos_joint6)));
+  const Scalar t26 = (Scalar(0.04613888858286713) * ((t22 * sin_joint6) + (t17 * cos_joint6))) - (Scalar(0.010792397947272122) * ((t22 * cos_joint6) - (t17 * sin_joint6)));
   J_c[15] = Scalar(0.04962779156327543) * ((t21 * t26) - (t23 * t25));
   J_c[16] = Scalar(0.04962779156327543) * ((t23 * t24) + (t19 * t26));
   const Scalar t27 = ((Scalar(0.00017) * t18) - (Scalar(0.036480000000000005) * t19)) + t24;
@@ -106,4 +106,4 @@ RBDC_HOST_DEVICE inline void center_of_mass_jacobian(const Scalar* q, Scalar* J_
   J_c[11] = Scalar(0.04962779156327543) * ((t5 * t31) - (t30 * t39));
 }
 
-}  // namespace rbdc_gen::arm7::common::center_of_mass_jacobian_28a57df591b8
+}  // namespace rbdc_gen::arm7::common::center_of_mass_jacobian_35bfdf67f83a
