@@ -80,6 +80,11 @@ def _angle_symbol(angle):
     return angle if angle.op == "sym" else next(a for a in angle.args if a.op == "sym")
 
 
+def _angle_offset(angle):
+    """A joint angle's constant offset: two joints coupled one to one may share q_k with their own."""
+    return 0.0 if angle.op == "sym" else next(a for a in angle.args if a.op == "const").value
+
+
 def schedule(fn):
     """(trig block, ordered temporaries, use counts) of the function's live DAG."""
     outputs = fn.output_exprs()
@@ -91,7 +96,7 @@ def schedule(fn):
     for node in outputs:
         uses[node.id] = uses.get(node.id, 0) + 1
     trig = sorted((n for n in order if _is_joint_trig(n)),
-                  key=lambda n: (_angle_symbol(n.args[0]).value, n.op == "cos"))
+                  key=lambda n: (_angle_symbol(n.args[0]).value, _angle_offset(n.args[0]), n.op == "cos"))
     angles = {n.args[0].id for n in trig}  # written into joint_sincos's array, never a statement
     temp_ids = set()
     size = {}  # operations in a node's inlined text
@@ -176,10 +181,14 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
         lines = ["// sines and cosines of the joint angles",
                  "const Scalar joint_angle[%d] = {%s};" % (n, (",\n    ").join(rows))]
     lines.append("const auto joint_trig = joint_sincos(joint_angle);")
+    suffix = {}  # angle id -> "", "_2", …: the angles of one input symbol in trig's order
     for node in trig:
         angle = node.args[0]
+        if angle.id not in suffix:
+            same = sum(_angle_symbol(a) is _angle_symbol(angle) for a in angles.values() if a.id in suffix)
+            suffix[angle.id] = "_%d" % (same + 1) if same else ""
         symbol = _angle_symbol(angle).value
-        name = "%s_%s" % (node.op, angle_names.get(symbol) or "%s_%d" % symbol)
+        name = "%s_%s%s" % (node.op, angle_names.get(symbol) or "%s_%d" % symbol, suffix[angle.id])
         if node.lane:
             load = ("load_lanes" if width(angle) == ex.LANES
                     else "load_repeated_lanes<%d>" % width(angle))
