@@ -67,22 +67,19 @@ def _signed_operands(node):
 
 
 def _is_joint_trig(node):
-    return node.op in ("sin", "cos") and _is_joint_angle(node.args[0])
-
-
-def _is_joint_angle(node):
-    """A joint angle: q_k, or q_k + φ on a turned body (views/turns.py)."""
-    return node.op == "sym" or (node.op == "add" and {a.op for a in node.args} == {"sym", "const"})
+    return node.op in ("sin", "cos") and ex.joint_angle(node.args[0]) is not None
 
 
 def _angle_symbol(angle):
-    """The input symbol of a joint angle."""
-    return angle if angle.op == "sym" else next(a for a in angle.args if a.op == "sym")
+    """The input symbol of a joint angle (q_k or q_k + φ: expr.joint_angle)."""
+    return ex.joint_angle(angle)[0]
 
 
-def _angle_offset(angle):
-    """A joint angle's constant offset: two joints coupled one to one may share q_k with their own."""
-    return 0.0 if angle.op == "sym" else next(a for a in angle.args if a.op == "const").value
+def _angle_offsets(angle):
+    """A joint angle's offset in each lane (0 without): two joints coupled one to one may share q_k,
+    each with its own."""
+    offset = ex.joint_angle(angle)[1]
+    return (0.0,) * ex.LANES if offset is None else ex.constant_lanes(offset)
 
 
 def schedule(fn):
@@ -96,7 +93,7 @@ def schedule(fn):
     for node in outputs:
         uses[node.id] = uses.get(node.id, 0) + 1
     trig = sorted((n for n in order if _is_joint_trig(n)),
-                  key=lambda n: (_angle_symbol(n.args[0]).value, _angle_offset(n.args[0]), n.op == "cos"))
+                  key=lambda n: (_angle_symbol(n.args[0]).value, _angle_offsets(n.args[0]), n.op == "cos"))
     angles = {n.args[0].id for n in trig}  # written into joint_sincos's array, never a statement
     temp_ids = set()
     size = {}  # operations in a node's inlined text
@@ -143,19 +140,24 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
         return []
 
     def width(angle):
-        return lanes.distinct_lanes(*angle.value) if angle.lane else 0
+        return lanes.distinct_lanes(*_angle_symbol(angle).value) if angle.lane else 0
 
     angles = {node.args[0].id: node.args[0] for node in trig}
     slot = {}  # angle symbol id -> its index in joint_angle
     entries = []
     full = []  # the full-width lane angles' sources, in slot order
     pairs = []  # (slot, sources) of the lane angles of a limb pair
+    lane_offsets = {}  # entry -> the offset its lane angle adds there
     for angle in sorted(angles.values(), key=lambda a: -width(a)):  # stable: trig order otherwise
         slot[angle.id] = len(entries)
         if angle.lane:
-            sources = lanes.inputs[angle.value[0]][angle.value[1]]
+            symbol = _angle_symbol(angle).value
+            sources = lanes.inputs[symbol[0]][symbol[1]]
             if width(angle) == 2:
                 pairs.append((len(entries), sources[:2]))
+            for l, offset in enumerate(_angle_offsets(angle)[:width(angle)]):
+                if offset != 0.0:  # a turned limb's (views/turns.py): added after the lanes are stored
+                    lane_offsets[len(entries) + l] = offset
             entries += ["%s[%d]" % source for source in sources[:width(angle)]]
             if width(angle) == ex.LANES:
                 full.append(sources)
@@ -175,8 +177,12 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
             lines.append("store_interleaved_pairs<%d>(joint_angle + %d, %s + %d, %s + %d);"
                          % (count, start, a[0], a[1], b[0], b[1]))
             covered |= set(range(start, start + 2 * count))
-        lines += ["joint_angle[%d] = %s;" % (k, entries[k]) for k in range(n) if k not in covered]
+        lines += ["joint_angle[%d] = %s;" % (k, _offset(entries[k], lane_offsets.get(k, 0.0)))
+                  for k in range(n) if k not in covered]
+        lines += ["joint_angle[%d] %s= %s;" % (k, "-" if x < 0.0 else "+", format_constant(abs(x)))
+                  for k, x in sorted(lane_offsets.items()) if k in covered]
     else:
+        entries = [_offset(entry, lane_offsets.get(k, 0.0)) for k, entry in enumerate(entries)]
         rows = [", ".join(entries[i:i + ANGLES_PER_LINE]) for i in range(0, n, ANGLES_PER_LINE)]
         lines = ["// sines and cosines of the joint angles",
                  "const Scalar joint_angle[%d] = {%s};" % (n, (",\n    ").join(rows))]
@@ -197,6 +203,13 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
             lines.append("const Scalar %s = joint_trig.%s[%d];" % (name, node.op, slot[angle.id]))
         names[node.id] = name
     return lines
+
+
+def _offset(entry, offset):
+    """A joint angle array's entry plus a lane's constant offset (none where it is 0)."""
+    if offset == 0.0:
+        return entry
+    return "%s %s %s" % (entry, "-" if offset < 0.0 else "+", format_constant(abs(offset)))
 
 
 # Fewest angles of a limb pair's run read as two interleaved runs (store_interleaved_pairs): four

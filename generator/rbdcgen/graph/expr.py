@@ -199,6 +199,18 @@ def constant_lanes(x):
     return None
 
 
+def joint_angle(node):
+    """(input symbol, offset) of a joint angle as the sines take it: q_k (offset None), or q_k + φ with
+    φ a constant or a lane constant (a body turned about its axis, views/turns.py); else None."""
+    if node.op == "sym" and node.value[0] != LANE_CONSTANTS:
+        return node, None
+    if node.op == "add":
+        for symbol, offset in (node.args, node.args[::-1]):
+            if symbol.op == "sym" and symbol.value[0] != LANE_CONSTANTS and constant_lanes(offset) is not None:
+                return symbol, offset
+    return None
+
+
 def _any_lane(args):
     """Whether any of the nodes `args` is a lane value (a loop: `any` over a generator costs more for
     one or two operands, and this runs for every node traced)."""

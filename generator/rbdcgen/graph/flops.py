@@ -23,14 +23,20 @@ def count_ops(fn):
     """Operations of the live DAG of `fn` after folding, CSE and DCE (what emit_body prints), and of
     its looped solve if it has one. A lane operation counts once per lane (ex.LANES), the sum over
     the lanes as LANES − 1 additions, a lane joint angle's sin or cos once per distinct lane (a
-    pair's 2: emit computes only those)."""
+    pair's 2: emit computes only those) and its offset once per distinct lane where it is not 0."""
     counts = {}
-    for node in ex.reachable(fn.output_exprs()):
+    nodes = ex.reachable(fn.output_exprs())
+    lane_angles = {n.args[0].id: ex.joint_angle(n.args[0]) for n in nodes
+                   if n.op in ("sin", "cos") and n.lane and ex.joint_angle(n.args[0]) is not None}
+    for node in nodes:
         kind = "add" if node.op == "lane_sum" else _KIND.get(node.op)
         if kind is not None:
             times = ex.LANES - 1 if node.op == "lane_sum" else ex.LANES if node.lane else 1
-            if kind == "trig" and node.lane and node.args[0].op == "sym":
-                times = fn.lanes.distinct_lanes(*node.args[0].value)
+            if kind == "trig" and node.args[0].id in lane_angles:
+                times = fn.lanes.distinct_lanes(*lane_angles[node.args[0].id][0].value)
+            elif node.id in lane_angles:  # an offset added to each distinct lane's angle where not 0
+                symbol, offset = lane_angles[node.id]
+                times = sum(x != 0.0 for x in ex.constant_lanes(offset)[:fn.lanes.distinct_lanes(*symbol.value)])
             counts[kind] = counts.get(kind, 0) + times
     if fn.solve is not None:  # the loop that solves the traced terms (passes/looped_solve.py)
         for kind, n in fn.solve.operations().items():

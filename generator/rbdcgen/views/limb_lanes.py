@@ -16,7 +16,6 @@ map the reduced outputs back to the full robot's coordinates."""
 
 from __future__ import annotations
 
-import math
 import os
 from dataclasses import dataclass, replace
 
@@ -204,17 +203,15 @@ class LaneModel(TracedModel):
         return self._lane_input("a", i) if self._group[i] is not None else self.a[self._full_joint(i).v_index]
 
     def X_joint(self, i):
-        """X_J of joint i: a lane limb's turned angles (views/turns.py) q + φ by the sum formulas, φ a
-        lane constant, since the lanes' sines come from the plain angles."""
-        offsets = [self.full.joints[b].angle_offset for b in self._lanes_of(i)] if self._group[i] is not None else []
+        """X_J of joint i: a lane limb's angle plus its lanes' offsets (views/turns.py), a lane constant
+        that joint_sincos's array adds (backend/emit.py)."""
+        if self._group[i] is None:
+            return super().X_joint(i)
+        offsets = [self.full.joints[b].angle_offset for b in self._lanes_of(i)]
         if not any(offsets):
             return super().X_joint(i)
-        q = self.qi(i)
-        c, s = ex.cos(q), ex.sin(q)
-        c_offset = ex.lane_const([math.cos(x) for x in offsets])
-        s_offset = ex.lane_const([math.sin(x) for x in offsets])
-        return sp.Transform(sp.coordinate_rotation(self.axis(i), c * c_offset - s * s_offset,
-                                                   s * c_offset + c * s_offset), None)
+        q = self.qi(i) + ex.lane_const(offsets)
+        return sp.Transform(sp.coordinate_rotation(self.axis(i), ex.cos(q), ex.sin(q)), None)
 
     def X_tree(self, i):
         """X_T of joint i: a lane limb's with each entry a lane constant."""

@@ -75,11 +75,19 @@ class TurnedFrames(unittest.TestCase):
                     assert_agree(self, got, want, robot=label, turn=how, function=name)
 
     def test_an_angle_offset_is_one_addition_in_the_sines_array(self):
-        robot = turns.turned(at_random(mini_cheetah.load("fixed", ARM7), 1))
-        self.assertTrue(any(joint.angle_offset for joint in robot.joints))
-        text = "\n".join(emit_body(scheduled_function(robot, Scene(base="fixed"), "inverse_dynamics")))
-        self.assertRegex(text, r"joint_angle\[\d+\] = \{[^}]*q\[\d\] [-+] Scalar\(|Scalar\([^)]*\) \+ q\[\d\]")
-        self.assertNotRegex(text, r"\b(sin|cos)\(")
+        """arm7's in the array's initialiser; the Mini Cheetah's limb lanes' after their angles are
+        stored as vectors, one addition per lane."""
+        arm7 = turns.turned(at_random(mini_cheetah.load("fixed", ARM7), 1))
+        self.assertTrue(any(joint.angle_offset for joint in arm7.joints))
+        legs = turns.turned(at_random(mini_cheetah.load("floating"), 1))
+        for robot, scene, offset in (
+                (arm7, Scene(base="fixed"), r"joint_angle\[\d+\] = \{[^}]*(q\[\d\] [-+] Scalar\(|Scalar\([^)]*\) \+ q\[\d\])"),
+                (legs, default_scene(), r"store_lanes\(joint_angle[^\n]*\n(joint_angle\[\d+\] [-+]= Scalar\([^)]*\);\n){4}")):
+            fn = scheduled_function(robot, scene, "inverse_dynamics")
+            text = "\n".join(emit_body(fn))
+            with self.subTest(robot=robot.name, schedule=fn.schedule):
+                self.assertRegex(text, offset)
+                self.assertNotRegex(text, r"\b(sin|cos)\(")
 
 
 if __name__ == "__main__":
