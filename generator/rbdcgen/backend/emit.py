@@ -179,8 +179,7 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
             covered |= set(range(start, start + 2 * count))
         lines += ["joint_angle[%d] = %s;" % (k, _offset(entries[k], lane_offsets.get(k, 0.0)))
                   for k in range(n) if k not in covered]
-        lines += ["joint_angle[%d] %s= %s;" % (k, "-" if x < 0.0 else "+", format_constant(abs(x)))
-                  for k, x in sorted(lane_offsets.items()) if k in covered]
+        lines += ["joint_angle[%d] %s= %s;" % (k, *_signed(x)) for k, x in sorted(lane_offsets.items()) if k in covered]
     else:
         entries = [_offset(entry, lane_offsets.get(k, 0.0)) for k, entry in enumerate(entries)]
         rows = [", ".join(entries[i:i + ANGLES_PER_LINE]) for i in range(0, n, ANGLES_PER_LINE)]
@@ -188,12 +187,13 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
                  "const Scalar joint_angle[%d] = {%s};" % (n, (",\n    ").join(rows))]
     lines.append("const auto joint_trig = joint_sincos(joint_angle);")
     suffix = {}  # angle id -> "", "_2", …: the angles of one input symbol in trig's order
+    named = {}  # input symbol -> how many of its angles have a name
     for node in trig:
         angle = node.args[0]
-        if angle.id not in suffix:
-            same = sum(_angle_symbol(a) is _angle_symbol(angle) for a in angles.values() if a.id in suffix)
-            suffix[angle.id] = "_%d" % (same + 1) if same else ""
         symbol = _angle_symbol(angle).value
+        if angle.id not in suffix:
+            named[symbol] = named.get(symbol, 0) + 1
+            suffix[angle.id] = "_%d" % named[symbol] if named[symbol] > 1 else ""
         name = "%s_%s%s" % (node.op, angle_names.get(symbol) or "%s_%d" % symbol, suffix[angle.id])
         if node.lane:
             load = ("load_lanes" if width(angle) == ex.LANES
@@ -207,9 +207,12 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
 
 def _offset(entry, offset):
     """A joint angle array's entry plus a lane's constant offset (none where it is 0)."""
-    if offset == 0.0:
-        return entry
-    return "%s %s %s" % (entry, "-" if offset < 0.0 else "+", format_constant(abs(offset)))
+    return entry if offset == 0.0 else "%s %s %s" % (entry, *_signed(offset))
+
+
+def _signed(offset):
+    """(operator, constant) adding the offset: − for a negative one, as _signed_operands writes it."""
+    return ("-" if offset < 0.0 else "+"), format_constant(abs(offset))
 
 
 # Fewest angles of a limb pair's run read as two interleaved runs (store_interleaved_pairs): four

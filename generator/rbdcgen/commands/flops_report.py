@@ -1,13 +1,13 @@
 """Operation counts of a compilation, generated vs generic, as a readable table or as JSON, with the
 generated code's critical path (graph/latency.py: the cycles no schedule of it can beat in one call).
 A derivative quantity is also compared with its primal function (derivatives.PRIMAL, traced for the
-same robot and scene, on the view trace_scene traces: views/origins.py): the targets of issue 12 are
+same robot and scene, on the tree trace_scene traces: passes/schedule.traced_tree): the targets of issue 12 are
 ratios to one primal call."""
 from ..passes.differentiate import PRIMAL
 from ..graph.flops import count_ops, generic_ops
 from ..graph.latency import critical_path
 from ..passes.trace import trace_function
-from ..views import origins, turns
+from ..passes.schedule import traced_tree
 
 KINDS = ("mul", "add", "div", "sqrt", "trig", "neg", "total")
 
@@ -15,7 +15,7 @@ KINDS = ("mul", "add", "div", "sqrt", "trig", "neg", "total")
 def rows(compilation) -> list[dict]:
     result = []
     primal_counts = {}
-    traced = origins.slid(turns.turned(compilation.robot))  # the robot trace_scene traced the functions on
+    traced = traced_tree(compilation.robot)
     for f in compilation.functions:
         row = {"function": f.name, "generated": count_ops(f), "critical_path": critical_path(f),
                "looped": f.solve is not None,

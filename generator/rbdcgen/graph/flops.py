@@ -26,8 +26,8 @@ def count_ops(fn):
     pair's 2: emit computes only those) and its offset once per distinct lane where it is not 0."""
     counts = {}
     nodes = ex.reachable(fn.output_exprs())
-    lane_angles = {n.args[0].id: ex.joint_angle(n.args[0]) for n in nodes
-                   if n.op in ("sin", "cos") and n.lane and ex.joint_angle(n.args[0]) is not None}
+    lane_angles = {n.args[0].id: angle for n in nodes if n.op in ("sin", "cos") and n.lane
+                   and (angle := ex.joint_angle(n.args[0])) is not None}
     for node in nodes:
         kind = "add" if node.op == "lane_sum" else _KIND.get(node.op)
         if kind is not None:

@@ -288,12 +288,18 @@ def _as(form, name):
     return replace(form, name=name, computes=name)
 
 
+def traced_tree(robot):
+    """The robot a scene's functions are traced on: each body's coordinates turned about its joint axis
+    (views/turns.py), then its origin slid along it (views/origins.py): the same functions, fewer
+    operations."""
+    return origins.slid(turns.turned(robot))
+
+
 def trace_scene(robot, scene, progress=None):
     """All functions of the scene, each on its scheduled view: its quantities in the order of
     scene.QUANTITIES, then its derivatives in the order of scene.DERIVATIVES. `progress(function,
-    seconds)`, if given, hears of each as it is done. They are traced on the robot with its bodies'
-    origins slid along their joint axes (views/origins.py): the same functions, fewer operations."""
-    robot = origins.slid(turns.turned(robot))
+    seconds)`, if given, hears of each as it is done. They are traced on traced_tree(robot)."""
+    robot = traced_tree(robot)
     names = singular_mass.applicable(robot, scene, scene.quantities_for(robot) + scene.derivatives_for(robot))
     functions = []
     for name in names:

@@ -202,16 +202,12 @@ class LaneModel(TracedModel):
     def ai(self, i):
         return self._lane_input("a", i) if self._group[i] is not None else self.a[self._full_joint(i).v_index]
 
-    def X_joint(self, i):
-        """X_J of joint i: a lane limb's angle plus its lanes' offsets (views/turns.py), a lane constant
-        that joint_sincos's array adds (backend/emit.py)."""
+    def angle_offset(self, i):
+        """A lane limb's offsets (views/turns.py) as a lane constant, which joint_sincos's array adds
+        lane by lane (backend/emit.py)."""
         if self._group[i] is None:
-            return super().X_joint(i)
-        offsets = [self.full.joints[b].angle_offset for b in self._lanes_of(i)]
-        if not any(offsets):
-            return super().X_joint(i)
-        q = self.qi(i) + ex.lane_const(offsets)
-        return sp.Transform(sp.coordinate_rotation(self.axis(i), ex.cos(q), ex.sin(q)), None)
+            return super().angle_offset(i)
+        return ex.lane_const([self.full.joints[b].angle_offset for b in self._lanes_of(i)])
 
     def X_tree(self, i):
         """X_T of joint i: a lane limb's with each entry a lane constant."""

@@ -134,12 +134,15 @@ class TracedModel:
         r_T = sp.vec(joint.translation) if any(joint.translation) else None
         return sp.Transform(None if identity else E_T, r_T)
 
+    def angle_offset(self, i):
+        """The constant φ the sines of joint i's angle take it with, q_i + φ (views/turns.py; 0 else)."""
+        return ex.const(self.joint(i).angle_offset)
+
     def X_joint(self, i):
         """X_J(q_i) (Eq. 9): a rotation about the axis by q_i, or a translation along it."""
         q = self.qi(i)
         if self.joint(i).type == "revolute":
-            if self.joint(i).angle_offset:
-                q = q + ex.const(self.joint(i).angle_offset)
+            q = q + self.angle_offset(i)  # 0 folds away
             return sp.Transform(sp.coordinate_rotation(self.axis(i), ex.cos(q), ex.sin(q)), None)
         return sp.Transform(None, tuple(q * a for a in sp.vec(self.axis(i))))
 

@@ -28,7 +28,7 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
-from ..graph.spatial import snap_axis, snap_rotation, snap_vector
+from ..graph.spatial import snap_axis, snap_rotation, snap_vector, transpose, unit_axis_index
 
 IDENTITY = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
 # A sinusoid's amplitude below this has no zero worth turning for.
@@ -61,7 +61,7 @@ def turn(robot, psi, chi):
             raise ValueError("joint %s: a prismatic joint's placement turns with its body" % joint.name)
         rotation = times(snap_rotation(joint.rotation), parent)
         if chi[i]:
-            rotation = snap_rotation(_product(_transposed(_rotation(snap_axis(joint.axis), chi[i])), rotation))
+            rotation = snap_rotation(_product(transpose(_rotation(snap_axis(joint.axis), chi[i])), rotation))
         actuator = joint.actuator
         if actuator is not None and actuator.rotor is not None:  # carried by the parent
             rotor = actuator.rotor
@@ -71,7 +71,7 @@ def turn(robot, psi, chi):
                               actuator=actuator, angle_offset=joint.angle_offset + psi[i] - chi[i]))
     bodies = tuple(body if rotations[i] is None else
                    replace(body, com=into(i, body.com),
-                           inertia_com=snap_rotation(_product(_transposed(rotations[i]), times(body.inertia_com, i))))
+                           inertia_com=snap_rotation(_product(transpose(rotations[i]), times(body.inertia_com, i))))
                    for i, body in enumerate(robot.bodies))
     return replace(robot, joints=tuple(joints), bodies=bodies,
                    feet=tuple(replace(f, offset=into(f.body, f.offset)) for f in robot.feet),
@@ -102,11 +102,11 @@ def _turns(robot):
             count = sum(_own_turn(a, kind, _at(turns, c, s))[1] for a, kind, turns in children)
             count += sum(_nonzeros(_at(turns, c, s)) for turns in points)
             R = _rotation(axis, x)
-            return count + _nonzeros(_product(_transposed(R), _product(inertia, R)), symmetric=True)
+            return count + _nonzeros(_product(transpose(R), _product(inertia, R)), symmetric=True)
 
         candidates = {0.0}
         for a, _, turns in children:  # the child's own turn leaves its axis's row: zero an entry of it
-            k = _axis_index(a)
+            k = unit_axis_index(a)
             candidates.update(_zeros(turns, rows=range(3) if k is None else (k,)))
         for turns in points:
             candidates.update(_zeros(turns))
@@ -202,9 +202,6 @@ def _product(a, b):
                  for r in range(3))
 
 
-def _transposed(a):
-    return tuple(zip(*a))
-
 
 def _transposed_times(a, x):
     """aᵀ x."""
@@ -214,10 +211,6 @@ def _transposed_times(a, x):
 def _flat(matrix):
     return tuple(v for row in matrix for v in row)
 
-
-def _axis_index(axis):
-    nonzero = [k for k in range(3) if axis[k] != 0.0]
-    return nonzero[0] if len(nonzero) == 1 else None
 
 
 def _nonzeros(values, symmetric=False):
