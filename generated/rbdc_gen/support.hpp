@@ -129,52 +129,81 @@ inline void join(const Vector<double, 4>* quarter, Vector<double, W>& x) noexcep
 }
 
 /// Largest |x| the polynomial below takes; angles beyond it (and inf, NaN) go through libm, so the
-/// result for an angle never depends on its neighbours. Max error over |x| <= kMaxAngle: 0.89 ulp
+/// result for an angle never depends on its neighbours. Max error over |x| <= kMaxAngle: 0.84 ulp
 /// (tests/generator/sincos_test.cpp, docs/performance.md).
 constexpr double kMaxAngle = 1e5;
 
 /// Angles up to which joint_sincos is inlined into its caller (below).
 constexpr int kInlineAngles = 16;
 
+/// A copy of v with each lane's sign flipped where `sign` has that lane's sign bit set (an xor: exact,
+/// one cycle; by reference, as join).
+template <int W>
+inline void flip_signs(const Vector<double, W>& v, const Vector<std::uint64_t, W>& sign, Vector<double, W>& flipped) noexcept {
+  Vector<std::uint64_t, W> bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  bits ^= sign;
+  std::memcpy(&flipped, &bits, sizeof flipped);
+}
+
 /// sin and cos of W doubles, branch-free. Range reduction: x = k·π/2 + r with |r| <= π/4, k the
 /// nearest integer (rounded by adding 1.5·2^52, whose low mantissa bits then hold k) and r from a
 /// three-part π/2 (Cody-Waite: 33 + 33 + 53 bits, so k·p1 and k·p2 are exact for |k| < 2^20)
 /// kept as r + tail. Polynomials in z = r² interpolate at Chebyshev nodes on [0, (π/4)²]
 /// (near-minimax; tests/generator/sincos_coefficients.py derives them). k mod 4 picks the
-/// quadrant: odd k swaps sin and cos, k ≡ 2, 3 negates sin, k ≡ 1, 2 negates cos.
+/// quadrant: odd k swaps sin and cos, k ≡ 2, 3 negates sin, k ≡ 1, 2 negates cos. Every function
+/// waits on these sines, so the chain from x to the results is kept short (docs/performance.md,
+/// "The sines' signs before their last steps"): the signs go in as sign bits before the last steps,
+/// and the polynomials' last terms are summed smallest first beside the products that feed them.
 template <int W>
 inline void sincos(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
-  using Bits = Vector<std::int64_t, W>;
-  const Vector<double, W> shifted = x * 0.6366197723675814 + 6755399441055744.0;
-  const Vector<double, W> k = shifted - 6755399441055744.0;
-  Bits quadrant;
+  using V = Vector<double, W>;
+  using Word = Vector<std::uint64_t, W>;  // unsigned: its shifts into the sign bit are defined
+  const V shifted = x * 0.6366197723675814 + 6755399441055744.0;
+  const V k = shifted - 6755399441055744.0;
+  Word quadrant;
   std::memcpy(&quadrant, &shifted, sizeof quadrant);
-  const Vector<double, W> a = x - k * 1.5707963267341256;
-  const Vector<double, W> b = k * 6.077100506303966e-11;
-  const Vector<double, W> r = a - b;
-  const Vector<double, W> tail = ((a - r) - b) - k * 2.0222662487959506e-21;
-  const Vector<double, W> z = r * r;
-  // The polynomials by Estrin's scheme (pairs, then pairs of pairs by z² and z⁴): the calls wait on
-  // these sines, and Estrin's chain is four multiply-adds shorter than Horner's.
-  const Vector<double, W> z2 = z * z;
-  const Vector<double, W> z4 = z2 * z2;
-  // sin(r + tail) = r + r³·P(z) + tail·(1 − z/2)
-  const Vector<double, W> sin_poly = ((-0.16666666666666666 + z * 0.008333333333333331) +
-      z2 * (-0.00019841269841265063 + z * 2.7557319219337312e-06)) +
-      z4 * ((-2.5052106231802837e-08 + z * 1.6058531516797758e-10) + z2 * -7.586691094197958e-13);
-  const Vector<double, W> sin_r = r + (tail * (1.0 - 0.5 * z) + r * z * sin_poly);
-  // cos(r + tail) = 1 − z/2 + z²·Q(z) − r·tail, with 1 − z/2 split as w + ((1 − w) − z/2)
-  const Vector<double, W> half_z = 0.5 * z;
-  const Vector<double, W> w = 1.0 - half_z;
-  const Vector<double, W> cos_poly = ((0.041666666666666664 + z * -0.0013888888888887398) +
+  // In lanes of even k sin x = ±sin r and cos x = ±cos r, in lanes of odd k sin x = ±cos r and
+  // cos x = ∓sin r: cos r's sign is −1 for k ≡ 2, 3 (mod 4) in both, sin r's that one flipped again
+  // for odd k. Applied to the terms below, they leave only k's parity to pick each result.
+  const Word cos_sign = (quadrant & 2) << 62;
+  const Word sin_sign = cos_sign ^ (quadrant << 63);
+  const V a = x - k * 1.5707963267341256;
+  const V b = k * 6.077100506303966e-11;
+  const V r = a - b;
+  const V tail = ((a - r) - b) - k * 2.0222662487959506e-21;
+  const V z = r * r;
+  // The polynomials by Estrin's scheme (pairs, then pairs of pairs by z² and z⁴): Estrin's chain is
+  // four multiply-adds shorter than Horner's.
+  const V z2 = z * z;
+  const V z4 = z2 * z2;
+  // 1 − z/2 = w + e exactly: w rounded, e its error
+  const V half_z = 0.5 * z;
+  const V w = 1.0 - half_z;
+  const V e = (1.0 - w) - half_z;
+  // The terms that carry the signs (each polynomial's sum is odd in them)
+  V sin_r_signed, sin_w_signed, cos_r_signed, cos_w_signed, cos_e_signed, cos_z2_signed;
+  flip_signs<W>(r, sin_sign, sin_r_signed);
+  flip_signs<W>(w, sin_sign, sin_w_signed);
+  flip_signs<W>(r, cos_sign, cos_r_signed);
+  flip_signs<W>(w, cos_sign, cos_w_signed);
+  flip_signs<W>(e, cos_sign, cos_e_signed);
+  flip_signs<W>(z2, cos_sign, cos_z2_signed);
+  // ±sin(r + tail) = r + (r z (P_low + z⁴ P_high) + tail·w): the halves of P times r z and r z⁵ apart,
+  // so that the sum waits on neither product
+  const V rz = sin_r_signed * z;
+  const V sin_low = (-0.16666666666666666 + z * 0.008333333333333331) +
+      z2 * (-0.00019841269841265063 + z * 2.7557319219337312e-06);
+  const V sin_high = (-2.5052106231802837e-08 + z * 1.6058531516797758e-10) + z2 * -7.586691094197958e-13;
+  const V sin_r = sin_r_signed + ((rz * z4) * sin_high + (rz * sin_low + tail * sin_w_signed));
+  // ±cos(r + tail) = w + (z²·Q(z) + (e − r·tail))
+  const V cos_poly = ((0.041666666666666664 + z * -0.0013888888888887398) +
       z2 * (2.480158729876456e-05 + z * -2.7557317271145144e-07)) +
       z4 * (2.087614614655861e-09 + z * -1.1382623647474604e-11);
-  const Vector<double, W> cos_r = w + ((((1.0 - w) - half_z) - r * tail) + z2 * cos_poly);
-  const Bits odd = (quadrant & 1) != 0;
-  const Vector<double, W> sin_abs = odd ? cos_r : sin_r;
-  const Vector<double, W> cos_abs = odd ? sin_r : cos_r;
-  s = (quadrant & 2) != 0 ? -sin_abs : sin_abs;
-  c = ((quadrant + 1) & 2) != 0 ? -cos_abs : cos_abs;
+  const V cos_r = cos_w_signed + (cos_z2_signed * cos_poly + (cos_e_signed - cos_r_signed * tail));
+  const Vector<std::int64_t, W> odd = (quadrant & 1) != 0;
+  s = odd ? cos_r : sin_r;
+  c = odd ? sin_r : cos_r;
 }
 
 /// inside = the lanes of x in sincos's range (|x| <= kMaxAngle; not inf, not NaN) all bits set, the
