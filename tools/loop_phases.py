@@ -12,7 +12,6 @@ Usage: tools/loop_phases.py GENERATED ROBOT [--floating] [--runs N] [--cxx CXX]
              inverse_dynamics_derivatives is in its looped form (its header's schedule line says so)
   --floating the robot has a floating trunk (the driver normalises the quaternion q[3:7])
 """
-import argparse
 import re
 import shutil
 import statistics
@@ -20,6 +19,9 @@ import subprocess
 import sys
 import tempfile
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import generated_driver  # noqa: E402
 
 # (phase name, the text that opens it in rnea_derivatives_loop); the last phase ends at the return
 PHASES = [
@@ -92,13 +94,7 @@ def driver(robot, floating):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("generated", type=Path)
-    parser.add_argument("robot")
-    parser.add_argument("--floating", action="store_true")
-    parser.add_argument("--runs", type=int, default=5)
-    parser.add_argument("--cxx", default="clang++-14")
-    args = parser.parse_args()
+    args = generated_driver.parser(__doc__).parse_args()
     with tempfile.TemporaryDirectory() as scratch:
         tree = Path(scratch) / "gen"
         shutil.copytree(args.generated, tree)
@@ -107,8 +103,7 @@ def main():
         source = Path(scratch) / "driver.cpp"
         source.write_text(driver(args.robot, args.floating))
         binary = Path(scratch) / "driver"
-        subprocess.run([args.cxx, "-std=c++17", "-O3", "-march=native", "-DNDEBUG", "-I/usr/include/eigen3",
-                        f"-I{tree}", str(source), "-o", str(binary)], check=True)
+        generated_driver.build(args.cxx, tree, source, binary)
         runs = [subprocess.run([str(binary)], check=True, capture_output=True, text=True).stdout
                 for _ in range(args.runs)]
     calls = [re.search(r"call ([\d.]+) ns ([\d.]+) ticks", run).groups() for run in runs]

@@ -7,7 +7,7 @@ from ..passes.differentiate import PRIMAL
 from ..graph.flops import count_ops, generic_ops
 from ..graph.latency import critical_path
 from ..passes.trace import trace_function
-from ..passes.schedule import traced_tree
+from ..passes.schedule import beside_sines, traced_tree
 
 KINDS = ("mul", "add", "div", "sqrt", "trig", "neg", "total")
 
@@ -18,7 +18,7 @@ def rows(compilation) -> list[dict]:
     traced = traced_tree(compilation.robot)
     for f in compilation.functions:
         row = {"function": f.name, "generated": count_ops(f), "critical_path": critical_path(f),
-               "looped": f.solve is not None,
+               "beside_sines": beside_sines(f), "looped": f.solve is not None,
                "generic": generic_ops(compilation.robot, compilation.scene, f.computes)}
         if f.name in PRIMAL:
             name = PRIMAL[f.name]
@@ -33,7 +33,8 @@ def as_json(compilation, table_rows) -> dict:
     def entry(r):
         out = {"generated": {k: r["generated"][k] for k in KINDS},
                "generic": {k: r["generic"][k] for k in KINDS},
-               "critical_path": {"cycles": r["critical_path"], "traced_part_only": r["looped"]}}
+               "critical_path": {"cycles": r["critical_path"], "traced_part_only": r["looped"],
+                                 "beside_sines": r["beside_sines"]}}
         if "primal" in r:
             out["primal"] = {"function": r["primal"]["function"],
                              **{k: r["primal"]["ops"][k] for k in KINDS}}

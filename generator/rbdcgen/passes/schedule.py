@@ -52,19 +52,37 @@ def straight_line_instructions(fn):
     return _straight_line_counts(fn)[0]
 
 
+def _instructions(node):
+    """The arithmetic instructions the body issues for one node."""
+    if node.op == "lane_sum":
+        return _LANE_SUM_INSTRUCTIONS
+    return 0 if node.op in ("const", "sym", "lane_get") else 1
+
+
 def _straight_line_counts(fn):
     """(arithmetic instructions, lane rotations among them, lane instructions among them) of fn's
     traced, straight-line part."""
     count = rotations = lanes = 0
     for node in ex.reachable(fn.output_exprs()):
-        if node.op == "lane_sum":
-            count += _LANE_SUM_INSTRUCTIONS
-            lanes += _LANE_SUM_INSTRUCTIONS
-        elif node.op not in ("const", "sym", "lane_get"):
-            count += 1
-            rotations += node.op == "lane_rotate"
-            lanes += bool(node.lane)
+        n = _instructions(node)
+        count += n
+        rotations += node.op == "lane_rotate"
+        lanes += n if node.lane or node.op == "lane_sum" else 0
     return count, rotations, lanes
+
+
+def beside_sines(fn):
+    """fn's straight-line arithmetic instructions, counted as its schedule line counts them, that wait
+    on no joint sine or cosine: all a core could run during `joint_sincos`, which every other one
+    waits on (docs/performance.md, "The sines' latency in series"; tools/trig_latency.py)."""
+    waits = set()
+    count = 0
+    for node in ex.reachable(fn.output_exprs()):
+        if node.op in ("sin", "cos") or any(a.id in waits for a in node.args):
+            waits.add(node.id)
+        else:
+            count += _instructions(node)
+    return count
 
 
 # Straight-line code runs from the op cache while it is short; past FRONT_END_LIMIT arithmetic

@@ -189,6 +189,11 @@ class SceneTest(unittest.TestCase):
             self.assertLess(cycles, functions[name]["generated"]["total"] * 15, name)  # ≤ a division per operation
         self.assertLess(path["mass_matrix"], path["forward_dynamics"])  # forward dynamics goes through M
         self.assertFalse(functions["inverse_dynamics"]["critical_path"]["traced_part_only"])
+        # M's composite inertias all turn with the joints; ID's trunk terms do not wait on a sine
+        self.assertEqual(functions["mass_matrix"]["critical_path"]["beside_sines"], 0)
+        beside = functions["inverse_dynamics"]["critical_path"]["beside_sines"]
+        self.assertGreater(beside, 0)
+        self.assertLess(beside, functions["inverse_dynamics"]["generated"]["total"] / 4)
 
     def test_flops_table_lists_every_function(self):
         result = run_rbdc("flops", MINI_CHEETAH)
