@@ -21,8 +21,8 @@ LATENCY = {"add": 3, "sub": 3, "mul": 3, "div": 13, "sqrt": 15, "neg": 0,
            "lane_get": 1, "lane_rotate": 1, "lane_sum": 8}
 FMA = 4
 # Range reduction (a multiply-add and a rounding) and two polynomials of degree 6-7 by Estrin's
-# scheme: under the 57-60 cycles a chain of calls (one multiply-add between them) measures on
-# Zen 5, so still a lower bound.
+# scheme: under the 45-47 cycles its chain takes in registers on Zen 5 (tools/trig_latency.py) and
+# the 57-60 of a chain of calls, so still a lower bound.
 JOINT_SINCOS = 40
 
 
