@@ -2,20 +2,16 @@
 reads its verdict from the padding's cost, and writes a timing loop that compiles against a real
 generated header (the timing itself is a measurement, docs/performance.md, not a test)."""
 
-import importlib.util
 import os
 import subprocess
-import sys
 import tempfile
 import unittest
 from pathlib import Path
 
 import mini_cheetah
+import tools_module
 
-sys.path.insert(0, os.path.join(mini_cheetah.ROOT, "tools"))  # the tool imports instruction_rates beside it
-SPEC = importlib.util.spec_from_file_location("code_fetch_test", os.path.join(mini_cheetah.ROOT, "tools", "code_fetch_test.py"))
-TOOL = importlib.util.module_from_spec(SPEC)
-SPEC.loader.exec_module(TOOL)
+TOOL = tools_module.load("code_fetch_test")
 
 # Two functions as clang writes them: the namespace's (its symbol holds the namespace's name) and another.
 ASSEMBLY = """\t.text

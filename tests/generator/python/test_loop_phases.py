@@ -3,8 +3,6 @@ instruments, and its instrumented header and driver compile against a bundled ro
 inverse_dynamics_derivatives is looped (humanoid32). The timing itself is a measurement
 (docs/performance.md, "The ∂τ loop phase by phase"), not a test."""
 
-import importlib.util
-import os
 import shutil
 import subprocess
 import tempfile
@@ -12,10 +10,9 @@ import unittest
 from pathlib import Path
 
 import mini_cheetah
+import tools_module
 
-SPEC = importlib.util.spec_from_file_location("loop_phases", os.path.join(mini_cheetah.ROOT, "tools", "loop_phases.py"))
-TOOL = importlib.util.module_from_spec(SPEC)
-SPEC.loader.exec_module(TOOL)
+TOOL = tools_module.load("loop_phases")
 GENERATED = Path(mini_cheetah.ROOT) / "generated"
 
 

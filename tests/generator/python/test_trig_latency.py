@@ -3,8 +3,6 @@ and its driver compiles, as generated against a bundled fixed-base arm and with 
 against a floating-base quadruped. The timing itself is a measurement (docs/performance.md, "The sines'
 latency in series"), not a test."""
 
-import importlib.util
-import os
 import shutil
 import subprocess
 import tempfile
@@ -12,10 +10,9 @@ import unittest
 from pathlib import Path
 
 import mini_cheetah
+import tools_module
 
-SPEC = importlib.util.spec_from_file_location("trig_latency", os.path.join(mini_cheetah.ROOT, "tools", "trig_latency.py"))
-TOOL = importlib.util.module_from_spec(SPEC)
-SPEC.loader.exec_module(TOOL)
+TOOL = tools_module.load("trig_latency")
 GENERATED = Path(mini_cheetah.ROOT) / "generated"
 
 
