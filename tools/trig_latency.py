@@ -3,19 +3,19 @@
 times a robot's generated inverse dynamics, c + g, M and forward dynamics as generated, and again
 with `joint_sincos` replaced by a stand-in of one multiplication per angle (wrong values, the same
 code after it), on 64 random states, runs of the two builds alternated. The same driver measures
-the sines' latency (in registers, each vector of angles the last one's sines times 0.9 plus its cosines)
-and the clock (a chain of multiply-adds, 4 cycles each on the cores measured here). Every generated
-function waits on its sines before its first body; if no other work runs beside them (the next
-call's included), the call takes the sines' latency plus the rest, and the rest runs at most at
-the core's rate, so
+the sines' latency (in registers, each vector of angles the last one's sines times 0.9 plus its
+cosines) and the clock (a chain of multiply-adds, 4 cycles each on the cores measured here). Every
+generated function waits on its sines before its first body; if no other work runs beside them (the
+next call's included), the call takes the sines' latency plus the rest, and the rest runs at most
+at the core's rate, so
 
     bound = (sines' latency + instructions / most a cycle) / clock
 
 (instructions: the header's schedule count, tools/instruction_rates.py, less those that wait on no
 sine, `beside_sines` in `rbdc flops --json`, with --flops; most a cycle: the multiplications' two
-pipes or the mixed peak, whichever is less). The table gives it beside the
-times, in cycles too, and what a peer's time over it allows with --peer QUANTITY=NS (in cycles at
---peer-ghz, the clock of the peer's run; default this run's).
+pipes or the mixed peak, whichever is less). The table gives it beside the times, in cycles too,
+and what a peer's time over it allows with --peer QUANTITY=NS (in cycles at --peer-ghz, the clock
+of the peer's run; default this run's).
 
 Usage: tools/trig_latency.py GENERATED ROBOT [--floating] [--runs N] [--cxx CXX] [--peak RATE]
                              [--flops FLOPS_JSON] [--peer QUANTITY=NS ...] [--peer-ghz GHZ]
