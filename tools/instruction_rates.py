@@ -37,6 +37,7 @@ TARGETS = {"ID": ("inverse_dynamics", "full", 10), "c+g": ("bias", "full", 10),
            "∂ID": ("inverse_dynamics_derivatives", "derivatives", 8),
            "∂FD": ("forward_dynamics_derivatives", "derivatives", 5)}
 FMA_PIPES = 2  # multiplications and FMAs a cycle: both AMD cores measured (tools/machine_peak.cpp)
+MIXED_PEAK = 4.05  # FMAs and additions a cycle, half and half: tools/machine_peak on Zen 5
 STREAMED_BYTES_PER_NS = 64  # straight-line code through the decoders: tools/machine_peak on Zen 5
 # numbers with thousands separators, the ratio bold where the harness's summary marks it
 ROW = re.compile(r"\| (\S+) \| \S+ → (\w+) \| [\d.,]+ / ([\d.,]+) \| [\d.,]+ / ([\d.,]+) \| \**([\d.]+)×")
@@ -63,6 +64,12 @@ def multiplication_share(header):
     doc = doc_comment(header)
     table = re.search(r"operations mul add div sqrt trig neg total (\d+) (\d+) ", doc)
     return int(table.group(1)) / (int(table.group(1)) + int(table.group(2))) if table else None
+
+
+def most_per_cycle(share, peak):
+    """The most instructions a cycle the core sustains for code whose multiplications are `share` of
+    its instructions: the two FMA pipes take the multiplications, and never above the mixed peak."""
+    return min(peak, FMA_PIPES / share) if share else peak
 
 
 def critical_paths(options):
@@ -133,7 +140,7 @@ def main():
         return 0 if args and args[0] in ("-h", "--help") else 2
     summary, generated = Path(args[0]), Path(args[1])
     ghz = float(args[2]) if len(args) >= 3 else 3.65
-    peak = float(args[3]) if len(args) == 4 else 4.05
+    peak = float(args[3]) if len(args) == 4 else MIXED_PEAK
     paths, sizes = critical_paths(options["--paths"]), code_sizes(options["--code"])
     measured = {(m.group(1), m.group(2)): tuple(float(m.group(k).replace(",", "")) for k in (3, 4, 5))
                 for m in map(ROW.match, summary.read_text().splitlines()) if m}
@@ -151,7 +158,7 @@ def main():
             n = instructions(header)
             needed = "met" if ratio >= target else "%.2f" % (n / (peer / target * ghz))
             share = multiplication_share(header)
-            most = "%.2f" % min(peak, FMA_PIPES / share) if share else "–"
+            most = "%.2f" % most_per_cycle(share, peak) if share else "–"
             print("| %s | %s | %.0f | %d | %.2f | %.2f× | %d× | %s | %s | %s |"
                   % (robot, quantity, ours, n, n / (ours * ghz), ratio, target, needed,
                      "%.0f %%" % (100 * share) if share else "–", most)

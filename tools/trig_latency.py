@@ -37,7 +37,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import generated_driver  # noqa: E402
-from instruction_rates import FMA_PIPES, instructions, multiplication_share  # noqa: E402
+from instruction_rates import MIXED_PEAK, instructions, most_per_cycle, multiplication_share  # noqa: E402
 
 QUANTITIES = {"ID": "inverse_dynamics", "c+g": "bias", "M": "mass_matrix", "FD": "forward_dynamics"}
 # Opens the double overload of joint_sincos in rbdc_gen/support.hpp; the stand-in goes first in it.
@@ -131,7 +131,7 @@ def measurements(output):
 
 def main():
     parser = generated_driver.parser(__doc__)
-    parser.add_argument("--peak", type=float, default=4.05)
+    parser.add_argument("--peak", type=float, default=MIXED_PEAK)
     parser.add_argument("--flops", type=Path)
     parser.add_argument("--peer", action="append", default=[], metavar="QUANTITY=NS")
     parser.add_argument("--peer-ghz", type=float)
@@ -170,8 +170,7 @@ def main():
     for quantity, function in QUANTITIES.items():
         header = args.generated / args.robot / "full" / f"{function}.hpp"
         n = instructions(header) - beside.get(function, 0)
-        share = multiplication_share(header)
-        most = min(args.peak, FMA_PIPES / share) if share else args.peak
+        most = most_per_cycle(multiplication_share(header), args.peak)
         bound = sines + n / most
         ours, stand_in = median["generated"][quantity], median["stand-in"][quantity]
         row = (f"| {quantity} | {ours:.1f} | {stand_in:.1f} | {ours - stand_in:.1f} | {n} | {most:.2f} "
