@@ -101,7 +101,7 @@ int main() {{
   Angles angle = {{0.3, 1.1, -2.0, 0.7}};
   std::printf("sines %.3f\\n", ns_per_call([&](int) {{
     Angles s, c;
-    rbdc_gen::simd::sincos<4>(angle, s, c);
+    rbdc_gen::simd::sincos_folded<4>(angle, s, c);
     angle = s * 0.9 + c;
     asm volatile("" : "+v"(angle));
   }}, chain));

@@ -128,9 +128,11 @@ inline void join(const Vector<double, 4>* quarter, Vector<double, W>& x) noexcep
   }
 }
 
-/// Largest |x| the polynomial below takes; angles beyond it (and inf, NaN) go through libm, so the
-/// result for an angle never depends on its neighbours. Max error over |x| <= kMaxAngle: 0.84 ulp
-/// (tests/generator/sincos_test.cpp, docs/performance.md).
+/// Each angle takes one of three routes by its own size, never its neighbours': |x| <= kFoldedAngle
+/// (every robot's joint range here but UR's ±2π) sincos_folded, absolute error <= 3.5e-16; up to
+/// kMaxAngle sincos_reduced, 0.84 ulp; beyond it, inf and NaN libm (tests/generator/sincos_test.cpp,
+/// docs/performance.md, "The sines folded about ±π").
+constexpr double kFoldedAngle = 4.71238898038469;  // 3π/2 (the polynomials take |ρ| a little past π/2)
 constexpr double kMaxAngle = 1e5;
 
 /// Angles up to which joint_sincos is inlined into its caller (below).
@@ -146,7 +148,7 @@ inline void flip_signs(const Vector<double, W>& v, const Vector<std::uint64_t, W
   std::memcpy(&flipped, &bits, sizeof flipped);
 }
 
-/// sin and cos of W doubles, branch-free. Range reduction: x = k·π/2 + r with |r| <= π/4, k the
+/// sin and cos of W doubles up to kMaxAngle, branch-free. Range reduction: x = k·π/2 + r with |r| <= π/4, k the
 /// nearest integer (rounded by adding 1.5·2^52, whose low mantissa bits then hold k) and r from a
 /// three-part π/2 (Cody-Waite: 33 + 33 + 53 bits, so k·p1 and k·p2 are exact for |k| < 2^20)
 /// kept as r + tail. Polynomials in z = r² interpolate at Chebyshev nodes on [0, (π/4)²]
@@ -156,7 +158,7 @@ inline void flip_signs(const Vector<double, W>& v, const Vector<std::uint64_t, W
 /// "The sines' signs before their last steps"): the signs go in as sign bits before the last steps,
 /// and the polynomials' last terms are summed smallest first beside the products that feed them.
 template <int W>
-inline void sincos(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
+inline void sincos_reduced(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
   using V = Vector<double, W>;
   using Word = Vector<std::uint64_t, W>;  // unsigned: its shifts into the sign bit are defined
   const V shifted = x * 0.6366197723675814 + 6755399441055744.0;
@@ -206,40 +208,97 @@ inline void sincos(const Vector<double, W>& x, Vector<double, W>& s, Vector<doub
   c = odd ? sin_r : cos_r;
 }
 
-/// inside = the lanes of x in sincos's range (|x| <= kMaxAngle; not inf, not NaN) all bits set, the
-/// others zero (by reference, as join: a vector returned by value changes the ABI without AVX).
+/// sin and cos of W doubles with |x| <= kFoldedAngle, branch-free, without sincos_reduced's multiply,
+/// rounding and Cody-Waite steps before the polynomials: 10 of its 46 cycles on Zen 5. Angles beyond
+/// ±π/2 are folded about ±π, ρ = π − x or −π − x (exact: Sterbenz's lemma), so that sin x = sin ρ and
+/// cos x = −cos ρ, with π's low part a first-order tail t (ρ + t = ±π − x). The polynomials in z = ρ²
+/// interpolate at Chebyshev nodes on [0, (π/2)²] (tests/generator/sincos_coefficients.py). Over
+/// that wider range the error is absolute, not relative: at most 3.5e-16, 1.6 ulp of 1 (cos next to
+/// ±π/2, where it crosses zero, has no relative bound; sin stays within 3 ulp).
 template <int W>
-inline void inside_range(const Vector<double, W>& x, Vector<std::int64_t, W>& inside) noexcept {
-  inside = (x >= -kMaxAngle) & (x <= kMaxAngle);
+inline void sincos_folded(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
+  using V = Vector<double, W>;
+  using Word = Vector<std::uint64_t, W>;
+  const V up = 3.141592653589793 - x;
+  const V down = -3.141592653589793 - x;
+  const V low = x < up ? x : up;  // min and max, each one instruction
+  const V rho = low > down ? low : down;
+  const auto took_up = up <= x;  // the lanes min and max folded, by the same comparisons
+  const auto took_down = x <= down;
+  const V zero = {};
+  const V tail = took_up ? zero + 1.2246467991473532e-16 : (took_down ? zero - 1.2246467991473532e-16 : zero);
+  const Word cos_sign = (Word)(took_up | took_down) & 0x8000000000000000ull;
+  const V z = rho * rho;
+  const V z2 = z * z;
+  const V z4 = z2 * z2;
+  // 1 − z/2 = w + e exactly, as in sincos_reduced
+  const V half_z = 0.5 * z;
+  const V w = 1.0 - half_z;
+  const V e = (1.0 - w) - half_z;
+  // sin(ρ + t) = ρ + (ρ z P(z) + t·w), ρ added last
+  const V sin_poly = ((-0.16666666666666666 + z * 0.008333333333333316) +
+      z2 * (-0.00019841269841254966 + z * 2.7557319219160833e-06)) +
+      z4 * ((-2.505210761669045e-08 + z * 1.6058977292642743e-10) +
+      z2 * (-7.643969663988074e-13 + z * 2.7314368769379893e-15));
+  s = rho + ((rho * z) * sin_poly + tail * w);
+  // ±cos(ρ + t) = ±(w + (z²·Q(z) + (e − ρ·t))), the sign on the terms
+  const V cos_poly = ((0.041666666666666664 + z * -0.001388888888888888) +
+      z2 * (2.4801587301579848e-05 + z * -2.755731922156836e-07)) +
+      z4 * ((2.0876756602722215e-09 + z * -1.1470712262813793e-11) +
+      z2 * (4.77787760803859e-14 + z * -1.5218598818596388e-16));
+  V w_signed, z2_signed, small_signed;
+  flip_signs<W>(w, cos_sign, w_signed);
+  flip_signs<W>(z2, cos_sign, z2_signed);
+  flip_signs<W>(e - rho * tail, cos_sign, small_signed);
+  c = w_signed + (z2_signed * cos_poly + small_signed);
 }
 
-/// sincos above, then libm for the lanes out of its range (one vector test; the fix-up loop runs
-/// only when some lane is out of range, inf or NaN).
+/// inside = the lanes of x within `limit` (not inf, not NaN) all bits set, the others zero (by
+/// reference, as join: a vector returned by value changes the ABI without AVX).
+template <int W>
+inline void inside_range(const Vector<double, W>& x, double limit, Vector<std::int64_t, W>& inside) noexcept {
+  inside = (x >= -limit) & (x <= limit);
+}
+
+/// Whether every lane of a mask is set.
+template <int W>
+inline bool all_set(const Vector<std::int64_t, W>& mask) noexcept {
+  std::int64_t lanes[W];
+  std::memcpy(lanes, &mask, sizeof lanes);
+  std::int64_t all = -1;
+  for (int k = 0; k < W; ++k) all &= lanes[k];
+  return all == -1;
+}
+
+/// s and c from sincos_folded, redone for the lanes beyond kFoldedAngle: sincos_reduced up to
+/// kMaxAngle, libm beyond it and for inf and NaN. Out of line: taken only for such angles.
+template <int W>
+RBDC_NOINLINE void sincos_beyond_folded(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
+  Vector<double, W> reduced_s, reduced_c;
+  sincos_reduced<W>(x, reduced_s, reduced_c);
+  for (int k = 0; k < W; ++k) {
+    if (std::fabs(x[k]) <= kFoldedAngle) continue;
+    const bool polynomial = std::fabs(x[k]) <= kMaxAngle;
+    s[k] = polynomial ? reduced_s[k] : std::sin(x[k]);
+    c[k] = polynomial ? reduced_c[k] : std::cos(x[k]);
+  }
+}
+
+/// sin and cos of W doubles of any size: sincos_folded, and the lanes beyond it redone.
 template <int W>
 inline void sincos_checked(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
-  sincos<W>(x, s, c);
+  sincos_folded<W>(x, s, c);
   Vector<std::int64_t, W> inside;
-  inside_range<W>(x, inside);
-  const Vector<std::int64_t, W> outside = ~inside;
-  std::int64_t lanes[W];
-  std::memcpy(lanes, &outside, sizeof lanes);
-  std::int64_t any = 0;
-  for (int k = 0; k < W; ++k) any |= lanes[k];
-  if (any == 0) return;
-  for (int k = 0; k < W; ++k) {
-    if (lanes[k] != 0) {
-      s[k] = std::sin(x[k]);
-      c[k] = std::cos(x[k]);
-    }
-  }
+  inside_range<W>(x, kFoldedAngle, inside);
+  if (__builtin_expect(!all_set<W>(inside), 0)) sincos_beyond_folded<W>(x, s, c);
 }
 
 }  // namespace simd
 
 /// double: the angles in vectors of kAngleLanes, or of 4 for up to 8 angles (the last one
-/// zero-padded), the polynomial on every vector in one unrolled run (their dependency chains
-/// overlap; g++ kept a loop), then one test of all angles and libm for those out of its range (inf,
-/// NaN, |x| > kMaxAngle).
+/// zero-padded), sincos_folded on every vector in one unrolled run (their dependency chains
+/// overlap; g++ kept a loop), then one test of all angles, and the vectors redone if any angle lies
+/// beyond kFoldedAngle.
 template <int N>
 RBDC_ALWAYS_INLINE JointTrig<double, N> joint_sincos_inline(const double (&angle)[N]) noexcept {
   // An arm's 7 angles in one vector of eight made g++ 12's arm7 ID 13 % slower: up to 8, four lanes.
@@ -257,31 +316,22 @@ RBDC_ALWAYS_INLINE JointTrig<double, N> joint_sincos_inline(const double (&angle
   V s[n_vectors];
   V c[n_vectors];
 #pragma GCC unroll 16
-  for (int i = 0; i < n_vectors; ++i) simd::sincos<kLanes>(x[i], s[i], c[i]);
-  JointTrig<double, N> trig;
-  std::memcpy(trig.sin, s, sizeof trig.sin);
-  std::memcpy(trig.cos, c, sizeof trig.cos);
+  for (int i = 0; i < n_vectors; ++i) simd::sincos_folded<kLanes>(x[i], s[i], c[i]);
   // The range tested on the vectors, one mask for all: tested angle by angle, clang 14 made it a
   // compare, a mask move and a branch per angle (about 40 instructions for a quadruped's 12 angles;
   // docs/performance.md, "Lane sums in one vector add").
   simd::Vector<std::int64_t, kLanes> inside, next;
-  simd::inside_range<kLanes>(x[0], inside);
+  simd::inside_range<kLanes>(x[0], simd::kFoldedAngle, inside);
   for (int i = 1; i < n_vectors; ++i) {
-    simd::inside_range<kLanes>(x[i], next);
+    simd::inside_range<kLanes>(x[i], simd::kFoldedAngle, next);
     inside &= next;
   }
-  std::int64_t inside_lanes[kLanes];
-  std::memcpy(inside_lanes, &inside, sizeof inside_lanes);
-  std::int64_t all_inside = -1;
-  for (int k = 0; k < kLanes; ++k) all_inside &= inside_lanes[k];
-  if (__builtin_expect(all_inside != -1, 0)) {
-    for (int i = 0; i < N; ++i) {
-      if (!(std::fabs(angle[i]) <= simd::kMaxAngle)) {
-        trig.sin[i] = std::sin(angle[i]);
-        trig.cos[i] = std::cos(angle[i]);
-      }
-    }
+  if (__builtin_expect(!simd::all_set<kLanes>(inside), 0)) {
+    for (int i = 0; i < n_vectors; ++i) simd::sincos_beyond_folded<kLanes>(x[i], s[i], c[i]);
   }
+  JointTrig<double, N> trig;
+  std::memcpy(trig.sin, s, sizeof trig.sin);
+  std::memcpy(trig.cos, c, sizeof trig.cos);
   return trig;
 }
 
