@@ -20,10 +20,10 @@ from . import expr as ex
 LATENCY = {"add": 3, "sub": 3, "mul": 3, "div": 13, "sqrt": 15, "neg": 0,
            "lane_get": 1, "lane_rotate": 1, "lane_sum": 8}
 FMA = 4
-# Range reduction (a multiply-add and a rounding) and two polynomials of degree 6-7 by Estrin's
-# scheme: under the 45-47 cycles its chain takes in registers on Zen 5 (tools/trig_latency.py) and
-# the 57-60 of a chain of calls, so still a lower bound.
-JOINT_SINCOS = 40
+# The fold about ±π (a subtraction, a min and a max) and two polynomials of degree 7 by Estrin's
+# scheme, by the latencies above: under the 36-37 cycles its chain takes in registers on Zen 5
+# (tools/trig_latency.py), so still a lower bound.
+JOINT_SINCOS = 27
 
 
 def critical_path(fn):

@@ -270,18 +270,21 @@ inline bool all_set(const Vector<std::int64_t, W>& mask) noexcept {
   return all == -1;
 }
 
-/// s and c from sincos_folded, redone for the lanes beyond kFoldedAngle: sincos_reduced up to
-/// kMaxAngle, libm beyond it and for inf and NaN. Out of line: taken only for such angles.
-template <int W>
-RBDC_NOINLINE void sincos_beyond_folded(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
-  Vector<double, W> reduced_s, reduced_c;
-  sincos_reduced<W>(x, reduced_s, reduced_c);
-  for (int k = 0; k < W; ++k) {
-    if (std::fabs(x[k]) <= kFoldedAngle) continue;
-    const bool polynomial = std::fabs(x[k]) <= kMaxAngle;
-    s[k] = polynomial ? reduced_s[k] : std::sin(x[k]);
-    c[k] = polynomial ? reduced_c[k] : std::cos(x[k]);
-  }
+/// sin and cos of one angle.
+struct SinCos {
+  double sin, cos;
+};
+
+/// An angle beyond kFoldedAngle: sincos_reduced up to kMaxAngle (the bits any of its lanes gives),
+/// libm beyond it and for inf and NaN. Out of line and by value, so that the callers' vectors stay
+/// in registers on the path that never calls it (with the vectors passed by reference, clang 14
+/// stored them for it on every call: iiwa14's M 36 → 50 ns).
+RBDC_NOINLINE inline SinCos sincos_beyond_folded(double x) noexcept {
+  if (!(std::fabs(x) <= kMaxAngle)) return {std::sin(x), std::cos(x)};
+  const Vector<double, 4> lanes = {x, x, x, x};
+  Vector<double, 4> s, c;
+  sincos_reduced<4>(lanes, s, c);
+  return {s[0], c[0]};
 }
 
 /// sin and cos of W doubles of any size: sincos_folded, and the lanes beyond it redone.
@@ -290,15 +293,21 @@ inline void sincos_checked(const Vector<double, W>& x, Vector<double, W>& s, Vec
   sincos_folded<W>(x, s, c);
   Vector<std::int64_t, W> inside;
   inside_range<W>(x, kFoldedAngle, inside);
-  if (__builtin_expect(!all_set<W>(inside), 0)) sincos_beyond_folded<W>(x, s, c);
+  if (__builtin_expect(all_set<W>(inside), 1)) return;
+  for (int k = 0; k < W; ++k) {
+    if (!(std::fabs(x[k]) <= kFoldedAngle)) {
+      const SinCos beyond = sincos_beyond_folded(x[k]);
+      s[k] = beyond.sin;
+      c[k] = beyond.cos;
+    }
+  }
 }
 
 }  // namespace simd
 
 /// double: the angles in vectors of kAngleLanes, or of 4 for up to 8 angles (the last one
 /// zero-padded), sincos_folded on every vector in one unrolled run (their dependency chains
-/// overlap; g++ kept a loop), then one test of all angles, and the vectors redone if any angle lies
-/// beyond kFoldedAngle.
+/// overlap; g++ kept a loop), then one test of all angles, and those beyond kFoldedAngle redone.
 template <int N>
 RBDC_ALWAYS_INLINE JointTrig<double, N> joint_sincos_inline(const double (&angle)[N]) noexcept {
   // An arm's 7 angles in one vector of eight made g++ 12's arm7 ID 13 % slower: up to 8, four lanes.
@@ -326,12 +335,18 @@ RBDC_ALWAYS_INLINE JointTrig<double, N> joint_sincos_inline(const double (&angle
     simd::inside_range<kLanes>(x[i], simd::kFoldedAngle, next);
     inside &= next;
   }
-  if (__builtin_expect(!simd::all_set<kLanes>(inside), 0)) {
-    for (int i = 0; i < n_vectors; ++i) simd::sincos_beyond_folded<kLanes>(x[i], s[i], c[i]);
-  }
   JointTrig<double, N> trig;
   std::memcpy(trig.sin, s, sizeof trig.sin);
   std::memcpy(trig.cos, c, sizeof trig.cos);
+  if (__builtin_expect(!simd::all_set<kLanes>(inside), 0)) {
+    for (int i = 0; i < N; ++i) {
+      if (!(std::fabs(angle[i]) <= simd::kFoldedAngle)) {
+        const simd::SinCos beyond = simd::sincos_beyond_folded(angle[i]);
+        trig.sin[i] = beyond.sin;
+        trig.cos[i] = beyond.cos;
+      }
+    }
+  }
   return trig;
 }
 
