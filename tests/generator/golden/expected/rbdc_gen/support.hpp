@@ -129,7 +129,7 @@ inline void join(const Vector<double, 4>* quarter, Vector<double, W>& x) noexcep
 }
 
 /// Each angle takes one of three routes by its own size, never its neighbours': |x| <= kFoldedAngle
-/// (every robot's joint range here but UR's ±2π) sincos_folded, absolute error <= 3.5e-16; up to
+/// (the arms' and TALOS's joint ranges, a leg's in use) sincos_folded, absolute error <= 3.5e-16; up to
 /// kMaxAngle sincos_reduced, 0.84 ulp; beyond it, inf and NaN libm (tests/generator/sincos_test.cpp,
 /// docs/performance.md, "The sines folded about ±π").
 constexpr double kFoldedAngle = 4.71238898038469;  // 3π/2 (the polynomials take |ρ| a little past π/2)
