@@ -148,6 +148,22 @@ inline void flip_signs(const Vector<double, W>& v, const Vector<std::uint64_t, W
   std::memcpy(&flipped, &bits, sizeof flipped);
 }
 
+/// What both polynomials start from: z = r², its square and fourth power (the polynomials go by
+/// Estrin's scheme, pairs and then pairs of pairs by z² and z⁴: four multiply-adds shorter than
+/// Horner's), and 1 − z/2 = w + e exactly (w rounded, e its error).
+template <int W>
+struct Squares {
+  Vector<double, W> z, z2, z4, w, e;
+  explicit Squares(const Vector<double, W>& r) noexcept {
+    z = r * r;
+    z2 = z * z;
+    z4 = z2 * z2;
+    const Vector<double, W> half_z = 0.5 * z;
+    w = 1.0 - half_z;
+    e = (1.0 - w) - half_z;
+  }
+};
+
 /// sin and cos of W doubles up to kMaxAngle, branch-free. Range reduction: x = k·π/2 + r with |r| <= π/4, k the
 /// nearest integer (rounded by adding 1.5·2^52, whose low mantissa bits then hold k) and r from a
 /// three-part π/2 (Cody-Waite: 33 + 33 + 53 bits, so k·p1 and k·p2 are exact for |k| < 2^20)
@@ -174,15 +190,8 @@ inline void sincos_reduced(const Vector<double, W>& x, Vector<double, W>& s, Vec
   const V b = k * 6.077100506303966e-11;
   const V r = a - b;
   const V tail = ((a - r) - b) - k * 2.0222662487959506e-21;
-  const V z = r * r;
-  // The polynomials by Estrin's scheme (pairs, then pairs of pairs by z² and z⁴): Estrin's chain is
-  // four multiply-adds shorter than Horner's.
-  const V z2 = z * z;
-  const V z4 = z2 * z2;
-  // 1 − z/2 = w + e exactly: w rounded, e its error
-  const V half_z = 0.5 * z;
-  const V w = 1.0 - half_z;
-  const V e = (1.0 - w) - half_z;
+  const Squares<W> sq(r);
+  const V z = sq.z, z2 = sq.z2, z4 = sq.z4, w = sq.w, e = sq.e;
   // The terms that carry the signs (each polynomial's sum is odd in them)
   V sin_r_signed, sin_w_signed, cos_r_signed, cos_w_signed, cos_e_signed, cos_z2_signed;
   flip_signs<W>(r, sin_sign, sin_r_signed);
@@ -228,13 +237,8 @@ inline void sincos_folded(const Vector<double, W>& x, Vector<double, W>& s, Vect
   const V zero = {};
   const V tail = took_up ? zero + 1.2246467991473532e-16 : (took_down ? zero - 1.2246467991473532e-16 : zero);
   const Word cos_sign = (Word)(took_up | took_down) & 0x8000000000000000ull;
-  const V z = rho * rho;
-  const V z2 = z * z;
-  const V z4 = z2 * z2;
-  // 1 − z/2 = w + e exactly, as in sincos_reduced
-  const V half_z = 0.5 * z;
-  const V w = 1.0 - half_z;
-  const V e = (1.0 - w) - half_z;
+  const Squares<W> sq(rho);
+  const V z = sq.z, z2 = sq.z2, z4 = sq.z4, w = sq.w, e = sq.e;
   // sin(ρ + t) = ρ + (ρ z P(z) + t·w), ρ added last
   const V sin_poly = ((-0.16666666666666666 + z * 0.008333333333333316) +
       z2 * (-0.00019841269841254966 + z * 2.7557319219160833e-06)) +
