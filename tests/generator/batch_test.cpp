@@ -201,9 +201,9 @@ TEST(Batch, ArithmeticAndTrigonometryPerLane) {
     EXPECT_DOUBLE_EQ(c[k], trig.cos[k]);
     EXPECT_EQ(root[k], std::sqrt(y[k]));
   }
-  x.v[3] = 3e6;  // out of the polynomial's range: libm for that lane only
+  x.v[3] = 3e6;  // out of the polynomials' range: libm for that lane only
   EXPECT_EQ(sin(x)[3], std::sin(3e6));
-  EXPECT_EQ(sin(x)[2], s[2]);
+  EXPECT_NEAR(sin(x)[2], s[2], 4e-16);  // the pack's other lanes now by sincos_reduced
 }
 
 }  // namespace

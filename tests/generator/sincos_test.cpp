@@ -170,6 +170,39 @@ TEST(JointSincos, OutOfRangeAndNonFiniteAnglesTakeLibmAndLeaveTheirNeighboursAlo
   }
 }
 
+/// sin and cos of each angle by one polynomial directly, four lanes at a time.
+template <void (*Four)(const rbdc_gen::simd::Vector<double, 4>&, rbdc_gen::simd::Vector<double, 4>&,
+                       rbdc_gen::simd::Vector<double, 4>&)>
+rbdc_gen::JointTrig<double, kBlock> by_polynomial(const double (&angles)[kBlock]) {
+  rbdc_gen::JointTrig<double, kBlock> trig;
+  for (int first = 0; first < kBlock; first += 4) {
+    rbdc_gen::simd::Vector<double, 4> x, s, c;
+    for (int k = 0; k < 4; ++k) x[k] = angles[first + k];
+    Four(x, s, c);
+    for (int k = 0; k < 4; ++k) trig.sin[first + k] = s[k], trig.cos[first + k] = c[k];
+  }
+  return trig;
+}
+
+TEST(JointSincos, OneCallTakesOnePolynomialForAllItsAngles) {
+  // Within kFoldedAngle all fold; one angle beyond it sends them all through sincos_reduced, in the
+  // time the old code took (a lane-by-lane choice ran both polynomials).
+  double tame[kBlock] = {0.3, -1.2, 2.9, -3.1, 4.7, -4.7, 1.6, -1.6, 0.0, 3.2, -2.2, 1e-3};
+  const auto folded = rbdc_gen::joint_sincos(tame);
+  const auto expected_folded = by_polynomial<rbdc_gen::simd::sincos_folded<4>>(tame);
+  double wide[kBlock];
+  for (int i = 0; i < kBlock; ++i) wide[i] = tame[i];
+  wide[4] = 4.75;
+  const auto reduced = rbdc_gen::joint_sincos(wide);
+  const auto expected_reduced = by_polynomial<rbdc_gen::simd::sincos_reduced<4>>(wide);
+  for (int i = 0; i < kBlock; ++i) {
+    EXPECT_EQ(folded.sin[i], expected_folded.sin[i]) << tame[i];
+    EXPECT_EQ(folded.cos[i], expected_folded.cos[i]) << tame[i];
+    EXPECT_EQ(reduced.sin[i], expected_reduced.sin[i]) << wide[i];
+    EXPECT_EQ(reduced.cos[i], expected_reduced.cos[i]) << wide[i];
+  }
+}
+
 TEST(JointSincos, FloatWithinOneUlp) {
   const std::vector<double> wide = uniform_angles(1e3, 60000, 11);
   const std::vector<float> angles(wide.begin(), wide.end());

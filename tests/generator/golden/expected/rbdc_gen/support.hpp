@@ -128,10 +128,11 @@ inline void join(const Vector<double, 4>* quarter, Vector<double, W>& x) noexcep
   }
 }
 
-/// Each angle takes one of three routes by its own size, never its neighbours': |x| <= kFoldedAngle
-/// (the arms' and TALOS's joint ranges, a leg's in use) sincos_folded, absolute error <= 3.5e-16; up to
-/// kMaxAngle sincos_reduced, 0.84 ulp; beyond it, inf and NaN libm (tests/generator/sincos_test.cpp,
-/// docs/performance.md, "The sines folded about ±π").
+/// The angles of one call all take sincos_folded, absolute error <= 3.5e-16, if they all lie within
+/// kFoldedAngle (the arms' and TALOS's joint ranges, a leg's in use); else all sincos_reduced, 0.84
+/// ulp (a choice lane by lane ran both polynomials: 6 angles of ±2π 27 ns, against 14 for the old
+/// code and 18 now). Angles beyond kMaxAngle, inf and NaN take libm, each by itself
+/// (tests/generator/sincos_test.cpp, docs/performance.md, "The sines folded about ±π").
 constexpr double kFoldedAngle = 4.71238898038469;  // 3π/2 (the polynomials take |ρ| a little past π/2)
 constexpr double kMaxAngle = 1e5;
 
@@ -274,44 +275,44 @@ inline bool all_set(const Vector<std::int64_t, W>& mask) noexcept {
   return all == -1;
 }
 
-/// sin and cos of one angle.
-struct SinCos {
-  double sin, cos;
-};
-
-/// An angle beyond kFoldedAngle: sincos_reduced up to kMaxAngle (the bits any of its lanes gives),
-/// libm beyond it and for inf and NaN. Out of line and by value, so that the callers' vectors stay
-/// in registers on the path that never calls it (with the vectors passed by reference, clang 14
-/// stored them for it on every call: iiwa14's M 36 → 50 ns).
-RBDC_NOINLINE inline SinCos sincos_beyond_folded(double x) noexcept {
-  if (!(std::fabs(x) <= kMaxAngle)) return {std::sin(x), std::cos(x)};
-  const Vector<double, 4> lanes = {x, x, x, x};
-  Vector<double, 4> s, c;
-  sincos_reduced<4>(lanes, s, c);
-  return {s[0], c[0]};
+/// sin and cos of W doubles of any size: sincos_reduced, then libm for the lanes beyond kMaxAngle
+/// and inf and NaN (one vector test; the fix-up loop runs only for such lanes).
+template <int W>
+inline void sincos_wide(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
+  sincos_reduced<W>(x, s, c);
+  Vector<std::int64_t, W> polynomial;
+  inside_range<W>(x, kMaxAngle, polynomial);
+  if (__builtin_expect(all_set<W>(polynomial), 1)) return;
+  for (int k = 0; k < W; ++k) {
+    if (polynomial[k] == 0) {
+      s[k] = std::sin(x[k]);
+      c[k] = std::cos(x[k]);
+    }
+  }
 }
 
-/// sin and cos of W doubles of any size: sincos_folded, and the lanes beyond it redone.
+/// sin and cos of W doubles of any size: sincos_folded if every lane lies within its range, else
+/// sincos_wide for them all.
 template <int W>
 inline void sincos_checked(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
-  sincos_folded<W>(x, s, c);
   Vector<std::int64_t, W> inside;
   inside_range<W>(x, kFoldedAngle, inside);
-  if (__builtin_expect(all_set<W>(inside), 1)) return;
-  for (int k = 0; k < W; ++k) {
-    if (!(std::fabs(x[k]) <= kFoldedAngle)) {
-      const SinCos beyond = sincos_beyond_folded(x[k]);
-      s[k] = beyond.sin;
-      c[k] = beyond.cos;
-    }
+  if (__builtin_expect(all_set<W>(inside), 1)) {
+    sincos_folded<W>(x, s, c);
+  } else {
+    Vector<double, W> x_copy = x, s_copy, c_copy;  // copies, as in joint_sincos_inline
+    sincos_wide<W>(x_copy, s_copy, c_copy);
+    s = s_copy;
+    c = c_copy;
   }
 }
 
 }  // namespace simd
 
 /// double: the angles in vectors of kAngleLanes, or of 4 for up to 8 angles (the last one
-/// zero-padded), sincos_folded on every vector in one unrolled run (their dependency chains
-/// overlap; g++ kept a loop), then one test of all angles, and those beyond kFoldedAngle redone.
+/// zero-padded), one test of all angles, then sincos_folded on every vector in one unrolled run
+/// (their dependency chains overlap; g++ kept a loop), or sincos_wide on every vector if any angle
+/// lies beyond kFoldedAngle.
 template <int N>
 RBDC_ALWAYS_INLINE JointTrig<double, N> joint_sincos_inline(const double (&angle)[N]) noexcept {
   // An arm's 7 angles in one vector of eight made g++ 12's arm7 ID 13 % slower: up to 8, four lanes.
@@ -326,10 +327,6 @@ RBDC_ALWAYS_INLINE JointTrig<double, N> joint_sincos_inline(const double (&angle
   std::memcpy(quarter, angle, sizeof angle);
   V x[n_vectors];
   for (int i = 0; i < n_vectors; ++i) simd::join<kLanes>(quarter + i * kLanes / 4, x[i]);
-  V s[n_vectors];
-  V c[n_vectors];
-#pragma GCC unroll 16
-  for (int i = 0; i < n_vectors; ++i) simd::sincos_folded<kLanes>(x[i], s[i], c[i]);
   // The range tested on the vectors, one mask for all: tested angle by angle, clang 14 made it a
   // compare, a mask move and a branch per angle (about 40 instructions for a quadruped's 12 angles;
   // docs/performance.md, "Lane sums in one vector add").
@@ -339,18 +336,26 @@ RBDC_ALWAYS_INLINE JointTrig<double, N> joint_sincos_inline(const double (&angle
     simd::inside_range<kLanes>(x[i], simd::kFoldedAngle, next);
     inside &= next;
   }
+  V s[n_vectors];
+  V c[n_vectors];
+  if (__builtin_expect(simd::all_set<kLanes>(inside), 1)) {
+#pragma GCC unroll 16
+    for (int i = 0; i < n_vectors; ++i) simd::sincos_folded<kLanes>(x[i], s[i], c[i]);
+  } else {
+    // Copies passed, and the loop unrolled: with x[i], s[i], c[i] themselves passed to sincos_wide
+    // (which the compiler may keep out of line) the arrays stayed in memory on both paths (6 angles'
+    // sines 12 → 27 ns; iiwa14's M 36 → 50 ns).
+#pragma GCC unroll 16
+    for (int i = 0; i < n_vectors; ++i) {
+      V x_copy = x[i], s_copy, c_copy;
+      simd::sincos_wide<kLanes>(x_copy, s_copy, c_copy);
+      s[i] = s_copy;
+      c[i] = c_copy;
+    }
+  }
   JointTrig<double, N> trig;
   std::memcpy(trig.sin, s, sizeof trig.sin);
   std::memcpy(trig.cos, c, sizeof trig.cos);
-  if (__builtin_expect(!simd::all_set<kLanes>(inside), 0)) {
-    for (int i = 0; i < N; ++i) {
-      if (!(std::fabs(angle[i]) <= simd::kFoldedAngle)) {
-        const simd::SinCos beyond = simd::sincos_beyond_folded(angle[i]);
-        trig.sin[i] = beyond.sin;
-        trig.cos[i] = beyond.cos;
-      }
-    }
-  }
   return trig;
 }
 
