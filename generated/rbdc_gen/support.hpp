@@ -276,9 +276,10 @@ inline bool all_set(const Vector<std::int64_t, W>& mask) noexcept {
 }
 
 /// sin and cos of W doubles of any size: sincos_reduced, then libm for the lanes beyond kMaxAngle
-/// and inf and NaN (one vector test; the fix-up loop runs only for such lanes).
+/// and inf and NaN (one vector test; the fix-up loop runs only for such lanes). Out of line: only
+/// calls with an angle beyond kFoldedAngle take it (sincos_wide).
 template <int W>
-inline void sincos_wide(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
+RBDC_NOINLINE void sincos_wide_called(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
   sincos_reduced<W>(x, s, c);
   Vector<std::int64_t, W> polynomial;
   inside_range<W>(x, kMaxAngle, polynomial);
@@ -291,6 +292,16 @@ inline void sincos_wide(const Vector<double, W>& x, Vector<double, W>& s, Vector
   }
 }
 
+/// sincos_wide_called on copies: with the callers' own vectors passed, their arrays stayed in memory
+/// on every call, the branch to it never taken (6 angles' sines 12 → 27 ns; iiwa14's M 36 → 50 ns).
+template <int W>
+RBDC_ALWAYS_INLINE void sincos_wide(const Vector<double, W>& x, Vector<double, W>& s, Vector<double, W>& c) noexcept {
+  Vector<double, W> x_copy = x, s_copy, c_copy;
+  sincos_wide_called<W>(x_copy, s_copy, c_copy);
+  s = s_copy;
+  c = c_copy;
+}
+
 /// sin and cos of W doubles of any size: sincos_folded if every lane lies within its range, else
 /// sincos_wide for them all.
 template <int W>
@@ -300,10 +311,7 @@ inline void sincos_checked(const Vector<double, W>& x, Vector<double, W>& s, Vec
   if (__builtin_expect(all_set<W>(inside), 1)) {
     sincos_folded<W>(x, s, c);
   } else {
-    Vector<double, W> x_copy = x, s_copy, c_copy;  // copies, as in joint_sincos_inline
-    sincos_wide<W>(x_copy, s_copy, c_copy);
-    s = s_copy;
-    c = c_copy;
+    sincos_wide<W>(x, s, c);
   }
 }
 
@@ -341,17 +349,9 @@ RBDC_ALWAYS_INLINE JointTrig<double, N> joint_sincos_inline(const double (&angle
   if (__builtin_expect(simd::all_set<kLanes>(inside), 1)) {
 #pragma GCC unroll 16
     for (int i = 0; i < n_vectors; ++i) simd::sincos_folded<kLanes>(x[i], s[i], c[i]);
-  } else {
-    // Copies passed, and the loop unrolled: with x[i], s[i], c[i] themselves passed to sincos_wide
-    // (which the compiler may keep out of line) the arrays stayed in memory on both paths (6 angles'
-    // sines 12 → 27 ns; iiwa14's M 36 → 50 ns).
+  } else {  // unrolled too: a loop's indices would keep s and c in memory on either path
 #pragma GCC unroll 16
-    for (int i = 0; i < n_vectors; ++i) {
-      V x_copy = x[i], s_copy, c_copy;
-      simd::sincos_wide<kLanes>(x_copy, s_copy, c_copy);
-      s[i] = s_copy;
-      c[i] = c_copy;
-    }
+    for (int i = 0; i < n_vectors; ++i) simd::sincos_wide<kLanes>(x[i], s[i], c[i]);
   }
   JointTrig<double, N> trig;
   std::memcpy(trig.sin, s, sizeof trig.sin);

@@ -78,9 +78,10 @@ using Batch = Pack<T, 64 / static_cast<int>(sizeof(T))>;
 
 namespace simd {
 
-/// sin and cos of every lane by the polynomial of support.hpp (floats evaluated in double and
-/// rounded once), at most 8 lanes (one AVX-512 register of doubles) at a time; lanes out of its
-/// range go through libm, as in joint_sincos.
+/// sin and cos of every lane by the polynomials of support.hpp (floats evaluated in double and
+/// rounded once), at most 8 lanes (one AVX-512 register of doubles) at a time, as joint_sincos takes
+/// them: sincos_folded if all of a chunk's lanes lie within kFoldedAngle, else sincos_reduced, libm
+/// beyond kMaxAngle.
 template <class T, int W>
 inline void sincos(const Pack<T, W>& x, Pack<T, W>& s, Pack<T, W>& c) noexcept {
   constexpr int kChunk = W < 8 ? W : 8;
