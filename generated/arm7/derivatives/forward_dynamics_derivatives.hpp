@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_8d84d82a0f57.hpp
+//   arm7/common/forward_dynamics_derivatives_e6e84546e111.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_8d84d82a0f57.hpp"
+#include "arm7/common/forward_dynamics_derivatives_e6e84546e111.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -30,9 +30,10 @@ namespace rbdc_gen::arm7::derivatives {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2932  2516    5     0    14   16   5483
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 3845 arithmetic
-///   instructions, scalar tree 5087 (cost 7449), looped RNEA derivatives 5974 (cost 6382),
-///   looped CRBA 7802 (cost 9352)
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_8d84d82a0f57::forward_dynamics_derivatives;
+///   instructions (critical path 332 cycles, cost 5040), scalar tree 5087 (path 332, cost
+///   8644), looped RNEA derivatives 5974 (path 332, cost 7577), looped CRBA 7802 (path 357,
+///   cost 10637)
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_e6e84546e111::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

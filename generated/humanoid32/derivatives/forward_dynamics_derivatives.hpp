@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_a77a998f4cc8.hpp
+//   humanoid32/common/forward_dynamics_derivatives_4649d26184ef.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_a77a998f4cc8.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_4649d26184ef.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -32,11 +32,12 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// schedule: limb lanes and looped RNEA derivatives (M's factor and the terms traced with the
 ///   isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of fewer than 4
 ///   repeated to fill the lanes), ∂τ a loop over the bodies, the solve's right-hand sides
-///   in SIMD across columns): 63073 arithmetic instructions (cost 76426), scalar tree
-///   124427 (cost 293865), looped solve 64882 (cost 105306), limb lanes and a looped solve
-///   51916 (cost 89197), looped RNEA derivatives 68057 (cost 84216), looped CRBA 75761
-///   (cost 99767)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_a77a998f4cc8::forward_dynamics_derivatives;
+///   in SIMD across columns): 63073 arithmetic instructions (critical path 1250 cycles,
+///   cost 80926), scalar tree 124427 (path 1250, cost 298365), looped solve 64882 (path
+///   1250, cost 109806), limb lanes and a looped solve 51916 (path 1250, cost 93697),
+///   looped RNEA derivatives 68057 (path 1250, cost 88716), looped CRBA 75761 (path 1250,
+///   cost 104267)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_4649d26184ef::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

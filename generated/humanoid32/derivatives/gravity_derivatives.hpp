@@ -7,11 +7,11 @@
 // gravity_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   humanoid32/common/gravity_derivatives_446c89dfd201.hpp
+//   humanoid32/common/gravity_derivatives_8233b1019689.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/gravity_derivatives_446c89dfd201.hpp"
+#include "humanoid32/common/gravity_derivatives_8233b1019689.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -24,8 +24,9 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///             3995  2076    0     0    64   85   6220
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 1949 arithmetic
-///   instructions, scalar tree 3390, looped RNEA derivatives 9856 (cost 13751)
-using ::rbdc_gen::humanoid32::common::gravity_derivatives_446c89dfd201::gravity_derivatives;
+///   instructions (critical path 142 cycles, cost 2460), scalar tree 3390 (path 141, cost
+///   3898), looped RNEA derivatives 9856 (path 141, cost 14259)
+using ::rbdc_gen::humanoid32::common::gravity_derivatives_8233b1019689::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   humanoid32/common/forward_dynamics_655c65bebb70.hpp
+//   humanoid32/common/forward_dynamics_633c5ba51e80.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/forward_dynamics_655c65bebb70.hpp"
+#include "humanoid32/common/forward_dynamics_633c5ba51e80.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -28,9 +28,10 @@ namespace rbdc_gen::humanoid32::full {
 ///             7708  5361   55     0    64    5  13193
 /// schedule: articulated-body algorithm in limb lanes (the isomorphic limbs in SIMD lanes: 2 of
 ///   pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes); the rest
-///   scalar): 4539 arithmetic instructions (cost 7153), scalar tree 11614 (cost 23114),
-///   limb lanes 7322 (cost 16041), articulated-body algorithm 7415 (cost 13036)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_655c65bebb70::forward_dynamics;
+///   scalar): 4539 arithmetic instructions (critical path 785 cycles, cost 9979), scalar
+///   tree 11614 (path 725, cost 25724), limb lanes 7322 (path 693, cost 18536),
+///   articulated-body algorithm 7415 (path 786, cost 15866)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_633c5ba51e80::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

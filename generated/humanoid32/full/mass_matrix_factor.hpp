@@ -7,11 +7,11 @@
 // mass_matrix_factor for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   humanoid32/common/mass_matrix_factor_78c7eef0fb55.hpp
+//   humanoid32/common/mass_matrix_factor_35c2555eb9c7.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/mass_matrix_factor_78c7eef0fb55.hpp"
+#include "humanoid32/common/mass_matrix_factor_35c2555eb9c7.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -24,9 +24,9 @@ namespace rbdc_gen::humanoid32::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             3897  2985   33     0    64   18   6997
-/// schedule: scalar tree: 6997 arithmetic instructions (cost 12033), looped factor 7432 (cost
-///   18124), looped CRBA 12023 (cost 25773)
-using ::rbdc_gen::humanoid32::common::mass_matrix_factor_78c7eef0fb55::mass_matrix_factor;
+/// schedule: scalar tree: 6997 arithmetic instructions (critical path 393 cycles, cost 13448),
+///   looped factor 7432 (path 393, cost 19539), looped CRBA 12023 (path 393, cost 27188)
+using ::rbdc_gen::humanoid32::common::mass_matrix_factor_35c2555eb9c7::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

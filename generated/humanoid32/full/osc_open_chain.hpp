@@ -7,11 +7,11 @@
 // osc_open_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   humanoid32/common/osc_open_chain_507af59dc66c.hpp
+//   humanoid32/common/osc_open_chain_268a01e230e0.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_open_chain_507af59dc66c.hpp"
+#include "humanoid32/common/osc_open_chain_268a01e230e0.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -26,9 +26,9 @@ namespace rbdc_gen::humanoid32::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             7420  5236   27     0    64   13  12760
-/// schedule: scalar tree: 12760 arithmetic instructions (cost 25864), looped operational-space
-///   columns 18392 (cost 31875)
-using ::rbdc_gen::humanoid32::common::osc_open_chain_507af59dc66c::osc_open_chain;
+/// schedule: scalar tree: 12760 arithmetic instructions (critical path 404 cycles, cost 27318),
+///   looped operational-space columns 18392 (path 404, cost 33329)
+using ::rbdc_gen::humanoid32::common::osc_open_chain_268a01e230e0::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

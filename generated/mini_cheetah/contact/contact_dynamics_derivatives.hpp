@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_2a3007b6b552.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_fbd50e5d96ec.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_2a3007b6b552.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_fbd50e5d96ec.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -32,9 +32,9 @@ namespace rbdc_gen::mini_cheetah::contact {
 ///             49745  48132   26     0    24  1637  99564
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 27468 arithmetic
-///   instructions (cost 37219), scalar tree 99385 (cost 233764), looped solve 39565 (cost
-///   62627)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_2a3007b6b552::contact_dynamics_derivatives;
+///   instructions (critical path 1479 cycles, cost 42436), scalar tree 99385 (path 1479,
+///   cost 239088), looped solve 39565 (path 1479, cost 67952)
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_fbd50e5d96ec::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

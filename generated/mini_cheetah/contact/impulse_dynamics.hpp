@@ -7,11 +7,11 @@
 // impulse_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose impulse_dynamics is the same code:
-//   mini_cheetah/common/impulse_dynamics_d7dcc6ad6023.hpp
+//   mini_cheetah/common/impulse_dynamics_0cab13cd4d16.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/impulse_dynamics_d7dcc6ad6023.hpp"
+#include "mini_cheetah/common/impulse_dynamics_0cab13cd4d16.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -27,8 +27,9 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             4036  3514   26     0    24   76   7676
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4163 arithmetic
-///   instructions (cost 5685), scalar tree 7283 (cost 12719)
-using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_d7dcc6ad6023::impulse_dynamics;
+///   instructions (critical path 882 cycles, cost 8753), scalar tree 7283 (path 904, cost
+///   15974)
+using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_0cab13cd4d16::impulse_dynamics;
 
 /// impulse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

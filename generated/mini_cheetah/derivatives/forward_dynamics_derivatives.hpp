@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_2c15d675e5b4.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_3d70784dc67c.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_2c15d675e5b4.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_3d70784dc67c.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -31,10 +31,12 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///             18986  17315   14     0    24  149  36488
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
 ///   lanes, the solve's right-hand sides in SIMD across columns): 9635 arithmetic
-///   instructions, scalar tree 24160 (cost 53224), limb lanes 7509 (cost 18270), looped
-///   solve 15391 (cost 24316), looped RNEA derivatives 18024 (cost 20391), limb lanes and
-///   looped RNEA derivatives 15058 (cost 15846), looped CRBA 21143 (cost 26906)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_2c15d675e5b4::forward_dynamics_derivatives;
+///   instructions (critical path 529 cycles, cost 11539), scalar tree 24160 (path 529, cost
+///   55128), limb lanes 7509 (path 514, cost 20120), looped solve 15391 (path 529, cost
+///   26220), looped RNEA derivatives 18024 (path 529, cost 22296), limb lanes and looped
+///   RNEA derivatives 15058 (path 529, cost 17750), looped CRBA 21143 (path 529, cost
+///   28810)
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_3d70784dc67c::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

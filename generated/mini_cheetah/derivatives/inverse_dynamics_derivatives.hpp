@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   mini_cheetah/common/inverse_dynamics_derivatives_6b74bbc833b2.hpp
+//   mini_cheetah/common/inverse_dynamics_derivatives_9c9027fe08a2.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/inverse_dynamics_derivatives_6b74bbc833b2.hpp"
+#include "mini_cheetah/common/inverse_dynamics_derivatives_9c9027fe08a2.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -26,8 +26,9 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             3124  2831    0     0    24   66   6045
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1662 arithmetic
-///   instructions, scalar tree 5951 (cost 9522), looped RNEA derivatives 7696 (cost 10752)
-using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_6b74bbc833b2::inverse_dynamics_derivatives;
+///   instructions (critical path 115 cycles, cost 2076), scalar tree 5951 (path 116, cost
+///   9940), looped RNEA derivatives 7696 (path 116, cost 11170)
+using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_9c9027fe08a2::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

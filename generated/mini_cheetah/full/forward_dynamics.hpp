@@ -7,11 +7,11 @@
 // forward_dynamics for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah/common/forward_dynamics_edfe96d6fc63.hpp
+//   mini_cheetah/common/forward_dynamics_f7fcf7ff06ee.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/forward_dynamics_edfe96d6fc63.hpp"
+#include "mini_cheetah/common/forward_dynamics_f7fcf7ff06ee.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -27,9 +27,10 @@ namespace rbdc_gen::mini_cheetah::full {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1892  1446   14     0    24   25   3401
 /// schedule: articulated-body algorithm in limb lanes (the 4 isomorphic limbs in SIMD lanes, the
-///   trunk scalar): 1070 arithmetic instructions, scalar tree 3535 (cost 3724), limb lanes
-///   1276, articulated-body algorithm 3329
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_edfe96d6fc63::forward_dynamics;
+///   trunk scalar): 1070 arithmetic instructions (critical path 372 cycles, cost 2409),
+///   scalar tree 3535 (path 341, cost 4952), limb lanes 1276 (path 325, cost 2446),
+///   articulated-body algorithm 3329 (path 367, cost 4650)
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_f7fcf7ff06ee::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

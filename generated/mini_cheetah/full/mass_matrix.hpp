@@ -7,11 +7,11 @@
 // mass_matrix for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   mini_cheetah/common/mass_matrix_7a969b182813.hpp
+//   mini_cheetah/common/mass_matrix_e502c368714d.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/mass_matrix_7a969b182813.hpp"
+#include "mini_cheetah/common/mass_matrix_e502c368714d.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -23,8 +23,9 @@ namespace rbdc_gen::mini_cheetah::full {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             340  318    0     0    24   27    709
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 193 arithmetic
-///   instructions, scalar tree 689, looped CRBA 2252 (cost 3137)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_7a969b182813::mass_matrix;
+///   instructions (critical path 70 cycles, cost 445), scalar tree 689 (path 71, cost 945),
+///   looped CRBA 2252 (path 71, cost 3392)
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_e502c368714d::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix_factor for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   mini_cheetah/common/mass_matrix_factor_4853d15e8beb.hpp
+//   mini_cheetah/common/mass_matrix_factor_cdd593dfbbe0.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/mass_matrix_factor_4853d15e8beb.hpp"
+#include "mini_cheetah/common/mass_matrix_factor_cdd593dfbbe0.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -24,9 +24,9 @@ namespace rbdc_gen::mini_cheetah::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             804  679   14     0    24   15   1536
-/// schedule: scalar tree: 1536 arithmetic instructions, looped factor 1817 (cost 4637), looped CRBA
-///   3380 (cost 7085)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_factor_4853d15e8beb::mass_matrix_factor;
+/// schedule: scalar tree: 1536 arithmetic instructions (critical path 222 cycles, cost 2335),
+///   looped factor 1817 (path 222, cost 5436), looped CRBA 3380 (path 222, cost 7884)
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_factor_cdd593dfbbe0::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix_lower for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_lower is the same code:
-//   mini_cheetah/common/mass_matrix_lower_4ffc363d7185.hpp
+//   mini_cheetah/common/mass_matrix_lower_d7a483141e86.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/mass_matrix_lower_4ffc363d7185.hpp"
+#include "mini_cheetah/common/mass_matrix_lower_d7a483141e86.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -24,8 +24,9 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             340  318    0     0    24   27    709
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 193 arithmetic
-///   instructions, scalar tree 689, looped CRBA 2252 (cost 3137)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_lower_4ffc363d7185::mass_matrix_lower;
+///   instructions (critical path 70 cycles, cost 445), scalar tree 689 (path 71, cost 945),
+///   looped CRBA 2252 (path 71, cost 3392)
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_lower_d7a483141e86::mass_matrix_lower;
 
 /// mass_matrix_lower on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

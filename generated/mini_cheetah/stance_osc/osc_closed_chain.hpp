@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "stance_osc": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_6edf2f39cd6f.hpp
+//   mini_cheetah/common/osc_closed_chain_15c67188fdf9.hpp
 #pragma once
 
 #include "mini_cheetah/stance_osc.hpp"
-#include "mini_cheetah/common/osc_closed_chain_6edf2f39cd6f.hpp"
+#include "mini_cheetah/common/osc_closed_chain_15c67188fdf9.hpp"
 
 namespace rbdc_gen::mini_cheetah::stance_osc {
 
@@ -26,9 +26,9 @@ namespace rbdc_gen::mini_cheetah::stance_osc {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2271  1711    9     0    24   17   4032
-/// schedule: scalar tree: 4032 arithmetic instructions (cost 4917), looped operational-space
-///   columns 6983 (cost 9437)
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_6edf2f39cd6f::osc_closed_chain;
+/// schedule: scalar tree: 4032 arithmetic instructions (critical path 148 cycles, cost 5450),
+///   looped operational-space columns 6983 (path 148, cost 9970)
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_15c67188fdf9::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "stance_osc_rf_lh": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_fc4e004d1a6b.hpp
+//   mini_cheetah/common/osc_closed_chain_bdf0c67430b1.hpp
 #pragma once
 
 #include "mini_cheetah/stance_osc_rf_lh.hpp"
-#include "mini_cheetah/common/osc_closed_chain_fc4e004d1a6b.hpp"
+#include "mini_cheetah/common/osc_closed_chain_bdf0c67430b1.hpp"
 
 namespace rbdc_gen::mini_cheetah::stance_osc_rf_lh {
 
@@ -26,9 +26,9 @@ namespace rbdc_gen::mini_cheetah::stance_osc_rf_lh {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2131  1605    9     0    24   18   3787
-/// schedule: scalar tree: 3787 arithmetic instructions (cost 4329), looped operational-space
-///   columns 6737 (cost 8847)
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_fc4e004d1a6b::osc_closed_chain;
+/// schedule: scalar tree: 3787 arithmetic instructions (critical path 148 cycles, cost 4862),
+///   looped operational-space columns 6737 (path 148, cost 9380)
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_bdf0c67430b1::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -14,7 +14,9 @@ The cost is the arithmetic instructions the body issues: every operation node on
 operation being one vector instruction for all limbs, the sum over the lanes two (a horizontal
 add of four), a looped solve's row update one per looped_solve.SIMD_DOUBLES columns; straight-line
 code past FRONT_END_LIMIT instructions and the tree loops' and the factor's instructions weigh
-more, as measured (`cost`). Where the
+more, as measured (`cost`), and each cycle of the form's critical path (graph/latency.py) weighs
+LATENCY_WEIGHT instructions more: a form whose work waits in one long chain is slower than its count
+says. Where the
 unrolled factor is past looped_factor.UNROLL_LIMIT, the unrolled CRBA past looped_crba.UNROLL_LIMIT,
 the unrolled RNEA derivatives past looped_rnea_derivatives.UNROLL_LIMIT, the feet's unrolled force
 terms past looped_feet_forces.UNROLL_LIMIT, or the OSC's unrolled columns past looped_osc.UNROLL_LIMIT,
@@ -31,6 +33,7 @@ from dataclasses import replace
 from ..algorithms import aba
 from ..algorithms.forward_dynamics import dof_parents
 from ..graph import expr as ex
+from ..graph.latency import critical_path
 from ..views.coupled import tree_view
 from ..views import limbs, origins, turns
 from ..views.limbs import LimbError
@@ -60,15 +63,13 @@ def _instructions(node):
 
 
 def _straight_line_counts(fn):
-    """(arithmetic instructions, lane rotations among them, lane instructions among them) of fn's
-    traced, straight-line part."""
-    count = rotations = lanes = 0
+    """(arithmetic instructions, lane instructions among them) of fn's traced, straight-line part."""
+    count = lanes = 0
     for node in ex.reachable(fn.output_exprs()):
         n = _instructions(node)
         count += n
-        rotations += node.op == "lane_rotate"
         lanes += n if node.lane or node.op == "lane_sum" else 0
-    return count, rotations, lanes
+    return count, lanes
 
 
 def beside_sines(fn):
@@ -107,28 +108,45 @@ FRONT_END_PENALTY = 1.4
 LANE_FRONT_END_EXTRA = 1.4
 
 
-# A lane rotation stands for the chain it lengthens: the pairs' velocity products (rnea.pair_step)
-# cross the vector's halves on every body's chain. humanoid32's ID paired, 8 % fewer instructions,
-# took 4 % longer (clang 14, Zen 5; as long with an in-half swap in the rotation's place, so not the
-# shuffle itself); TALOS's, 19 % fewer and its code back near FRONT_END_LIMIT, 37 % less.
-LANE_ROTATE_EXTRA = 3
+# What a cycle of a form's critical path costs, in instructions. Fitted (least squares, no constant) to
+# four pairs of forward-dynamics forms timed against each other (Zen 5, clang 14, the peer harness;
+# docs/performance.md, "Forms chosen by their critical path too"): per call, 0.23 cycles an
+# instruction and 0.83 a cycle of path: arm7's and iiwa14's ABA 45 and 33 ns slower than their
+# factor, Panda's factor 48 ns faster than its ABA, the Mini Cheetah's lanes 7 ns slower than its ABA
+# in lanes. It also charges the limb pairs' lane rotations, which cross the vector's halves on every
+# body's chain: humanoid32's ID paired, 6 % fewer instructions on a path of 284 cycles against 241,
+# took 4 % longer; TALOS's, 19 % fewer on 316 against 263, 37 % less (its lanes' code past
+# FRONT_END_LIMIT). A loop's own chain is not traced: a looped form is charged its traced part's path
+# or the scalar tree's, whichever is longer (`_figures`).
+LATENCY_WEIGHT = 3.6
 
 
-def cost(fn, counts=None):
+def cost(fn, counts=None, path=None):
     """What `auto` minimises, in units of one short straight-line instruction: the straight-line part
     (`counts`: _straight_line_counts, counted here if not given) with the front-end penalty (more for
-    the share of lane instructions) and LANE_ROTATE_EXTRA a rotation, the loops weighted by what each of
-    their instructions was measured to cost (their `cost()`)."""
-    n, rotations, lanes = _straight_line_counts(fn) if counts is None else counts
+    the share of lane instructions), the loops weighted by what each of
+    their instructions was measured to cost (their `cost()`), and LATENCY_WEIGHT a cycle of the traced
+    part's critical path (`path`, computed here if not given)."""
+    n, lanes = _straight_line_counts(fn) if counts is None else counts
     loops = fn.solve.cost() if fn.solve is not None else 0
     penalty = FRONT_END_PENALTY + LANE_FRONT_END_EXTRA * lanes / max(1, n)
-    return round(n + penalty * max(0, n - FRONT_END_LIMIT) + LANE_ROTATE_EXTRA * rotations + loops)
+    path = critical_path(fn) if path is None else path
+    return round(n + penalty * max(0, n - FRONT_END_LIMIT) + loops + LATENCY_WEIGHT * path)
 
 
-def _instructions_and_cost(fn):
-    """(instructions(fn), cost(fn)), the DAG walked once."""
-    counts = _straight_line_counts(fn)
-    return counts[0] + (fn.solve.instructions() if fn.solve is not None else 0), cost(fn, counts)
+def _figures(traced):
+    """{form: (instructions, critical path, cost)} of the traced forms. A looped form's path is at
+    least the scalar tree's: its loops run the same algorithm's chain, one iteration after another
+    (without this a 2-link arm's 25-instruction factor would lose to a loop for its path)."""
+    figures = {}
+    for form, fn in traced.items():
+        counts = _straight_line_counts(fn)
+        path = critical_path(fn)
+        if fn.solve is not None and "scalar" in figures:
+            path = max(path, figures["scalar"][1])
+        figures[form] = (counts[0] + (fn.solve.instructions() if fn.solve is not None else 0), path,
+                         cost(fn, counts, path))
+    return figures
 
 
 def _forms(robot, scene, name):
@@ -272,14 +290,14 @@ def scheduled_function(robot, scene, name):
             del traced[form]
             untraced.append("%s not emitted (%d straight-line instructions in lanes, past %d)"
                             % (_SHORT[form], lane_code, LANE_CODE_LIMIT))
-    figures = {form: _instructions_and_cost(fn) for form, fn in traced.items()}
-    best = min(figures, key=lambda form: figures[form][1])  # dicts keep order: the scalar tree wins a tie
-    others = ", ".join(["%s %s" % (_SHORT[form], _figures(*figures[form])) for form in figures if form != best]
-                       + untraced)
-    count, weighted = figures[best]
+    figures = _figures(traced)
+    best = min(figures, key=lambda form: figures[form][2])  # dicts keep order: the scalar tree wins a tie
+    others = ", ".join(["%s %d (path %d, cost %d)" % ((_SHORT[form],) + figures[form]) for form in figures
+                        if form != best] + untraced)
     detail = _detail(robot, best, name)
-    return replace(traced[best], doc=signature(robot, scene, name)[0], schedule="%s%s: %d arithmetic instructions%s, %s"
-                   % (_SHORT[best], detail, count, _cost(count, weighted), others))
+    return replace(traced[best], doc=signature(robot, scene, name)[0],
+                   schedule="%s%s: %d arithmetic instructions (critical path %d cycles, cost %d), %s"
+                   % ((_SHORT[best], detail) + figures[best] + (others,)))
 
 
 def _detail(robot, form, name):
@@ -289,15 +307,6 @@ def _detail(robot, form, name):
     if groups is None:
         return _DETAIL[form]
     return _LANE_FORMS[form] % ((groups, lane_functions.PAIRED_WORDS[name]) if form == "paired_lanes" else groups)
-
-
-def _figures(count, weighted):
-    return "%d%s" % (count, _cost(count, weighted))
-
-
-def _cost(count, weighted):
-    """A form's cost where it differs from its instructions."""
-    return "" if weighted == count else " (cost %d)" % weighted
 
 
 def _as(form, name):

@@ -305,17 +305,18 @@ class HumanoidPairs(unittest.TestCase):
                     self.assertLess(max_relative_error(got[output], want[output]), 1e-12, (name, output, seed))
 
     def test_pairs_together_chosen_by_cost(self):
-        """The paired form has fewer instructions (humanoid32's ID 2 392 against 2 603) but a lane
-        rotation on each body's chain; at schedule.LANE_ROTATE_EXTRA its cost is the higher here (it
-        measured 4 % slower), without that weight auto would take it. M's paired walks need no
+        """The paired form has fewer instructions (humanoid32's ID 1 847 against 1 955) but a lane
+        rotation on each body's chain, a critical path of 284 cycles against 241; at
+        schedule.LATENCY_WEIGHT its cost is the higher here (it measured 4 % slower), without that
+        weight auto would take it. M's paired walks need no
         rotation (their lanes 2-3 are read where stored): auto takes them."""
         robot = mini_cheetah.load(urdf=mini_cheetah.HUMANOID32)
         fn = scheduled_function(robot, default_scene(), "inverse_dynamics")
         self.assertTrue(fn.schedule.startswith("limb lanes ("), fn.schedule)
-        paired = re.search(r"limb lanes with the pairs' spare lanes used (\d+) \(cost (\d+)\)", fn.schedule)
+        paired = re.search(r"limb lanes with the pairs' spare lanes used (\d+) \(path \d+, cost (\d+)\)", fn.schedule)
         self.assertIsNotNone(paired, fn.schedule)
         self.assertLess(int(paired.group(1)), int(re.search(r": (\d+) arithmetic", fn.schedule).group(1)))
-        with mock.patch.object(schedule, "LANE_ROTATE_EXTRA", 0):
+        with mock.patch.object(schedule, "LATENCY_WEIGHT", 0):
             fn = scheduled_function(robot, default_scene(), "inverse_dynamics")
         self.assertTrue(fn.schedule.startswith("limb lanes with the pairs' spare lanes used"), fn.schedule)
         fn = scheduled_function(robot, default_scene(), "mass_matrix")
@@ -363,7 +364,7 @@ class HumanoidPairs(unittest.TestCase):
         fn = scheduled_function(robot, default_scene(), "forward_dynamics_derivatives")
         self.assertTrue(fn.schedule.startswith("limb lanes and looped RNEA derivatives"), fn.schedule)
         self.assertIsNotNone(fn.solve.rnea)
-        self.assertRegex(fn.schedule, r"limb lanes and a looped solve \d+ \(cost \d+\)")
+        self.assertRegex(fn.schedule, r"limb lanes and a looped solve \d+ \(path \d+, cost \d+\)")
         with mock.patch.object(schedule, "LANE_CODE_LIMIT", 20000):
             fn = scheduled_function(robot, default_scene(), "forward_dynamics_derivatives")
         self.assertTrue(fn.schedule.startswith("limb lanes and looped RNEA derivatives"), fn.schedule)

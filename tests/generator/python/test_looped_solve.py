@@ -125,7 +125,8 @@ class LoopedForwardDynamicsDerivatives(unittest.TestCase):
     def test_auto_picks_by_cost_and_says_so(self):
         fn = scheduled_function(FLOATING, scene("auto"), NAME)
         forms = r"(looped solve|scalar tree|looped RNEA derivatives|looped CRBA)"
-        self.assertRegex(fn.schedule, r"^%s\b.*\d+ arithmetic instructions( \(cost \d+\))?, (%s \d+( \(cost \d+\))?(, )?){3}$"
+        self.assertRegex(fn.schedule, r"^%s\b.*\d+ arithmetic instructions \(critical path \d+ cycles, cost \d+\), "
+                                      r"(%s \d+ \(path \d+, cost \d+\)(, )?){3}$"
                          % (forms, forms))
 
     @unittest.skipIf(skip_reason(), skip_reason())
