@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_e6e84546e111.hpp
+//   arm7/common/forward_dynamics_derivatives_427a4c7edc1a.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_e6e84546e111.hpp"
+#include "arm7/common/forward_dynamics_derivatives_427a4c7edc1a.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -28,12 +28,12 @@ namespace rbdc_gen::arm7::derivatives {
 /// @param da_df out 7x3: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2932  2516    5     0    14   16   5483
-/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 3845 arithmetic
-///   instructions (critical path 332 cycles, cost 5040), scalar tree 5087 (path 332, cost
-///   8644), looped RNEA derivatives 5974 (path 332, cost 7577), looped CRBA 7802 (path 357,
-///   cost 10637)
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_e6e84546e111::forward_dynamics_derivatives;
+///             2929  2509    5     0    14   16   5473
+/// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 3835 arithmetic
+///   instructions (critical path 248 cycles, cost 4455), scalar tree 5077 (path 248, cost
+///   8045), looped RNEA derivatives 5974 (path 248, cost 7002), looped CRBA 7802 (path 284,
+///   cost 10062)
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_427a4c7edc1a::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

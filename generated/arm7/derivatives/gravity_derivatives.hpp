@@ -7,11 +7,11 @@
 // gravity_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   arm7/common/gravity_derivatives_85ff4a46372f.hpp
+//   arm7/common/gravity_derivatives_ecba3b0b6972.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/gravity_derivatives_85ff4a46372f.hpp"
+#include "arm7/common/gravity_derivatives_ecba3b0b6972.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -22,9 +22,9 @@ namespace rbdc_gen::arm7::derivatives {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             147   86    0     0    10    5    248
-/// schedule: scalar tree: 248 arithmetic instructions (critical path 81 cycles, cost 540), looped
-///   RNEA derivatives 1940 (path 81, cost 2999)
-using ::rbdc_gen::arm7::common::gravity_derivatives_85ff4a46372f::gravity_derivatives;
+/// schedule: scalar tree: 248 arithmetic instructions (critical path 75 cycles, cost 436), looped
+///   RNEA derivatives 1940 (path 75, cost 2895)
+using ::rbdc_gen::arm7::common::gravity_derivatives_ecba3b0b6972::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

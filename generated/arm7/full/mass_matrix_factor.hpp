@@ -7,11 +7,11 @@
 // mass_matrix_factor for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   arm7/common/mass_matrix_factor_89e0a6bfe3e7.hpp
+//   arm7/common/mass_matrix_factor_13ebc2efa70a.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/mass_matrix_factor_89e0a6bfe3e7.hpp"
+#include "arm7/common/mass_matrix_factor_13ebc2efa70a.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -24,9 +24,9 @@ namespace rbdc_gen::arm7::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             230  170    5     0    10    3    418
-/// schedule: scalar tree: 418 arithmetic instructions (critical path 142 cycles, cost 929), looped
-///   factor 517 (path 142, cost 1586), looped CRBA 1705 (path 142, cost 3358)
-using ::rbdc_gen::arm7::common::mass_matrix_factor_89e0a6bfe3e7::mass_matrix_factor;
+/// schedule: scalar tree: 418 arithmetic instructions (critical path 139 cycles, cost 766), looped
+///   factor 517 (path 139, cost 1422), looped CRBA 1705 (path 139, cost 3194)
+using ::rbdc_gen::arm7::common::mass_matrix_factor_13ebc2efa70a::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // bias_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   humanoid32/common/bias_derivatives_287dcf685014.hpp
+//   humanoid32/common/bias_derivatives_56677ba00124.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/bias_derivatives_287dcf685014.hpp"
+#include "humanoid32/common/bias_derivatives_56677ba00124.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -25,9 +25,9 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// operations    mul    add  div  sqrt  trig  neg  total
 ///             32235  28332    0     0    64   30  60661
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
-///   21350 arithmetic instructions (critical path 239 cycles, cost 30703), scalar tree
-///   21594 (path 239, cost 47926), limb lanes 12526 (path 237, cost 35435)
-using ::rbdc_gen::humanoid32::common::bias_derivatives_287dcf685014::bias_derivatives;
+///   21350 arithmetic instructions (critical path 196 cycles, cost 30333), scalar tree
+///   21483 (path 196, cost 47289), limb lanes 12464 (path 200, cost 34872)
+using ::rbdc_gen::humanoid32::common::bias_derivatives_56677ba00124::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_force_term_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_term_derivatives is the same code:
-//   humanoid32/common/feet_force_term_derivatives_25f57331d3dd.hpp
+//   humanoid32/common/feet_force_term_derivatives_c0325f17f960.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/feet_force_term_derivatives_25f57331d3dd.hpp"
+#include "humanoid32/common/feet_force_term_derivatives_c0325f17f960.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -22,10 +22,10 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param dtau_e_dq out 38x38: ∂(Jᵀf)/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             1671  1162    0     0    46    0   2879
-/// schedule: scalar tree: 2879 arithmetic instructions (critical path 100 cycles, cost 3239),
-///   looped feet force terms 4692 (path 100, cost 12347)
-using ::rbdc_gen::humanoid32::common::feet_force_term_derivatives_25f57331d3dd::feet_force_term_derivatives;
+///             1671  1160    0     0    46    0   2877
+/// schedule: scalar tree: 2877 arithmetic instructions (critical path 94 cycles, cost 3112), looped
+///   feet force terms 4690 (path 94, cost 12220)
+using ::rbdc_gen::humanoid32::common::feet_force_term_derivatives_c0325f17f960::feet_force_term_derivatives;
 
 /// feet_force_term_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

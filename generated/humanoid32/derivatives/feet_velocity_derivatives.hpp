@@ -7,11 +7,11 @@
 // feet_velocity_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_velocity_derivatives is the same code:
-//   humanoid32/common/feet_velocity_derivatives_b12a51de6588.hpp
+//   humanoid32/common/feet_velocity_derivatives_4fe1b1fdd187.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/feet_velocity_derivatives_b12a51de6588.hpp"
+#include "humanoid32/common/feet_velocity_derivatives_4fe1b1fdd187.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param dpdot_dq out 15x38: ∂ṗ/∂q, rows 3k + r: foot k, world axis r; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             1341  1113    0     0    58    0   2512
-using ::rbdc_gen::humanoid32::common::feet_velocity_derivatives_b12a51de6588::feet_velocity_derivatives;
+///             1341  1087    0     0    58    0   2486
+using ::rbdc_gen::humanoid32::common::feet_velocity_derivatives_4fe1b1fdd187::feet_velocity_derivatives;
 
 /// feet_velocity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

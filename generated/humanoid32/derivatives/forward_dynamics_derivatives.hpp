@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_4649d26184ef.hpp
+//   humanoid32/common/forward_dynamics_derivatives_b3a55ef902be.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_4649d26184ef.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_b3a55ef902be.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -28,16 +28,15 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param da_df out 38x15: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations     mul     add  div  sqrt  trig  neg   total
-///             115470  104047   55     0    64  145  219781
+///             115470  104038   55     0    64  145  219772
 /// schedule: limb lanes and looped RNEA derivatives (M's factor and the terms traced with the
 ///   isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of fewer than 4
 ///   repeated to fill the lanes), ∂τ a loop over the bodies, the solve's right-hand sides
-///   in SIMD across columns): 63073 arithmetic instructions (critical path 1250 cycles,
-///   cost 80926), scalar tree 124427 (path 1250, cost 298365), looped solve 64882 (path
-///   1250, cost 109806), limb lanes and a looped solve 51916 (path 1250, cost 93697),
-///   looped RNEA derivatives 68057 (path 1250, cost 88716), looped CRBA 75761 (path 1250,
-///   cost 104267)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_4649d26184ef::forward_dynamics_derivatives;
+///   in SIMD across columns): 63070 arithmetic instructions (critical path 582 cycles, cost
+///   77871), scalar tree 124296 (path 582, cost 295005), looped solve 64759 (path 582, cost
+///   106465), limb lanes and a looped solve 51850 (path 582, cost 90426), looped RNEA
+///   derivatives 68049 (path 582, cost 85652), looped CRBA 75759 (path 620, cost 101312)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_b3a55ef902be::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // gravity_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   humanoid32/common/gravity_derivatives_8233b1019689.hpp
+//   humanoid32/common/gravity_derivatives_188fa0e688ee.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/gravity_derivatives_8233b1019689.hpp"
+#include "humanoid32/common/gravity_derivatives_188fa0e688ee.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -24,9 +24,9 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///             3995  2076    0     0    64   85   6220
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 1949 arithmetic
-///   instructions (critical path 142 cycles, cost 2460), scalar tree 3390 (path 141, cost
-///   3898), looped RNEA derivatives 9856 (path 141, cost 14259)
-using ::rbdc_gen::humanoid32::common::gravity_derivatives_8233b1019689::gravity_derivatives;
+///   instructions (critical path 135 cycles, cost 2286), scalar tree 3390 (path 131, cost
+///   3718), looped RNEA derivatives 9856 (path 131, cost 14079)
+using ::rbdc_gen::humanoid32::common::gravity_derivatives_188fa0e688ee::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // bias for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   humanoid32/common/bias_a9d94e629374.hpp
+//   humanoid32/common/bias_5b76c5cbbfd8.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/bias_a9d94e629374.hpp"
+#include "humanoid32/common/bias_5b76c5cbbfd8.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -25,9 +25,9 @@ namespace rbdc_gen::humanoid32::full {
 ///             3030  2130    0     0    64    0   5224
 /// schedule: limb lanes (the isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 1811 arithmetic
-///   instructions (critical path 218 cycles, cost 2596), scalar tree 2954 (path 220, cost
-///   3746), limb lanes with the pairs' spare lanes used 1722 (path 261, cost 2662)
-using ::rbdc_gen::humanoid32::common::bias_a9d94e629374::bias;
+///   instructions (critical path 168 cycles, cost 2231), scalar tree 2954 (path 164, cost
+///   3364), limb lanes with the pairs' spare lanes used 1722 (path 222, cost 2277)
+using ::rbdc_gen::humanoid32::common::bias_5b76c5cbbfd8::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_jacobian for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_jacobian is the same code:
-//   humanoid32/common/feet_jacobian_c25c4a1182de.hpp
+//   humanoid32/common/feet_jacobian_c203f778265d.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/feet_jacobian_c25c4a1182de.hpp"
+#include "humanoid32/common/feet_jacobian_c203f778265d.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -21,8 +21,8 @@ namespace rbdc_gen::humanoid32::full {
 /// @param J out 15x38: feet Jacobian, world-frame foot velocities from v
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             591  405    0     0    46    0   1042
-using ::rbdc_gen::humanoid32::common::feet_jacobian_c25c4a1182de::feet_jacobian;
+///             591  403    0     0    46    0   1040
+using ::rbdc_gen::humanoid32::common::feet_jacobian_c203f778265d::feet_jacobian;
 
 /// feet_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

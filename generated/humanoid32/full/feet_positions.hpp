@@ -7,11 +7,11 @@
 // feet_positions for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_positions is the same code:
-//   humanoid32/common/feet_positions_1aea834943e8.hpp
+//   humanoid32/common/feet_positions_35fa928e5e8b.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/feet_positions_1aea834943e8.hpp"
+#include "humanoid32/common/feet_positions_35fa928e5e8b.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -21,8 +21,8 @@ namespace rbdc_gen::humanoid32::full {
 /// @param p out 3x5: foot positions, world frame, one column per foot
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             315  213    0     0    46    0    574
-using ::rbdc_gen::humanoid32::common::feet_positions_1aea834943e8::feet_positions;
+///             315  211    0     0    46    0    572
+using ::rbdc_gen::humanoid32::common::feet_positions_35fa928e5e8b::feet_positions;
 
 /// feet_positions on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_velocities for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_velocities is the same code:
-//   humanoid32/common/feet_velocities_ed8e296fdaa5.hpp
+//   humanoid32/common/feet_velocities_c7c4bafbe954.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/feet_velocities_ed8e296fdaa5.hpp"
+#include "humanoid32/common/feet_velocities_c7c4bafbe954.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::humanoid32::full {
 /// @param pdot out 3x5: foot velocities, world frame, one column per foot
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             712  430    0     0    64    0   1206
-using ::rbdc_gen::humanoid32::common::feet_velocities_ed8e296fdaa5::feet_velocities;
+///             712  429    0     0    64    0   1205
+using ::rbdc_gen::humanoid32::common::feet_velocities_c7c4bafbe954::feet_velocities;
 
 /// feet_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   humanoid32/common/forward_dynamics_633c5ba51e80.hpp
+//   humanoid32/common/forward_dynamics_bfa5b925a5b6.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/forward_dynamics_633c5ba51e80.hpp"
+#include "humanoid32/common/forward_dynamics_bfa5b925a5b6.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -25,13 +25,13 @@ namespace rbdc_gen::humanoid32::full {
 /// @param a out 38x1: acceleration
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             7708  5361   55     0    64    5  13193
+///             7708  5360   55     0    64    5  13192
 /// schedule: articulated-body algorithm in limb lanes (the isomorphic limbs in SIMD lanes: 2 of
 ///   pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes); the rest
-///   scalar): 4539 arithmetic instructions (critical path 785 cycles, cost 9979), scalar
-///   tree 11614 (path 725, cost 25724), limb lanes 7322 (path 693, cost 18536),
-///   articulated-body algorithm 7415 (path 786, cost 15866)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_633c5ba51e80::forward_dynamics;
+///   scalar): 4538 arithmetic instructions (critical path 625 cycles, cost 8713), scalar
+///   tree 11607 (path 389, cost 24069), limb lanes 7319 (path 393, cost 17015),
+///   articulated-body algorithm 7414 (path 620, cost 14584)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_bfa5b925a5b6::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

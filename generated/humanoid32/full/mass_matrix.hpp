@@ -7,11 +7,11 @@
 // mass_matrix for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   humanoid32/common/mass_matrix_62dcbb3d281f.hpp
+//   humanoid32/common/mass_matrix_fcd3420690fe.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/mass_matrix_62dcbb3d281f.hpp"
+#include "humanoid32/common/mass_matrix_fcd3420690fe.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -21,14 +21,14 @@ namespace rbdc_gen::humanoid32::full {
 /// @param M out 38x38: mass matrix, full symmetric
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2922  1869    0     0    64   10   4865
+///             2922  1865    0     0    64   10   4861
 /// schedule: limb lanes with the pairs' spare lanes used (the isomorphic limbs in SIMD lanes: 2 of
 ///   pelvis, 2 of torso (a group of fewer than 4 repeated to fill the lanes); the rest
 ///   scalar; a pair body's column of M in lanes 0-1, a child's in 2-3, so that one walk to
-///   the root serves both): 1554 arithmetic instructions (critical path 161 cycles, cost
-///   2134), scalar tree 3155 (path 163, cost 3742), limb lanes 1796 (path 161, cost 2376),
-///   looped CRBA 7746 (path 163, cost 11390)
-using ::rbdc_gen::humanoid32::common::mass_matrix_62dcbb3d281f::mass_matrix;
+///   the root serves both): 1553 arithmetic instructions (critical path 128 cycles, cost
+///   1873), scalar tree 3155 (path 127, cost 3472), limb lanes 1795 (path 129, cost 2118),
+///   looped CRBA 7746 (path 127, cost 11121)
+using ::rbdc_gen::humanoid32::common::mass_matrix_fcd3420690fe::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

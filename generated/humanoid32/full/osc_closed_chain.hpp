@@ -7,11 +7,11 @@
 // osc_closed_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   humanoid32/common/osc_closed_chain_8de1dc46f02e.hpp
+//   humanoid32/common/osc_closed_chain_9159bcf966b1.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_closed_chain_8de1dc46f02e.hpp"
+#include "humanoid32/common/osc_closed_chain_9159bcf966b1.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -26,9 +26,9 @@ namespace rbdc_gen::humanoid32::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             7220  5126   28     0    64    9  12447
-/// schedule: scalar tree: 12447 arithmetic instructions (critical path 404 cycles, cost 26567),
-///   looped operational-space columns 18436 (path 404, cost 33435)
-using ::rbdc_gen::humanoid32::common::osc_closed_chain_8de1dc46f02e::osc_closed_chain;
+/// schedule: scalar tree: 12447 arithmetic instructions (critical path 372 cycles, cost 26043),
+///   looped operational-space columns 18434 (path 372, cost 32906)
+using ::rbdc_gen::humanoid32::common::osc_closed_chain_9159bcf966b1::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

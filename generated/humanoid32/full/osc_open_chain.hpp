@@ -7,11 +7,11 @@
 // osc_open_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   humanoid32/common/osc_open_chain_268a01e230e0.hpp
+//   humanoid32/common/osc_open_chain_68c9f0a6ab3d.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_open_chain_268a01e230e0.hpp"
+#include "humanoid32/common/osc_open_chain_68c9f0a6ab3d.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -25,10 +25,10 @@ namespace rbdc_gen::humanoid32::full {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             7420  5236   27     0    64   13  12760
-/// schedule: scalar tree: 12760 arithmetic instructions (critical path 404 cycles, cost 27318),
-///   looped operational-space columns 18392 (path 404, cost 33329)
-using ::rbdc_gen::humanoid32::common::osc_open_chain_268a01e230e0::osc_open_chain;
+///             7420  5235   27     0    64   13  12759
+/// schedule: scalar tree: 12759 arithmetic instructions (critical path 372 cycles, cost 26792),
+///   looped operational-space columns 18390 (path 372, cost 32800)
+using ::rbdc_gen::humanoid32::common::osc_open_chain_68c9f0a6ab3d::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // contact_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics is the same code:
-//   mini_cheetah/common/contact_dynamics_b831f7b787e1.hpp
+//   mini_cheetah/common/contact_dynamics_1379d803da0e.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_b831f7b787e1.hpp"
+#include "mini_cheetah/common/contact_dynamics_1379d803da0e.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -25,11 +25,11 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param lambda out 12x1: contact forces on the feet, world; rows 3k + r: contact k (the scene's contacts in the robot's foot order), world axis r
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             5212  4492   26     0    24   84   9838
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4843 arithmetic
-///   instructions (critical path 882 cycles, cost 10824), scalar tree 9415 (path 904, cost
-///   21090)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_b831f7b787e1::contact_dynamics;
+///             5212  4483   26     0    24   84   9829
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4840 arithmetic
+///   instructions (critical path 662 cycles, cost 9294), scalar tree 9403 (path 644, cost
+///   19417)
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_1379d803da0e::contact_dynamics;
 
 /// contact_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_fbd50e5d96ec.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_5cf405518580.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_fbd50e5d96ec.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_5cf405518580.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -29,12 +29,12 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param dlambda_dtau out 12x12: ∂λ/∂τ
 ///
 /// operations    mul    add  div  sqrt  trig   neg  total
-///             49745  48132   26     0    24  1637  99564
+///             49701  47987   26     0    24  1637  99375
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
-///   lanes, the solve's right-hand sides in SIMD across columns): 27468 arithmetic
-///   instructions (critical path 1479 cycles, cost 42436), scalar tree 99385 (path 1479,
-///   cost 239088), looped solve 39565 (path 1479, cost 67952)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_fbd50e5d96ec::contact_dynamics_derivatives;
+///   lanes, the solve's right-hand sides in SIMD across columns): 27420 arithmetic
+///   instructions (critical path 870 cycles, cost 39117), scalar tree 99155 (path 870, cost
+///   235387), looped solve 39371 (path 870, cost 64337)
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_5cf405518580::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // impulse_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose impulse_dynamics is the same code:
-//   mini_cheetah/common/impulse_dynamics_0cab13cd4d16.hpp
+//   mini_cheetah/common/impulse_dynamics_be3fa85399bc.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/impulse_dynamics_0cab13cd4d16.hpp"
+#include "mini_cheetah/common/impulse_dynamics_be3fa85399bc.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -25,11 +25,11 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// @param impulse out 12x1: contact impulses, world; rows 3k + r: contact k (the scene's contacts in the robot's foot order), world axis r
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             4036  3514   26     0    24   76   7676
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4163 arithmetic
-///   instructions (critical path 882 cycles, cost 8753), scalar tree 7283 (path 904, cost
-///   15974)
-using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_0cab13cd4d16::impulse_dynamics;
+///             4036  3487   26     0    24   76   7649
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4160 arithmetic
+///   instructions (critical path 662 cycles, cost 7222), scalar tree 7253 (path 644, cost
+///   14257)
+using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_be3fa85399bc::impulse_dynamics;
 
 /// impulse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // bias_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   mini_cheetah/common/bias_derivatives_03b704e2ca69.hpp
+//   mini_cheetah/common/bias_derivatives_04dc1905302c.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/bias_derivatives_03b704e2ca69.hpp"
+#include "mini_cheetah/common/bias_derivatives_04dc1905302c.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -23,11 +23,11 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param dbias_dv out 18x18: ∂c/∂v
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             3068  2744    0     0    24   70   5906
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1625 arithmetic
-///   instructions (critical path 115 cycles, cost 2039), scalar tree 5816 (path 116, cost
-///   9616), looped RNEA derivatives 7624 (path 116, cost 11069)
-using ::rbdc_gen::mini_cheetah::common::bias_derivatives_03b704e2ca69::bias_derivatives;
+///             3056  2700    0     0    24   70   5850
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1611 arithmetic
+///   instructions (critical path 100 cycles, cost 1861), scalar tree 5757 (path 95, cost
+///   9294), looped RNEA derivatives 7624 (path 95, cost 10889)
+using ::rbdc_gen::mini_cheetah::common::bias_derivatives_04dc1905302c::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

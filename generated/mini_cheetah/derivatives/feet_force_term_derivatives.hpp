@@ -7,11 +7,11 @@
 // feet_force_term_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_term_derivatives is the same code:
-//   mini_cheetah/common/feet_force_term_derivatives_72e970434460.hpp
+//   mini_cheetah/common/feet_force_term_derivatives_dddd7fa7d91c.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/feet_force_term_derivatives_72e970434460.hpp"
+#include "mini_cheetah/common/feet_force_term_derivatives_dddd7fa7d91c.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -22,10 +22,10 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param dtau_e_dq out 18x18: ∂(Jᵀf)/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             891  660    0     0    24    8   1583
-/// schedule: scalar tree: 1583 arithmetic instructions (critical path 83 cycles, cost 1882), looped
-///   feet force terms 1889 (path 83, cost 4393)
-using ::rbdc_gen::mini_cheetah::common::feet_force_term_derivatives_72e970434460::feet_force_term_derivatives;
+///             891  659    0     0    24    8   1582
+/// schedule: scalar tree: 1582 arithmetic instructions (critical path 78 cycles, cost 1777), looped
+///   feet force terms 1888 (path 78, cost 4288)
+using ::rbdc_gen::mini_cheetah::common::feet_force_term_derivatives_dddd7fa7d91c::feet_force_term_derivatives;
 
 /// feet_force_term_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah/common/forward_dynamics_f7fcf7ff06ee.hpp
+//   mini_cheetah/common/forward_dynamics_8e16fe3b85e7.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_f7fcf7ff06ee.hpp"
+#include "mini_cheetah/common/forward_dynamics_8e16fe3b85e7.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -25,12 +25,12 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param a out 18x1: acceleration
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             1892  1446   14     0    24   25   3401
+///             1892  1445   14     0    24   25   3400
 /// schedule: articulated-body algorithm in limb lanes (the 4 isomorphic limbs in SIMD lanes, the
-///   trunk scalar): 1070 arithmetic instructions (critical path 372 cycles, cost 2409),
-///   scalar tree 3535 (path 341, cost 4952), limb lanes 1276 (path 325, cost 2446),
-///   articulated-body algorithm 3329 (path 367, cost 4650)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_f7fcf7ff06ee::forward_dynamics;
+///   trunk scalar): 1069 arithmetic instructions (critical path 319 cycles, cost 1866),
+///   scalar tree 3523 (path 234, cost 4280), limb lanes 1273 (path 239, cost 1870),
+///   articulated-body algorithm 3328 (path 311, cost 4106)
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_8e16fe3b85e7::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_3d70784dc67c.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_7af823aa016e.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_3d70784dc67c.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_7af823aa016e.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -28,15 +28,15 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// @param da_df out 18x12: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
-///             18986  17315   14     0    24  149  36488
+///             18978  17275   14     0    24  149  36440
 /// schedule: limb lanes and a looped solve (the terms traced with the 4 isomorphic limbs in SIMD
-///   lanes, the solve's right-hand sides in SIMD across columns): 9635 arithmetic
-///   instructions (critical path 529 cycles, cost 11539), scalar tree 24160 (path 529, cost
-///   55128), limb lanes 7509 (path 514, cost 20120), looped solve 15391 (path 529, cost
-///   26220), looped RNEA derivatives 18024 (path 529, cost 22296), limb lanes and looped
-///   RNEA derivatives 15058 (path 529, cost 17750), looped CRBA 21143 (path 529, cost
-///   28810)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_3d70784dc67c::forward_dynamics_derivatives;
+///   lanes, the solve's right-hand sides in SIMD across columns): 9620 arithmetic
+///   instructions (critical path 330 cycles, cost 10445), scalar tree 24099 (path 330, cost
+///   53903), limb lanes 7492 (path 336, cost 19049), looped solve 15334 (path 330, cost
+///   25004), looped RNEA derivatives 18012 (path 330, cost 21187), limb lanes and looped
+///   RNEA derivatives 15055 (path 330, cost 16668), looped CRBA 21142 (path 330, cost
+///   27728)
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_7af823aa016e::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

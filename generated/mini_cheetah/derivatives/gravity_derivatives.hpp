@@ -7,11 +7,11 @@
 // gravity_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   mini_cheetah/common/gravity_derivatives_e4dfb835ffdc.hpp
+//   mini_cheetah/common/gravity_derivatives_c54fffb1c0ea.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/gravity_derivatives_e4dfb835ffdc.hpp"
+#include "mini_cheetah/common/gravity_derivatives_c54fffb1c0ea.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -23,9 +23,9 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             333  179    0     0    24   46    582
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 177 arithmetic
-///   instructions (critical path 58 cycles, cost 386), scalar tree 579 (path 57, cost 784),
-///   looped RNEA derivatives 3370 (path 57, cost 4901)
-using ::rbdc_gen::mini_cheetah::common::gravity_derivatives_e4dfb835ffdc::gravity_derivatives;
+///   instructions (critical path 55 cycles, cost 314), scalar tree 579 (path 54, cost 714),
+///   looped RNEA derivatives 3370 (path 54, cost 4831)
+using ::rbdc_gen::mini_cheetah::common::gravity_derivatives_c54fffb1c0ea::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

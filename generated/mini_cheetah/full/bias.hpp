@@ -7,11 +7,11 @@
 // bias for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   mini_cheetah/common/bias_54fa2c49b873.hpp
+//   mini_cheetah/common/bias_d176126c5696.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/bias_54fa2c49b873.hpp"
+#include "mini_cheetah/common/bias_d176126c5696.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -24,9 +24,9 @@ namespace rbdc_gen::mini_cheetah::full {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             810  612    0     0    24    8   1454
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 428 arithmetic
-///   instructions (critical path 104 cycles, cost 802), scalar tree 1428 (path 105, cost
-///   1806)
-using ::rbdc_gen::mini_cheetah::common::bias_54fa2c49b873::bias;
+///   instructions (critical path 92 cycles, cost 658), scalar tree 1428 (path 89, cost
+///   1650)
+using ::rbdc_gen::mini_cheetah::common::bias_d176126c5696::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

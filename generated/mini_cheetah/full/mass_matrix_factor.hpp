@@ -7,11 +7,11 @@
 // mass_matrix_factor for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   mini_cheetah/common/mass_matrix_factor_cdd593dfbbe0.hpp
+//   mini_cheetah/common/mass_matrix_factor_04c06e3179e4.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/mass_matrix_factor_cdd593dfbbe0.hpp"
+#include "mini_cheetah/common/mass_matrix_factor_04c06e3179e4.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -23,10 +23,10 @@ namespace rbdc_gen::mini_cheetah::full {
 /// @param D_inv out 18x1: their inverses, so that a solve multiplies
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             804  679   14     0    24   15   1536
-/// schedule: scalar tree: 1536 arithmetic instructions (critical path 222 cycles, cost 2335),
-///   looped factor 1817 (path 222, cost 5436), looped CRBA 3380 (path 222, cost 7884)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_factor_cdd593dfbbe0::mass_matrix_factor;
+///             804  668   14     0    24   15   1525
+/// schedule: scalar tree: 1525 arithmetic instructions (critical path 199 cycles, cost 2022),
+///   looped factor 1806 (path 199, cost 5124), looped CRBA 3380 (path 199, cost 7582)
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_factor_04c06e3179e4::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_open_chain for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   mini_cheetah/common/osc_open_chain_391129a6b10f.hpp
+//   mini_cheetah/common/osc_open_chain_08967f3122b6.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/osc_open_chain_391129a6b10f.hpp"
+#include "mini_cheetah/common/osc_open_chain_08967f3122b6.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -25,11 +25,11 @@ namespace rbdc_gen::mini_cheetah::full {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2200  1625    8     0    24   36   3893
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1100 arithmetic
-///   instructions (critical path 144 cycles, cost 1618), scalar tree 3847 (path 145, cost
-///   4995), looped operational-space columns 6641 (path 145, cost 9138)
-using ::rbdc_gen::mini_cheetah::common::osc_open_chain_391129a6b10f::osc_open_chain;
+///             2200  1620    8     0    24   36   3888
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1098 arithmetic
+///   instructions (critical path 138 cycles, cost 1443), scalar tree 3842 (path 132, cost
+///   4791), looped operational-space columns 6636 (path 132, cost 8934)
+using ::rbdc_gen::mini_cheetah::common::osc_open_chain_08967f3122b6::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

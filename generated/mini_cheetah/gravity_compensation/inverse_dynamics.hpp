@@ -7,11 +7,11 @@
 // inverse_dynamics for mini_cheetah, scene "gravity_compensation": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   mini_cheetah/common/inverse_dynamics_2464121334a6.hpp
+//   mini_cheetah/common/inverse_dynamics_9c4c5877bb92.hpp
 #pragma once
 
 #include "mini_cheetah/gravity_compensation.hpp"
-#include "mini_cheetah/common/inverse_dynamics_2464121334a6.hpp"
+#include "mini_cheetah/common/inverse_dynamics_9c4c5877bb92.hpp"
 
 namespace rbdc_gen::mini_cheetah::gravity_compensation {
 
@@ -24,8 +24,8 @@ namespace rbdc_gen::mini_cheetah::gravity_compensation {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             375  294    0     0    24    0    693
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 204 arithmetic
-///   instructions (critical path 85 cycles, cost 510), scalar tree 674 (path 86, cost 984)
-using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_2464121334a6::inverse_dynamics;
+///   instructions (critical path 81 cycles, cost 406), scalar tree 674 (path 76, cost 864)
+using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_9c4c5877bb92::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_velocities for mini_cheetah, scene "kinematics_only": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_velocities is the same code:
-//   mini_cheetah/common/feet_velocities_352778741f27.hpp
+//   mini_cheetah/common/feet_velocities_2830fdbae46a.hpp
 #pragma once
 
 #include "mini_cheetah/kinematics_only.hpp"
-#include "mini_cheetah/common/feet_velocities_352778741f27.hpp"
+#include "mini_cheetah/common/feet_velocities_2830fdbae46a.hpp"
 
 namespace rbdc_gen::mini_cheetah::kinematics_only {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::mini_cheetah::kinematics_only {
 /// @param pdot out 3x4: foot velocities, world frame, one column per foot
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             321  214    0     0    24    0    559
-using ::rbdc_gen::mini_cheetah::common::feet_velocities_352778741f27::feet_velocities;
+///             321  213    0     0    24    0    558
+using ::rbdc_gen::mini_cheetah::common::feet_velocities_2830fdbae46a::feet_velocities;
 
 /// feet_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

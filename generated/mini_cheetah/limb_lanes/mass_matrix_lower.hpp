@@ -7,11 +7,11 @@
 // mass_matrix_lower for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_lower is the same code:
-//   mini_cheetah/common/mass_matrix_lower_d7a483141e86.hpp
+//   mini_cheetah/common/mass_matrix_lower_51a493a03936.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/mass_matrix_lower_d7a483141e86.hpp"
+#include "mini_cheetah/common/mass_matrix_lower_51a493a03936.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -22,11 +22,11 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 /// @param M out 18x18: mass matrix, lower triangle (row ≥ column); the entries above the diagonal are not written
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             340  318    0     0    24   27    709
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 193 arithmetic
-///   instructions (critical path 70 cycles, cost 445), scalar tree 689 (path 71, cost 945),
-///   looped CRBA 2252 (path 71, cost 3392)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_lower_d7a483141e86::mass_matrix_lower;
+///             340  310    0     0    24   27    701
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 191 arithmetic
+///   instructions (critical path 68 cycles, cost 361), scalar tree 678 (path 64, cost 838),
+///   looped CRBA 2252 (path 64, cost 3297)
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_lower_51a493a03936::mass_matrix_lower;
 
 /// mass_matrix_lower on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix_lower_lanes for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_lower_lanes is the same code:
-//   mini_cheetah/common/mass_matrix_lower_lanes_c6f260f557f5.hpp
+//   mini_cheetah/common/mass_matrix_lower_lanes_e8a3780f11fc.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/mass_matrix_lower_lanes_c6f260f557f5.hpp"
+#include "mini_cheetah/common/mass_matrix_lower_lanes_e8a3780f11fc.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 /// @param M out 18x18: mass matrix, lower triangle (row ≥ column); the entries above the diagonal are not written
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             340  318    0     0    24   27    709
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_lower_lanes_c6f260f557f5::mass_matrix_lower_lanes;
+///             340  310    0     0    24   27    701
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_lower_lanes_e8a3780f11fc::mass_matrix_lower_lanes;
 
 /// mass_matrix_lower_lanes on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "stance_osc": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_15c67188fdf9.hpp
+//   mini_cheetah/common/osc_closed_chain_f0977ce21eb5.hpp
 #pragma once
 
 #include "mini_cheetah/stance_osc.hpp"
-#include "mini_cheetah/common/osc_closed_chain_15c67188fdf9.hpp"
+#include "mini_cheetah/common/osc_closed_chain_f0977ce21eb5.hpp"
 
 namespace rbdc_gen::mini_cheetah::stance_osc {
 
@@ -25,10 +25,10 @@ namespace rbdc_gen::mini_cheetah::stance_osc {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2271  1711    9     0    24   17   4032
-/// schedule: scalar tree: 4032 arithmetic instructions (critical path 148 cycles, cost 5450),
-///   looped operational-space columns 6983 (path 148, cost 9970)
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_15c67188fdf9::osc_closed_chain;
+///             2271  1708    9     0    24   17   4029
+/// schedule: scalar tree: 4029 arithmetic instructions (critical path 136 cycles, cost 5250),
+///   looped operational-space columns 6979 (path 136, cost 9768)
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_f0977ce21eb5::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

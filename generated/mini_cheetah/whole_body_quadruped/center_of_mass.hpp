@@ -7,11 +7,11 @@
 // center_of_mass for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose center_of_mass is the same code:
-//   mini_cheetah/common/center_of_mass_562d47b1b1df.hpp
+//   mini_cheetah/common/center_of_mass_a155eaae3b56.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/center_of_mass_562d47b1b1df.hpp"
+#include "mini_cheetah/common/center_of_mass_a155eaae3b56.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -23,10 +23,10 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// @param com_velocity out 3x1: its velocity
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             346  235    0     0    24    0    605
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 203 arithmetic
-///   instructions (critical path 70 cycles, cost 455), scalar tree 605 (path 71, cost 861)
-using ::rbdc_gen::mini_cheetah::common::center_of_mass_562d47b1b1df::center_of_mass;
+///             346  234    0     0    24    0    604
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 202 arithmetic
+///   instructions (critical path 67 cycles, cost 370), scalar tree 604 (path 62, cost 759)
+using ::rbdc_gen::mini_cheetah::common::center_of_mass_a155eaae3b56::center_of_mass;
 
 /// center_of_mass on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

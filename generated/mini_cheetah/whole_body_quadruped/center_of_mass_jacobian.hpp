@@ -7,11 +7,11 @@
 // center_of_mass_jacobian for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose center_of_mass_jacobian is the same code:
-//   mini_cheetah/common/center_of_mass_jacobian_7a751e1c6225.hpp
+//   mini_cheetah/common/center_of_mass_jacobian_576e1f540475.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/center_of_mass_jacobian_7a751e1c6225.hpp"
+#include "mini_cheetah/common/center_of_mass_jacobian_576e1f540475.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -21,10 +21,10 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// @param J_c out 3x18: centre-of-mass Jacobian
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             297  161    0     0    24    0    482
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 173 arithmetic
-///   instructions (critical path 71 cycles, cost 429), scalar tree 482 (path 72, cost 741)
-using ::rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_7a751e1c6225::center_of_mass_jacobian;
+///             297  160    0     0    24    0    481
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 172 arithmetic
+///   instructions (critical path 71 cycles, cost 350), scalar tree 481 (path 69, cost 654)
+using ::rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_576e1f540475::center_of_mass_jacobian;
 
 /// center_of_mass_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // centroidal_bias for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_bias is the same code:
-//   mini_cheetah/common/centroidal_bias_2f10220452f5.hpp
+//   mini_cheetah/common/centroidal_bias_2ba5cfa672e5.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/centroidal_bias_2f10220452f5.hpp"
+#include "mini_cheetah/common/centroidal_bias_2ba5cfa672e5.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -22,11 +22,11 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// @param Adot_v out 6x1: (k̇_G; l̇) at a = 0, world axes
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             996  732    0     0    24    4   1756
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 553 arithmetic
-///   instructions (critical path 114 cycles, cost 963), scalar tree 1730 (path 115, cost
-///   2144)
-using ::rbdc_gen::mini_cheetah::common::centroidal_bias_2f10220452f5::centroidal_bias;
+///             996  731    0     0    24    4   1755
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 552 arithmetic
+///   instructions (critical path 101 cycles, cost 804), scalar tree 1729 (path 98, cost
+///   1974)
+using ::rbdc_gen::mini_cheetah::common::centroidal_bias_2ba5cfa672e5::centroidal_bias;
 
 /// centroidal_bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // centroidal_momentum_matrix for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_momentum_matrix is the same code:
-//   mini_cheetah/common/centroidal_momentum_matrix_dc59ddbb1251.hpp
+//   mini_cheetah/common/centroidal_momentum_matrix_ae004d2e5fbe.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/centroidal_momentum_matrix_dc59ddbb1251.hpp"
+#include "mini_cheetah/common/centroidal_momentum_matrix_ae004d2e5fbe.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -21,11 +21,11 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// @param A_G out 6x18: rows: angular momentum about the CoM, then linear momentum, world axes
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             785  662    0     0    24    8   1479
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 537 arithmetic
-///   instructions (critical path 80 cycles, cost 825), scalar tree 1462 (path 81, cost
-///   1754)
-using ::rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_dc59ddbb1251::centroidal_momentum_matrix;
+///             785  653    0     0    24    8   1470
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 534 arithmetic
+///   instructions (critical path 75 cycles, cost 722), scalar tree 1450 (path 72, cost
+///   1630)
+using ::rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_ae004d2e5fbe::centroidal_momentum_matrix;
 
 /// centroidal_momentum_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

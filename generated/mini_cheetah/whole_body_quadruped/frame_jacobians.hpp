@@ -7,11 +7,11 @@
 // frame_jacobians for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_jacobians is the same code:
-//   mini_cheetah/common/frame_jacobians_4003f061ed03.hpp
+//   mini_cheetah/common/frame_jacobians_a18dd9abb46b.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/frame_jacobians_4003f061ed03.hpp"
+#include "mini_cheetah/common/frame_jacobians_a18dd9abb46b.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -22,11 +22,11 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// @param J_world out 30x18: rows 6k … 6k+5: frame k's J, world axes (J v = v_world)
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             747  533    0     0    24   52   1356
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 381 arithmetic
-///   instructions (critical path 69 cycles, cost 629), scalar tree 1335 (path 68, cost
-///   1580)
-using ::rbdc_gen::mini_cheetah::common::frame_jacobians_4003f061ed03::frame_jacobians;
+///             747  532    0     0    24   52   1355
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 380 arithmetic
+///   instructions (critical path 67 cycles, cost 548), scalar tree 1334 (path 66, cost
+///   1499)
+using ::rbdc_gen::mini_cheetah::common::frame_jacobians_a18dd9abb46b::frame_jacobians;
 
 /// frame_jacobians on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // frame_placements for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_placements is the same code:
-//   mini_cheetah/common/frame_placements_800bb9f47f14.hpp
+//   mini_cheetah/common/frame_placements_85c79b4c39bd.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/frame_placements_800bb9f47f14.hpp"
+#include "mini_cheetah/common/frame_placements_85c79b4c39bd.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -22,10 +22,10 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// @param p out 3x5: frame origins, world frame, one column per frame
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             225  161    0     0    24   16    426
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 126 arithmetic
-///   instructions (critical path 51 cycles, cost 310), scalar tree 405 (path 50, cost 585)
-using ::rbdc_gen::mini_cheetah::common::frame_placements_800bb9f47f14::frame_placements;
+///             225  160    0     0    24   16    425
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 125 arithmetic
+///   instructions (critical path 49 cycles, cost 248), scalar tree 404 (path 48, cost 524)
+using ::rbdc_gen::mini_cheetah::common::frame_placements_85c79b4c39bd::frame_placements;
 
 /// frame_placements on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // frame_velocities for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_velocities is the same code:
-//   mini_cheetah/common/frame_velocities_474aa10b5ce3.hpp
+//   mini_cheetah/common/frame_velocities_b7f95f47dcf4.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/frame_velocities_474aa10b5ce3.hpp"
+#include "mini_cheetah/common/frame_velocities_b7f95f47dcf4.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -23,10 +23,10 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// @param v_world out 6x5: world axes (LOCAL_WORLD_ALIGNED, rows angular first)
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             387  257    0     0    24    8    676
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 211 arithmetic
-///   instructions (critical path 61 cycles, cost 431), scalar tree 661 (path 60, cost 877)
-using ::rbdc_gen::mini_cheetah::common::frame_velocities_474aa10b5ce3::frame_velocities;
+///             387  256    0     0    24    8    675
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 210 arithmetic
+///   instructions (critical path 59 cycles, cost 358), scalar tree 660 (path 58, cost 805)
+using ::rbdc_gen::mini_cheetah::common::frame_velocities_b7f95f47dcf4::frame_velocities;
 
 /// frame_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix_inverse for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_inverse is the same code:
-//   mini_cheetah/common/mass_matrix_inverse_792bf64acebf.hpp
+//   mini_cheetah/common/mass_matrix_inverse_3e2cc0caa44e.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/mass_matrix_inverse_792bf64acebf.hpp"
+#include "mini_cheetah/common/mass_matrix_inverse_3e2cc0caa44e.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -21,11 +21,11 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// @param M_inv out 18x18: inverse mass matrix, full symmetric
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             1996  1694   14     0    24   67   3795
-/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1284 arithmetic
-///   instructions (critical path 234 cycles, cost 2126), scalar tree 3518 (path 250, cost
-///   4583)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_inverse_792bf64acebf::mass_matrix_inverse;
+///             1996  1686   14     0    24   67   3787
+/// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1282 arithmetic
+///   instructions (critical path 212 cycles, cost 1812), scalar tree 3507 (path 206, cost
+///   4172)
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_inverse_3e2cc0caa44e::mass_matrix_inverse;
 
 /// mass_matrix_inverse on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // bias for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   mini_cheetah_rotors/common/bias_487047daece1.hpp
+//   mini_cheetah_rotors/common/bias_9d58b4c6d390.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/bias_487047daece1.hpp"
+#include "mini_cheetah_rotors/common/bias_9d58b4c6d390.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// @param cg out 18x1: quadratic velocity and gravity terms c + g
 ///
 /// operations   mul  add  div  sqrt  trig  neg  total
-///             1222  993    0     0    24    0   2239
-using ::rbdc_gen::mini_cheetah_rotors::common::bias_487047daece1::bias;
+///             1222  992    0     0    24    0   2238
+using ::rbdc_gen::mini_cheetah_rotors::common::bias_9d58b4c6d390::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // feet_force_terms for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_terms is the same code:
-//   mini_cheetah_rotors/common/feet_force_terms_d934e074c51c.hpp
+//   mini_cheetah_rotors/common/feet_force_terms_50a6001c8605.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/feet_force_terms_d934e074c51c.hpp"
+#include "mini_cheetah_rotors/common/feet_force_terms_50a6001c8605.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// @param tau_e out 18x1: τ_e = Jᵀ f
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             237  169    0     0    24    3    433
-using ::rbdc_gen::mini_cheetah_rotors::common::feet_force_terms_d934e074c51c::feet_force_terms;
+///             237  168    0     0    24    3    432
+using ::rbdc_gen::mini_cheetah_rotors::common::feet_force_terms_50a6001c8605::feet_force_terms;
 
 /// feet_force_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // feet_jacobian for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_jacobian is the same code:
-//   mini_cheetah_rotors/common/feet_jacobian_a4b45a447ed9.hpp
+//   mini_cheetah_rotors/common/feet_jacobian_ce1a9c718e6c.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/feet_jacobian_a4b45a447ed9.hpp"
+#include "mini_cheetah_rotors/common/feet_jacobian_ce1a9c718e6c.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// @param J out 12x18: feet Jacobian, world-frame foot velocities from v
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             327  266    0     0    24    0    617
-using ::rbdc_gen::mini_cheetah_rotors::common::feet_jacobian_a4b45a447ed9::feet_jacobian;
+///             327  265    0     0    24    0    616
+using ::rbdc_gen::mini_cheetah_rotors::common::feet_jacobian_ce1a9c718e6c::feet_jacobian;
 
 /// feet_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

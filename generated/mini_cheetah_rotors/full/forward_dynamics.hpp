@@ -8,11 +8,11 @@
 // forward_dynamics for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah_rotors/common/forward_dynamics_79fb5dcf3760.hpp
+//   mini_cheetah_rotors/common/forward_dynamics_10584e8cffe0.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/forward_dynamics_79fb5dcf3760.hpp"
+#include "mini_cheetah_rotors/common/forward_dynamics_10584e8cffe0.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -26,8 +26,8 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// @param a out 18x1: acceleration
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2359  2012   14     0    24    1   4410
-using ::rbdc_gen::mini_cheetah_rotors::common::forward_dynamics_79fb5dcf3760::forward_dynamics;
+///             2359  1990   14     0    24    1   4388
+using ::rbdc_gen::mini_cheetah_rotors::common::forward_dynamics_10584e8cffe0::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

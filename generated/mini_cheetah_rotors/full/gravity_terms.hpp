@@ -8,11 +8,11 @@
 // gravity_terms for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_terms is the same code:
-//   mini_cheetah_rotors/common/gravity_terms_d336a72134ed.hpp
+//   mini_cheetah_rotors/common/gravity_terms_5bc1d404a676.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/gravity_terms_d336a72134ed.hpp"
+#include "mini_cheetah_rotors/common/gravity_terms_5bc1d404a676.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// @param g out 18x1: gravity terms
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             197  167    0     0    24    0    388
-using ::rbdc_gen::mini_cheetah_rotors::common::gravity_terms_d336a72134ed::gravity_terms;
+///             195  153    0     0    24    0    372
+using ::rbdc_gen::mini_cheetah_rotors::common::gravity_terms_5bc1d404a676::gravity_terms;
 
 /// gravity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // inverse_dynamics for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   mini_cheetah_rotors/common/inverse_dynamics_f00793e511aa.hpp
+//   mini_cheetah_rotors/common/inverse_dynamics_a5c907e0bc29.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/inverse_dynamics_f00793e511aa.hpp"
+#include "mini_cheetah_rotors/common/inverse_dynamics_a5c907e0bc29.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -24,8 +24,8 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// @param tau out 18x1: generalised forces M a + c + g
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             1301  1103    0     0    24    0   2428
-using ::rbdc_gen::mini_cheetah_rotors::common::inverse_dynamics_f00793e511aa::inverse_dynamics;
+///             1301  1102    0     0    24    0   2427
+using ::rbdc_gen::mini_cheetah_rotors::common::inverse_dynamics_a5c907e0bc29::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

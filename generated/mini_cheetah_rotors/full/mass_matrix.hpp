@@ -8,11 +8,11 @@
 // mass_matrix for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   mini_cheetah_rotors/common/mass_matrix_541039e18b0e.hpp
+//   mini_cheetah_rotors/common/mass_matrix_88778954cf4e.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/mass_matrix_541039e18b0e.hpp"
+#include "mini_cheetah_rotors/common/mass_matrix_88778954cf4e.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// @param M out 18x18: mass matrix, full symmetric
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             344  360    0     0    24   21    749
-using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_541039e18b0e::mass_matrix;
+///             344  340    0     0    24   21    729
+using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_88778954cf4e::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

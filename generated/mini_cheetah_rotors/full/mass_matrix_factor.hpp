@@ -8,11 +8,11 @@
 // mass_matrix_factor for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   mini_cheetah_rotors/common/mass_matrix_factor_21f6a41692a9.hpp
+//   mini_cheetah_rotors/common/mass_matrix_factor_a30d060c3dd7.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/mass_matrix_factor_21f6a41692a9.hpp"
+#include "mini_cheetah_rotors/common/mass_matrix_factor_a30d060c3dd7.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -24,10 +24,10 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// @param D_inv out 18x1: their inverses, so that a solve multiplies
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             818  725   14     0    24   14   1595
-/// schedule: scalar tree: 1595 arithmetic instructions (critical path 225 cycles, cost 2405),
-///   looped factor 1877 (path 225, cost 5507)
-using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_factor_21f6a41692a9::mass_matrix_factor;
+///             818  705   14     0    24   14   1575
+/// schedule: scalar tree: 1575 arithmetic instructions (critical path 200 cycles, cost 2075),
+///   looped factor 1857 (path 200, cost 5177)
+using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_factor_a30d060c3dd7::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

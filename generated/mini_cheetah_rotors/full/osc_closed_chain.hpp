@@ -8,11 +8,11 @@
 // osc_closed_chain for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah_rotors/common/osc_closed_chain_b58bb910559e.hpp
+//   mini_cheetah_rotors/common/osc_closed_chain_1c2446201774.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/osc_closed_chain_b58bb910559e.hpp"
+#include "mini_cheetah_rotors/common/osc_closed_chain_1c2446201774.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -26,8 +26,8 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2582  2119    9     0    24   31   4765
-using ::rbdc_gen::mini_cheetah_rotors::common::osc_closed_chain_b58bb910559e::osc_closed_chain;
+///             2582  2049    9     0    24   31   4695
+using ::rbdc_gen::mini_cheetah_rotors::common::osc_closed_chain_1c2446201774::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

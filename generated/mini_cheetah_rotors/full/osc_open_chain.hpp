@@ -8,11 +8,11 @@
 // osc_open_chain for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   mini_cheetah_rotors/common/osc_open_chain_ee28615b5de7.hpp
+//   mini_cheetah_rotors/common/osc_open_chain_ceb20af6bd71.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/osc_open_chain_ee28615b5de7.hpp"
+#include "mini_cheetah_rotors/common/osc_open_chain_ceb20af6bd71.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -26,8 +26,8 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 /// @param b out 6x1: operational-space bias force b_t
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2362  1942    8     0    24   29   4365
-using ::rbdc_gen::mini_cheetah_rotors::common::osc_open_chain_ee28615b5de7::osc_open_chain;
+///             2362  1872    8     0    24   29   4295
+using ::rbdc_gen::mini_cheetah_rotors::common::osc_open_chain_ceb20af6bd71::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // step_terms for mini_cheetah_rotors, scene "simulation": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose step_terms is the same code:
-//   mini_cheetah_rotors/common/step_terms_8db85e5ea2c8.hpp
+//   mini_cheetah_rotors/common/step_terms_fc03b78c0a91.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/simulation.hpp"
-#include "mini_cheetah_rotors/common/step_terms_8db85e5ea2c8.hpp"
+#include "mini_cheetah_rotors/common/step_terms_fc03b78c0a91.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::simulation {
 
@@ -34,8 +34,8 @@ namespace rbdc_gen::mini_cheetah_rotors::simulation {
 /// @param a out 18x1: acceleration without foot forces, M⁻¹(Sᵀτ − c − g)
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             2689  2263   14     0    24   27   5017
-using ::rbdc_gen::mini_cheetah_rotors::common::step_terms_8db85e5ea2c8::step_terms;
+///             2689  2241   14     0    24   27   4995
+using ::rbdc_gen::mini_cheetah_rotors::common::step_terms_fc03b78c0a91::step_terms;
 
 /// step_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

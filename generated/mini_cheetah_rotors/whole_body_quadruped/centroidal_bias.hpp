@@ -8,11 +8,11 @@
 // centroidal_bias for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_bias is the same code:
-//   mini_cheetah_rotors/common/centroidal_bias_7fb565b66b7b.hpp
+//   mini_cheetah_rotors/common/centroidal_bias_e283a800007b.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/centroidal_bias_7fb565b66b7b.hpp"
+#include "mini_cheetah_rotors/common/centroidal_bias_e283a800007b.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 /// @param Adot_v out 6x1: (k̇_G; l̇) at a = 0, world axes
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
-///             1465  1203    0     0    24    0   2692
-using ::rbdc_gen::mini_cheetah_rotors::common::centroidal_bias_7fb565b66b7b::centroidal_bias;
+///             1465  1198    0     0    24    0   2687
+using ::rbdc_gen::mini_cheetah_rotors::common::centroidal_bias_e283a800007b::centroidal_bias;
 
 /// centroidal_bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

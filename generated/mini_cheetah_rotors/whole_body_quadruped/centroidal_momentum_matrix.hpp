@@ -8,11 +8,11 @@
 // centroidal_momentum_matrix for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_momentum_matrix is the same code:
-//   mini_cheetah_rotors/common/centroidal_momentum_matrix_9aff13c70d05.hpp
+//   mini_cheetah_rotors/common/centroidal_momentum_matrix_687edf29373c.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/centroidal_momentum_matrix_9aff13c70d05.hpp"
+#include "mini_cheetah_rotors/common/centroidal_momentum_matrix_687edf29373c.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -22,8 +22,8 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 /// @param A_G out 6x18: rows: angular momentum about the CoM, then linear momentum, world axes
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             853  790    0     0    24   14   1681
-using ::rbdc_gen::mini_cheetah_rotors::common::centroidal_momentum_matrix_9aff13c70d05::centroidal_momentum_matrix;
+///             853  772    0     0    24   14   1663
+using ::rbdc_gen::mini_cheetah_rotors::common::centroidal_momentum_matrix_687edf29373c::centroidal_momentum_matrix;
 
 /// centroidal_momentum_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

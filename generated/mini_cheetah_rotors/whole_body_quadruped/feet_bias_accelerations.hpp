@@ -8,11 +8,11 @@
 // feet_bias_accelerations for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_bias_accelerations is the same code:
-//   mini_cheetah_rotors/common/feet_bias_accelerations_3ae57e78f8ad.hpp
+//   mini_cheetah_rotors/common/feet_bias_accelerations_b93caf2199bc.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/feet_bias_accelerations_3ae57e78f8ad.hpp"
+#include "mini_cheetah_rotors/common/feet_bias_accelerations_b93caf2199bc.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 /// @param Jdot_v out 3x4: one column per foot, world frame
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             499  341    0     0    24    0    864
-using ::rbdc_gen::mini_cheetah_rotors::common::feet_bias_accelerations_3ae57e78f8ad::feet_bias_accelerations;
+///             499  340    0     0    24    0    863
+using ::rbdc_gen::mini_cheetah_rotors::common::feet_bias_accelerations_b93caf2199bc::feet_bias_accelerations;
 
 /// feet_bias_accelerations on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

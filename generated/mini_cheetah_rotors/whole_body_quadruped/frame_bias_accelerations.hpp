@@ -8,11 +8,11 @@
 // frame_bias_accelerations for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_bias_accelerations is the same code:
-//   mini_cheetah_rotors/common/frame_bias_accelerations_6e35288184ee.hpp
+//   mini_cheetah_rotors/common/frame_bias_accelerations_26dfc6016064.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/frame_bias_accelerations_6e35288184ee.hpp"
+#include "mini_cheetah_rotors/common/frame_bias_accelerations_26dfc6016064.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -24,8 +24,8 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 /// @param classical out 6x5: J̇_world v: (ω̇; p̈ of the origin), world axes
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             544  379    0     0    24    4    951
-using ::rbdc_gen::mini_cheetah_rotors::common::frame_bias_accelerations_6e35288184ee::frame_bias_accelerations;
+///             544  378    0     0    24    4    950
+using ::rbdc_gen::mini_cheetah_rotors::common::frame_bias_accelerations_26dfc6016064::frame_bias_accelerations;
 
 /// frame_bias_accelerations on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // frame_jacobians for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_jacobians is the same code:
-//   mini_cheetah_rotors/common/frame_jacobians_dc80c11d0278.hpp
+//   mini_cheetah_rotors/common/frame_jacobians_f775339b3895.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/frame_jacobians_dc80c11d0278.hpp"
+#include "mini_cheetah_rotors/common/frame_jacobians_f775339b3895.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 /// @param J_world out 30x18: rows 6k … 6k+5: frame k's J, world axes (J v = v_world)
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             729  530    0     0    24   52   1335
-using ::rbdc_gen::mini_cheetah_rotors::common::frame_jacobians_dc80c11d0278::frame_jacobians;
+///             729  529    0     0    24   52   1334
+using ::rbdc_gen::mini_cheetah_rotors::common::frame_jacobians_f775339b3895::frame_jacobians;
 
 /// frame_jacobians on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // frame_velocities for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_velocities is the same code:
-//   mini_cheetah_rotors/common/frame_velocities_5e1e10e7c06b.hpp
+//   mini_cheetah_rotors/common/frame_velocities_3652987ac59f.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/frame_velocities_5e1e10e7c06b.hpp"
+#include "mini_cheetah_rotors/common/frame_velocities_3652987ac59f.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -24,8 +24,8 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 /// @param v_world out 6x5: world axes (LOCAL_WORLD_ALIGNED, rows angular first)
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///             375  252    0     0    24   10    661
-using ::rbdc_gen::mini_cheetah_rotors::common::frame_velocities_5e1e10e7c06b::frame_velocities;
+///             375  251    0     0    24   10    660
+using ::rbdc_gen::mini_cheetah_rotors::common::frame_velocities_3652987ac59f::frame_velocities;
 
 /// frame_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -32,23 +32,29 @@ def critical_path(fn):
 
 
 def critical_path_of(outputs):
-    order = ex.reachable(outputs)
     ready = {}     # node id -> cycle its value is ready
     operands = {}  # a product's id -> cycle its operands are ready (an FMA's start)
-    for node in order:
-        if node.op in ("const", "sym"):
-            ready[node.id] = 0
-        elif node.op in ("sin", "cos"):
-            ready[node.id] = (0 if node.args[0].op == "sym" else ready[node.args[0].id]) + JOINT_SINCOS
-        elif node.op in ("add", "sub") and any(a.op == "mul" for a in node.args):
-            plain = max(ready[a.id] for a in node.args) + LATENCY[node.op]  # the products computed first
-            ready[node.id] = min([plain] + [_fma_ready(node, product, ready, operands)
-                                            for product in node.args if product.op == "mul"])
-        else:
-            ready[node.id] = max([ready[a.id] for a in node.args], default=0) + LATENCY.get(node.op, 0)
-            if node.op == "mul":
-                operands[node.id] = ready[node.id] - LATENCY["mul"]
+    for node in ex.reachable(outputs):
+        time(node, ready, operands)
     return max([ready[o.id] for o in outputs], default=0)
+
+
+def time(node, ready, operands):
+    """Records when `node` is ready (and a product's operands) in `ready` and `operands`, which hold
+    its operands' already; returns it."""
+    if node.op in ("const", "sym"):
+        ready[node.id] = 0
+    elif node.op in ("sin", "cos"):
+        ready[node.id] = (0 if node.args[0].op == "sym" else ready[node.args[0].id]) + JOINT_SINCOS
+    elif node.op in ("add", "sub") and any(a.op == "mul" for a in node.args):
+        plain = max(ready[a.id] for a in node.args) + LATENCY[node.op]  # the products computed first
+        ready[node.id] = min([plain] + [_fma_ready(node, product, ready, operands)
+                                        for product in node.args if product.op == "mul"])
+    else:
+        ready[node.id] = max([ready[a.id] for a in node.args], default=0) + LATENCY.get(node.op, 0)
+        if node.op == "mul":
+            operands[node.id] = ready[node.id] - LATENCY["mul"]
+    return ready[node.id]
 
 
 def _fma_ready(node, product, ready, operands):

@@ -109,16 +109,18 @@ LANE_FRONT_END_EXTRA = 1.4
 
 
 # What a cycle of a form's critical path costs, in instructions. Fitted (least squares, no constant) to
-# four pairs of forward-dynamics forms timed against each other (Zen 5, clang 14, the peer harness;
-# docs/performance.md, "Forms chosen by their critical path too"): per call, 0.23 cycles an
-# instruction and 0.83 a cycle of path: arm7's and iiwa14's ABA 45 and 33 ns slower than their
+# five pairs of forward-dynamics forms timed against each other (Zen 5, clang 14, the peer harness;
+# docs/performance.md, "Forms by their critical path"): per call, 0.29 cycles an instruction and 0.80
+# a cycle of path, 2.7 instructions a cycle: arm7's and iiwa14's ABA 45 and 33 ns slower than their
 # factor, Panda's factor 48 ns faster than its ABA, the Mini Cheetah's lanes 7 ns slower than its ABA
-# in lanes. It also charges the limb pairs' lane rotations, which cross the vector's halves on every
-# body's chain: humanoid32's ID paired, 6 % fewer instructions on a path of 284 cycles against 241,
-# took 4 % longer; TALOS's, 19 % fewer on 316 against 263, 37 % less (its lanes' code past
-# FRONT_END_LIMIT). A loop's own chain is not traced: a looped form is charged its traced part's path
-# or the scalar tree's, whichever is longer (`_figures`).
-LATENCY_WEIGHT = 3.6
+# in lanes, and 5 ns slower once both add their sums in their terms' order of arrival
+# (graph/reassociate.py). 2.5, within the fit's error, keeps that last choice. It also charges the
+# limb pairs' lane rotations, which cross the vector's halves on every body's chain: humanoid32's ID
+# paired, 6 % fewer instructions on a path of 284 cycles against 241, took 4 % longer; TALOS's, 19 %
+# fewer on 316 against 263, 37 % less (its lanes' code past FRONT_END_LIMIT). A loop's own chain is not
+# traced: a looped form is charged its traced part's path or the scalar tree's, whichever is longer
+# (`_figures`).
+LATENCY_WEIGHT = 2.5
 
 
 def cost(fn, counts=None, path=None):

@@ -8,6 +8,7 @@ from typing import Dict, Tuple
 
 from . import differentiate, lane_functions, project
 from ..graph import expr as ex
+from ..graph.reassociate import reassociate
 from ..algorithms import (aba, centroidal, contact_dynamics, crba, forward_dynamics, frames, jacobian,
                           kinematics, osc, rnea)
 from ..views import coupled
@@ -351,7 +352,7 @@ def trace_function(robot, scene, name, known_inputs=None):
             if len(values[arg.name]) != arg.size:
                 raise AssertionError("%s: output %s has %d entries, expected %d"
                                      % (name, arg.name, len(values[arg.name]), arg.size))
-        flat = iter(ex.absorb_negations([e for arg in outputs for e in values[arg.name] if e is not None]))
+        flat = iter(ex.absorb_negations(reassociate([e for arg in outputs for e in values[arg.name] if e is not None])))
         values = {arg.name: tuple(None if e is None else next(flat) for e in values[arg.name])
                   for arg in outputs}
     inputs = tuple(args[n] for n in input_names if n not in zero)

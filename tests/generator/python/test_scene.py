@@ -6,7 +6,7 @@ import tempfile
 import unittest
 
 from mini_cheetah import SCENES
-from numeric_check import DATA, evaluate, random_state
+from numeric_check import DATA, evaluate, max_relative_error, random_state
 from rbdcgen.graph.flops import count_ops
 from rbdcgen.frontend.ir import load_ir
 from rbdcgen.frontend.scene import QUANTITIES, SceneError, default_scene, load_scene, scene_from_dict
@@ -81,10 +81,11 @@ class WhatASceneRemoves(unittest.TestCase):
         self.assertFalse(any(n.op == "sym" and n.value[0] == "v"
                              for n in compensation.graph.nodes))
         self.assertLess(count_ops(compensation)["total"], count_ops(full)["total"])
-        # Same values as the full function evaluated at v = 0.
+        # The full function's values at v = 0, up to round-off: each sum adds its terms in their
+        # order of arrival (graph/reassociate.py), which changes once v's terms are gone.
         state = random_state(ROBOT, 2, 7)
         state["v"] = [0.0] * ROBOT.nv
-        self.assertEqual(evaluate(compensation, state), evaluate(full, state))
+        self.assertLess(max_relative_error(evaluate(compensation, state)["tau"], evaluate(full, state)["tau"]), 1e-14)
 
     def test_zero_foot_forces_remove_the_argument(self):
         scene = scene_from_dict({"name": "x", "zero_inputs": ["f"]})

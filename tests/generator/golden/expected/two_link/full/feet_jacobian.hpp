@@ -6,11 +6,11 @@
 // feet_jacobian for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_jacobian is the same code:
-//   two_link/common/feet_jacobian_5d7ab79aa358.hpp
+//   two_link/common/feet_jacobian_1169d17dfecd.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/feet_jacobian_5d7ab79aa358.hpp"
+#include "two_link/common/feet_jacobian_1169d17dfecd.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -20,8 +20,8 @@ namespace rbdc_gen::two_link::full {
 /// @param J out 3x2: feet Jacobian, world-frame foot velocities from v
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
-///              25   19    0     0     2    2     48
-using ::rbdc_gen::two_link::common::feet_jacobian_5d7ab79aa358::feet_jacobian;
+///              25   17    0     0     2    2     46
+using ::rbdc_gen::two_link::common::feet_jacobian_1169d17dfecd::feet_jacobian;
 
 /// feet_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>
