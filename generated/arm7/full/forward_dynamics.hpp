@@ -7,11 +7,11 @@
 // forward_dynamics for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   arm7/common/forward_dynamics_f67c76b98e96.hpp
+//   arm7/common/forward_dynamics_970de325aa86.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/forward_dynamics_f67c76b98e96.hpp"
+#include "arm7/common/forward_dynamics_970de325aa86.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::arm7::full {
 ///             627  467    5     0    14    0   1113
 /// schedule: scalar tree: 1113 arithmetic instructions (critical path 162 cycles, cost 1518),
 ///   articulated-body algorithm 1261 (path 284, cost 1971)
-using ::rbdc_gen::arm7::common::forward_dynamics_f67c76b98e96::forward_dynamics;
+using ::rbdc_gen::arm7::common::forward_dynamics_970de325aa86::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

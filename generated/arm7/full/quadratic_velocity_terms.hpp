@@ -7,11 +7,11 @@
 // quadratic_velocity_terms for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose quadratic_velocity_terms is the same code:
-//   arm7/common/quadratic_velocity_terms_09ec2b0b4ebc.hpp
+//   arm7/common/quadratic_velocity_terms_16cf65c1a1f3.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/quadratic_velocity_terms_09ec2b0b4ebc.hpp"
+#include "arm7/common/quadratic_velocity_terms_16cf65c1a1f3.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::arm7::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             305  220    0     0    12    1    538
-using ::rbdc_gen::arm7::common::quadratic_velocity_terms_09ec2b0b4ebc::quadratic_velocity_terms;
+using ::rbdc_gen::arm7::common::quadratic_velocity_terms_16cf65c1a1f3::quadratic_velocity_terms;
 
 /// quadratic_velocity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

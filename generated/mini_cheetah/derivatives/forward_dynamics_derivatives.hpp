@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_7af823aa016e.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_b877478ed2ed.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_7af823aa016e.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_b877478ed2ed.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -36,7 +36,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///   25004), looped RNEA derivatives 18012 (path 330, cost 21187), limb lanes and looped
 ///   RNEA derivatives 15055 (path 330, cost 16668), looped CRBA 21142 (path 330, cost
 ///   27728)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_7af823aa016e::forward_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b877478ed2ed::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -45,16 +45,21 @@ def reassociate(outputs):
         if node.id in inner:
             continue
         graph.label, graph.position = node.label, node.position  # rewrites stand where node stood
-        if node.op in _SUMS:
+        if node.op in _SUMS and (node.args[0].id in inner or node.args[1].id in inner):  # 3 terms or more
             terms = []
             _collect(node, True, inner, terms)
             rebuilt = _sum([(t, new[t.id], positive) for t, positive in terms], uses, ready, operands)
+            if all(new[t.id] is t for t, _ in terms):  # keep the formula's tree unless later
+                _time(node, ready, operands)
+                if ready[node.id] <= ready[rebuilt.id]:
+                    rebuilt = node
         else:
             args = tuple([new[a.id] for a in node.args])
             same = all(a is b for a, b in zip(args, node.args))
             rebuilt = node if same else graph.intern(node.op, args, node.value)
         new[node.id] = rebuilt
-        _time(rebuilt, ready, operands)
+        if rebuilt.id not in ready:
+            _time(rebuilt, ready, operands)
     graph.label, graph.position = order[-1].label, None  # as after the last node's turn
     return [new[node.id] for node in outputs]
 
@@ -87,7 +92,8 @@ def _sum(terms, uses, ready, operands):
             total = ex.sub(x, y)
         else:
             total = ex.sub(y, x)
-        _time(total, ready, operands)
+        if total.id not in ready:
+            _time(total, ready, operands)
         heapq.heappush(heap, (ready[total.id], count, total, x_positive or y_positive))
         count += 1
     _, _, total, positive = heap[0]

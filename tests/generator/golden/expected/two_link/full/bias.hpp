@@ -6,11 +6,11 @@
 // bias for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   two_link/common/bias_4383ce05e9ea.hpp
+//   two_link/common/bias_8c61bad27347.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/bias_4383ce05e9ea.hpp"
+#include "two_link/common/bias_8c61bad27347.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::two_link::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              29   15    0     0     2    0     46
-using ::rbdc_gen::two_link::common::bias_4383ce05e9ea::bias;
+using ::rbdc_gen::two_link::common::bias_8c61bad27347::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

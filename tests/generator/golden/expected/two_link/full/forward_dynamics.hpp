@@ -6,11 +6,11 @@
 // forward_dynamics for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   two_link/common/forward_dynamics_6c697400a617.hpp
+//   two_link/common/forward_dynamics_49ca5d74a924.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/forward_dynamics_6c697400a617.hpp"
+#include "two_link/common/forward_dynamics_49ca5d74a924.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::two_link::full {
 ///              62   37    1     0     2    0    102
 /// schedule: scalar tree: 102 arithmetic instructions (critical path 59 cycles, cost 250),
 ///   articulated-body algorithm 105 (path 59, cost 252)
-using ::rbdc_gen::two_link::common::forward_dynamics_6c697400a617::forward_dynamics;
+using ::rbdc_gen::two_link::common::forward_dynamics_49ca5d74a924::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -6,11 +6,11 @@
 // quadratic_velocity_terms for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose quadratic_velocity_terms is the same code:
-//   two_link/common/quadratic_velocity_terms_a5b288b38583.hpp
+//   two_link/common/quadratic_velocity_terms_7e0543882b81.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/quadratic_velocity_terms_a5b288b38583.hpp"
+#include "two_link/common/quadratic_velocity_terms_7e0543882b81.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::two_link::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              23    9    0     0     0    0     32
-using ::rbdc_gen::two_link::common::quadratic_velocity_terms_a5b288b38583::quadratic_velocity_terms;
+using ::rbdc_gen::two_link::common::quadratic_velocity_terms_7e0543882b81::quadratic_velocity_terms;
 
 /// quadratic_velocity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>
