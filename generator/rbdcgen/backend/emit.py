@@ -86,12 +86,7 @@ def schedule(fn):
     """(trig block, ordered temporaries, use counts) of the function's live DAG."""
     outputs = fn.output_exprs()
     order = ex.reachable(outputs)
-    uses = {}
-    for node in order:
-        for arg in node.args:
-            uses[arg.id] = uses.get(arg.id, 0) + 1
-    for node in outputs:
-        uses[node.id] = uses.get(node.id, 0) + 1
+    uses = ex.use_counts(order, outputs)
     trig = sorted((n for n in order if _is_joint_trig(n)),
                   key=lambda n: (_angle_symbol(n.args[0]).value, _angle_offsets(n.args[0]), n.op == "cos"))
     angles = {n.args[0].id for n in trig}  # written into joint_sincos's array, never a statement

@@ -447,6 +447,17 @@ def _depth_first_post_order(outputs):
     return order
 
 
+def use_counts(order, outputs):
+    """{node id: its uses} over `order` (reachable(outputs)), each output counted once more."""
+    uses = {}
+    for node in order:
+        for arg in node.args:
+            uses[arg.id] = uses.get(arg.id, 0) + 1
+    for node in outputs:
+        uses[node.id] = uses.get(node.id, 0) + 1
+    return uses
+
+
 def absorb_negations(outputs):
     """Final peephole after tracing: a negation whose operand is a single-use product or sum that
     can take the sign for free disappears: −(c·y) = (−c)·y, −(x·y) = (−x)·y, −(x/y) = (−x)/y,
@@ -455,12 +466,7 @@ def absorb_negations(outputs):
     Folding keeps constants positive so that c·y and −c·y share one product; only once the DAG is
     complete do we know which products are used under a negation alone. Sign flips are exact."""
     order = reachable(outputs)
-    uses = {}
-    for node in order:
-        for arg in node.args:
-            uses[arg.id] = uses.get(arg.id, 0) + 1
-    for node in outputs:
-        uses[node.id] = uses.get(node.id, 0) + 1
+    uses = use_counts(order, outputs)
     new = {}
 
     def intern(op, args, value=None):

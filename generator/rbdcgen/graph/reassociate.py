@@ -27,12 +27,7 @@ def reassociate(outputs):
     order = ex.reachable(outputs)
     if not order:
         return list(outputs)
-    uses = {}
-    for node in order:
-        for arg in node.args:
-            uses[arg.id] = uses.get(arg.id, 0) + 1
-    for node in outputs:
-        uses[node.id] = uses.get(node.id, 0) + 1
+    uses = ex.use_counts(order, outputs)
     inner = set()  # sums used once, by a sum: their terms join that sum's
     for node in order:
         if node.op in _SUMS:
