@@ -7,12 +7,14 @@ included) by generator_verify_random_aba (tests/generator/CMakeLists.txt)."""
 import os
 import unittest
 from dataclasses import replace
+from unittest import mock
 
 from numeric_check import DATA, chain, evaluate, random_state
 
 from rbdcgen.frontend.ir import Actuator, load_ir
 from rbdcgen.frontend.scene import scene_from_dict
 from rbdcgen.graph.flops import generic_ops
+from rbdcgen.passes import schedule
 from rbdcgen.passes.schedule import scheduled_function
 
 FIXED = load_ir(os.path.join(DATA, "tiny_fixed.json"))
@@ -59,6 +61,17 @@ class ArticulatedBodyAlgorithm(unittest.TestCase):
         # counted as forward dynamics: `rbdc flops` compares it with the runtime's (it raised on ABA)
         self.assertEqual(long.computes, "forward_dynamics")
         self.assertGreater(generic_ops(chain(30), scene("auto"), long.computes)["total"], 0)
+
+    def test_auto_weighs_the_critical_path(self):
+        """On a 10-link chain ABA has fewer instructions than the factor (2 129 against 2 176) on twice
+        its critical path (474 cycles against 245): by instructions alone `auto` would take ABA; with
+        the path weighed (schedule.LATENCY_WEIGHT) it keeps the factor, as Panda's measured faster
+        (245 → 197 ns, docs/performance.md, "Forms chosen by their critical path too")."""
+        weighed = scheduled_function(chain(10), scene("auto"), "forward_dynamics")
+        self.assertTrue(weighed.schedule.startswith("scalar tree"), weighed.schedule)
+        with mock.patch.object(schedule, "LATENCY_WEIGHT", 0):
+            counted = scheduled_function(chain(10), scene("auto"), "forward_dynamics")
+        self.assertTrue(counted.schedule.startswith("articulated-body algorithm"), counted.schedule)
 
     def test_equals_the_factor_on_a_floating_base(self):
         self.assert_same_acceleration(FLOATING)
