@@ -41,23 +41,23 @@ def critical_path_of(outputs):
 
 def time(node, ready, operands):
     """Records when `node` is ready (and a product's operands) in `ready` and `operands`, which hold
-    its operands' already; returns it."""
-    if node.op in ("const", "sym"):
-        ready[node.id] = 0
-    elif node.op in ("sin", "cos"):
-        ready[node.id] = (0 if node.args[0].op == "sym" else ready[node.args[0].id]) + JOINT_SINCOS
-    elif node.op in ("add", "sub") and any(a.op == "mul" for a in node.args):
-        plain = max(ready[a.id] for a in node.args) + LATENCY[node.op]  # the products computed first
-        ready[node.id] = min([plain] + [_fma_ready(node, product, ready, operands)
-                                        for product in node.args if product.op == "mul"])
+    its operands' already; returns it. (Written out: it runs for every node of every traced form.)"""
+    op, args = node.op, node.args
+    if op == "const" or op == "sym":
+        at = 0
+    elif op == "sin" or op == "cos":
+        at = (0 if args[0].op == "sym" else ready[args[0].id]) + JOINT_SINCOS
+    elif op == "add" or op == "sub":
+        x, y = args
+        x_at, y_at = ready[x.id], ready[y.id]
+        at = (x_at if x_at > y_at else y_at) + LATENCY[op]  # the products computed first
+        if x.op == "mul":  # or as an FMA of a product with the other operand
+            at = min(at, max(operands[x.id], y_at) + FMA)
+        if y.op == "mul":
+            at = min(at, max(operands[y.id], x_at) + FMA)
     else:
-        ready[node.id] = max([ready[a.id] for a in node.args], default=0) + LATENCY.get(node.op, 0)
-        if node.op == "mul":
-            operands[node.id] = ready[node.id] - LATENCY["mul"]
-    return ready[node.id]
-
-
-def _fma_ready(node, product, ready, operands):
-    """When `node` (x ± y) is ready as an FMA of `product` with the other operand's value."""
-    other = node.args[1] if node.args[0] is product else node.args[0]
-    return max(operands[product.id], ready[other.id]) + FMA
+        at = max([ready[a.id] for a in args], default=0) + LATENCY.get(op, 0)
+        if op == "mul":
+            operands[node.id] = at - LATENCY["mul"]
+    ready[node.id] = at
+    return at

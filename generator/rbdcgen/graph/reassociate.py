@@ -53,8 +53,8 @@ def reassociate(outputs):
             same = all(a is b for a, b in zip(args, node.args))
             rebuilt = node if same else graph.intern(node.op, args, node.value)
         new[node.id] = rebuilt
-        if rebuilt.id not in ready:
-            _time(rebuilt, ready, operands)
+        if rebuilt.id not in ready:  # a sum's is timed by _sum, or with its inner sums above
+            time(rebuilt, ready, operands)
     graph.label, graph.position = order[-1].label, None  # as after the last node's turn
     return [new[node.id] for node in outputs]
 
