@@ -1,6 +1,6 @@
 """Sums added in the order their terms are ready: a pass after tracing that shortens the critical
-path (graph/latency.py) and keeps the operation count (docs/performance.md, "Sums in the order their
-terms arrive").
+path (graph/latency.py) and keeps the operation count (docs/performance.md, "Forms chosen by their
+critical path too, and sums added in the order their terms arrive").
 
 A traced algorithm writes a sum as its formula reads, ((a + b) − c) + d·e, each addition waiting on
 the one before, though the terms arrive at different times: a body's force sums a term that is ready

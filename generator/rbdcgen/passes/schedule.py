@@ -110,8 +110,8 @@ LANE_FRONT_END_EXTRA = 1.4
 
 # What a cycle of a form's critical path costs, in instructions. Fitted (least squares, no constant) to
 # five pairs of forward-dynamics forms timed against each other (Zen 5, clang 14, the peer harness;
-# docs/performance.md, "Forms by their critical path"): per call, 0.29 cycles an instruction and 0.80
-# a cycle of path, 2.7 instructions a cycle: arm7's and iiwa14's ABA 45 and 33 ns slower than their
+# docs/performance.md, "Forms chosen by their critical path too"): per call, 0.29 cycles an
+# instruction and 0.80 a cycle of path, 2.7 instructions a cycle: arm7's and iiwa14's ABA 45 and 33 ns slower than their
 # factor, Panda's factor 48 ns faster than its ABA, the Mini Cheetah's lanes 7 ns slower than its ABA
 # in lanes, and 5 ns slower once both add their sums in their terms' order of arrival
 # (graph/reassociate.py). 2.5, within the fit's error, keeps that last choice. It also charges the
@@ -123,16 +123,14 @@ LANE_FRONT_END_EXTRA = 1.4
 LATENCY_WEIGHT = 2.5
 
 
-def cost(fn, counts=None, path=None):
+def cost(fn, counts, path):
     """What `auto` minimises, in units of one short straight-line instruction: the straight-line part
-    (`counts`: _straight_line_counts, counted here if not given) with the front-end penalty (more for
-    the share of lane instructions), the loops weighted by what each of
-    their instructions was measured to cost (their `cost()`), and LATENCY_WEIGHT a cycle of the traced
-    part's critical path (`path`, computed here if not given)."""
-    n, lanes = _straight_line_counts(fn) if counts is None else counts
+    (`counts`: _straight_line_counts) with the front-end penalty (more for the share of lane
+    instructions), the loops weighted by what each of their instructions was measured to cost (their
+    `cost()`), and LATENCY_WEIGHT a cycle of the critical path charged to the form (`path`)."""
+    n, lanes = counts
     loops = fn.solve.cost() if fn.solve is not None else 0
     penalty = FRONT_END_PENALTY + LANE_FRONT_END_EXTRA * lanes / max(1, n)
-    path = critical_path(fn) if path is None else path
     return round(n + penalty * max(0, n - FRONT_END_LIMIT) + loops + LATENCY_WEIGHT * path)
 
 
