@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_7a4795396a8e.hpp
+//   humanoid32/common/forward_dynamics_derivatives_6ed73a68aa93.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_7a4795396a8e.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_6ed73a68aa93.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -33,10 +33,10 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///   isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of fewer than 4
 ///   repeated to fill the lanes), ∂τ a loop over the bodies, the solve's right-hand sides
 ///   in SIMD across columns): 63070 arithmetic instructions (critical path 582 cycles, cost
-///   77871), scalar tree 124296 (path 582, cost 295005), looped solve 64759 (path 582, cost
+///   83017), scalar tree 124296 (path 582, cost 295005), looped solve 64759 (path 582, cost
 ///   106465), limb lanes and a looped solve 51850 (path 582, cost 90426), looped RNEA
-///   derivatives 68049 (path 582, cost 85652), looped CRBA 75759 (path 620, cost 101312)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_7a4795396a8e::forward_dynamics_derivatives;
+///   derivatives 68049 (path 582, cost 88872), looped CRBA 75759 (path 620, cost 104532)
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_6ed73a68aa93::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

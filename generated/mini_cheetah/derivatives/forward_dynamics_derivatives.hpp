@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_b877478ed2ed.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_c9979ba32e8b.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_b877478ed2ed.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_c9979ba32e8b.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -33,10 +33,10 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///   lanes, the solve's right-hand sides in SIMD across columns): 9620 arithmetic
 ///   instructions (critical path 330 cycles, cost 10445), scalar tree 24099 (path 330, cost
 ///   53903), limb lanes 7492 (path 336, cost 19049), looped solve 15334 (path 330, cost
-///   25004), looped RNEA derivatives 18012 (path 330, cost 21187), limb lanes and looped
-///   RNEA derivatives 15055 (path 330, cost 16668), looped CRBA 21142 (path 330, cost
-///   27728)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b877478ed2ed::forward_dynamics_derivatives;
+///   25004), looped RNEA derivatives 18012 (path 330, cost 24407), limb lanes and looped
+///   RNEA derivatives 15055 (path 330, cost 17816), looped CRBA 21142 (path 330, cost
+///   30948)
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_c9979ba32e8b::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

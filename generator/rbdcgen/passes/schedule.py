@@ -13,7 +13,8 @@ that says the choice and its numbers.
 The cost is the arithmetic instructions the body issues: every operation node once, a lane
 operation being one vector instruction for all limbs, the sum over the lanes two (a horizontal
 add of four), a looped solve's row update one per looped_solve.SIMD_DOUBLES columns; straight-line
-code past FRONT_END_LIMIT instructions and the tree loops' and the factor's instructions weigh
+code past FRONT_END_LIMIT instructions (less what a large loop's own code takes of it) and the tree
+loops' and the factor's instructions weigh
 more, as measured (`cost`), and each cycle of the form's critical path (graph/latency.py) weighs
 LATENCY_WEIGHT instructions more: a form whose work waits in one long chain is slower than its count
 says. Where the
@@ -87,7 +88,8 @@ def beside_sines(fn):
 
 
 # Straight-line code runs from the op cache while it is short; past FRONT_END_LIMIT arithmetic
-# instructions each further one costs 1 + FRONT_END_PENALTY (fetched and decoded on every call).
+# instructions each further one costs 1 + FRONT_END_PENALTY (fetched and decoded on every call). A
+# large loop's own code (loop_code) takes its share of the limit.
 # Measured on an AMD EPYC (Zen 5), clang 14, per counted instruction: 0.084 ns for arm7's ∂τ (3 366),
 # 0.165-0.185 ns for the Mini Cheetah's (6 806), humanoid32's (25 023) and Talos's (46 718).
 FRONT_END_LIMIT = 3400
@@ -125,13 +127,24 @@ LATENCY_WEIGHT = 2.5
 
 def cost(fn, counts, path):
     """What `auto` minimises, in units of one short straight-line instruction: the straight-line part
-    (`counts`: _straight_line_counts) with the front-end penalty (more for the share of lane
-    instructions), the loops weighted by what each of their instructions was measured to cost (their
-    `cost()`), and LATENCY_WEIGHT a cycle of the critical path charged to the form (`path`)."""
+    (`counts`: _straight_line_counts) with the front-end penalty on what the code holds past
+    FRONT_END_LIMIT, the loops' code counted in (more for the share of lane instructions), the loops
+    weighted by what each of their instructions was measured to cost (their `cost()`), and
+    LATENCY_WEIGHT a cycle of the critical path charged to the form (`path`)."""
     n, lanes = counts
     loops = fn.solve.cost() if fn.solve is not None else 0
     penalty = FRONT_END_PENALTY + LANE_FRONT_END_EXTRA * lanes / max(1, n)
-    return round(n + penalty * max(0, n - FRONT_END_LIMIT) + loops + LATENCY_WEIGHT * path)
+    return round(n + penalty * max(0, n + loop_code(fn.solve) - FRONT_END_LIMIT) + loops + LATENCY_WEIGHT * path)
+
+
+def loop_code(solve):
+    """The loops' own code, as straight-line instructions: the looped RNEA derivatives', alone or
+    under a looped solve (15-29 KB; the other loops take 1-5 KB, left out). A call streams whatever
+    part of its code the front end cannot hold, the loops' as well as the traced part: Panda's ∂q̈
+    terms ran 230-250 ns and its ∂ID in the looped form 593-636 ns, one after the other 1 035-1 072 ns
+    (docs/performance.md, "A loop's code in the front end's budget")."""
+    rnea = solve if isinstance(solve, looped_rnea_derivatives.LoopedRneaDerivatives) else getattr(solve, "rnea", None)
+    return looped_rnea_derivatives.CODE if rnea is not None else 0
 
 
 def _figures(traced):

@@ -8,6 +8,7 @@ product/test_operation_counts.py."""
 
 import os
 import unittest
+from unittest import mock
 
 from numeric_check import DATA, chain, evaluate, random_state
 
@@ -69,6 +70,18 @@ class LoopedRneaDerivatives(unittest.TestCase):
             self.assertIn(form + " not traced", large.schedule)
         self.assertIsNotNone(large.solve.rnea)
         self.assertIsNotNone(large.solve.factor)
+
+    def test_the_loops_code_counts_against_the_front_end(self):
+        """A 9-link chain's ∂a, as Panda's: the loop's own code (looped.CODE) with the traced part
+        is past schedule.FRONT_END_LIMIT, so `auto` solves ∂τ traced instead; priced as if the loop
+        took no code, it would take the loop (Panda: 1 300 → 1 040 ns, docs/performance.md, "A
+        loop's code in the front end's budget")."""
+        robot, name = chain(9), "forward_dynamics_derivatives"
+        charged = scheduled_function(robot, scene("auto", name), name)
+        self.assertTrue(charged.schedule.startswith("looped solve"), charged.schedule)
+        with mock.patch.object(looped, "CODE", 0):
+            free = scheduled_function(robot, scene("auto", name), name)
+        self.assertTrue(free.schedule.startswith("looped RNEA derivatives"), free.schedule)
 
     def test_only_the_rnea_derivatives(self):
         """(A mimic-coupled robot's run on its tree: test_coupling.py, product/test_coupled_forms.py.)"""

@@ -14,7 +14,7 @@
 #include "rbdc_gen/body_tree.hpp"
 #include "rbdc_gen/rnea_derivatives.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_7a4795396a8e {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_6ed73a68aa93 {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -3645,9 +3645,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 ///   isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of fewer than 4
 ///   repeated to fill the lanes), ∂τ a loop over the bodies, the solve's right-hand sides
 ///   in SIMD across columns): 63070 arithmetic instructions (critical path 582 cycles, cost
-///   77871), scalar tree 124296 (path 582, cost 295005), looped solve 64759 (path 582, cost
+///   83017), scalar tree 124296 (path 582, cost 295005), looped solve 64759 (path 582, cost
 ///   106465), limb lanes and a looped solve 51850 (path 582, cost 90426), looped RNEA
-///   derivatives 68049 (path 582, cost 85652), looped CRBA 75759 (path 620, cost 101312)
+///   derivatives 68049 (path 582, cost 88872), looped CRBA 75759 (path 620, cost 104532)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 123 right-hand sides and
 ///   the factor, rnea_derivatives_loop subtracts ∂τ/∂(q, v) less the feet's ∂(Jᵀf)/∂q over
 ///   the table (the RNEA's derivatives as a loop), the columns sorted into 6 blocks,
@@ -3686,4 +3686,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 38, 128>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_7a4795396a8e
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_6ed73a68aa93

@@ -12,7 +12,7 @@
 #include "rbdc_gen/lanes.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b877478ed2ed {
+namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_c9979ba32e8b {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -1549,9 +1549,9 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 ///   lanes, the solve's right-hand sides in SIMD across columns): 9620 arithmetic
 ///   instructions (critical path 330 cycles, cost 10445), scalar tree 24099 (path 330, cost
 ///   53903), limb lanes 7492 (path 336, cost 19049), looped solve 15334 (path 330, cost
-///   25004), looped RNEA derivatives 18012 (path 330, cost 21187), limb lanes and looped
-///   RNEA derivatives 15055 (path 330, cost 16668), looped CRBA 21142 (path 330, cost
-///   27728)
+///   25004), looped RNEA derivatives 18012 (path 330, cost 24407), limb lanes and looped
+///   RNEA derivatives 15055 (path 330, cost 17816), looped CRBA 21142 (path 330, cost
+///   30948)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 60 right-hand sides and
 ///   the factor, ltdl_solve_columns solves them all at once, one SIMD row update per factor
 ///   entry (99)
@@ -1567,4 +1567,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 18, 64>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_b877478ed2ed
+}  // namespace rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_c9979ba32e8b

@@ -11,7 +11,7 @@
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/solve.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_932a5d2d3ea1 {
+namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_a54d50ef2246 {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -1177,8 +1177,8 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 ///             2929  2509    5     0    14   16   5473
 /// schedule: looped solve (the solve's right-hand sides in SIMD across columns): 3835 arithmetic
 ///   instructions (critical path 248 cycles, cost 4455), scalar tree 5077 (path 248, cost
-///   8045), looped RNEA derivatives 5974 (path 248, cost 7002), looped CRBA 7802 (path 284,
-///   cost 10062)
+///   8045), looped RNEA derivatives 5974 (path 248, cost 7348), looped CRBA 7802 (path 284,
+///   cost 10610)
 /// emission: looped solve: forward_dynamics_derivatives_terms writes the 24 right-hand sides and
 ///   the factor, ∂a/∂τ solved with the rest (as M⁻¹'s rows Zᵀ D⁻¹ Z, 928 multiply-adds
 ///   against the solve's 0 for Sᵀ's columns), ltdl_solve_columns solves them all at once,
@@ -1195,4 +1195,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 7, 24>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_932a5d2d3ea1
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_derivatives_a54d50ef2246
