@@ -10,21 +10,20 @@ The quantity is the same;
 only how it is evaluated changes, so the function keeps its plain name and its doc gains one line
 that says the choice and its numbers.
 
-The cost is the arithmetic instructions the body issues: every operation node once, a lane
-operation being one vector instruction for all limbs, the sum over the lanes two (a horizontal
-add of four), a looped solve's row update one per looped_solve.SIMD_DOUBLES columns; straight-line
-code past FRONT_END_LIMIT instructions (less what a large loop's own code takes of it) and the tree
-loops' and the factor's instructions weigh
-more, as measured (`cost`), and each cycle of the form's critical path (graph/latency.py) weighs
-LATENCY_WEIGHT instructions more: a form whose work waits in one long chain is slower than its count
-says. Where the
-unrolled factor is past looped_factor.UNROLL_LIMIT, the unrolled CRBA past looped_crba.UNROLL_LIMIT,
-the unrolled RNEA derivatives past looped_rnea_derivatives.UNROLL_LIMIT, the feet's unrolled force
-terms past looped_feet_forces.UNROLL_LIMIT, or the OSC's unrolled columns past looped_osc.UNROLL_LIMIT,
-`auto` does not trace the forms that unroll it (tracing them alone would take minutes) when another
-form exists. A scene may force a form (`schedule: scalar`, `limb_lanes`, `looped_solve`, `aba`,
-`looped_factor`, `looped_crba`, `looped_rnea`, `lanes_looped_rnea`, `looped_feet`, `looped_osc` or `low_rank`) where the
-function has it."""
+The cost is the arithmetic instructions the body issues: every operation node once, a lane operation
+being one vector instruction for all limbs, the sum over the lanes two (a horizontal add of four), a
+looped solve's row update one per looped_solve.SIMD_DOUBLES columns; straight-line code past
+FRONT_END_LIMIT instructions (less what a large loop's own code takes of it) and the tree loops' and
+the factor's instructions weigh more, as measured (`cost`), and each cycle of the form's critical
+path (graph/latency.py) weighs LATENCY_WEIGHT instructions more: a form whose work waits in one long
+chain is slower than its count says. Where the unrolled factor is past looped_factor.UNROLL_LIMIT,
+the unrolled CRBA past looped_crba.UNROLL_LIMIT, the unrolled RNEA derivatives past
+looped_rnea_derivatives.UNROLL_LIMIT, the feet's unrolled force terms past
+looped_feet_forces.UNROLL_LIMIT, or the OSC's unrolled columns past looped_osc.UNROLL_LIMIT, `auto`
+does not trace the forms that unroll it (tracing them alone would take minutes) when another form
+exists. A scene may force a form (`schedule: scalar`, `limb_lanes`, `looped_solve`, `aba`,
+`looped_factor`, `looped_crba`, `looped_rnea`, `lanes_looped_rnea`, `looped_feet`, `looped_osc` or
+`low_rank`) where the function has it."""
 
 from __future__ import annotations
 
