@@ -245,6 +245,12 @@ RBDC_HOST_DEVICE inline void root_inertias(const BodyTree<NB>& tree, const Scala
   }
 }
 
+/// x · y_i for the 6-vectors y_k = rows[k][i] stored component by component: 6 multiplications, 5 additions.
+template <class Scalar, int NP>
+RBDC_HOST_DEVICE inline Scalar dot(const Scalar* x, const Scalar (*rows)[NP], int i) noexcept {
+  return ((x[0] * rows[0][i] + x[1] * rows[1][i]) + (x[2] * rows[2][i] + x[3] * rows[3][i])) + (x[4] * rows[4][i] + x[5] * rows[5][i]);
+}
+
 }  // namespace tree_detail
 
 }  // namespace rbdc_gen

@@ -56,18 +56,18 @@ struct InverseTimesVectors {
   RBDC_HOST_DEVICE void vectors(const BodyTree<NB>& tree, const Scalar (*S)[NP], const Scalar (*C)[NP],
                                 const Scalar (*U)[NP], const Scalar (*rows_I)[NP], const Scalar (*rows_B)[NP],
                                 const Scalar (*columns_G)[NP], const Scalar (*columns_D)[NP]) const noexcept {
-    constexpr int NA = 15;  // A: ρ^I, ρ^B, χ
-    constexpr int NS = 9;   // S: S, ω
-    alignas(64) Scalar T[NA][NV], R[NS][NV];
-    for (int c = 0; c < NA; ++c)
-      for (int r = 0; r < NV; ++r) T[c][r] = Scalar(0);
-    for (int c = 0; c < NS; ++c)
-      for (int r = 0; r < NV; ++r) R[c][r] = Scalar(0);
+    // Each body's factors, gathered once for every run of rows below: down = (A, C for ∂q, C for ∂v),
+    // up = (G for ∂q, D for ∂v, S), signed as −M⁻¹ takes them.
+    Scalar down[NB][kDown], up[NB][kUp];
     const auto feet = [&](const Scalar* x, int d, int k) { return x == nullptr ? Scalar(0) : x[3 * d + k]; };
-    for (int b = NB - 1; b >= 1; --b) {  // from the tip: T_j, then column j's A·C parts
+    for (int b = 1; b < NB; ++b) {
       const int d = tree.dof[b];
-      const Scalar* m = Minv + d * NV;
-      Scalar a[NA], cq[NA], cv[12];
+      Scalar* a = down[b];
+      Scalar* cq = a + NA;
+      Scalar* cv = cq + NA;
+      Scalar* g = up[b];
+      Scalar* e = g + NS;
+      Scalar* s = e + 6;
       for (int k = 0; k < 6; ++k) {
         a[k] = rows_I[k][b];
         a[6 + k] = rows_B[k][b];
@@ -75,49 +75,73 @@ struct InverseTimesVectors {
         cq[6 + k] = -U[k][b];
         cv[k] = Scalar(-2) * U[k][b];
         cv[6 + k] = -S[k][b];
-      }
-      for (int k = 0; k < 3; ++k) {
-        a[12 + k] = feet(moment, d, k);
-        cq[12 + k] = feet(axis, d, k);
-      }
-      for (int c = 0; c < NA; ++c)
-        for (int r = 0; r < NV; ++r) T[c][r] = T[c][r] + a[c] * m[r];
-      Scalar* oq = da_dq + d * NV;
-      Scalar* ov = da_dv + d * NV;
-      for (int r = 0; r < NV; ++r) {
-        Scalar q = T[0][r] * cq[0], v = T[0][r] * cv[0];
-        for (int c = 1; c < NA; ++c) q = q + T[c][r] * cq[c];
-        for (int c = 1; c < 12; ++c) v = v + T[c][r] * cv[c];
-        oq[r] = q;
-        ov[r] = v;
-      }
-    }
-    for (int b = 1; b < NB; ++b) {  // from the root: column j's S·G parts, then R_{j+1}
-      const int d = tree.dof[b];
-      Scalar g[NS], e[6], s[NS];
-      for (int k = 0; k < 6; ++k) {
         g[k] = -columns_G[k][b];
         e[k] = -columns_D[k][b];
         s[k] = S[k][b];
       }
       for (int k = 0; k < 3; ++k) {
+        a[12 + k] = feet(moment, d, k);
+        cq[12 + k] = feet(axis, d, k);
         g[6 + k] = feet(moment, d, k);
         s[6 + k] = feet(axis, d, k);
       }
+    }
+    row_runs<run_size<Scalar>()>(0, tree, down, up);
+  }
+
+ private:
+  static constexpr int NA = 15;              // A: ρ^I, ρ^B, χ
+  static constexpr int NS = 9;               // S: S, ω
+  static constexpr int kDown = 2 * NA + 12;  // A, C for ∂q, C for ∂v
+  static constexpr int kUp = 2 * NS + 6;     // G for ∂q, D for ∂v, S
+
+  /// Rows [r0, NV) in runs of W, then what is left in runs of W / 2, …, 1.
+  template <int W, int NB>
+  RBDC_HOST_DEVICE void row_runs(int r0, const BodyTree<NB>& tree, const Scalar (*down)[kDown],
+                                 const Scalar (*up)[kUp]) const noexcept {
+    for (; r0 + W <= NV; r0 += W) rows<W>(tree, r0, down, up);
+    if constexpr (W > 1) row_runs<W / 2>(r0, tree, down, up);
+  }
+
+  /// Rows [r0, r0 + W) of ∂a/∂q and ∂a/∂v: the running sums' rows stay in registers through both
+  /// walks along the chain (a 100-link chain's ∂q̈ spent 29 µs of 103 here when they were NV rows in
+  /// memory, read and written for every body; now 13.5).
+  template <int W, int NB>
+  RBDC_WIDE_RUNS RBDC_HOST_DEVICE void rows(const BodyTree<NB>& tree, int r0, const Scalar (*down)[kDown],
+                                            const Scalar (*up)[kUp]) const noexcept {
+    using R = Run<Scalar, W>;
+    using V = typename R::type;
+    V T[NA];
+    for (int c = 0; c < NA; ++c) T[c] = R::zero();
+    for (int b = NB - 1; b >= 1; --b) {  // from the tip: T_j, then column j's A·C parts
+      const int d = tree.dof[b];
+      const Scalar* a = down[b];
+      const Scalar* cq = a + NA;
+      const Scalar* cv = cq + NA;
+      const V m = R::load(Minv + d * NV + r0);
+      for (int c = 0; c < NA; ++c) T[c] = T[c] + a[c] * m;
+      V q = T[0] * cq[0], v = T[0] * cv[0];
+      for (int c = 1; c < NA; ++c) q = q + T[c] * cq[c];
+      for (int c = 1; c < 12; ++c) v = v + T[c] * cv[c];
+      R::store(da_dq + d * NV + r0, q);
+      R::store(da_dv + d * NV + r0, v);
+    }
+    V Rs[NS];
+    for (int c = 0; c < NS; ++c) Rs[c] = R::zero();
+    for (int b = 1; b < NB; ++b) {  // from the root: column j's S·G parts, then R_{j+1}
+      const int d = tree.dof[b];
+      const Scalar* g = up[b];
+      const Scalar* e = g + NS;
+      const Scalar* s = e + 6;
       if (b > 1) {
-        Scalar* oq = da_dq + d * NV;
-        Scalar* ov = da_dv + d * NV;
-        for (int r = 0; r < NV; ++r) {
-          Scalar q = R[0][r] * g[0], v = R[0][r] * e[0];
-          for (int c = 1; c < NS; ++c) q = q + R[c][r] * g[c];
-          for (int c = 1; c < 6; ++c) v = v + R[c][r] * e[c];
-          oq[r] = oq[r] + q;
-          ov[r] = ov[r] + v;
-        }
+        V q = Rs[0] * g[0], v = Rs[0] * e[0];
+        for (int c = 1; c < NS; ++c) q = q + Rs[c] * g[c];
+        for (int c = 1; c < 6; ++c) v = v + Rs[c] * e[c];
+        R::store(da_dq + d * NV + r0, R::load(da_dq + d * NV + r0) + q);
+        R::store(da_dv + d * NV + r0, R::load(da_dv + d * NV + r0) + v);
       }
-      const Scalar* m = Minv + d * NV;
-      for (int c = 0; c < NS; ++c)
-        for (int r = 0; r < NV; ++r) R[c][r] = R[c][r] + s[c] * m[r];
+      const V m = R::load(Minv + d * NV + r0);
+      for (int c = 0; c < NS; ++c) Rs[c] = Rs[c] + s[c] * m;
     }
   }
 };
@@ -309,12 +333,6 @@ RBDC_HOST_DEVICE inline CompositeInertia<Scalar> inertia_rate(const CompositeIne
 template <class Scalar, int NP>
 RBDC_HOST_DEVICE inline Scalar dot3(const Scalar* x, const Scalar (*rows)[NP], int i) noexcept {
   return (x[0] * rows[0][i] + x[1] * rows[1][i]) + x[2] * rows[2][i];
-}
-
-/// x · y_i for the 6-vectors y_k = rows[k][i] stored component by component: 6 multiplications, 5 additions.
-template <class Scalar, int NP>
-RBDC_HOST_DEVICE inline Scalar dot(const Scalar* x, const Scalar (*rows)[NP], int i) noexcept {
-  return ((x[0] * rows[0][i] + x[1] * rows[1][i]) + (x[2] * rows[2][i] + x[3] * rows[3][i])) + (x[4] * rows[4][i] + x[5] * rows[5][i]);
 }
 
 }  // namespace rnea_derivatives_detail

@@ -17,59 +17,9 @@
 namespace rbdc_gen {
 
 // Each loop sums the row it writes in a local array: the compiler then sees that the row never
-// overlaps the rows it reads, and keeps it in vector registers.
+// overlaps the rows it reads, and keeps it in vector registers. A row of NC columns is moved as
+// NC / size runs of ColumnRun<Scalar, NC>::size columns (Run, rbdc_gen/support.hpp).
 //
-// A row of NC columns is moved as NC / size runs of ColumnRun<Scalar, NC>::size columns: for double
-// and float a run is one vector register of the target in a GCC/clang vector type (64 bytes with
-// AVX-512, 32 with AVX, else 16: a wider type than the target has would change the ABI of the
-// functions that return it, and g++ warns).
-// Plain loops over the columns were vectorised 256 bits wide by g++ 12 and clang 14 on AVX-512
-// machines (their tuning default), with a remainder per row: humanoid32's ∂FD solve (123 columns)
-// took 31 µs (g++) and 15 µs (clang), 9-10 µs with runs over rows padded to 128. Other scalar
-// types, device code and rows whose length is not a multiple of the run take one column at a time.
-
-template <class Scalar, int Size>
-struct Run;
-
-template <class Scalar>
-struct Run<Scalar, 1> {
-  using type = Scalar;
-  static constexpr int size = 1;
-  RBDC_HOST_DEVICE static type zero() noexcept { return Scalar(0); }
-  RBDC_HOST_DEVICE static type load(const Scalar* p) noexcept { return *p; }
-  RBDC_HOST_DEVICE static void store(Scalar* p, const type& x) noexcept { *p = x; }
-};
-
-template <class Scalar>
-constexpr int run_size() { return 1; }
-
-#if defined(__GNUC__) && !defined(__CUDACC__)
-template <class Scalar, int Size>
-struct Run {
-  typedef Scalar type __attribute__((vector_size(Size * sizeof(Scalar))));
-  static constexpr int size = Size;
-  static type zero() noexcept { return type{}; }
-  static type load(const Scalar* p) noexcept {  // memcpy: no alignment assumed
-    type x;
-    std::memcpy(&x, p, sizeof x);
-    return x;
-  }
-  static void store(Scalar* p, const type& x) noexcept { std::memcpy(p, &x, sizeof x); }
-};
-
-#if defined(__AVX512F__)
-#define RBDC_RUN_BYTES 64
-#elif defined(__AVX__)
-#define RBDC_RUN_BYTES 32
-#else
-#define RBDC_RUN_BYTES 16
-#endif
-template <>
-constexpr int run_size<double>() { return RBDC_RUN_BYTES / 8; }
-template <>
-constexpr int run_size<float>() { return RBDC_RUN_BYTES / 4; }
-#endif
-
 // A row whose length is not a multiple of the run takes the widest narrower run of at least 16 bytes
 // that divides it (the proximal steps' 12 columns: AVX runs of four doubles on an AVX-512 machine),
 // else single columns.
@@ -82,13 +32,6 @@ constexpr int column_run_size() {
 
 template <class Scalar, int NC>
 using ColumnRun = Run<Scalar, column_run_size<Scalar, NC>()>;
-
-// clang keeps a 512-bit vector type in one register only in a function that asks for that width.
-#if defined(__clang__) && !defined(__CUDACC__) && defined(__AVX512F__)
-#define RBDC_WIDE_RUNS __attribute__((min_vector_width(512)))
-#else
-#define RBDC_WIDE_RUNS
-#endif
 
 /// The dof tree as the looped solve walks it, tables the generator writes (looped_solve.py): dof i's
 /// factor entries L[k] for k in [first[i], first[i + 1]) are at its ancestors ancestor[k], nearest
