@@ -384,14 +384,17 @@ ZERO_RUNS_MAX = 256
 def _zero_filled(fn):
     """{output name: [(start, end)]} of the outputs cleared by loops (ZERO_FILL_MIN), the ranges
     those loops clear: the runs of entries not stored (zeros, and those the looped parts write), or
-    the whole output (ZERO_RUNS_MAX)."""
+    the whole output (ZERO_RUNS_MAX); never the entries no loop reads (_unread)."""
     cleared = {}
     for arg in fn.traced_arguments():
         values = fn.values[arg.name]
         if sum(1 for node in values if node is not None and node.is_const(0.0)) < ZERO_FILL_MIN:
             continue
+        unread = set(_unread(fn, arg.name))
         runs = []
         for k, node in enumerate(values):
+            if k in unread:
+                continue
             if node is None or node.is_const(0.0):
                 if runs and runs[-1][1] == k:
                     runs[-1][1] = k + 1
@@ -399,6 +402,12 @@ def _zero_filled(fn):
                     runs.append([k, k + 1])
         cleared[arg.name] = [tuple(run) for run in runs] if len(runs) <= ZERO_RUNS_MAX else [(0, len(values))]
     return cleared
+
+
+def _unread(fn, name):
+    """The entries of `fn`'s output `name` that the loops after it never read (Function.unread):
+    neither stored nor cleared."""
+    return dict(fn.unread).get(name, ())
 
 
 class TransposedStore(list):
@@ -496,7 +505,7 @@ def _store_units(fn, cleared):
     other consecutive written entries of an argument in vector stores of ex.LANES from the run's start
     (the Mini Cheetah's M in lanes: its 324 scalar stores were the bottleneck, 172 -> 110 ns with g++;
     docs/performance.md) where _one_vector says so, the rest one by one. The zeros of the outputs in
-    `cleared` (_zero_filled) are not stored: a loop cleared them."""
+    `cleared` (_zero_filled) are not stored: a loop cleared them; nor the entries no loop reads."""
     width = ex.LANES if fn.lanes is not None else 1
     units = []
     for arg in fn.traced_arguments():
@@ -504,9 +513,10 @@ def _store_units(fn, cleared):
         if fn.lanes is not None:
             transposed, covered = _transposed_stores(arg.name, fn.values[arg.name])
             units += transposed
+        unread = set(_unread(fn, arg.name))
         runs = []  # maximal runs of consecutive written entries
         for k, node in enumerate(fn.values[arg.name]):
-            if node is None or k in covered or (arg.name in cleared and node.is_const(0.0)):
+            if node is None or k in covered or k in unread or (arg.name in cleared and node.is_const(0.0)):
                 continue
             if not runs or runs[-1][-1][1] != k - 1:
                 runs.append([])

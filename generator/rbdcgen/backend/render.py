@@ -145,7 +145,9 @@ def _looped_solve(function, arguments: list[dict], robot) -> dict:
     solve = function.solve
     terms_arguments = [a for a in arguments if a["is_input"]] + [
         {"name": t.name, "rows": t.rows, "cols": t.cols, "doc": t.doc, "is_input": False} for t in solve.terms]
-    terms = replace(function, name=function.name + "_terms", outputs=solve.terms, solve=None)
+    unread = getattr(solve, "unread", None)  # LoopedSolve: the columns the low-rank form leaves
+    terms = replace(function, name=function.name + "_terms", outputs=solve.terms, solve=None,
+                    unread=tuple((t.name, unread(t.name)) for t in solve.terms) if unread else ())
     helper = {"name": terms.name, "arguments": terms_arguments,
               "doc": f"The traced part of {function.name}: what the loop below solves.",
               **_straight_line(terms, terms_arguments, robot)}

@@ -129,6 +129,13 @@ class LoopedSolve:
     def solved_columns(self):
         return self.columns - self.first_solved
 
+    def unread(self, name):
+        """The entries of terms output `name` that no loop reads, so that the terms neither store nor
+        clear them: with `low_rank`, the right-hand sides' columns before first_solved."""
+        if not self.first_solved or name != self.terms[0].name:
+            return ()
+        return tuple(i for i in range(self.nv * self.columns) if i % self.columns < self.first_solved)
+
     def _skipped(self, per_block):
         """Per block of `support`, per_block(columns, factor entries its L⁻ᵀ skips), summed."""
         blocks = self.support.widths_and_entries() if self.support else ()
@@ -172,7 +179,8 @@ class LoopedSolve:
         if self.low_rank:  # M⁻¹ first: the RNEA loop's writer multiplies by it
             return (body + [dof_tree(self.parents)] + self.taken_inverse.loops()
                     + self.rnea.loops(with_table=self.factor is None) + self._tree_solve("solve_rhs")
-                    + _copies(self.blocks[2:], "solve_rhs", self.nv, self.columns, first=2 * self.nv))
+                    + _copies(self.blocks[2:], "solve_rhs", self.nv, self.columns, first=2 * self.nv,
+                              start=self.first_solved))
         body += [] if self.support is None else [self.support.place_table(column_support.PLACE)]
         body += [] if self.rnea is None else self.rnea.loops(with_table=self.factor is None)
         body += [dof_tree(self.parents)]
@@ -358,10 +366,10 @@ def lane_places(entries, stored=lambda e: True):
     return tuple(place)
 
 
-def _copies(blocks, source, rows, columns, order=(), first=0):
+def _copies(blocks, source, rows, columns, order=(), first=0, start=0):
     """Each block's columns of the row-major `source` into its column-major output (copy_out_columns:
-    per column of `source` where its rows go), the first block from column `first`; with `order` (the
-    logical column at each place), from where the order put them."""
+    per column of `source` from `start` on, where its rows go), the first block from column `first`;
+    with `order` (the logical column at each place), from where the order put them."""
     logical = list(order) + list(range(len(order), columns))
     destination = {}
     for name, width in blocks:
@@ -369,8 +377,10 @@ def _copies(blocks, source, rows, columns, order=(), first=0):
             destination[first + c] = f"{name} + {rows * c}"
         first += width
     table = f"{source}_out"
-    return [f"Scalar* const {table}[{columns}] = {{{', '.join(destination.get(c, 'nullptr') for c in logical)}}};",
-            f"copy_out_columns<Scalar, {rows}, {columns}>({source}, {table});"]
+    places = ", ".join(destination.get(c, "nullptr") for c in logical[start:])
+    copy = f"copy_out_columns<Scalar, {rows}, {columns}>" if start == 0 else \
+        f"copy_out_columns<Scalar, {rows}, {columns}, {start}>"
+    return [f"Scalar* const {table}[{columns - start}] = {{{places}}};", f"{copy}({source}, {table});"]
 
 
 def has_looped_form(robot, name):

@@ -46,6 +46,9 @@ class Function:
     schedule: str = ""    # the view it was traced on and why, when passes/schedule.py chose one
     lanes: object = None  # views/limb_lanes.LaneLayout of a lane function (lane_functions.py), else None
     solve: object = None  # passes/looped_solve.LoopedSolve: `values` are its terms, a loop solves them
+    # (output name, entries): entries no loop after it reads, neither stored nor cleared (a looped
+    # solve's terms: LoopedSolve.unread)
+    unread: Tuple[Tuple[str, Tuple[int, ...]], ...] = ()
 
     def traced_arguments(self):
         """The arguments whose entries `values` holds: the outputs, or a looped solve's terms."""

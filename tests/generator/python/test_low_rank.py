@@ -4,10 +4,13 @@ the runtime by generator_verify_chain_low_rank and its operation count by
 product/test_operation_counts.py."""
 
 import os
+import re
 import unittest
+from dataclasses import replace
 
 from numeric_check import DATA, chain, geared
 
+from rbdcgen.backend.emit import emit_body
 from rbdcgen.frontend.ir import load_ir
 from rbdcgen.frontend.scene import scene_from_dict
 from rbdcgen.passes.looped_solve import low_rank_applies
@@ -35,6 +38,27 @@ class LowRankProduct(unittest.TestCase):
         self.assertIn("looped CRBA", fn.schedule)  # the form it beat, counted
         self.assertTrue(fn.solve.low_rank)
         self.assertEqual(fn.solve.first_solved, 192)  # the feet's three columns from 200, in runs of 16
+
+    def test_the_columns_it_does_not_solve_are_neither_stored_nor_cleared(self):
+        fn = scheduled_function(chain(32), scene("low_rank"), NAME)
+        solve = fn.solve
+        rhs = solve.terms[0].name
+        self.assertEqual(len(solve.unread(rhs)), 32 * solve.first_solved)
+        # the terms as the looped solve's helper emits them (backend/render.py)
+        terms = replace(fn, outputs=solve.terms, solve=None, unread=((rhs, solve.unread(rhs)),))
+        written = set()
+        for line in emit_body(terms):
+            written.update(int(k) for k in re.findall(r"\b%s\[(\d+)\]" % rhs, line))
+            for start, end in re.findall(r"for \(int k = (\d+); k < (\d+); \+\+k\) %s\[k\]" % rhs, line):
+                written.update(range(int(start), int(end)))
+        self.assertTrue(written)
+        self.assertFalse(written & set(solve.unread(rhs)))
+        # without the unread entries, the same emitter clears them (what the 100-link chain paid for)
+        cleared = set()
+        for line in emit_body(replace(terms, unread=())):
+            for start, end in re.findall(r"for \(int k = (\d+); k < (\d+); \+\+k\) %s\[k\]" % rhs, line):
+                cleared.update(range(int(start), int(end)))
+        self.assertTrue(cleared & set(solve.unread(rhs)))
 
 
 if __name__ == "__main__":
