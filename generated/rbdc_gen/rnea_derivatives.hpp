@@ -100,7 +100,7 @@ struct InverseTimesVectors {
   RBDC_HOST_DEVICE void row_runs(int r0, const BodyTree<NB>& tree, const Scalar (*down)[kDown],
                                  const Scalar (*up)[kUp]) const noexcept {
     for (; r0 + W <= NV; r0 += W) rows<W>(tree, r0, down, up);
-    if constexpr (W > 1) row_runs<W / 2>(r0, tree, down, up);
+    if constexpr (W > 1 && NV % W != 0) row_runs<W / 2>(r0, tree, down, up);
   }
 
   /// Rows [r0, r0 + W) of ∂a/∂q and ∂a/∂v: the running sums' rows stay in registers through both
