@@ -86,7 +86,7 @@ struct InverseTimesVectors {
         s[6 + k] = feet(axis, d, k);
       }
     }
-    row_runs<run_size<Scalar>()>(0, tree, down, up);
+    for_row_runs<NV, run_size<Scalar>()>([&](auto width, int r0) { rows<decltype(width)::value>(tree, r0, down, up); });
   }
 
  private:
@@ -94,14 +94,6 @@ struct InverseTimesVectors {
   static constexpr int NS = 9;               // S: S, ω
   static constexpr int kDown = 2 * NA + 12;  // A, C for ∂q, C for ∂v
   static constexpr int kUp = 2 * NS + 6;     // G for ∂q, D for ∂v, S
-
-  /// Rows [r0, NV) in runs of W, then what is left in runs of W / 2, …, 1.
-  template <int W, int NB>
-  RBDC_HOST_DEVICE void row_runs(int r0, const BodyTree<NB>& tree, const Scalar (*down)[kDown],
-                                 const Scalar (*up)[kUp]) const noexcept {
-    for (; r0 + W <= NV; r0 += W) rows<W>(tree, r0, down, up);
-    if constexpr (W > 1 && NV % W != 0) row_runs<W / 2>(r0, tree, down, up);
-  }
 
   /// Rows [r0, r0 + W) of ∂a/∂q and ∂a/∂v: the running sums' rows stay in registers through both
   /// walks along the chain (a 100-link chain's ∂q̈ spent 29 µs of 103 here when they were NV rows in

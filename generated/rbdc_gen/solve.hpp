@@ -486,42 +486,41 @@ RBDC_HOST_DEVICE inline void store_columns_of_four(const V (&pairs)[4], Scalar* 
 }
 #endif
 
-/// The row-major NV × NC right-hand sides B, from column C0 on, into their column-major outputs:
-/// column p's NV rows go to out[p − C0] (nullptr: a padding column). For double in vector runs of 4 or 8 columns, four rows at a
+/// The row-major NV × NC right-hand sides B into their column-major outputs: column p's NV rows go to
+/// out[p] (nullptr: a padding column). For double in vector runs of 4 or 8 columns, four rows at a
 /// time: two rounds of shuffles turn the four rows' runs into each column's four entries, one 32-byte
 /// store for them (TALOS's ∂q̈, 9 200 entries: 1.50 → 1.34 µs by perf); the rows left, or runs of 2,
 /// two rows at a time and a 16-byte store. One entry at a time, these copies were 12 % of the Mini
 /// Cheetah's contact derivatives (docs/performance.md); clang 14 vectorised that plain loop with
 /// AVX-512 gathers and scatters, twice as slow again.
-template <class Scalar, int NV, int NC, int C0 = 0>
-RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void copy_out_columns(const Scalar* B, Scalar* const (&out)[NC - C0]) noexcept {
+template <class Scalar, int NV, int NC>
+RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void copy_out_columns(const Scalar* B, Scalar* const (&out)[NC]) noexcept {
   int r = 0;
 #if defined(__GNUC__) && !defined(__CUDACC__) && (defined(__clang__) || __GNUC__ >= 12)  // __builtin_shufflevector
   using R = ColumnRun<Scalar, NC>;
   constexpr int W = R::size;
-  static_assert(C0 % W == 0, "the copy starts at a run");
   if constexpr (sizeof(Scalar) == 8 && (W == 4 || W == 8)) {
     Scalar unused[4];
     for (; r + 4 <= NV; r += 4)
-      for (int c = C0; c < NC; c += W) {
+      for (int c = 0; c < NC; c += W) {
         typename R::type x[4];
         for (int h = 0; h < 4; ++h) x[h] = R::load(B + (r + h) * NC + c);
         typename R::type pairs[4];  // (x0, x1) and (x2, x3) of the even columns, then of the odd ones
         pair_rows<W>(x[0], x[1], pairs[0], pairs[2]);
         pair_rows<W>(x[2], x[3], pairs[1], pairs[3]);
-        store_columns_of_four<W>(pairs, out + (c - C0), r, unused, std::make_integer_sequence<int, W>{});
+        store_columns_of_four<W>(pairs, out + c, r, unused, std::make_integer_sequence<int, W>{});
       }
   }
   if constexpr (sizeof(Scalar) == 8 && (W == 2 || W == 4 || W == 8)) {
     Scalar unused[2];
     for (; r + 2 <= NV; r += 2)
-      for (int c = C0; c < NC; c += W) {
+      for (int c = 0; c < NC; c += W) {
         const typename R::type x = R::load(B + r * NC + c), y = R::load(B + (r + 1) * NC + c);
         typename R::type even, odd;  // (x, y) of columns c, c + 2, … and of c + 1, c + 3, …
         pair_rows<W>(x, y, even, odd);
         for (int k = 0; k < W / 2; ++k) {
-          Scalar* to_even = out[c - C0 + 2 * k] ? out[c - C0 + 2 * k] + r : unused;
-          Scalar* to_odd = out[c - C0 + 2 * k + 1] ? out[c - C0 + 2 * k + 1] + r : unused;
+          Scalar* to_even = out[c + 2 * k] ? out[c + 2 * k] + r : unused;
+          Scalar* to_odd = out[c + 2 * k + 1] ? out[c + 2 * k + 1] + r : unused;
           std::memcpy(to_even, reinterpret_cast<const Scalar*>(&even) + 2 * k, 2 * sizeof(Scalar));
           std::memcpy(to_odd, reinterpret_cast<const Scalar*>(&odd) + 2 * k, 2 * sizeof(Scalar));
         }
@@ -529,8 +528,8 @@ RBDC_WIDE_RUNS RBDC_HOST_DEVICE inline void copy_out_columns(const Scalar* B, Sc
   }
 #endif
   for (; r < NV; ++r)
-    for (int c = C0; c < NC; ++c)
-      if (out[c - C0] != nullptr) out[c - C0][r] = B[r * NC + c];
+    for (int c = 0; c < NC; ++c)
+      if (out[c] != nullptr) out[c][r] = B[r * NC + c];
 }
 
 }  // namespace rbdc_gen

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include <Eigen/Core>
 
@@ -445,6 +446,14 @@ constexpr int run_size<double>() { return RBDC_RUN_BYTES / 8; }
 template <>
 constexpr int run_size<float>() { return RBDC_RUN_BYTES / 4; }
 #endif
+
+/// Calls f(std::integral_constant<int, W>{}, r) for each run of W rows of [r, N), then for what is left
+/// in runs of W / 2, …, 1: a loop over N rows as whole vector runs (W = run_size<Scalar>()).
+template <int N, int W, class F>
+RBDC_HOST_DEVICE inline void for_row_runs(F&& f, int r = 0) noexcept {
+  for (; r + W <= N; r += W) f(std::integral_constant<int, W>{}, r);
+  if constexpr (W > 1 && N % W != 0) for_row_runs<N, W / 2>(f, r);
+}
 
 // clang keeps a 512-bit vector type in one register only in a function that asks for that width.
 #if defined(__clang__) && !defined(__CUDACC__) && defined(__AVX512F__)

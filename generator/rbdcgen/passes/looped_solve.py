@@ -37,7 +37,6 @@ TREE_TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_tree_
 # build for has (AVX-512 halves the loop's instructions again).
 SIMD_DOUBLES = 4
 HEADER = "rbdc_gen/solve.hpp"  # the loops
-LOW_RANK_RUN = 16  # the widest vector run of columns (16 floats): the low-rank solve starts at a multiple
 
 
 @dataclass(frozen=True)
@@ -64,8 +63,8 @@ class LoopedSolve:
     # each row-major entry is (None: zero, not stored)
     places: Tuple[Tuple[str, Tuple[Optional[int], ...]], ...] = ()
     column_order: Tuple[int, ...] = ()  # the logical column at each place of rhs (R1 and R2; empty: in order)
-    # ∂a/∂q and ∂a/∂v formed from M⁻¹ by `rnea`'s writer (a fixed-base chain: low_rank_applies), the
-    # solve then over the columns from first_solved only (the feet's)
+    # ∂a/∂q and ∂a/∂v formed from M⁻¹ by `rnea`'s writer (a fixed-base chain: low_rank_applies), and the
+    # feet's columns as M⁻¹ times them: no solve
     low_rank: bool = False
 
     def placed(self, values):
@@ -119,22 +118,24 @@ class LoopedSolve:
         return 2 * self.factor_entries
 
     @property
-    def first_solved(self):
-        """The first column the solve runs over: 0, or with `low_rank` the run of 16 that holds the
-        first column after ∂/∂q and ∂/∂v (a multiple of every vector run, so the count is the machine's
-        own); the columns before it are not solved, and neither written nor read."""
-        return 2 * self.nv // LOW_RANK_RUN * LOW_RANK_RUN if self.low_rank else 0
+    def solved_columns(self):
+        """The columns the solve runs over: all, or none with `low_rank` (its feet's columns are M⁻¹'s
+        product, feet_columns)."""
+        return 0 if self.low_rank else self.columns
 
     @property
-    def solved_columns(self):
-        return self.columns - self.first_solved
+    def feet_columns(self):
+        """With `low_rank`: the right-hand sides' columns after ∂/∂q and ∂/∂v (the feet's Jᵀ), which
+        inverse_times_columns multiplies by M⁻¹."""
+        return sum(width for _, width in self.blocks[2:]) if self.low_rank else 0
 
     def unread(self, name):
         """The entries of terms output `name` that no loop reads, so that the terms neither store nor
-        clear them: with `low_rank`, the right-hand sides' columns before first_solved."""
-        if not self.first_solved or name != self.terms[0].name:
+        clear them: with `low_rank`, every right-hand side but the feet's columns."""
+        if not self.low_rank or name != self.terms[0].name:
             return ()
-        return tuple(i for i in range(self.nv * self.columns) if i % self.columns < self.first_solved)
+        first, columns = 2 * self.nv, self.columns
+        return tuple(i for i in range(self.nv * columns) if not first <= i % columns < first + self.feet_columns)
 
     def _skipped(self, per_block):
         """Per block of `support`, per_block(columns, factor entries its L⁻ᵀ skips), summed."""
@@ -145,6 +146,7 @@ class LoopedSolve:
         """Multiplications and additions of the loops: multiply_adds() per column (less the entries
         L⁻ᵀ skips off each block's rows) and one multiplication per pivot."""
         updates = self.solved_columns * self.multiply_adds() - self._skipped(lambda width, skipped: width * skipped)
+        updates += self.nv * self.nv * self.feet_columns  # inverse_times_columns
         ops = {"mul": updates + self.solved_columns * self.nv, "add": updates}
         for part in self._parts():
             for kind, n in part.operations().items():
@@ -153,9 +155,11 @@ class LoopedSolve:
 
     def instructions(self):
         """Vector instructions of the loops (a row update over the columns, SIMD_DOUBLES at a time):
-        a load and a multiply-add per multiply-add, one per pivot."""
+        a load and a multiply-add per multiply-add, one per pivot; the low-rank form's M⁻¹Jᵀ a load
+        and a multiply-add per foot column for each column of M⁻¹ and run of rows."""
         return (-(-self.solved_columns // SIMD_DOUBLES) * (2 * self.multiply_adds() + self.nv)
                 - self._skipped(lambda width, skipped: -(-width // SIMD_DOUBLES) * 2 * skipped)
+                + (-(-self.nv // SIMD_DOUBLES) * self.nv * (1 + self.feet_columns) if self.feet_columns else 0)
                 + sum(part.instructions() for part in self._parts()))
 
     def cost(self):
@@ -164,23 +168,20 @@ class LoopedSolve:
         return self.instructions() + sum(part.cost() - part.instructions() for part in self._parts())
 
     def _tree_solve(self, target, passes=None):
-        """M⁻¹ on `target`, or one half of it (`passes`: rbdc_gen::Passes' up or down); from
-        first_solved on."""
+        """M⁻¹ on `target`, or one half of it (`passes`: rbdc_gen::Passes' up or down)."""
         which = "" if passes is None else f", Passes::{passes}"
-        if self.first_solved:
-            run = f"ColumnRun<Scalar, {self.columns}>::size"
-            which = f", Passes::both, {self.factor_entries}, {self.first_solved} / {run}"
         return [f"ltdl_solve_columns<Scalar, {self.nv}, {self.columns}{which}>(dof_tree, solve_L, solve_D_inv, {target});"]
 
     def loops(self):
         """The C++ statements after the terms: the looped CRBA and factor and the RNEA loop if any,
         solve, then copy each block into its output."""
         body = [] if self.factor is None else self.factor.loops()
-        if self.low_rank:  # M⁻¹ first: the RNEA loop's writer multiplies by it
+        if self.low_rank:  # M⁻¹ first: the RNEA loop's writer multiplies by it, and the feet's columns
+            feet = [] if not self.feet_columns else [
+                f"inverse_times_columns<Scalar, {self.nv}, {self.columns}, {2 * self.nv}, {self.feet_columns}>"
+                f"({self.taken_inverse.output}, solve_rhs, {self.blocks[2][0]});"]
             return (body + [dof_tree(self.parents)] + self.taken_inverse.loops()
-                    + self.rnea.loops(with_table=self.factor is None) + self._tree_solve("solve_rhs")
-                    + _copies(self.blocks[2:], "solve_rhs", self.nv, self.columns, first=2 * self.nv,
-                              start=self.first_solved))
+                    + self.rnea.loops(with_table=self.factor is None) + feet)
         body += [] if self.support is None else [self.support.place_table(column_support.PLACE)]
         body += [] if self.rnea is None else self.rnea.loops(with_table=self.factor is None)
         body += [dof_tree(self.parents)]
@@ -194,8 +195,9 @@ class LoopedSolve:
             return ("low-rank product: %s writes the feet's right-hand sides, crba_loop and ltdl_factor M's "
                     "factor, ltdl_inverse M⁻¹ (%d multiply-adds), rnea_derivatives_loop's per-body vectors "
                     "times M⁻¹'s columns give ∂a/∂q and ∂a/∂v (InverseTimesVectors: running sums along the "
-                    "chain, ∂τ never formed), ltdl_solve_columns solves the %d columns from %d"
-                    % (terms_name, self.inverse.comparison[0], self.solved_columns, self.first_solved))
+                    "chain, ∂τ never formed), inverse_times_columns the feet's %d columns (M⁻¹Jᵀ, %d "
+                    "multiply-adds)" % (terms_name, self.inverse.comparison[0], self.feet_columns,
+                                        self.nv * self.nv * self.feet_columns))
         factor = (" and the factor" if self.factor is None else
                   ", crba_loop and ltdl_factor M's factor over a table of the tree (the looped CRBA and factor)")
         feet = " less the feet's ∂(Jᵀf)/∂q" if self.rnea is not None and self.rnea.feet else ""
@@ -366,21 +368,20 @@ def lane_places(entries, stored=lambda e: True):
     return tuple(place)
 
 
-def _copies(blocks, source, rows, columns, order=(), first=0, start=0):
+def _copies(blocks, source, rows, columns, order=()):
     """Each block's columns of the row-major `source` into its column-major output (copy_out_columns:
-    per column of `source` from `start` on, where its rows go), the first block from column `first`;
-    with `order` (the logical column at each place), from where the order put them."""
+    per column of `source` where its rows go); with `order` (the logical column at each place), from
+    where the order put them."""
     logical = list(order) + list(range(len(order), columns))
     destination = {}
+    first = 0
     for name, width in blocks:
         for c in range(width):
             destination[first + c] = f"{name} + {rows * c}"
         first += width
     table = f"{source}_out"
-    places = ", ".join(destination.get(c, "nullptr") for c in logical[start:])
-    copy = f"copy_out_columns<Scalar, {rows}, {columns}>" if start == 0 else \
-        f"copy_out_columns<Scalar, {rows}, {columns}, {start}>"
-    return [f"Scalar* const {table}[{columns - start}] = {{{places}}};", f"{copy}({source}, {table});"]
+    return [f"Scalar* const {table}[{columns}] = {{{', '.join(destination.get(c, 'nullptr') for c in logical)}}};",
+            f"copy_out_columns<Scalar, {rows}, {columns}>({source}, {table});"]
 
 
 def has_looped_form(robot, name):
