@@ -18,125 +18,12 @@
 
 namespace rbdc_gen {
 
-/// Whether a writer takes the loop's per-body vectors instead of its entries (InverseTimesVectors).
+/// Whether a writer takes the loop's per-body vectors instead of its entries (InverseTimesVectors,
+/// rbdc_gen/low_rank.hpp).
 template <class Out, class = void>
 struct TakesVectors : std::false_type {};
 template <class Out>
 struct TakesVectors<Out, std::void_t<decltype(Out::kTakesVectors)>> : std::bool_constant<Out::kTakesVectors> {};
-
-/// ∂a/∂q = −M⁻¹ (∂τ/∂q − ∂(Jᵀf)/∂q) and ∂a/∂v = −M⁻¹ ∂τ/∂v (forward_dynamics_derivatives) of a
-/// fixed-base chain, from M⁻¹ and the per-body vectors of rnea_derivatives_loop, without forming ∂τ
-/// or solving for its columns. Both are low-rank by blocks: entry (i, j) is A_i·C_j for i in j's
-/// subtree and S_i·G_j for i an ancestor of j (the loop's formulas, with A = (ρ^I, ρ^B), C = (c, u)
-/// or (2u, S), G or D; the feet's ∂(Jᵀf)/∂q adds χ_i·ω_j and ω_i·χ_j, ω each dof's world axis and
-/// χ = Σ_k J_k × f_k). On a chain a body's subtree is every body after it and its ancestors every
-/// body before it, so column j of M⁻¹∂τ is T_j C_j + R_j G_j with the running sums
-/// T_j = Σ_{i ≥ j} M⁻¹_{:,i} A_iᵀ and R_j = Σ_{i < j} M⁻¹_{:,i} S_iᵀ: 66 NV² multiply-adds in all,
-/// where solving the 2 NV columns takes 2 NV per factor entry (passes/looped_solve.low_rank_applies).
-/// Minv column-major NV × NV; axis and moment NV × 3 row-major, null without feet.
-template <class Scalar, int NV>
-struct InverseTimesVectors {
-  static constexpr bool kTakesVectors = true;
-  const Scalar* Minv;
-  const Scalar* axis;
-  const Scalar* moment;
-  Scalar* da_dq;
-  Scalar* da_dv;
-
-  // The entry writers' members, for the code after rnea_derivatives_loop's return: never called.
-  template <int NB>
-  RBDC_HOST_DEVICE void clear(const BodyTree<NB>&) const noexcept {}
-  RBDC_HOST_DEVICE void q(int, int, const Scalar&) const noexcept {}
-  RBDC_HOST_DEVICE void v(int, int, const Scalar&) const noexcept {}
-  template <int NB>
-  RBDC_HOST_DEVICE void subtree(const BodyTree<NB>&, int, const Scalar*, const Scalar*, const Scalar*,
-                                const Scalar*) const noexcept {}
-
-  template <int NB, int NP>
-  RBDC_HOST_DEVICE void vectors(const BodyTree<NB>& tree, const Scalar (*S)[NP], const Scalar (*C)[NP],
-                                const Scalar (*U)[NP], const Scalar (*rows_I)[NP], const Scalar (*rows_B)[NP],
-                                const Scalar (*columns_G)[NP], const Scalar (*columns_D)[NP]) const noexcept {
-    // Each body's factors, gathered once for every run of rows below: down = (A, C for ∂q, C for ∂v),
-    // up = (G for ∂q, D for ∂v, S), signed as −M⁻¹ takes them.
-    Scalar down[NB][kDown], up[NB][kUp];
-    const auto feet = [&](const Scalar* x, int d, int k) { return x == nullptr ? Scalar(0) : x[3 * d + k]; };
-    for (int b = 1; b < NB; ++b) {
-      const int d = tree.dof[b];
-      Scalar* a = down[b];
-      Scalar* cq = a + NA;
-      Scalar* cv = cq + NA;
-      Scalar* g = up[b];
-      Scalar* e = g + NS;
-      Scalar* s = e + 6;
-      for (int k = 0; k < 6; ++k) {
-        a[k] = rows_I[k][b];
-        a[6 + k] = rows_B[k][b];
-        cq[k] = -C[k][b];
-        cq[6 + k] = -U[k][b];
-        cv[k] = Scalar(-2) * U[k][b];
-        cv[6 + k] = -S[k][b];
-        g[k] = -columns_G[k][b];
-        e[k] = -columns_D[k][b];
-        s[k] = S[k][b];
-      }
-      for (int k = 0; k < 3; ++k) {
-        a[12 + k] = feet(moment, d, k);
-        cq[12 + k] = feet(axis, d, k);
-        g[6 + k] = feet(moment, d, k);
-        s[6 + k] = feet(axis, d, k);
-      }
-    }
-    for_row_runs<NV, run_size<Scalar>()>([&](auto width, int r0) { rows<decltype(width)::value>(tree, r0, down, up); });
-  }
-
- private:
-  static constexpr int NA = 15;              // A: ρ^I, ρ^B, χ
-  static constexpr int NS = 9;               // S: S, ω
-  static constexpr int kDown = 2 * NA + 12;  // A, C for ∂q, C for ∂v
-  static constexpr int kUp = 2 * NS + 6;     // G for ∂q, D for ∂v, S
-
-  /// Rows [r0, r0 + W) of ∂a/∂q and ∂a/∂v: the running sums' rows stay in registers through both
-  /// walks along the chain (a 100-link chain's ∂q̈ spent 29 µs of 103 here when they were NV rows in
-  /// memory, read and written for every body; now 13.5).
-  template <int W, int NB>
-  RBDC_WIDE_RUNS RBDC_HOST_DEVICE void rows(const BodyTree<NB>& tree, int r0, const Scalar (*down)[kDown],
-                                            const Scalar (*up)[kUp]) const noexcept {
-    using R = Run<Scalar, W>;
-    using V = typename R::type;
-    V T[NA];
-    for (int c = 0; c < NA; ++c) T[c] = R::zero();
-    for (int b = NB - 1; b >= 1; --b) {  // from the tip: T_j, then column j's A·C parts
-      const int d = tree.dof[b];
-      const Scalar* a = down[b];
-      const Scalar* cq = a + NA;
-      const Scalar* cv = cq + NA;
-      const V m = R::load(Minv + d * NV + r0);
-      for (int c = 0; c < NA; ++c) T[c] = T[c] + a[c] * m;
-      V q = T[0] * cq[0], v = T[0] * cv[0];
-      for (int c = 1; c < NA; ++c) q = q + T[c] * cq[c];
-      for (int c = 1; c < 12; ++c) v = v + T[c] * cv[c];
-      R::store(da_dq + d * NV + r0, q);
-      R::store(da_dv + d * NV + r0, v);
-    }
-    V Rs[NS];
-    for (int c = 0; c < NS; ++c) Rs[c] = R::zero();
-    for (int b = 1; b < NB; ++b) {  // from the root: column j's S·G parts, then R_{j+1}
-      const int d = tree.dof[b];
-      const Scalar* g = up[b];
-      const Scalar* e = g + NS;
-      const Scalar* s = e + 6;
-      if (b > 1) {
-        V q = Rs[0] * g[0], v = Rs[0] * e[0];
-        for (int c = 1; c < NS; ++c) q = q + Rs[c] * g[c];
-        for (int c = 1; c < 6; ++c) v = v + Rs[c] * e[c];
-        R::store(da_dq + d * NV + r0, R::load(da_dq + d * NV + r0) + q);
-        R::store(da_dv + d * NV + r0, R::load(da_dv + d * NV + r0) + v);
-      }
-      const V m = R::load(Minv + d * NV + r0);
-      for (int c = 0; c < NS; ++c) Rs[c] = Rs[c] + s[c] * m;
-    }
-  }
-};
 
 /// Body j's entries with its subtree i = j … end[j] − 1 through a writer's q and v, entry by entry:
 /// rows i of column j (q_row[i], v_row[i]) and, below the diagonal, row j of columns i (q_column[i],

@@ -31,11 +31,11 @@ BATCH_HEADER = "rbdc_gen/batch.hpp"  # SIMD packs of states (docs/performance.md
 LANES_HEADER = "rbdc_gen/lanes.hpp"  # one SIMD lane per limb, for the lane functions only
 # The loops' library headers (a looped form's `solve.headers`), each rendered from its template where
 # some function of the scene includes it: looped solves, factors and M⁻¹'s rows, the tree loops' shared ground,
-# the CRBA, the RNEA's derivatives and the operational-space columns as loops.
+# the CRBA, the RNEA's derivatives and the operational-space columns as loops, the low-rank ∂q̈.
 LOOP_HEADERS = {"rbdc_gen/solve.hpp": "solve.hpp.j2", "rbdc_gen/factor.hpp": "factor.hpp.j2",
                 "rbdc_gen/body_tree.hpp": "body_tree.hpp.j2",
                 "rbdc_gen/crba.hpp": "crba.hpp.j2", "rbdc_gen/rnea_derivatives.hpp": "rnea_derivatives.hpp.j2",
-                "rbdc_gen/osc.hpp": "osc.hpp.j2"}
+                "rbdc_gen/osc.hpp": "osc.hpp.j2", "rbdc_gen/low_rank.hpp": "low_rank.hpp.j2"}
 
 # The Eigen type aliases of docs/generated_api.md: name, rows, cols (as C++ expressions), doc.
 ALIASES = (

@@ -37,6 +37,7 @@ TREE_TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_tree_
 # build for has (AVX-512 halves the loop's instructions again).
 SIMD_DOUBLES = 4
 HEADER = "rbdc_gen/solve.hpp"  # the loops
+LOW_RANK_HEADER = "rbdc_gen/low_rank.hpp"  # InverseTimesVectors, inverse_times_columns
 
 
 @dataclass(frozen=True)
@@ -93,7 +94,8 @@ class LoopedSolve:
 
     @property
     def headers(self):
-        return tuple(dict.fromkeys((HEADER,) + tuple(h for part in self._parts() for h in part.headers)))
+        low_rank = (LOW_RANK_HEADER,) if self.low_rank else ()
+        return tuple(dict.fromkeys((HEADER,) + tuple(h for part in self._parts() for h in part.headers) + low_rank))
 
     @property
     def nv(self):
