@@ -36,9 +36,11 @@ class LoopedInverse:
     headers = (FACTOR_HEADER,)
 
     def _blocks(self):
-        """Per block of BLOCK_COLUMNS columns: the rows before its end (the rows its passes run over)."""
+        """Per block of BLOCK_COLUMNS columns: the rows before its last dof's (the rows its passes run
+        over), the padding columns in the first block."""
         n = len(self.parents)
-        return [min(c0 + BLOCK_COLUMNS, n) for c0 in range(0, n, BLOCK_COLUMNS)]
+        padding = -n % BLOCK_COLUMNS
+        return [c1 - padding for c1 in range(BLOCK_COLUMNS, n + padding + 1, BLOCK_COLUMNS)]
 
     def _tiles(self, rows):
         """M⁻¹'s rows before `rows` as ltdl_inverse sums them, last first: (top row, size), each tile
