@@ -35,7 +35,8 @@ LANES_HEADER = "rbdc_gen/lanes.hpp"  # one SIMD lane per limb, for the lane func
 LOOP_HEADERS = {"rbdc_gen/solve.hpp": "solve.hpp.j2", "rbdc_gen/factor.hpp": "factor.hpp.j2",
                 "rbdc_gen/body_tree.hpp": "body_tree.hpp.j2",
                 "rbdc_gen/crba.hpp": "crba.hpp.j2", "rbdc_gen/rnea_derivatives.hpp": "rnea_derivatives.hpp.j2",
-                "rbdc_gen/osc.hpp": "osc.hpp.j2", "rbdc_gen/low_rank.hpp": "low_rank.hpp.j2"}
+                "rbdc_gen/osc.hpp": "osc.hpp.j2", "rbdc_gen/low_rank.hpp": "low_rank.hpp.j2",
+                "rbdc_gen/articulated_inverse.hpp": "articulated_inverse.hpp.j2"}
 
 # The Eigen type aliases of docs/generated_api.md: name, rows, cols (as C++ expressions), doc.
 ALIASES = (

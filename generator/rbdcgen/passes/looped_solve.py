@@ -19,7 +19,7 @@ from ..algorithms.contact_dynamics import PROXIMAL_STEPS
 from ..algorithms.crba import depth_first_order
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
 from ..graph import expr as ex
-from . import (body_tree, column_support, differentiate, lane_contact_derivatives, lane_derivatives, looped_crba,
+from . import (articulated_inverse, body_tree, column_support, differentiate, lane_contact_derivatives, lane_derivatives, looped_crba,
                looped_inverse, looped_rnea_derivatives)
 from .column_support import ColumnSupport
 from .looped_inverse import LoopedInverse
@@ -50,7 +50,8 @@ class LoopedSolve:
     entries); `factor`: the looped CRBA and factor (a
     looped_factor.LoopedFactor, packed) that write solve_L and solve_D_inv first, if the terms do not;
     `inverse`: ∂a/∂τ as M⁻¹'s rows (looped_inverse.py) where that is possible, taken where it pays (B
-    then leaves Sᵀ out), its counts in the banner either way; `support`: B's columns sorted so that
+    then leaves Sᵀ out), its counts in the banner either way, or with `low_rank` M⁻¹ whole by the
+    articulated-body recursion (articulated_inverse.py), the factor then not formed; `support`: B's columns sorted so that
     each block's L⁻ᵀ runs over its columns' non-zero rows only (column_support.py), B then in its
     `order`."""
     parents: Tuple[int, ...]
@@ -58,7 +59,7 @@ class LoopedSolve:
     terms: Tuple[Argument, ...]
     rnea: Optional[LoopedRneaDerivatives] = None
     factor: object = None
-    inverse: Optional[LoopedInverse] = None
+    inverse: Optional[LoopedInverse | articulated_inverse.ArticulatedInverse] = None
     support: Optional[ColumnSupport] = None
     # per terms output whose entries a lane function keeps elsewhere than row-major (lane_places): where
     # each row-major entry is (None: zero, not stored)
@@ -178,12 +179,11 @@ class LoopedSolve:
         """The C++ statements after the terms: the looped CRBA and factor and the RNEA loop if any,
         solve, then copy each block into its output."""
         body = [] if self.factor is None else self.factor.loops()
-        if self.low_rank:  # M⁻¹ first: the RNEA loop's writer multiplies by it, and the feet's columns
+        if self.low_rank:  # M⁻¹ first (with the tree's table): the RNEA loop's writer multiplies by it, and the feet's columns
             feet = [] if not self.feet_columns else [
                 f"inverse_times_columns<Scalar, {self.nv}, {self.columns}, {2 * self.nv}, {self.feet_columns}>"
                 f"({self.taken_inverse.output}, solve_rhs, {self.blocks[2][0]});"]
-            return (body + [dof_tree(self.parents)] + self.taken_inverse.loops()
-                    + self.rnea.loops(with_table=self.factor is None) + feet)
+            return self.taken_inverse.loops() + self.rnea.loops(with_table=False) + feet
         body += [] if self.support is None else [self.support.place_table(column_support.PLACE)]
         body += [] if self.rnea is None else self.rnea.loops(with_table=self.factor is None)
         body += [dof_tree(self.parents)]
@@ -194,11 +194,12 @@ class LoopedSolve:
 
     def emission(self, terms_name):
         if self.low_rank:
-            return ("low-rank product: %s writes the feet's right-hand sides, crba_loop and ltdl_factor M's "
-                    "factor, ltdl_inverse M⁻¹ (%d multiply-adds), rnea_derivatives_loop's per-body vectors "
-                    "times M⁻¹'s columns give ∂a/∂q and ∂a/∂v (InverseTimesVectors: running sums along the "
-                    "chain, ∂τ never formed), inverse_times_columns the feet's %d columns (M⁻¹Jᵀ, %d "
-                    "multiply-adds)" % (terms_name, self.inverse.comparison[0], self.feet_columns,
+            return ("low-rank product: %s writes the bodies' transforms and the feet's right-hand sides, "
+                    "articulated_inverse M⁻¹ by the articulated-body recursion (%d multiplications, where the "
+                    "looped CRBA, ltdl_factor and ltdl_inverse would take %d), rnea_derivatives_loop's per-body "
+                    "vectors times M⁻¹'s columns give ∂a/∂q and ∂a/∂v (InverseTimesVectors: running sums "
+                    "along the chain, ∂τ never formed), inverse_times_columns the feet's %d columns (M⁻¹Jᵀ, %d "
+                    "multiply-adds)" % (terms_name, *self.inverse.comparison, self.feet_columns,
                                         self.nv * self.nv * self.feet_columns))
         factor = (" and the factor" if self.factor is None else
                   ", crba_loop and ltdl_factor M's factor over a table of the tree (the looped CRBA and factor)")
@@ -462,8 +463,11 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False, low_ran
             subtract, support, order, places = (
                 looped_rnea_derivatives.inverse_times_vectors(robot, terms.outputs, bool(scene.feet_for(robot))),
                 None, (), ())
+            by_factor = packed.operations()["mul"] + inverse.operations()["mul"]
+            inverse = articulated_inverse.ArticulatedInverse(robot=robot)
+            inverse = replace(inverse, comparison=(inverse.operations()["mul"], by_factor))
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs,
-                            rnea=subtract if rnea else None, factor=packed if factor else None,
+                            rnea=subtract if rnea else None, factor=packed if factor and not low_rank else None,
                             inverse=inverse, support=support, column_order=order, places=places,
                             low_rank=low_rank)
         assert [a.name for a in outputs] == list(differentiate.FORWARD_DYNAMICS_COLUMNS)

@@ -69,7 +69,7 @@ class LoopedRneaDerivatives(unittest.TestCase):
         for form in ("scalar tree", "looped solve", "looped RNEA derivatives"):
             self.assertIn(form + " not traced", large.schedule)
         self.assertIsNotNone(large.solve.rnea)
-        self.assertIsNotNone(large.solve.factor)
+        self.assertIsNone(large.solve.factor)  # M⁻¹ by the articulated-body recursion: no factor
 
     def test_the_loops_code_counts_against_the_front_end(self):
         """A 9-link chain's ∂a, as Panda's: the loop's own code (looped.CODE) with the traced part
