@@ -177,11 +177,18 @@ def free_acceleration(m):
     return _solve_with_torques(m, bias(m))
 
 
+def torques_minus(m, h):
+    """Sᵀτ − h for the generalised forces h, trunk then joints in body order (the unactuated trunk:
+    Sᵀτ has zeros there)."""
+    robot = m.robot
+    return ([-b for b in h[:robot.root_dofs]]
+            + [m.tau[i - 1] - h[robot.joints[i].v_index] for i in range(1, robot.nb)])
+
+
 def _solve_with_torques(m, h):
     """M⁻¹(Sᵀτ − h) for the generalised forces h."""
     robot = m.robot
-    rhs = [-b for b in h[:robot.root_dofs]]         # unactuated trunk: Sᵀτ has zeros there
-    rhs += [m.tau[i - 1] - h[robot.joints[i].v_index] for i in range(1, robot.nb)]
+    rhs = torques_minus(m, h)
     parents = dof_parents(robot)
     L, inv_diag = mass_matrix_factor(m)
     m.mark("solve LᵀDL a = τ + τ_e − c − g")

@@ -15,13 +15,15 @@ HEADER = "rbdc_gen/articulated_inverse.hpp"
 SYMMETRIC_APPLY = (36, 30)  # P S, P a symmetric 6 × 6
 OUTER = (21, 21)            # P + U wᵀ, its upper triangle
 BELOW = (13, 11)            # a column below the body, leaves first: Sᵀ p^A, D⁻¹ u, p^A + U m
+FORCE_BELOW = (13, 12)      # the force's column there: u = f − Sᵀ p^A
 ABOVE = (6, 6)              # a column from the body on, root first: m − wᵀ a, or a + S q̈
 
 
 @dataclass(frozen=True)
 class ArticulatedInverse:
     """articulated_inverse writing M⁻¹ whole (column-major nv × nv) into `output`, the same array
-    looped_inverse.LoopedInverse would write (∂a/∂τ), so that the low-rank product reads it alike;
+    looped_inverse.LoopedInverse would write (∂a/∂τ), so that the low-rank product reads it alike,
+    and a = M⁻¹r into solve_a from the terms' r (Sᵀτ + Jᵀf − c − g);
     `comparison`: (its multiply-adds, those of the looped CRBA, factor and Zᵀ D⁻¹ Z), for the banner."""
     robot: object
     comparison: Tuple[int, int] = (0, 0)
@@ -40,11 +42,14 @@ class ArticulatedInverse:
             inner = i < nb - 1
             bodies += [APPLY, PROJECTION, (6, 1)]  # U, Sᵀ U + armature, w = D⁻¹ U
             bodies += [ACCUMULATE, SYMMETRIC_APPLY, (0, 6), OUTER] if inner else [(OUTER[0], 0)]
+            bodies += [FORCE_BELOW] if inner else [(FORCE_BELOW[0] - PROJECTION[0], 0)]  # the force's column
             columns += [BELOW] * (nv - i)  # the columns after the body's own
         for i in range(2, nb):  # root first: the first body's columns need no wᵀ a, the last body's no a
             columns += [ABOVE] * (nv - i + 1)
             columns += [ABOVE] * (nv - i) if i < nb - 1 else []
+            bodies += [ABOVE] + ([ABOVE] if i < nb - 1 else [])  # the force's column
         columns += [(ABOVE[0], 0)] * (nv - 1) if nb > 2 else []
+        bodies += [(ABOVE[0], 0)] if nb > 2 else []
         return bodies, columns
 
     def operations(self):
@@ -67,6 +72,6 @@ class ArticulatedInverse:
         return body_tree.LOOP_WEIGHT * self.instructions()
 
     def loops(self):
-        """The tree's table, then the loop (the low-rank product's RNEA loop reads the same table)."""
-        return [body_tree.table(self.robot),
-                f"articulated_inverse<Scalar, {self.robot.nb}, {self.robot.nv}>(tree, solve_X, {self.output});"]
+        """The tree's table, then the loop (the low-rank product's RNEA loop reads the same table and a)."""
+        return [body_tree.table(self.robot), f"alignas(64) Scalar solve_a[{self.robot.nv}];",
+                f"articulated_inverse<Scalar, {self.robot.nb}, {self.robot.nv}>(tree, solve_X, solve_r, {self.output}, solve_a);"]

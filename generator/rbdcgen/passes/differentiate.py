@@ -324,7 +324,7 @@ def forward_dynamics_derivatives(m):
                            fd.forward_dynamics(m))
 
 
-def forward_dynamics_derivative_terms(m, looped_rnea=False, looped_factor=False):
+def forward_dynamics_derivative_terms(m, looped_rnea=False, looped_factor=False, low_rank=False):
     """What forward_dynamics_derivatives solves, unsolved (passes/looped_solve.py solves it in a
     loop): `rhs`, the right-hand sides side by side, row-major (nv × columns, in the order of
     FORWARD_DYNAMICS_COLUMNS, each row zero-padded to `padded` columns; without Sᵀ where ∂a/∂τ is
@@ -332,7 +332,10 @@ def forward_dynamics_derivative_terms(m, looped_rnea=False, looped_factor=False)
     at each dof's tree ancestors (dof by dof, nearest ancestor first); `D_inv`, its inverse pivots.
     With `looped_rnea`, the RNEA's part of rhs left to its loop, which reads the bodies' transforms
     `X`, gravity `g` and the acceleration `a`; with `looped_factor` also M's factor (the looped CRBA
-    and factor), and a by the articulated-body algorithm (O(n))."""
+    and factor), and a by the articulated-body algorithm (O(n)); with `low_rank` (a fixed-base chain,
+    dofs in body order), instead of a, `r` = Sᵀτ + Jᵀf − c − g, which the loop forming M⁻¹ takes to
+    a = M⁻¹r (articulated_inverse.py): one RNEA pass traced where the articulated-body algorithm took
+    three."""
     nv = m.robot.nv
     columns = _forward_dynamics_columns(m, looped_rnea)
     solved = [name for name in FORWARD_DYNAMICS_COLUMNS
@@ -347,6 +350,9 @@ def forward_dynamics_derivative_terms(m, looped_rnea=False, looped_factor=False)
         terms.update(transforms_and_gravity(m), a=m.a)
         if m.feet:
             terms.update(feet_force_derivatives.axes_and_moments(m))
+    if low_rank:
+        del terms["a"]
+        return {**terms, "r": fd.torques_minus(m, rnea.bias_minus_external(m))}
     return replace_symbols(terms, m.a, aba.forward_dynamics_aba(m) if looped_factor else fd.forward_dynamics(m))
 
 
@@ -543,6 +549,14 @@ def spec(robot, nf, nc):
              ("g", 3, 1, "gravity in the root's coordinates"),
              ("a", nv, 1, "the forward dynamics' a (articulated-body algorithm)")] + looped_feet,
             lambda m: forward_dynamics_derivative_terms(m, looped_rnea=True, looped_factor=True)),
+        "forward_dynamics_derivative_chain_terms": (
+            "The traced part of forward_dynamics_derivatives in its low-rank form (passes/looped_solve.py).",
+            ("q", "v", "tau", "f"),
+            [("rhs", nv, padded(solved), "right-hand sides without the RNEA's part, row-major"),
+             ("X", 12, robot.nb - 1, "each body's transform (the body_transforms function's X)"),
+             ("g", 3, 1, "gravity in the root's coordinates"),
+             ("r", nv, 1, "Sᵀτ + Jᵀf − c − g, which M⁻¹ takes to a")] + looped_feet,
+            lambda m: forward_dynamics_derivative_terms(m, looped_rnea=True, looped_factor=True, low_rank=True)),
         "feet_velocity_derivatives": (
             "Derivative of the world foot velocities at fixed v.", ("q", "v"),
             [("dpdot_dq", 3 * nf, nv, "∂ṗ/∂q, rows 3k + r: foot k, world axis r" + on_q)],

@@ -33,6 +33,7 @@ TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_terms",
 # factor is as well (the looped CRBA and factor: looped_crba.py, looped_factor.py).
 LOOP_TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_loop_terms"}
 TREE_TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_tree_terms"}
+LOW_RANK_TERMS = {"forward_dynamics_derivatives": "forward_dynamics_derivative_chain_terms"}
 # Doubles per vector instruction the cost model assumes: AVX2, the widest every x86-64 machine we
 # build for has (AVX-512 halves the loop's instructions again).
 SIMD_DOUBLES = 4
@@ -396,10 +397,11 @@ def has_looped_form(robot, name):
 
 def looped_function(robot, scene, name, terms_name=None, rnea=False, factor=False, low_rank=False):
     """`name` in its looped form: the traced terms (function TERMS[name]; with `rnea` LOOP_TERMS[name],
-    with `factor` (or `low_rank`) too TREE_TERMS[name]; or `terms_name`, the lane function of one of
-    them), with the loops as a LoopedSolve."""
+    with `factor` too TREE_TERMS[name], with `low_rank` LOW_RANK_TERMS[name]; or `terms_name`, the lane
+    function of one of them), with the loops as a LoopedSolve."""
+    terms_name = terms_name or (LOW_RANK_TERMS[name] if low_rank else TREE_TERMS[name] if factor
+                                else LOOP_TERMS[name] if rnea else TERMS[name])
     factor = factor or low_rank
-    terms_name = terms_name or (TREE_TERMS[name] if factor else LOOP_TERMS[name] if rnea else TERMS[name])
     function = with_loop(robot, scene, name, terms_name,
                          lambda terms, outputs: _solve(robot, scene, name, terms, outputs, rnea or factor, factor,
                                                        low_rank))
