@@ -540,23 +540,19 @@ def spec(robot, nf, nc):
              ("g", 3, 1, "gravity in the root's coordinates"), ("a", nv, 1, "the forward dynamics' a")]
             + looped_feet,
             lambda m: forward_dynamics_derivative_terms(m, looped_rnea=True)),
-        "forward_dynamics_derivative_tree_terms": (
-            "The traced part of forward_dynamics_derivatives in its looped form with the looped CRBA, "
-            "factor and RNEA derivatives (passes/looped_solve.py).",
-            ("q", "v", "tau", "f"),
-            [("rhs", nv, padded(solved), "right-hand sides without the RNEA's part, row-major"),
-             ("X", 12, robot.nb - 1, "each body's transform (the body_transforms function's X)"),
-             ("g", 3, 1, "gravity in the root's coordinates"),
-             ("a", nv, 1, "the forward dynamics' a (articulated-body algorithm)")] + looped_feet,
-            lambda m: forward_dynamics_derivative_terms(m, looped_rnea=True, looped_factor=True)),
-        "forward_dynamics_derivative_chain_terms": (
-            "The traced part of forward_dynamics_derivatives in its low-rank form (passes/looped_solve.py).",
-            ("q", "v", "tau", "f"),
-            [("rhs", nv, padded(solved), "right-hand sides without the RNEA's part, row-major"),
-             ("X", 12, robot.nb - 1, "each body's transform (the body_transforms function's X)"),
-             ("g", 3, 1, "gravity in the root's coordinates"),
-             ("r", nv, 1, "Sᵀτ + Jᵀf − c − g, which M⁻¹ takes to a")] + looped_feet,
-            lambda m: forward_dynamics_derivative_terms(m, looped_rnea=True, looped_factor=True, low_rank=True)),
+        **{name: ("The traced part of forward_dynamics_derivatives in its %s (passes/looped_solve.py)." % form,
+                  ("q", "v", "tau", "f"),
+                  [("rhs", nv, padded(solved), "right-hand sides without the RNEA's part, row-major"),
+                   ("X", 12, robot.nb - 1, "each body's transform (the body_transforms function's X)"),
+                   ("g", 3, 1, "gravity in the root's coordinates"), last] + looped_feet,
+                  lambda m, low_rank=low_rank: forward_dynamics_derivative_terms(m, looped_rnea=True, looped_factor=True,
+                                                                                  low_rank=low_rank))
+           for name, form, last, low_rank in (
+               ("forward_dynamics_derivative_tree_terms",
+                "looped form with the looped CRBA, factor and RNEA derivatives",
+                ("a", nv, 1, "the forward dynamics' a (articulated-body algorithm)"), False),
+               ("forward_dynamics_derivative_chain_terms", "low-rank form",
+                ("r", nv, 1, "Sᵀτ + Jᵀf − c − g, which M⁻¹ takes to a"), True))},
         "feet_velocity_derivatives": (
             "Derivative of the world foot velocities at fixed v.", ("q", "v"),
             [("dpdot_dq", 3 * nf, nv, "∂ṗ/∂q, rows 3k + r: foot k, world axis r" + on_q)],
