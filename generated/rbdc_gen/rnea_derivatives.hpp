@@ -22,6 +22,11 @@ namespace rbdc_gen {
 /// rbdc_gen/low_rank.hpp).
 template <class Out, class = void>
 struct TakesVectors : std::false_type {};
+/// Whether a writer takes a chain's entries above the diagonal column by column (above()).
+template <class Out, class = void>
+struct ColumnsAbove : std::false_type {};
+template <class Out>
+struct ColumnsAbove<Out, std::void_t<decltype(Out::kColumnsAbove)>> : std::bool_constant<Out::kColumnsAbove> {};
 template <class Out>
 struct TakesVectors<Out, std::void_t<decltype(Out::kTakesVectors)>> : std::bool_constant<Out::kTakesVectors> {};
 
@@ -47,8 +52,18 @@ RBDC_HOST_DEVICE RBDC_ALWAYS_INLINE void write_subtree(const Out& out, const Bod
 /// ∂τ/∂q and ∂τ/∂v written whole, column-major NV × NV; dv may be null (gravity_derivatives).
 template <class Scalar, int NV>
 struct DenseDerivatives {
+  static constexpr bool kColumnsAbove = true;
   Scalar* dq;
   Scalar* dv;
+  /// On a chain: body i's column above its diagonal, rows of bodies 1 … i − 1 (ancestor j's entry
+  /// S_j·G_i, S_j·D_i at j), contiguous where the subtree's row would be strided.
+  template <int NB>
+  RBDC_HOST_DEVICE void above(const BodyTree<NB>& tree, int i, const Scalar* q_above, const Scalar* v_above) const noexcept {
+    const int di = tree.dof[i], shift = tree.dof[1] - 1;
+    for (int j = 1; j < i; ++j) dq[di * NV + j + shift] = q_above[j];
+    if (v_above != nullptr)
+      for (int j = 1; j < i; ++j) dv[di * NV + j + shift] = v_above[j];
+  }
   /// Every entry the loop does not write (tree_detail::clear_unwritten), and ∂τ/∂q's columns of the
   /// trunk's position, which it never writes (zero: moving the whole robot leaves τ alone), cleared
   /// with the root's other columns.
@@ -61,6 +76,14 @@ struct DenseDerivatives {
   }
   RBDC_HOST_DEVICE void q(int row, int col, const Scalar& value) const noexcept { dq[col * NV + row] = value; }
   RBDC_HOST_DEVICE void v(int row, int col, const Scalar& value) const noexcept { dv[col * NV + row] = value; }
+  /// A chain's body j's column from its diagonal down (above() has the rest).
+  template <int NB>
+  RBDC_HOST_DEVICE void rows(const BodyTree<NB>& tree, int j, const Scalar* q_row, const Scalar* v_row) const noexcept {
+    const int dj = tree.dof[j], shift = dj - j;
+    for (int i = j; i < NB; ++i) dq[dj * NV + i + shift] = q_row[i];
+    if (v_row != nullptr)
+      for (int i = j; i < NB; ++i) dv[dj * NV + i + shift] = v_row[i];
+  }
   /// Body j's subtree (rbdc_gen::write_subtree): with depth-first dofs its column's run is contiguous,
   /// copied as a vector when long (tree_detail::kLongRun).
   template <int NB>
@@ -422,6 +445,7 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
   // Body j with its subtree i = j … end[j] − 1, SIMD along i: row i's entries in column j
   // (ρ_i·c_j + …) and, below the diagonal, column i's in row j (S_j·G_i, S_j·D_i).
   Scalar q_row[NP], v_row[NP], q_column[NP], v_column[NP];
+  constexpr bool kByColumns = ColumnsAbove<Out>::value && !kFeet;
   for (int j = 1; j < NB; ++j) {
     Scalar c[6], u[6] = {}, s[6];
     load(C, j, c);
@@ -433,6 +457,21 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
     if constexpr (kFeet)
       for (int k = 0; k < 3; ++k) axis[k] = feet.axis[3 * tree.dof[j] + k];
     const int first = j / kBlock * kBlock;
+    if constexpr (kByColumns) if (tree.chain) {  // the rows only; the columns below, column by column
+      RBDC_SCALAR_LOOP
+      for (int block = first; block < tree.end[j]; block += kBlock)
+        for (int i = block; i < block + kBlock; ++i) {
+          const Scalar cI = dot(c, rows_I, i);
+          if (Velocity) {
+            q_row[i] = cI + dot(u, rows_B, i);
+            v_row[i] = Scalar(2) * dot(u, rows_I, i) + dot(s, rows_B, i);
+          } else {
+            q_row[i] = cI;
+          }
+        }
+      out.rows(tree, j, q_row, Velocity ? v_row : nullptr);
+      continue;
+    }
     RBDC_SCALAR_LOOP  // the block, not the loop over blocks, is the vector
     for (int block = first; block < tree.end[j]; block += kBlock)
       for (int i = block; i < block + kBlock; ++i) {
@@ -453,6 +492,20 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
       }
     out.subtree(tree, j, q_row, Velocity ? v_row : nullptr, q_column, Velocity ? v_column : nullptr);
   }
+  if constexpr (kByColumns)
+    if (tree.chain)
+      for (int i = 2; i < NB; ++i) {  // body i's column above the diagonal: S_j·G_i, S_j·D_i for j = 1 … i − 1
+        Scalar G[6], D[6];
+        load(columns_G, i, G);
+        load(columns_D, i, D);
+        RBDC_SCALAR_LOOP
+        for (int block = 0; block < i; block += kBlock)
+          for (int j = block; j < block + kBlock; ++j) {
+            q_column[j] = dot(G, S, j);
+            if (Velocity) v_column[j] = dot(D, S, j);
+          }
+        out.above(tree, i, q_column, Velocity ? v_column : nullptr);
+      }
   if (Floating) {  // the trunk's block: I^C₀ c_k, and B^C₀ e_k + I^C₀ shift_k
     const CompositeInertia<Scalar> I = load_inertia(inertia, 0);
     for (int k = 0; k < 3; ++k) {

@@ -7,11 +7,11 @@
 // gravity_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   arm7/common/gravity_derivatives_a80b4c817184.hpp
+//   arm7/common/gravity_derivatives_3ecb956adc47.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/gravity_derivatives_a80b4c817184.hpp"
+#include "arm7/common/gravity_derivatives_3ecb956adc47.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::arm7::derivatives {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             147   86    0     0    10    5    248
 /// schedule: scalar tree: 248 arithmetic instructions (critical path 75 cycles, cost 436), looped
-///   RNEA derivatives 1940 (path 75, cost 2895)
-using ::rbdc_gen::arm7::common::gravity_derivatives_a80b4c817184::gravity_derivatives;
+///   RNEA derivatives 1928 (path 75, cost 2878)
+using ::rbdc_gen::arm7::common::gravity_derivatives_3ecb956adc47::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

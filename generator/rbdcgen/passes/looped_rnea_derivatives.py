@@ -17,6 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar, Tuple
 
+from ..algorithms.crba import depth_first_order
 from ..views.coupled import tree_view, velocity_columns
 from . import body_tree
 from .body_tree import (ACCUMULATE, APPLY, CROSS, SPATIAL_CROSS, STEP_OVERHEAD,
@@ -35,6 +36,8 @@ INERTIA_RATE = (43, 38)   # İ = v ×* I − I v×
 MASSLESS_ACCUMULATE = (0, 9)
 SUBTREE_LANE = (37, 32)   # per descendant of a body: its row's two entries and its column's two
 SUBTREE_LANE_AT_REST = (12, 10)  # without velocity: one each
+COLUMN_LANE = (12, 10)    # the column's two entries alone (a chain's written by columns, columns_above)
+COLUMN_LANE_AT_REST = (6, 5)
 FEET_LANE = (3, 4)        # with the feet's force terms: ω_j·χ_i, taken from the row's entry and the column's
 FEET_TRUNK_ROW = (9, 12)  # per body below a floating trunk: ω_k·χ_i for its three rotations, from two entries
 FEET_TRUNK_BLOCK = (54, 54)  # the trunk's block: ω_k·χ_r for its rotations k and six dofs r
@@ -49,6 +52,12 @@ SIMD_DOUBLES = 4          # lanes per instruction the cost model assumes for the
 # -O3 -march=native, Zen 5): 15.7 KB on Panda, 21.8 KB on chain100, 20-22 KB on humanoid32 and 26-29
 # KB on TALOS, at 8.6 bytes a counted straight-line instruction (arm7's ∂τ: 20 573 bytes for 2 372).
 CODE = 2300
+
+
+def column_lanes(robot):
+    """The lanes of a chain's columns above the diagonal (columns_above): for each body i ≥ 2, the
+    blocks of PRODUCT_BLOCK bodies from body 0 that cover its ancestors 1 … i − 1."""
+    return sum(-(-i // PRODUCT_BLOCK) * PRODUCT_BLOCK for i in range(2, robot.nb))
 
 
 def subtree_lanes(robot):
@@ -84,6 +93,14 @@ class LoopedRneaDerivatives:
     feet: bool = False  # the feet's ∂(Jᵀf)/∂q taken from the ∂τ/∂q entries (the terms' feet axes and moments)
     headers: ClassVar[Tuple[str, ...]] = (body_tree.HEADER, HEADER)
 
+    @property
+    def columns_above(self):
+        """Whether the loop writes the entries above the diagonal column by column (a chain, BodyTree's
+        `chain`, into DenseDerivatives: rbdc_gen::ColumnsAbove), not along each body's row."""
+        joints = [self.robot.joints[i] for i in depth_first_order(self.robot)]
+        return (self.writer.startswith("DenseDerivatives") and not self.feet
+                and body_tree.is_chain(body_tree.table_parents(self.robot)) and body_tree.depth_first_dofs(joints))
+
     def _counts(self, vector_width=1):
         """(multiplications, additions) of rnea_derivatives_loop, by trip count; the entries' blocks
         along the subtrees as `vector_width` lanes per instruction."""
@@ -112,6 +129,10 @@ class LoopedRneaDerivatives:
         # the entries along each body's subtree, blocks of PRODUCT_BLOCK bodies, padding included
         lane = SUBTREE_LANE if velocity else SUBTREE_LANE_AT_REST
         lane = tuple(x + y for x, y in zip(lane, FEET_LANE)) if self.feet else lane
+        if self.columns_above:  # the rows along the subtrees, the columns above the diagonal by columns
+            column = COLUMN_LANE if velocity else COLUMN_LANE_AT_REST
+            lane = (lane[0] - column[0], lane[1] - column[1])
+            pieces.append(_times(column, column_lanes(robot) // vector_width))
         pieces.append(_times(lane, subtree_lanes(robot) // vector_width))
         if floating:  # the trunk's block
             pieces += [_times(CROSS, 3), _times(APPLY, 3)]

@@ -4,7 +4,7 @@ one call must match the header's table kind by kind. Run on the looped forms (pa
 looped_factor.py, looped_solve.py, looped_rnea_derivatives.py, looped_feet_forces.py, looped_inverse.py,
 column_support.py, looped_osc.py, the low-rank product: loops counted by trip count, the traced parts node by node) on a
 branched tree with revolute and prismatic joints and two feet in contact, floating and fixed, on a
-mimic-coupled gripper's looped solve and RNEA derivatives, on a 32-link chain's ∂a/∂τ as M⁻¹'s rows,
+mimic-coupled gripper's looped solve and RNEA derivatives, on a 12-link chain's RNEA derivatives, on a 32-link chain's ∂a/∂τ as M⁻¹'s rows,
 on the Mini Cheetah's `full` scene (limb lanes: a lane operation counts four, a sum over the lanes three)
 and on humanoid32's limbs in pairs (a pair's joint angle: two sines and two cosines, not four)."""
 import re
@@ -38,6 +38,8 @@ COUPLED_LOOPED_SOLVE = "name: counted\nderivatives: [forward_dynamics_derivative
 # The chain's scenes emit its ∂FD alone: its other functions (3 MB of straight-line M, factor and FD)
 # made the two tests' -O0 driver take 41 s, against 16 without them.
 CHAIN_INVERSE = "name: counted\nquantities: []\nderivatives: [forward_dynamics_derivatives]\nschedule: looped_rnea\n"
+CHAIN_RNEA = ("name: counted\nquantities: []\nderivatives: [inverse_dynamics_derivatives, bias_derivatives, "
+              "gravity_derivatives]\nschedule: looped_rnea\n")
 LOW_RANK = "name: counted\nquantities: []\nderivatives: [forward_dynamics_derivatives]\nschedule: low_rank\n"
 PAIRED_LANES = "name: counted\nquantities: [inverse_dynamics, mass_matrix]\nschedule: limb_lanes\n"
 COUPLED_LOOPED_RNEA = ("name: counted\nderivatives: [inverse_dynamics_derivatives, bias_derivatives, gravity_derivatives, "
@@ -190,6 +192,16 @@ class OperationCountTest(unittest.TestCase):
             subprocess.run([sys.executable, str(ROOT / "tools" / "make_chain.py"), "32", str(urdf)], check=True)
             text = self.check(urdf, "fixed", LOW_RANK, "chain32", "counted")
         self.assertIn("InverseTimesVectors<Scalar, 32>", text)
+
+    def test_looped_rnea_derivatives_on_a_chain(self):
+        """A 12-link chain's ∂τ loops, which write the entries above the diagonal column by column
+        (rbdc_gen::ColumnsAbove; looped_rnea_derivatives.column_lanes), fixed and floating."""
+        with tempfile.TemporaryDirectory() as tmp:
+            urdf = Path(tmp) / "chain12.urdf"
+            subprocess.run([sys.executable, str(ROOT / "tools" / "make_chain.py"), "12", str(urdf)], check=True)
+            for base in ("fixed", "floating"):
+                text = self.check(urdf, base, CHAIN_RNEA, "chain12", "counted")
+                self.assertEqual(text.count("schedule: looped RNEA derivatives"), 3, base)
 
     def test_mini_cheetah_full_scene_in_limb_lanes(self):
         self.assertIn("limb lanes", self.check(MINI_CHEETAH, "floating", (SCENES / "full.yaml").read_text(),

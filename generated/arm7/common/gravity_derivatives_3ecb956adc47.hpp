@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::gravity_derivatives_a80b4c817184 {
+namespace rbdc_gen::arm7::common::gravity_derivatives_3ecb956adc47 {
 
 /// Derivative of the gravity terms g.
 ///
@@ -20,7 +20,7 @@ namespace rbdc_gen::arm7::common::gravity_derivatives_a80b4c817184 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             147   86    0     0    10    5    248
 /// schedule: scalar tree: 248 arithmetic instructions (critical path 75 cycles, cost 436), looped
-///   RNEA derivatives 1940 (path 75, cost 2895)
+///   RNEA derivatives 1928 (path 75, cost 2878)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq) noexcept {
   // sines and cosines of the joint angles
@@ -179,4 +179,4 @@ RBDC_HOST_DEVICE inline void gravity_derivatives(const Scalar* q, Scalar* dg_dq)
   dg_dq[37] = t67;
 }
 
-}  // namespace rbdc_gen::arm7::common::gravity_derivatives_a80b4c817184
+}  // namespace rbdc_gen::arm7::common::gravity_derivatives_3ecb956adc47

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::bias_derivatives_330c5403542f {
+namespace rbdc_gen::arm7::common::bias_derivatives_30dcab0d613b {
 
 /// Derivatives of the bias c + g (inverse dynamics at a = 0).
 ///
@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::common::bias_derivatives_330c5403542f {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1242  1054    0     0    12   10   2318
 /// schedule: scalar tree: 2318 arithmetic instructions (critical path 112 cycles, cost 2598),
-///   looped RNEA derivatives 4019 (path 112, cost 5898)
+///   looped RNEA derivatives 3995 (path 112, cost 5864)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, Scalar* dbias_dq, Scalar* dbias_dv) noexcept {
   // sines and cosines of the joint angles
@@ -775,4 +775,4 @@ RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, 
   dbias_dq[44] = t591;
 }
 
-}  // namespace rbdc_gen::arm7::common::bias_derivatives_330c5403542f
+}  // namespace rbdc_gen::arm7::common::bias_derivatives_30dcab0d613b

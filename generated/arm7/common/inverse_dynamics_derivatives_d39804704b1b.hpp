@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_9a67dacf253d {
+namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_d39804704b1b {
 
 /// Derivatives of the inverse dynamics τ = M a + c + g (∂τ/∂a is M).
 ///
@@ -23,7 +23,7 @@ namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_9a67dacf253d {
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1267  1083    0     0    12   10   2372
 /// schedule: scalar tree: 2372 arithmetic instructions (critical path 112 cycles, cost 2652),
-///   looped RNEA derivatives 4061 (path 112, cost 5957)
+///   looped RNEA derivatives 4037 (path 112, cost 5923)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* dtau_dq, Scalar* dtau_dv) noexcept {
   // sines and cosines of the joint angles
@@ -791,4 +791,4 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const
   dtau_dq[44] = t605;
 }
 
-}  // namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_9a67dacf253d
+}  // namespace rbdc_gen::arm7::common::inverse_dynamics_derivatives_d39804704b1b
