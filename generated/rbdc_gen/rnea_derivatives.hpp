@@ -32,7 +32,8 @@ struct TakesVectors<Out, std::void_t<decltype(Out::kTakesVectors)>> : std::bool_
 
 /// Body j's entries with its subtree i = j … end[j] − 1 through a writer's q and v, entry by entry:
 /// rows i of column j (q_row[i], v_row[i]) and, below the diagonal, row j of columns i (q_column[i],
-/// v_column[i]); the v arrays null without velocity terms.
+/// v_column[i]; null where the writer takes them by columns, above()); the v arrays null without
+/// velocity terms.
 template <class Out, int NB, class Scalar>
 RBDC_HOST_DEVICE RBDC_ALWAYS_INLINE void write_subtree(const Out& out, const BodyTree<NB>& tree, int j, const Scalar* q_row,
                                            const Scalar* v_row, const Scalar* q_column, const Scalar* v_column) noexcept {
@@ -42,7 +43,7 @@ RBDC_HOST_DEVICE RBDC_ALWAYS_INLINE void write_subtree(const Out& out, const Bod
     const int di = tree.dof[i];
     out.q(di, dj, q_row[i]);
     if (v_row != nullptr) out.v(di, dj, v_row[i]);
-    if (i != j) {
+    if (i != j && q_column != nullptr) {
       out.q(dj, di, q_column[i]);
       if (v_column != nullptr) out.v(dj, di, v_column[i]);
     }
@@ -76,14 +77,6 @@ struct DenseDerivatives {
   }
   RBDC_HOST_DEVICE void q(int row, int col, const Scalar& value) const noexcept { dq[col * NV + row] = value; }
   RBDC_HOST_DEVICE void v(int row, int col, const Scalar& value) const noexcept { dv[col * NV + row] = value; }
-  /// A chain's body j's column from its diagonal down (above() has the rest).
-  template <int NB>
-  RBDC_HOST_DEVICE void rows(const BodyTree<NB>& tree, int j, const Scalar* q_row, const Scalar* v_row) const noexcept {
-    const int dj = tree.dof[j], shift = dj - j;
-    for (int i = j; i < NB; ++i) dq[dj * NV + i + shift] = q_row[i];
-    if (v_row != nullptr)
-      for (int i = j; i < NB; ++i) dv[dj * NV + i + shift] = v_row[i];
-  }
   /// Body j's subtree (rbdc_gen::write_subtree): with depth-first dofs its column's run is contiguous,
   /// copied as a vector when long (tree_detail::kLongRun).
   template <int NB>
@@ -95,6 +88,7 @@ struct DenseDerivatives {
     for (int i = j; i < tree.end[j]; ++i) dq[dj * NV + i + shift] = q_row[i];
     if (v_row != nullptr)
       for (int i = j; i < tree.end[j]; ++i) dv[dj * NV + i + shift] = v_row[i];
+    if (q_column == nullptr) return;  // taken by columns (above())
     RBDC_SCALAR_LOOP
     for (int i = j + 1; i < tree.end[j]; ++i) {
       dq[(i + shift) * NV + dj] = q_column[i];
@@ -446,6 +440,7 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
   // (ρ_i·c_j + …) and, below the diagonal, column i's in row j (S_j·G_i, S_j·D_i).
   Scalar q_row[NP], v_row[NP], q_column[NP], v_column[NP];
   constexpr bool kByColumns = ColumnsAbove<Out>::value && !kFeet;
+  const bool by_columns = kByColumns && tree.chain;  // the entries above the diagonal by columns, after
   for (int j = 1; j < NB; ++j) {
     Scalar c[6], u[6] = {}, s[6];
     load(C, j, c);
@@ -457,43 +452,38 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
     if constexpr (kFeet)
       for (int k = 0; k < 3; ++k) axis[k] = feet.axis[3 * tree.dof[j] + k];
     const int first = j / kBlock * kBlock;
-    if constexpr (kByColumns) if (tree.chain) {  // the rows only; the columns below, column by column
+    const auto row_entries = [&](int i) {  // row i's entries in column j
+      const Scalar cI = dot(c, rows_I, i);
+      if (Velocity) {
+        q_row[i] = cI + dot(u, rows_B, i);
+        v_row[i] = Scalar(2) * dot(u, rows_I, i) + dot(s, rows_B, i);
+      } else {
+        q_row[i] = cI;
+      }
+    };
+    if (by_columns) {
+      RBDC_SCALAR_LOOP  // the block, not the loop over blocks, is the vector
+      for (int block = first; block < tree.end[j]; block += kBlock)
+        for (int i = block; i < block + kBlock; ++i) row_entries(i);
+    } else {
       RBDC_SCALAR_LOOP
       for (int block = first; block < tree.end[j]; block += kBlock)
         for (int i = block; i < block + kBlock; ++i) {
-          const Scalar cI = dot(c, rows_I, i);
-          if (Velocity) {
-            q_row[i] = cI + dot(u, rows_B, i);
-            v_row[i] = Scalar(2) * dot(u, rows_I, i) + dot(s, rows_B, i);
-          } else {
-            q_row[i] = cI;
+          row_entries(i);
+          if (Velocity) v_column[i] = dot(s, columns_D, i);
+          q_column[i] = dot(s, columns_G, i);
+          if constexpr (kFeet) {
+            const Scalar term = dot3(axis, chi, i);
+            q_row[i] = q_row[i] - term;
+            q_column[i] = q_column[i] - term;
           }
         }
-      out.rows(tree, j, q_row, Velocity ? v_row : nullptr);
-      continue;
     }
-    RBDC_SCALAR_LOOP  // the block, not the loop over blocks, is the vector
-    for (int block = first; block < tree.end[j]; block += kBlock)
-      for (int i = block; i < block + kBlock; ++i) {
-        const Scalar cI = dot(c, rows_I, i), sG = dot(s, columns_G, i);
-        if (Velocity) {
-          q_row[i] = cI + dot(u, rows_B, i);
-          v_row[i] = Scalar(2) * dot(u, rows_I, i) + dot(s, rows_B, i);
-          v_column[i] = dot(s, columns_D, i);
-        } else {
-          q_row[i] = cI;
-        }
-        q_column[i] = sG;
-        if constexpr (kFeet) {
-          const Scalar term = dot3(axis, chi, i);
-          q_row[i] = q_row[i] - term;
-          q_column[i] = q_column[i] - term;
-        }
-      }
-    out.subtree(tree, j, q_row, Velocity ? v_row : nullptr, q_column, Velocity ? v_column : nullptr);
+    out.subtree(tree, j, q_row, Velocity ? v_row : nullptr, by_columns ? nullptr : q_column,
+                Velocity && !by_columns ? v_column : nullptr);
   }
   if constexpr (kByColumns)
-    if (tree.chain)
+    if (by_columns)
       for (int i = 2; i < NB; ++i) {  // body i's column above the diagonal: S_j·G_i, S_j·D_i for j = 1 … i − 1
         Scalar G[6], D[6];
         load(columns_G, i, G);

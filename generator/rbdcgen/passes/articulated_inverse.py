@@ -24,7 +24,7 @@ class ArticulatedInverse:
     """articulated_inverse writing M⁻¹ whole (column-major nv × nv) into `output`, the same array
     looped_inverse.LoopedInverse would write (∂a/∂τ), so that the low-rank product reads it alike,
     and a = M⁻¹r into solve_a from the terms' r (Sᵀτ + Jᵀf − c − g);
-    `comparison`: (its multiply-adds, those of the looped CRBA, factor and Zᵀ D⁻¹ Z), for the banner."""
+    `comparison`: (its multiplications, those of the looped CRBA, factor and Zᵀ D⁻¹ Z), for the banner."""
     robot: object
     comparison: Tuple[int, int] = (0, 0)
     output: str = "da_dtau"
@@ -56,9 +56,6 @@ class ArticulatedInverse:
         pieces = [piece for part in self._pieces() for piece in part]
         return {"mul": sum(m for m, _ in pieces), "add": sum(a for _, a in pieces),
                 "div": self.robot.nb - 1, "neg": self.robot.nb - 1}
-
-    def multiply_adds(self):
-        return sum(m for part in self._pieces() for m, _ in part)
 
     def instructions(self):
         """Per body as the tree loops count theirs (looped_crba.LoopedCrba: the larger of the two counts,
