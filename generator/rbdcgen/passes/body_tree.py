@@ -120,6 +120,14 @@ def is_chain(parents):
     return all(parents[k] == k - 1 for k in range(2, len(parents)))
 
 
+def fixed_base_chain(robot):
+    """A fixed-base chain of bodies alone (applies), dofs numbered along it: the articulated-body
+    recursion's loops (articulated_inverse.py) and ∂q̈'s low-rank form."""
+    if robot.floating_base or not applies(robot):
+        return False
+    return is_chain(table_parents(robot)) and depth_first_dofs([robot.joints[i] for i in depth_first_order(robot)])
+
+
 def root_frame_pieces(robot):
     """The pieces root_frames and root_inertias run: per body its frame, axis, subspace (p0 × z for
     every joint, the prismatic ones selecting z instead), inertia."""

@@ -16,7 +16,6 @@ from dataclasses import dataclass, replace
 from typing import Optional, Tuple
 
 from ..algorithms.contact_dynamics import PROXIMAL_STEPS
-from ..algorithms.crba import depth_first_order
 from ..algorithms.forward_dynamics import dof_ancestors, dof_parents, packed_starts
 from ..graph import expr as ex
 from . import (articulated_inverse, body_tree, column_support, differentiate, lane_contact_derivatives, lane_derivatives, looped_crba,
@@ -412,11 +411,7 @@ def low_rank_applies(robot, scene, name):
     """Whether forward_dynamics_derivatives has the low-rank form here (InverseTimesVectors): a
     fixed-base chain of bodies alone (body_tree.applies), dofs numbered along it, where ∂a/∂τ is M⁻¹'s
     rows (looped_inverse.py), which the product needs."""
-    if name != "forward_dynamics_derivatives" or robot.floating_base or not body_tree.applies(robot):
-        return False
-    parents = body_tree.table_parents(robot)
-    joints = [robot.joints[i] for i in depth_first_order(robot)]
-    return (body_tree.is_chain(parents) and body_tree.depth_first_dofs(joints)
+    return (name == "forward_dynamics_derivatives" and body_tree.fixed_base_chain(robot)
             and looped_inverse.tau_by_inverse(robot, 3 * len(scene.feet_for(robot)), differentiate.padded) is not None)
 
 

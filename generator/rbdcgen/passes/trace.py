@@ -177,6 +177,13 @@ def _spec(robot, nf, nc):
             ("q", "v", "tau", "f"),
             [("a", nv, 1, "acceleration")],
             lambda m: {"a": forward_dynamics.forward_dynamics(m)}),
+        "forward_dynamics_chain_terms": (
+            "The traced part of forward_dynamics in its looped form (passes/articulated_inverse.py): "
+            "each body's transform, and gravity in root coordinates.",
+            ("q", "v", "tau", "f"),
+            [("X", 12, robot.nb - 1, "each body's transform, as body_transforms writes it"),
+             ("g", 3, 1, "gravity in root coordinates")],
+            lambda m: {"X": crba.body_transforms(m), "g": m.gravity_in_base()}),
         "forward_dynamics_aba": (
             "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (the articulated-body algorithm).",
             ("q", "v", "tau", "f"),
