@@ -41,19 +41,20 @@ nvcc_flags=(-std=c++17 --expt-relaxed-constexpr -Wno-deprecated-gpu-targets -dia
 echo "nvcc compiled generated mass_matrix, forward_dynamics and a looped forward_dynamics_derivatives for the device"
 
 # The loops over the bodies (rbdc_gen/crba.hpp, rnea_derivatives.hpp, osc.hpp, the feet's loop in
-# solve.hpp), the low-rank product (InverseTimesVectors, articulated_inverse) and the chain's forward
-# dynamics as one loop (articulated_forward_dynamics), each function called with null pointers: the call
+# solve.hpp), the low-rank product (InverseTimesVectors, articulated_inverse) and the chain's RNEA and
+# forward dynamics as one loop (chain_inverse_dynamics, articulated_forward_dynamics), each function called with null pointers: the call
 # instantiates it for the device, which is all this checks.
 python3 "$make_chain" 8 "$work/chain8.urdf" > /dev/null
 python3 "$make_chain" 32 "$work/chain32.urdf" > /dev/null
 for scene in osc_looped mass_matrix_looped_crba; do
   "$rbdc" generate "$work/chain8.urdf" --floating-base --scene "$scenes/$scene.yaml" -o "$work/gen" > /dev/null
 done
-for scene in forward_dynamics_derivatives_low_rank forward_dynamics_looped_aba; do
+for scene in forward_dynamics_derivatives_low_rank chain_loop; do
   "$rbdc" generate "$work/chain32.urdf" --fixed-base --scene "$scenes/$scene.yaml" -o "$work/gen" > /dev/null
 done
 headers=("$work"/gen/chain8/common/*.hpp "$work"/gen/chain32/common/forward_dynamics_derivatives_*.hpp
-         "$(grep -l articulated_forward_dynamics "$work"/gen/chain32/common/forward_dynamics_[0-9a-f]*.hpp)")
+         "$(grep -l articulated_forward_dynamics "$work"/gen/chain32/common/forward_dynamics_[0-9a-f]*.hpp)"
+         "$(grep -l chain_inverse_dynamics "$work"/gen/chain32/common/inverse_dynamics_*.hpp)")
 {
   for header in "${headers[@]}"; do echo "#include \"${header#"$work"/gen/}\""; done
   echo 'template <class... Args>'
@@ -66,8 +67,8 @@ headers=("$work"/gen/chain8/common/*.hpp "$work"/gen/chain32/common/forward_dyna
   echo '}'
 } > "$work/looped.cu"
 for loop in crba_loop rnea_derivatives_loop osc_columns_loop InverseTimesVectors articulated_inverse \
-            articulated_forward_dynamics; do
+            articulated_forward_dynamics chain_inverse_dynamics; do
   grep -q "$loop" "$work/looped.cu" "${headers[@]}" || { echo "no generated header calls $loop"; exit 1; }
 done
 "$nvcc" "${nvcc_flags[@]}" -I "$work/gen" -c "$work/looped.cu" -o "$work/looped.o"
-echo "nvcc compiled ${#headers[@]} looped functions for the device: the CRBA, RNEA-derivative, feet and OSC loops, the low-rank product and its M⁻¹, the chain's forward dynamics ($("$nvcc" --version | tail -n 1))"
+echo "nvcc compiled ${#headers[@]} looped functions for the device: the CRBA, RNEA-derivative, feet and OSC loops, the low-rank product and its M⁻¹, the chain's RNEA and forward dynamics ($("$nvcc" --version | tail -n 1))"

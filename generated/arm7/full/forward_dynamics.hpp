@@ -7,11 +7,11 @@
 // forward_dynamics for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   arm7/common/forward_dynamics_06fb799895d5.hpp
+//   arm7/common/forward_dynamics_c0aa796c5b34.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/forward_dynamics_06fb799895d5.hpp"
+#include "arm7/common/forward_dynamics_c0aa796c5b34.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -27,9 +27,9 @@ namespace rbdc_gen::arm7::full {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             627  467    5     0    14    0   1113
 /// schedule: scalar tree: 1113 arithmetic instructions (critical path 162 cycles, cost 1518),
-///   articulated-body algorithm 1261 (path 284, cost 1971), articulated-body recursion in a
-///   loop 3015 (path 162, cost 4617)
-using ::rbdc_gen::arm7::common::forward_dynamics_06fb799895d5::forward_dynamics;
+///   articulated-body algorithm 1261 (path 284, cost 1971), one loop along the chain 3015
+///   (path 162, cost 4617)
+using ::rbdc_gen::arm7::common::forward_dynamics_c0aa796c5b34::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

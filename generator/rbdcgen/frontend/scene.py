@@ -65,7 +65,7 @@ KEYS = ("name", "quantities", "gravity", "base", "locked_joints", "feet", "frame
 # How a quantity is evaluated (passes/schedule.py): `auto` picks the cheapest of the scalar tree, the
 # isomorphic limbs in SIMD lanes, a looped solve, the articulated-body algorithm, the looped factor,
 # the looped CRBA and the looped RNEA derivatives; the others force one where a function has it.
-SCHEDULES = ("auto", "scalar", "limb_lanes", "looped_solve", "aba", "looped_factor", "looped_crba", "looped_rnea", "lanes_looped_rnea", "looped_feet", "looped_osc", "low_rank", "looped_aba")
+SCHEDULES = ("auto", "scalar", "limb_lanes", "looped_solve", "aba", "looped_factor", "looped_crba", "looped_rnea", "lanes_looped_rnea", "looped_feet", "looped_osc", "low_rank", "chain_loop")
 # How the robot's actuators (docs/model.md, "Actuators") enter the generated code: `full` as the
 # runtime models them (rotor bodies and armature), `armature` with each rotor reduced to its
 # reflected inertia on M's diagonal, `none` without any (the code of a robot without actuators).
@@ -93,7 +93,7 @@ class Scene:
     zero_inputs: Tuple[str, ...] = ()
     derivatives: Tuple[str, ...] = ()               # none unless the scene lists them
     actuators: str = "full"                         # full | armature | none (ACTUATOR_MODES)
-    schedule: str = "auto"                          # auto | scalar | limb_lanes | looped_solve | aba | looped_factor | looped_crba | looped_rnea | lanes_looped_rnea | looped_feet | looped_osc | low_rank | looped_aba
+    schedule: str = "auto"                          # auto | scalar | limb_lanes | looped_solve | aba | looped_factor | looped_crba | looped_rnea | lanes_looped_rnea | looped_feet | looped_osc | low_rank | chain_loop
     frame_axes: str = "both"                        # both | world | local (FRAME_AXES)
     source: str = "<default>"
 

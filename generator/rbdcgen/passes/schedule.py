@@ -6,7 +6,7 @@ contact-dynamics derivatives) a looped solve with SIMD across the right-hand sid
 loop over the bodies (looped_crba.py), or (the RNEA's derivatives) their recursion as a loop over the
 bodies (looped_rnea_derivatives.py), or (the OSC recursions) J̄ᵀ's columns as a loop (looped_osc.py),
 or (a fixed-base chain's ∂q̈) M⁻¹ times ∂τ's low-rank blocks (looped_solve.low_rank_applies), or (a
-fixed-base chain's forward dynamics) the articulated-body recursion as a loop (articulated_inverse.py).
+fixed-base chain's RNEA and forward dynamics) one loop along the chain (chain_loop.py).
 The quantity is the same;
 only how it is evaluated changes, so the function keeps its plain name and its doc gains one line
 that says the choice and its numbers.
@@ -24,7 +24,7 @@ looped_feet_forces.UNROLL_LIMIT, or the OSC's unrolled columns past looped_osc.U
 does not trace the forms that unroll it (tracing them alone would take minutes) when another form
 exists. A scene may force a form (`schedule: scalar`, `limb_lanes`, `looped_solve`, `aba`,
 `looped_factor`, `looped_crba`, `looped_rnea`, `lanes_looped_rnea`, `looped_feet`, `looped_osc`,
-`low_rank` or `looped_aba`) where the function has it."""
+`low_rank` or `chain_loop`) where the function has it."""
 
 from __future__ import annotations
 
@@ -38,7 +38,7 @@ from ..graph.latency import critical_path
 from ..views.coupled import tree_view
 from ..views import limbs, origins, turns
 from ..views.limbs import LimbError
-from . import (articulated_inverse, body_tree, lane_functions, looped_crba, looped_factor, looped_feet_forces, looped_osc,
+from . import (body_tree, chain_loop, lane_functions, looped_crba, looped_factor, looped_feet_forces, looped_osc,
                looped_rnea_derivatives, looped_solve, singular_mass)
 from .trace import signature, trace_function
 
@@ -179,8 +179,8 @@ def _forms(robot, scene, name):
         forms["aba"] = lambda: _as(trace_function(robot, scene, "forward_dynamics_aba"), name)
         if _lanes_apply(robot, scene, "forward_dynamics_aba"):
             forms["aba_lanes"] = lambda: _as(trace_function(robot, scene, "forward_dynamics_aba_lanes"), name)
-    if articulated_inverse.has_looped_form(robot, name):
-        forms["looped_aba"] = lambda: articulated_inverse.looped_function(robot, scene, name)
+    if chain_loop.has_looped_form(robot, name):
+        forms["chain_loop"] = lambda: chain_loop.looped_function(robot, scene, name)
     if looped_factor.has_looped_form(robot, name):
         forms["looped_factor"] = lambda: looped_factor.looped_function(robot, scene, name)
     if looped_crba.has_looped_form(robot, name):
@@ -255,7 +255,7 @@ _SHORT = {"scalar": "scalar tree", "limb_lanes": "limb lanes",
           "aba": "articulated-body algorithm", "aba_lanes": "articulated-body algorithm in limb lanes", "looped_factor": "looped factor", "looped_crba": "looped CRBA",
           "looped_rnea": "looped RNEA derivatives", "looped_feet": "looped feet force terms",
           "looped_osc": "looped operational-space columns", "low_rank": "low-rank product",
-          "looped_aba": "articulated-body recursion in a loop"}
+          "chain_loop": "one loop along the chain"}
 _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes, the trunk scalar)" % ex.LANES,
            "paired_lanes": "",  # a quadruped has no pairs
            "looped_solve": " (the solve's right-hand sides in SIMD across columns)",
@@ -271,7 +271,7 @@ _DETAIL = {"scalar": "", "limb_lanes": " (the %d isomorphic limbs in SIMD lanes,
            "looped_feet": " (a loop over the dof tree's ancestor pairs)",
            "looped_osc": " (J̄ᵀ's columns a loop over the bodies' descendants, the tree's constants in a table)",
            "low_rank": " (M⁻¹ times ∂τ's low-rank blocks by running sums along the chain, ∂τ never formed)",
-           "looped_aba": " (one O(n) loop in the root's coordinates, the RNEA's c + g − Jᵀf first; the tree's constants in a table)"}
+           "chain_loop": " (in the root's coordinates, the tree's constants in a table)"}
 
 
 # The lane forms' words for a robot whose limbs in lanes are not the quadruped's (limbs.groups_in_words).

@@ -6,7 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import Dict, Tuple
 
-from . import differentiate, lane_functions, project
+from . import chain_loop, differentiate, lane_functions, project
 from ..graph import expr as ex
 from ..graph.reassociate import reassociate
 from ..algorithms import (aba, centroidal, contact_dynamics, crba, forward_dynamics, frames, jacobian,
@@ -177,13 +177,6 @@ def _spec(robot, nf, nc):
             ("q", "v", "tau", "f"),
             [("a", nv, 1, "acceleration")],
             lambda m: {"a": forward_dynamics.forward_dynamics(m)}),
-        "forward_dynamics_chain_terms": (
-            "The traced part of forward_dynamics in its looped form (passes/articulated_inverse.py): "
-            "each body's transform, and gravity in root coordinates.",
-            ("q", "v", "tau", "f"),
-            [("X", 12, robot.nb - 1, "each body's transform, as body_transforms writes it"),
-             ("g", 3, 1, "gravity in root coordinates")],
-            lambda m: {"X": crba.body_transforms(m), "g": m.gravity_in_base()}),
         "forward_dynamics_aba": (
             "Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (the articulated-body algorithm).",
             ("q", "v", "tau", "f"),
@@ -306,7 +299,8 @@ def _lookup(robot, scene, name):
     nf, nc = len(scene.feet_for(robot)), len(scene.contacts_for(robot))
     scalar = {**_spec(robot, nf, nc), **_whole_body_spec(robot, nf, len(scene.frames_for(robot))),
               **differentiate.spec(robot, nf, nc)}
-    spec = {**scalar, **lane_functions.spec(robot, scalar)}
+    spec = {**scalar, **lane_functions.spec(robot, scalar),
+            **chain_loop.terms_spec(robot, {name: scalar[name][1] for name in chain_loop.TERMS})}
     if name not in spec:
         raise KeyError("unknown function '%s'" % name)
     return _in_frame_axes(scene, name, spec[name])

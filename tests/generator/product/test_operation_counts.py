@@ -41,7 +41,8 @@ CHAIN_INVERSE = "name: counted\nquantities: []\nderivatives: [forward_dynamics_d
 CHAIN_RNEA = ("name: counted\nquantities: []\nderivatives: [inverse_dynamics_derivatives, bias_derivatives, "
               "gravity_derivatives]\nschedule: looped_rnea\n")
 LOW_RANK = "name: counted\nquantities: []\nderivatives: [forward_dynamics_derivatives]\nschedule: low_rank\n"
-LOOPED_ABA = "name: counted\nquantities: [forward_dynamics]\nschedule: looped_aba\n"
+CHAIN_LOOP = ("name: counted\nquantities: [inverse_dynamics, bias, quadratic_velocity_terms, forward_dynamics]\n"
+              "schedule: chain_loop\n")
 PAIRED_LANES = "name: counted\nquantities: [inverse_dynamics, mass_matrix]\nschedule: limb_lanes\n"
 COUPLED_LOOPED_RNEA = ("name: counted\nderivatives: [inverse_dynamics_derivatives, bias_derivatives, gravity_derivatives, "
                        "forward_dynamics_derivatives]\n"
@@ -194,14 +195,16 @@ class OperationCountTest(unittest.TestCase):
             text = self.check(urdf, "fixed", LOW_RANK, "chain32", "counted")
         self.assertIn("InverseTimesVectors<Scalar, 32>", text)
 
-    def test_looped_forward_dynamics_on_a_chain(self):
-        """A 12-link chain's forward dynamics as one loop (articulated_forward_dynamics: the RNEA with
-        the foot's wrench, then the recursion), counted as articulated_inverse.ArticulatedInverse counts it."""
+    def test_chain_loops(self):
+        """A 12-link chain's RNEA and forward dynamics as one loop (chain_inverse_dynamics;
+        articulated_forward_dynamics: the RNEA with the foot's wrench, then the recursion), counted as
+        chain_loop.ChainLoop counts them."""
         with tempfile.TemporaryDirectory() as tmp:
             urdf = Path(tmp) / "chain12.urdf"
             subprocess.run([sys.executable, str(ROOT / "tools" / "make_chain.py"), "12", str(urdf)], check=True)
-            text = self.check(urdf, "fixed", LOOPED_ABA, "chain12", "counted")
+            text = self.check(urdf, "fixed", CHAIN_LOOP, "chain12", "counted")
         self.assertIn("articulated_forward_dynamics<Scalar, 13, 12, 1>", text)
+        self.assertEqual(text.count("chain_inverse_dynamics<Scalar, 13, 12"), 3)
 
     def test_looped_rnea_derivatives_on_a_chain(self):
         """A 12-link chain's ∂τ loops, which write the entries above the diagonal column by column

@@ -1,0 +1,107 @@
+"""A fixed-base chain's dynamics as one loop in the root's coordinates (rbdc_gen/articulated_inverse.hpp;
+docs/performance.md, "A chain's dynamics as one loop"): the traced part writes only the bodies'
+transforms and gravity; chain_inverse_dynamics runs the RNEA (inverse_dynamics, bias,
+quadratic_velocity_terms), articulated_forward_dynamics the RNEA's c + g − Jᵀf and then the
+articulated-body recursion (forward_dynamics), v and a carried along the chain in registers, the rest
+SIMD across the bodies. Straight-line code folds the constants but grows past the instruction cache
+with the chain (chain100's forward dynamics: 317 KB); the loop folds nothing, so on a short chain the
+straight-line code wins by cost."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar, Tuple
+
+from ..algorithms import crba
+from . import articulated_inverse, body_tree, trace  # trace reads TERMS' entries here: imported, not from-imported
+from .body_tree import APPLY, CROSS, PROJECTION, SPATIAL_CROSS
+
+# The quantities with the form: (Velocity, Acceleration, Gravity) of the bodies' forces, as
+# articulated_detail::body_forces takes them (forward dynamics: at q̈ = 0, then the recursion).
+FORCES = {"forward_dynamics": (True, False, True), "inverse_dynamics": (True, True, True),
+          "bias": (True, False, True), "quadratic_velocity_terms": (True, False, False)}
+TERMS = {name: name + "_chain_terms" for name in FORCES}  # each body's transform, and gravity
+FOOT = ((9, 9), CROSS, (0, 6))  # p0 + E0ᵀ offset, p × f, the wrench off its body's force
+
+
+def terms_spec(robot, signature_inputs):
+    """trace.py's entries for TERMS: name → (doc, input names, outputs, trace(m))."""
+    return {terms: ("The traced part of %s in its chain-loop form (passes/chain_loop.py): each body's "
+                    "transform, and gravity in root coordinates." % name, signature_inputs[name],
+                    [("X", 12, robot.nb - 1, "each body's transform, as body_transforms writes it"),
+                     ("g", 3, 1, "gravity in root coordinates")],
+                    lambda m: {"X": crba.body_transforms(m), "g": m.gravity_in_base()})
+            for name, terms in TERMS.items()}
+
+
+def has_looped_form(robot, name):
+    """The quantities of FORCES on a fixed-base chain (body_tree.fixed_base_chain)."""
+    return name in FORCES and body_tree.fixed_base_chain(robot)
+
+
+@dataclass(frozen=True)
+class ChainLoop:
+    """The loop of `name` over the chain, reading the terms' X and g and the function's inputs,
+    writing its output `output`; `feet` (forward dynamics): each foot's table body and offset."""
+    robot: object
+    name: str
+    output: str
+    terms: Tuple = ()
+    feet: Tuple = ()
+    headers: ClassVar[Tuple[str, ...]] = (body_tree.HEADER, articulated_inverse.HEADER)
+
+    def _pieces(self):
+        """(per-body pieces, per-column pieces), each (multiplications, additions), by trip count."""
+        velocity, acceleration, _ = FORCES[self.name]
+        nv = self.robot.nb - 1
+        body = [(0, 6), APPLY]  # a along the chain, I a
+        body += [(6, 6), SPATIAL_CROSS, (6, 0), APPLY, SPATIAL_CROSS, (0, 6)] if velocity else []
+        body += [(6, 6) if velocity else (6, 0)] if acceleration else []  # + S q̈
+        body += [(0, 6), PROJECTION]  # Σ F from the body on, Sᵀ of it
+        pieces = body_tree.root_frame_pieces(self.robot) + body * nv + list(FOOT) * len(self.feet)
+        if self.name != "forward_dynamics":
+            return pieces, []
+        bodies, columns = articulated_inverse.recursion_pieces(self.robot.nb, False)
+        return pieces + bodies + [(0, 1)] * nv, columns  # τ − Sᵀ F
+
+    def operations(self):
+        pieces = [piece for part in self._pieces() for piece in part]
+        return {"mul": sum(m for m, _ in pieces), "add": sum(a for _, a in pieces),
+                "div": self.robot.nb - 1 if self.name == "forward_dynamics" else 0,
+                "neg": 3 if FORCES[self.name][2] else 0}
+
+    def instructions(self):
+        return articulated_inverse.loop_instructions(*self._pieces(), self.robot.nb, 4)
+
+    def cost(self):
+        return body_tree.LOOP_WEIGHT * self.instructions()
+
+    def loops(self):
+        nb, nv = self.robot.nb, self.robot.nv
+        if self.name != "forward_dynamics":
+            velocity, acceleration, gravity = (body_tree.cpp_bool(flag) for flag in FORCES[self.name])
+            a = "a" if FORCES[self.name][1] else "nullptr"
+            return [body_tree.table(self.robot),
+                    f"chain_inverse_dynamics<Scalar, {nb}, {nv}, {velocity}, {acceleration}, {gravity}>(tree, solve_X, "
+                    f"solve_g, v, {a}, {self.output});"]
+        nf = len(self.feet)
+        bodies = ", ".join(str(body) for body, _ in self.feet) or "0"
+        offsets = ", ".join("{%s}" % (", ".join(repr(float(o[r])) for _, o in self.feet) or "0.0") for r in range(3))
+        return [body_tree.table(self.robot), f"RBDC_TABLE ChainFeet<{nf}> feet{{{{{bodies}}}, {{{offsets}}}}};",
+                f"articulated_forward_dynamics<Scalar, {nb}, {nv}, {nf}>(tree, feet, solve_X, solve_g, v, tau, f, "
+                f"{self.output});"]
+
+    def emission(self, terms_name):
+        loop = ("articulated_forward_dynamics runs the RNEA's c + g − Jᵀf and the articulated-body recursion"
+                if self.name == "forward_dynamics" else "chain_inverse_dynamics runs the RNEA")
+        return "one loop along the chain: %s writes the %d bodies' transforms, %s over a table of the tree" % (
+            terms_name, self.robot.nb - 1, loop)
+
+
+def looped_function(robot, scene, name):
+    """`name` in its chain-loop form: the traced transforms and gravity, with the loop."""
+    position = {body: k for k, body in enumerate(crba.depth_first_order(robot))}
+    feet = tuple((position[foot.body], tuple(foot.offset)) for foot in scene.feet_for(robot)) \
+        if name == "forward_dynamics" else ()
+    return trace.with_loop(robot, scene, name, TERMS[name], lambda terms, outputs: ChainLoop(
+        robot=robot, name=name, output=outputs[0].name, terms=terms.outputs, feet=feet))
