@@ -1,16 +1,18 @@
 """M⁻¹ of a fixed-base chain by the articulated-body recursion (rbdc_gen::articulated_inverse), for
 forward_dynamics_derivatives' low-rank form (looped_solve.low_rank_applies; docs/performance.md, "M⁻¹ by
 the articulated-body recursion"): the ABA run for every unit torque at once, O(n²) multiply-adds on a
-chain, where the looped CRBA, the factor M = Lᵀ D L and Zᵀ D⁻¹ Z (looped_inverse.py) take O(n³). The
-recursion's counts are also chain_loop.py's (forward dynamics as one loop)."""
+chain, where the looped CRBA, the factor M = Lᵀ D L and Zᵀ D⁻¹ Z (looped_inverse.py) take O(n³), and
+q̈ with it from the RNEA's forces in the same loop. The loops' counts are also chain_loop.py's (a
+chain's RNEA and forward dynamics as one loop)."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 from typing import ClassVar, Tuple
 
+from ..algorithms.crba import depth_first_order
 from . import body_tree
-from .body_tree import ACCUMULATE, APPLY, STEP_OVERHEAD
+from .body_tree import ACCUMULATE, APPLY, CROSS, PROJECTION, SPATIAL_CROSS, STEP_OVERHEAD
 
 HEADER = "rbdc_gen/articulated_inverse.hpp"
 DOT8 = (8, 7)               # x · y padded to 8
@@ -22,6 +24,38 @@ BODY_LEAVES_FIRST = (APPLY, (48, 40), DOT8, (1, 0), (0, 8), DOT8, (1, 2), (8, 8)
 BODY_ROOT_FIRST = (DOT8, DOT8, (1, 2), (8, 8))  # a − wᵀ p − (wᵀ S_above) a_above; p + S_above a_above
 BELOW = (13, 11)            # a column below the body, leaves first: Sᵀ p^A, D⁻¹ u, p^A + U m
 ABOVE = (6, 6)              # a column from the body on, root first: m − wᵀ a, or a + S q̈
+FOOT = ((9, 9), CROSS, (0, 6))  # p0 + E0ᵀ offset, p × f, the wrench off its body's force
+
+
+def body_force_pieces(robot, velocity, acceleration, n_feet):
+    """articulated_detail::body_forces' pieces (root frames and inertias, each body's a along the chain
+    and I a; with `velocity` v along it, (v_λ × S) q̇, v ×* I v; with `acceleration` S q̈; the feet's
+    wrenches), then each body's Σ F from it on and Sᵀ of it."""
+    body = [(0, 6), APPLY]
+    body += [(6, 6), SPATIAL_CROSS, (6, 0), APPLY, SPATIAL_CROSS, (0, 6)] if velocity else []
+    body += [(6, 6) if velocity else (6, 0)] if acceleration else []
+    body += [(0, 6), PROJECTION]
+    return body_tree.root_frame_pieces(robot) + body * (robot.nb - 1) + list(FOOT) * n_feet
+
+
+def forward_dynamics_pieces(robot, n_feet, unit_columns):
+    """(per-body pieces, per-column pieces) of articulated_detail::forward_dynamics: the forces at q̈ = 0,
+    τ − Sᵀ ΣF, the recursion (with `unit_columns`, M⁻¹'s as well)."""
+    bodies, columns = recursion_pieces(robot.nb, unit_columns)
+    return body_force_pieces(robot, True, False, n_feet) + bodies + [(0, 1)] * (robot.nb - 1), columns
+
+
+def feet_table(feet):
+    """The C++ table of the feet (rbdc_gen::ChainFeet): (table body, offset) each."""
+    bodies = ", ".join(str(body) for body, _ in feet) or "0"
+    offsets = ", ".join("{%s}" % (", ".join(repr(float(o[r])) for _, o in feet) or "0.0") for r in range(3))
+    return f"RBDC_TABLE ChainFeet<{len(feet)}> feet{{{{{bodies}}}, {{{offsets}}}}};"
+
+
+def chain_feet(robot, scene):
+    """Each of the scene's feet as (its body in the table's order, its offset)."""
+    position = {body: k for k, body in enumerate(depth_first_order(robot))}
+    return tuple((position[foot.body], tuple(foot.offset)) for foot in scene.feet_for(robot))
 
 
 def recursion_pieces(nb, unit_columns):
@@ -51,31 +85,32 @@ def loop_instructions(bodies, columns, nb, simd_doubles):
 class ArticulatedInverse:
     """articulated_inverse writing M⁻¹ whole (column-major nv × nv) into `output`, the same array
     looped_inverse.LoopedInverse would write (∂a/∂τ), so that the low-rank product reads it alike,
-    and a = M⁻¹r into solve_a from the terms' r (Sᵀτ + Jᵀf − c − g);
-    `comparison`: (its multiplications, those of the looped CRBA, factor and Zᵀ D⁻¹ Z), for the banner."""
+    and q̈ into solve_a, from the terms' transforms X and gravity g and the inputs v, τ and f (`feet`:
+    chain_feet); `comparison`: (its multiplications, those of the looped CRBA, factor and Zᵀ D⁻¹ Z), for
+    the banner."""
     robot: object
+    feet: Tuple = ()
     comparison: Tuple[int, int] = (0, 0)
     output: str = "da_dtau"
     simd_doubles: int = 4  # columns per vector instruction the cost model assumes (looped_solve.SIMD_DOUBLES)
     pays: ClassVar[bool] = True  # as a LoopedInverse that is taken
     headers: ClassVar[Tuple[str, ...]] = (body_tree.HEADER, HEADER)
 
-    def _pieces(self):
-        bodies, columns = recursion_pieces(self.robot.nb, True)
-        return body_tree.root_frame_pieces(self.robot) + bodies, columns
-
     def operations(self):
-        pieces = [piece for part in self._pieces() for piece in part]
+        pieces = [piece for part in forward_dynamics_pieces(self.robot, len(self.feet), True) for piece in part]
         return {"mul": sum(m for m, _ in pieces), "add": sum(a for _, a in pieces),
-                "div": self.robot.nb - 1, "neg": self.robot.nb - 1}
+                "div": self.robot.nb - 1, "neg": self.robot.nb - 1 + 3}  # −D⁻¹ each body, −g
 
     def instructions(self):
-        return loop_instructions(*self._pieces(), self.robot.nb, self.simd_doubles)
+        return loop_instructions(*forward_dynamics_pieces(self.robot, len(self.feet), True), self.robot.nb,
+                                 self.simd_doubles)
 
     def cost(self):
         return body_tree.LOOP_WEIGHT * self.instructions()
 
     def loops(self):
         """The tree's table, then the loop (the low-rank product's RNEA loop reads the same table and a)."""
-        return [body_tree.table(self.robot), f"alignas(64) Scalar solve_a[{self.robot.nv}];",
-                f"articulated_inverse<Scalar, {self.robot.nb}, {self.robot.nv}>(tree, solve_X, solve_r, {self.output}, solve_a);"]
+        nb, nv, nf = self.robot.nb, self.robot.nv, len(self.feet)
+        return [body_tree.table(self.robot), feet_table(self.feet), f"alignas(64) Scalar solve_a[{nv}];",
+                f"articulated_inverse<Scalar, {nb}, {nv}, {nf}>(tree, feet, solve_X, solve_g, v, tau, f, {self.output}, "
+                f"solve_a);"]

@@ -14,14 +14,12 @@ from typing import ClassVar, Tuple
 
 from ..algorithms import crba
 from . import articulated_inverse, body_tree, trace  # trace reads TERMS' entries here: imported, not from-imported
-from .body_tree import APPLY, CROSS, PROJECTION, SPATIAL_CROSS
 
 # The quantities with the form: (Velocity, Acceleration, Gravity) of the bodies' forces, as
 # articulated_detail::body_forces takes them (forward dynamics: at q̈ = 0, then the recursion).
 FORCES = {"forward_dynamics": (True, False, True), "inverse_dynamics": (True, True, True),
           "bias": (True, False, True), "quadratic_velocity_terms": (True, False, False)}
 TERMS = {name: name + "_chain_terms" for name in FORCES}  # each body's transform, and gravity
-FOOT = ((9, 9), CROSS, (0, 6))  # p0 + E0ᵀ offset, p × f, the wrench off its body's force
 
 
 def terms_spec(robot, signature_inputs):
@@ -52,17 +50,10 @@ class ChainLoop:
 
     def _pieces(self):
         """(per-body pieces, per-column pieces), each (multiplications, additions), by trip count."""
+        if self.name == "forward_dynamics":
+            return articulated_inverse.forward_dynamics_pieces(self.robot, len(self.feet), False)
         velocity, acceleration, _ = FORCES[self.name]
-        nv = self.robot.nb - 1
-        body = [(0, 6), APPLY]  # a along the chain, I a
-        body += [(6, 6), SPATIAL_CROSS, (6, 0), APPLY, SPATIAL_CROSS, (0, 6)] if velocity else []
-        body += [(6, 6) if velocity else (6, 0)] if acceleration else []  # + S q̈
-        body += [(0, 6), PROJECTION]  # Σ F from the body on, Sᵀ of it
-        pieces = body_tree.root_frame_pieces(self.robot) + body * nv + list(FOOT) * len(self.feet)
-        if self.name != "forward_dynamics":
-            return pieces, []
-        bodies, columns = articulated_inverse.recursion_pieces(self.robot.nb, False)
-        return pieces + bodies + [(0, 1)] * nv, columns  # τ − Sᵀ F
+        return articulated_inverse.body_force_pieces(self.robot, velocity, acceleration, 0), []
 
     def operations(self):
         pieces = [piece for part in self._pieces() for piece in part]
@@ -84,12 +75,9 @@ class ChainLoop:
             return [body_tree.table(self.robot),
                     f"chain_inverse_dynamics<Scalar, {nb}, {nv}, {velocity}, {acceleration}, {gravity}>(tree, solve_X, "
                     f"solve_g, v, {a}, {self.output});"]
-        nf = len(self.feet)
-        bodies = ", ".join(str(body) for body, _ in self.feet) or "0"
-        offsets = ", ".join("{%s}" % (", ".join(repr(float(o[r])) for _, o in self.feet) or "0.0") for r in range(3))
-        return [body_tree.table(self.robot), f"RBDC_TABLE ChainFeet<{nf}> feet{{{{{bodies}}}, {{{offsets}}}}};",
-                f"articulated_forward_dynamics<Scalar, {nb}, {nv}, {nf}>(tree, feet, solve_X, solve_g, v, tau, f, "
-                f"{self.output});"]
+        return [body_tree.table(self.robot), articulated_inverse.feet_table(self.feet),
+                f"articulated_forward_dynamics<Scalar, {nb}, {nv}, {len(self.feet)}>(tree, feet, solve_X, solve_g, v, "
+                f"tau, f, {self.output});"]
 
     def emission(self, terms_name):
         loop = ("articulated_forward_dynamics runs the RNEA's c + g − Jᵀf and the articulated-body recursion"
@@ -100,8 +88,6 @@ class ChainLoop:
 
 def looped_function(robot, scene, name):
     """`name` in its chain-loop form: the traced transforms and gravity, with the loop."""
-    position = {body: k for k, body in enumerate(crba.depth_first_order(robot))}
-    feet = tuple((position[foot.body], tuple(foot.offset)) for foot in scene.feet_for(robot)) \
-        if name == "forward_dynamics" else ()
+    feet = articulated_inverse.chain_feet(robot, scene) if name == "forward_dynamics" else ()
     return trace.with_loop(robot, scene, name, TERMS[name], lambda terms, outputs: ChainLoop(
         robot=robot, name=name, output=outputs[0].name, terms=terms.outputs, feet=feet))

@@ -333,9 +333,9 @@ def forward_dynamics_derivative_terms(m, looped_rnea=False, looped_factor=False,
     With `looped_rnea`, the RNEA's part of rhs left to its loop, which reads the bodies' transforms
     `X`, gravity `g` and the acceleration `a`; with `looped_factor` also M's factor (the looped CRBA
     and factor), and a by the articulated-body algorithm (O(n)); with `low_rank` (a fixed-base chain,
-    dofs in body order), instead of a, `r` = Sᵀτ + Jᵀf − c − g, which the loop forming M⁻¹ takes to
-    a = M⁻¹r (articulated_inverse.py): one RNEA pass traced where the articulated-body algorithm took
-    three."""
+    dofs in body order), no a: the loop forming M⁻¹ runs the RNEA's forces and takes Sᵀτ + Jᵀf − c − g
+    to q̈ itself (articulated_inverse.py), where the traced part took the articulated-body algorithm's
+    three passes, then one RNEA pass."""
     nv = m.robot.nv
     columns = _forward_dynamics_columns(m, looped_rnea)
     solved = [name for name in FORWARD_DYNAMICS_COLUMNS
@@ -350,9 +350,9 @@ def forward_dynamics_derivative_terms(m, looped_rnea=False, looped_factor=False,
         terms.update(transforms_and_gravity(m), a=m.a)
         if m.feet:
             terms.update(feet_force_derivatives.axes_and_moments(m))
-    if low_rank:
+    if low_rank:  # q̈ comes from the loop (articulated_inverse.py)
         del terms["a"]
-        return {**terms, "r": fd.torques_minus(m, rnea.bias_minus_external(m))}
+        return terms
     return replace_symbols(terms, m.a, aba.forward_dynamics_aba(m) if looped_factor else fd.forward_dynamics(m))
 
 
@@ -544,15 +544,14 @@ def spec(robot, nf, nc):
                   ("q", "v", "tau", "f"),
                   [("rhs", nv, padded(solved), "right-hand sides without the RNEA's part, row-major"),
                    ("X", 12, robot.nb - 1, "each body's transform (the body_transforms function's X)"),
-                   ("g", 3, 1, "gravity in the root's coordinates"), last] + looped_feet,
+                   ("g", 3, 1, "gravity in the root's coordinates")] + [last] * (last is not None) + looped_feet,
                   lambda m, low_rank=low_rank: forward_dynamics_derivative_terms(m, looped_rnea=True, looped_factor=True,
                                                                                   low_rank=low_rank))
            for name, form, last, low_rank in (
                ("forward_dynamics_derivative_tree_terms",
                 "looped form with the looped CRBA, factor and RNEA derivatives",
                 ("a", nv, 1, "the forward dynamics' a (articulated-body algorithm)"), False),
-               ("forward_dynamics_derivative_chain_terms", "low-rank form",
-                ("r", nv, 1, "Sᵀτ + Jᵀf − c − g, which M⁻¹ takes to a"), True))},
+               ("forward_dynamics_derivative_chain_terms", "low-rank form", None, True))},
         "feet_velocity_derivatives": (
             "Derivative of the world foot velocities at fixed v.", ("q", "v"),
             [("dpdot_dq", 3 * nf, nv, "∂ṗ/∂q, rows 3k + r: foot k, world axis r" + on_q)],

@@ -461,7 +461,7 @@ def _solve(robot, scene, name, terms, outputs, rnea=False, factor=False, low_ran
                 looped_rnea_derivatives.inverse_times_vectors(robot, terms.outputs, bool(scene.feet_for(robot))),
                 None, (), ())
             by_factor = packed.operations()["mul"] + inverse.operations()["mul"]
-            inverse = articulated_inverse.ArticulatedInverse(robot=robot)
+            inverse = articulated_inverse.ArticulatedInverse(robot=robot, feet=articulated_inverse.chain_feet(robot, scene))
             inverse = replace(inverse, comparison=(inverse.operations()["mul"], by_factor))
         solve = LoopedSolve(parents=parents, blocks=blocks, terms=terms.outputs,
                             rnea=subtract if rnea else None, factor=packed if factor and not low_rank else None,
