@@ -7,11 +7,11 @@
 // forward_dynamics for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   arm7/common/forward_dynamics_c0aa796c5b34.hpp
+//   arm7/common/forward_dynamics_a1d7a24bbbde.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/forward_dynamics_c0aa796c5b34.hpp"
+#include "arm7/common/forward_dynamics_a1d7a24bbbde.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -28,8 +28,8 @@ namespace rbdc_gen::arm7::full {
 ///             627  467    5     0    14    0   1113
 /// schedule: scalar tree: 1113 arithmetic instructions (critical path 162 cycles, cost 1518),
 ///   articulated-body algorithm 1261 (path 284, cost 1971), one loop along the chain 3015
-///   (path 162, cost 4617)
-using ::rbdc_gen::arm7::common::forward_dynamics_c0aa796c5b34::forward_dynamics;
+///   (path 162, cost 3735)
+using ::rbdc_gen::arm7::common::forward_dynamics_a1d7a24bbbde::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // quadratic_velocity_terms for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose quadratic_velocity_terms is the same code:
-//   arm7/common/quadratic_velocity_terms_67e882f2c6db.hpp
+//   arm7/common/quadratic_velocity_terms_51ad599d626f.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/quadratic_velocity_terms_67e882f2c6db.hpp"
+#include "arm7/common/quadratic_velocity_terms_51ad599d626f.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -24,8 +24,8 @@ namespace rbdc_gen::arm7::full {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             305  220    0     0    12    1    538
 /// schedule: scalar tree: 538 arithmetic instructions (critical path 99 cycles, cost 786), one loop
-///   along the chain 1646 (path 99, cost 2543)
-using ::rbdc_gen::arm7::common::quadratic_velocity_terms_67e882f2c6db::quadratic_velocity_terms;
+///   along the chain 1646 (path 99, cost 1693)
+using ::rbdc_gen::arm7::common::quadratic_velocity_terms_51ad599d626f::quadratic_velocity_terms;
 
 /// quadratic_velocity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

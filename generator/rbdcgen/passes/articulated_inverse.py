@@ -28,21 +28,26 @@ FOOT = ((9, 9), CROSS, (0, 6))  # p0 + E0ᵀ offset, p × f, the wrench off its 
 
 
 def body_force_pieces(robot, velocity, acceleration, n_feet):
-    """articulated_detail::body_forces' pieces (root frames and inertias, each body's a along the chain
-    and I a; with `velocity` v along it, (v_λ × S) q̇, v ×* I v; with `acceleration` S q̈; the feet's
-    wrenches), then each body's Σ F from it on and Sᵀ of it."""
-    body = [(0, 6), APPLY]
-    body += [(6, 6), SPATIAL_CROSS, (6, 0), APPLY, SPATIAL_CROSS, (0, 6)] if velocity else []
-    body += [(6, 6) if velocity else (6, 0)] if acceleration else []
-    body += [(0, 6), PROJECTION]
-    return body_tree.root_frame_pieces(robot) + body * (robot.nb - 1) + list(FOOT) * n_feet
+    """articulated_detail::body_forces' pieces and each body's Σ F from it on and Sᵀ of it, as (the
+    pieces along the chain, the pieces SIMD across the bodies): the root frames' products and a, v and
+    ΣF carried from body to body; each body's axis, subspace and inertia, (v_λ × S) q̇ (with
+    `velocity`), S q̈ (with `acceleration`), I a and v ×* I v across them; the feet's wrenches."""
+    nv = robot.nb - 1
+    along = [(0, 6)] + ([(6, 6)] if velocity else []) + [(0, 6), PROJECTION]
+    across = [APPLY] + ([SPATIAL_CROSS, (6, 0), APPLY, SPATIAL_CROSS, (0, 6)] if velocity else [])
+    across += [(6, 6) if velocity else (6, 0)] if acceleration else []
+    frames = [body_tree.ROOT_TRANSFORM] * sum(robot.parent[i] != 0 for i in range(1, robot.nb))
+    return (frames + along * nv + list(FOOT) * n_feet,
+            [body_tree.AXIS, body_tree.REVOLUTE_SUBSPACE, body_tree.CONGRUENCE] * nv + across * nv)
 
 
 def forward_dynamics_pieces(robot, n_feet, unit_columns):
-    """(per-body pieces, per-column pieces) of articulated_detail::forward_dynamics: the forces at q̈ = 0,
-    τ − Sᵀ ΣF, the recursion (with `unit_columns`, M⁻¹'s as well)."""
+    """(pieces along the chain, pieces SIMD across the bodies, per-column pieces) of
+    articulated_detail::forward_dynamics: the forces at q̈ = 0, τ − Sᵀ ΣF, the recursion (with
+    `unit_columns`, M⁻¹'s as well)."""
     bodies, columns = recursion_pieces(robot.nb, unit_columns)
-    return body_force_pieces(robot, True, False, n_feet) + bodies + [(0, 1)] * (robot.nb - 1), columns
+    along, across = body_force_pieces(robot, True, False, n_feet)
+    return along + bodies + [(0, 1)] * (robot.nb - 1), across, columns
 
 
 def feet_table(feet):
@@ -73,7 +78,7 @@ def recursion_pieces(nb, unit_columns):
     return bodies, columns
 
 
-def loop_instructions(bodies, columns, nb, simd_doubles):
+def loop_instructions(bodies, columns, nb, simd_doubles=4):
     """Per body as the tree loops count theirs (looped_crba.LoopedCrba: the larger of the two counts,
     a step's overhead each); per column, SIMD across the columns, a load and a multiply-add per
     multiplication, simd_doubles columns at a time (as looped_inverse.LoopedInverse)."""
@@ -102,8 +107,8 @@ class ArticulatedInverse:
                 "div": self.robot.nb - 1, "neg": self.robot.nb - 1 + 3}  # −D⁻¹ each body, −g
 
     def instructions(self):
-        return loop_instructions(*forward_dynamics_pieces(self.robot, len(self.feet), True), self.robot.nb,
-                                 self.simd_doubles)
+        along, across, columns = forward_dynamics_pieces(self.robot, len(self.feet), True)
+        return loop_instructions(along + across, columns, self.robot.nb, self.simd_doubles)
 
     def cost(self):
         return body_tree.LOOP_WEIGHT * self.instructions()

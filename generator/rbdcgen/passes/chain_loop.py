@@ -20,6 +20,7 @@ from . import articulated_inverse, body_tree, trace  # trace reads TERMS' entrie
 FORCES = {"forward_dynamics": (True, False, True), "inverse_dynamics": (True, True, True),
           "bias": (True, False, True), "quadratic_velocity_terms": (True, False, False)}
 TERMS = {name: name + "_chain_terms" for name in FORCES}  # each body's transform, and gravity
+SIMD_DOUBLES = 2  # bodies per vector instruction the cost model assumes for the pieces SIMD across them (cost)
 
 
 def terms_spec(robot, signature_inputs):
@@ -49,11 +50,12 @@ class ChainLoop:
     headers: ClassVar[Tuple[str, ...]] = (body_tree.HEADER, articulated_inverse.HEADER)
 
     def _pieces(self):
-        """(per-body pieces, per-column pieces), each (multiplications, additions), by trip count."""
+        """(pieces along the chain, pieces SIMD across the bodies, per-column pieces), each
+        (multiplications, additions), by trip count."""
         if self.name == "forward_dynamics":
             return articulated_inverse.forward_dynamics_pieces(self.robot, len(self.feet), False)
         velocity, acceleration, _ = FORCES[self.name]
-        return articulated_inverse.body_force_pieces(self.robot, velocity, acceleration, 0), []
+        return articulated_inverse.body_force_pieces(self.robot, velocity, acceleration, 0) + ([],)
 
     def operations(self):
         pieces = [piece for part in self._pieces() for piece in part]
@@ -62,10 +64,18 @@ class ChainLoop:
                 "neg": 3 if FORCES[self.name][2] else 0}
 
     def instructions(self):
-        return articulated_inverse.loop_instructions(*self._pieces(), self.robot.nb, 4)
+        along, across, columns = self._pieces()
+        return articulated_inverse.loop_instructions(along + across, columns, self.robot.nb)
 
     def cost(self):
-        return body_tree.LOOP_WEIGHT * self.instructions()
+        """As the other loops' (body_tree.LOOP_WEIGHT), the pieces SIMD across the bodies at SIMD_DOUBLES
+        bodies an instruction (2, not AVX2's 4: their loads and stores come with them). Counted whole,
+        the RNEA's loop lost to the straight-line code by cost on a 50-link chain, where it ran 12 % (ID)
+        and 38 % (bias) faster; counted at 4, it won on a 30-link chain's ID, 7 % slower there. Measured
+        on Zen 5, clang 14 (docs/performance.md, "A chain's dynamics as one loop")."""
+        along, across, columns = self._pieces()
+        simd = max(sum(m for m, _ in across), sum(a for _, a in across)) // SIMD_DOUBLES
+        return body_tree.LOOP_WEIGHT * (articulated_inverse.loop_instructions(along, columns, self.robot.nb) + simd)
 
     def loops(self):
         nb, nv = self.robot.nb, self.robot.nv

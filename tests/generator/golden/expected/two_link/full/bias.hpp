@@ -6,11 +6,11 @@
 // bias for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   two_link/common/bias_96289002f83b.hpp
+//   two_link/common/bias_875ced90fca8.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/bias_96289002f83b.hpp"
+#include "two_link/common/bias_875ced90fca8.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -23,8 +23,8 @@ namespace rbdc_gen::two_link::full {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              29   15    0     0     2    0     46
 /// schedule: scalar tree: 46 arithmetic instructions (critical path 49 cycles, cost 168), one loop
-///   along the chain 459 (path 49, cost 759)
-using ::rbdc_gen::two_link::common::bias_96289002f83b::bias;
+///   along the chain 459 (path 49, cost 525)
+using ::rbdc_gen::two_link::common::bias_875ced90fca8::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -6,11 +6,11 @@
 // forward_dynamics for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   two_link/common/forward_dynamics_87811ff3b561.hpp
+//   two_link/common/forward_dynamics_0a2fcdf3c3d1.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/forward_dynamics_87811ff3b561.hpp"
+#include "two_link/common/forward_dynamics_0a2fcdf3c3d1.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -27,8 +27,8 @@ namespace rbdc_gen::two_link::full {
 ///              62   37    1     0     2    0    102
 /// schedule: scalar tree: 102 arithmetic instructions (critical path 59 cycles, cost 250),
 ///   articulated-body algorithm 105 (path 59, cost 252), one loop along the chain 843 (path
-///   59, cost 1322)
-using ::rbdc_gen::two_link::common::forward_dynamics_87811ff3b561::forward_dynamics;
+///   59, cost 1070)
+using ::rbdc_gen::two_link::common::forward_dynamics_0a2fcdf3c3d1::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

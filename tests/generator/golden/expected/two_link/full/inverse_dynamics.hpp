@@ -6,11 +6,11 @@
 // inverse_dynamics for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   two_link/common/inverse_dynamics_44a3086f4d5e.hpp
+//   two_link/common/inverse_dynamics_b75acfefb320.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/inverse_dynamics_44a3086f4d5e.hpp"
+#include "two_link/common/inverse_dynamics_b75acfefb320.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -24,8 +24,8 @@ namespace rbdc_gen::two_link::full {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              35   21    0     0     2    0     58
 /// schedule: scalar tree: 58 arithmetic instructions (critical path 49 cycles, cost 180), one loop
-///   along the chain 471 (path 49, cost 776)
-using ::rbdc_gen::two_link::common::inverse_dynamics_44a3086f4d5e::inverse_dynamics;
+///   along the chain 471 (path 49, cost 534)
+using ::rbdc_gen::two_link::common::inverse_dynamics_b75acfefb320::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

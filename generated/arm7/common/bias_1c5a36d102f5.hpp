@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::bias_bf02d49a6961 {
+namespace rbdc_gen::arm7::common::bias_1c5a36d102f5 {
 
 /// Bias c + g in one pass (inverse dynamics at a = 0, without the acceleration terms).
 ///
@@ -21,7 +21,7 @@ namespace rbdc_gen::arm7::common::bias_bf02d49a6961 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             314  227    0     0    12    1    554
 /// schedule: scalar tree: 554 arithmetic instructions (critical path 99 cycles, cost 802), one loop
-///   along the chain 1646 (path 99, cost 2543)
+///   along the chain 1646 (path 99, cost 1693)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
   // sines and cosines of the joint angles
@@ -174,4 +174,4 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   cg[0] = t112 - (sin_joint2 * ((cos_joint3 * t103) - t110));
 }
 
-}  // namespace rbdc_gen::arm7::common::bias_bf02d49a6961
+}  // namespace rbdc_gen::arm7::common::bias_1c5a36d102f5

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::two_link::common::quadratic_velocity_terms_1278ce772b6a {
+namespace rbdc_gen::two_link::common::quadratic_velocity_terms_454b8ee8ae4f {
 
 /// Quadratic velocity terms c (paper 000 Alg. 2).
 ///
@@ -21,7 +21,7 @@ namespace rbdc_gen::two_link::common::quadratic_velocity_terms_1278ce772b6a {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              23    9    0     0     0    0     32
 /// schedule: scalar tree: 32 arithmetic instructions (critical path 30 cycles, cost 107), one loop
-///   along the chain 459 (path 34, cost 722)
+///   along the chain 459 (path 34, cost 488)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Scalar* v, Scalar* c) noexcept {
   // outward pass: body 1 upper
@@ -41,4 +41,4 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   c[0] = t7 + (Scalar(0.8) * (((Scalar(0.6) * v[0]) * t0) + (Scalar(0.4794255386042031) * t6)));
 }
 
-}  // namespace rbdc_gen::two_link::common::quadratic_velocity_terms_1278ce772b6a
+}  // namespace rbdc_gen::two_link::common::quadratic_velocity_terms_454b8ee8ae4f

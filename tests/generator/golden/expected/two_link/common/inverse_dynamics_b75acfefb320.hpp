@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::two_link::common::inverse_dynamics_44a3086f4d5e {
+namespace rbdc_gen::two_link::common::inverse_dynamics_b75acfefb320 {
 
 /// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3).
 ///
@@ -22,7 +22,7 @@ namespace rbdc_gen::two_link::common::inverse_dynamics_44a3086f4d5e {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              35   21    0     0     2    0     58
 /// schedule: scalar tree: 58 arithmetic instructions (critical path 49 cycles, cost 180), one loop
-///   along the chain 471 (path 49, cost 776)
+///   along the chain 471 (path 49, cost 534)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
   // sines and cosines of the joint angles
@@ -49,4 +49,4 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   tau[0] = t9 + (Scalar(0.8) * (((Scalar(0.0029589260322890297) * a[0]) + ((Scalar(0.6) * v[0]) * t1)) + (Scalar(0.4794255386042031) * t8)));
 }
 
-}  // namespace rbdc_gen::two_link::common::inverse_dynamics_44a3086f4d5e
+}  // namespace rbdc_gen::two_link::common::inverse_dynamics_b75acfefb320

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::quadratic_velocity_terms_67e882f2c6db {
+namespace rbdc_gen::arm7::common::quadratic_velocity_terms_51ad599d626f {
 
 /// Quadratic velocity terms c (paper 000 Alg. 2).
 ///
@@ -21,7 +21,7 @@ namespace rbdc_gen::arm7::common::quadratic_velocity_terms_67e882f2c6db {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             305  220    0     0    12    1    538
 /// schedule: scalar tree: 538 arithmetic instructions (critical path 99 cycles, cost 786), one loop
-///   along the chain 1646 (path 99, cost 2543)
+///   along the chain 1646 (path 99, cost 1693)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Scalar* v, Scalar* c) noexcept {
   // sines and cosines of the joint angles
@@ -171,4 +171,4 @@ RBDC_HOST_DEVICE inline void quadratic_velocity_terms(const Scalar* q, const Sca
   c[0] = t109 - (sin_joint2 * ((cos_joint3 * t100) - t107));
 }
 
-}  // namespace rbdc_gen::arm7::common::quadratic_velocity_terms_67e882f2c6db
+}  // namespace rbdc_gen::arm7::common::quadratic_velocity_terms_51ad599d626f

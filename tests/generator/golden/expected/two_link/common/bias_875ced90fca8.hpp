@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::two_link::common::bias_96289002f83b {
+namespace rbdc_gen::two_link::common::bias_875ced90fca8 {
 
 /// Bias c + g in one pass (inverse dynamics at a = 0, without the acceleration terms).
 ///
@@ -21,7 +21,7 @@ namespace rbdc_gen::two_link::common::bias_96289002f83b {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              29   15    0     0     2    0     46
 /// schedule: scalar tree: 46 arithmetic instructions (critical path 49 cycles, cost 168), one loop
-///   along the chain 459 (path 49, cost 759)
+///   along the chain 459 (path 49, cost 525)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) noexcept {
   // sines and cosines of the joint angles
@@ -47,4 +47,4 @@ RBDC_HOST_DEVICE inline void bias(const Scalar* q, const Scalar* v, Scalar* cg) 
   cg[0] = t8 + (Scalar(0.8) * (((Scalar(0.6) * v[0]) * t1) + (Scalar(0.4794255386042031) * t7)));
 }
 
-}  // namespace rbdc_gen::two_link::common::bias_96289002f83b
+}  // namespace rbdc_gen::two_link::common::bias_875ced90fca8

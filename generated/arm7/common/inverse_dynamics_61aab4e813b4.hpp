@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::inverse_dynamics_42a7d7b9df57 {
+namespace rbdc_gen::arm7::common::inverse_dynamics_61aab4e813b4 {
 
 /// Inverse dynamics M a + c + g (RNEA, paper 000 Algs. 2-3).
 ///
@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::common::inverse_dynamics_42a7d7b9df57 {
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             323  241    0     0    12    1    577
 /// schedule: scalar tree: 577 arithmetic instructions (critical path 102 cycles, cost 832), one
-///   loop along the chain 1688 (path 102, cost 2609)
+///   loop along the chain 1688 (path 102, cost 1730)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* tau) noexcept {
   // sines and cosines of the joint angles
@@ -181,4 +181,4 @@ RBDC_HOST_DEVICE inline void inverse_dynamics(const Scalar* q, const Scalar* v, 
   tau[0] = ((Scalar(1.4602500000000005) * a[0]) + t118) - (sin_joint2 * ((cos_joint3 * t108) + (t115 - (sin_joint3 * t109))));
 }
 
-}  // namespace rbdc_gen::arm7::common::inverse_dynamics_42a7d7b9df57
+}  // namespace rbdc_gen::arm7::common::inverse_dynamics_61aab4e813b4

@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::arm7::common::forward_dynamics_c0aa796c5b34 {
+namespace rbdc_gen::arm7::common::forward_dynamics_a1d7a24bbbde {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
 /// algorithm where that is cheaper: the schedule line says which).
@@ -25,7 +25,7 @@ namespace rbdc_gen::arm7::common::forward_dynamics_c0aa796c5b34 {
 ///             627  467    5     0    14    0   1113
 /// schedule: scalar tree: 1113 arithmetic instructions (critical path 162 cycles, cost 1518),
 ///   articulated-body algorithm 1261 (path 284, cost 1971), one loop along the chain 3015
-///   (path 162, cost 4617)
+///   (path 162, cost 3735)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
   // sines and cosines of the joint angles
@@ -351,4 +351,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[6] = ((t223 * t273) + ((((Scalar(2000) * t131) - (t226 * t270)) - (t225 * t271)) - (t224 * t272))) - (cos_joint6 * t274);
 }
 
-}  // namespace rbdc_gen::arm7::common::forward_dynamics_c0aa796c5b34
+}  // namespace rbdc_gen::arm7::common::forward_dynamics_a1d7a24bbbde

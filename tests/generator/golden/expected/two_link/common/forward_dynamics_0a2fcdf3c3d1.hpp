@@ -10,7 +10,7 @@
 
 #include "rbdc_gen/support.hpp"
 
-namespace rbdc_gen::two_link::common::forward_dynamics_87811ff3b561 {
+namespace rbdc_gen::two_link::common::forward_dynamics_0a2fcdf3c3d1 {
 
 /// Forward dynamics: solves M a = Sᵀτ + τ_e − c − g (CRBA + sparse LDLᵀ, or the articulated-body
 /// algorithm where that is cheaper: the schedule line says which).
@@ -25,7 +25,7 @@ namespace rbdc_gen::two_link::common::forward_dynamics_87811ff3b561 {
 ///              62   37    1     0     2    0    102
 /// schedule: scalar tree: 102 arithmetic instructions (critical path 59 cycles, cost 250),
 ///   articulated-body algorithm 105 (path 59, cost 252), one loop along the chain 843 (path
-///   59, cost 1322)
+///   59, cost 1070)
 template <class Scalar>
 RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, const Scalar* tau, const Scalar* f, Scalar* a) noexcept {
   // sines and cosines of the joint angles
@@ -66,4 +66,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics(const Scalar* q, const Scalar* v, 
   a[0] = (t14 - (Scalar(0.8) * (((Scalar(0.6) * v[0]) * t7) + (Scalar(0.4794255386042031) * t13)))) * t19;
 }
 
-}  // namespace rbdc_gen::two_link::common::forward_dynamics_87811ff3b561
+}  // namespace rbdc_gen::two_link::common::forward_dynamics_0a2fcdf3c3d1
