@@ -12,8 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar, Tuple
 
-from ..algorithms import crba
-from . import articulated_inverse, body_tree, trace  # trace reads TERMS' entries here: imported, not from-imported
+from . import articulated_inverse, body_tree, differentiate, trace  # trace reads TERMS here: imported, not from-imported
 
 # The quantities with the form: (Velocity, Acceleration, Gravity) of the bodies' forces, as
 # articulated_detail::body_forces takes them (forward dynamics: at q̈ = 0, then the recursion).
@@ -29,7 +28,7 @@ def terms_spec(robot, signature_inputs):
                     "transform, and gravity in root coordinates." % name, signature_inputs[name],
                     [("X", 12, robot.nb - 1, "each body's transform, as body_transforms writes it"),
                      ("g", 3, 1, "gravity in root coordinates")],
-                    lambda m: {"X": crba.body_transforms(m), "g": m.gravity_in_base()})
+                    differentiate.transforms_and_gravity)
             for name, terms in TERMS.items()}
 
 
