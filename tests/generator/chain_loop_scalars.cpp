@@ -2,14 +2,14 @@
 // articulated_forward_dynamics, articulated_inverse) instantiated for every scalar the generated API
 // promises: float, long double, __float128 and SIMD packs of states (rbdc_gen::Batch). Compiled
 // (-fsyntax-only, the project's compiler with GNU extensions, as scalar_types_test.cpp) by generator_verify_chain_low_rank
-// against the 32-link chain's kept headers, whose double instantiation that test verifies against the
+// against the 34-link chain's kept headers, whose double instantiation that test verifies against the
 // runtime.
-#include "chain32/chain_loop.hpp"
-#include "chain32/forward_dynamics_derivatives_low_rank.hpp"
+#include "chain34/chain_loop.hpp"
+#include "chain34/forward_dynamics_derivatives_low_rank.hpp"
 #include "rbdc_gen/batch.hpp"
 
-namespace loop = rbdc_gen::chain32::chain_loop;
-namespace low_rank = rbdc_gen::chain32::forward_dynamics_derivatives_low_rank;
+namespace loop = rbdc_gen::chain34::chain_loop;
+namespace low_rank = rbdc_gen::chain34::forward_dynamics_derivatives_low_rank;
 
 template <class S>
 void every_loop(S* q, S* v, S* a, S* f, S* out, S* da_dq, S* da_dv, S* da_dtau, S* da_df) {
