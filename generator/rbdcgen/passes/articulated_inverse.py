@@ -22,8 +22,8 @@ DOT8 = (8, 7)               # x · y padded to 8
 BODY_LEAVES_FIRST = (APPLY, (48, 40), DOT8, (1, 0), (0, 8), DOT8, (1, 2), (8, 8),
                      DOT8, (2, 2), (8, 8), (48, 48), (8, 0))
 BODY_ROOT_FIRST = (DOT8, DOT8, (1, 2), (8, 8))  # a − wᵀ p − (wᵀ S_above) a_above; p + S_above a_above
-BELOW = (13, 11)            # a column below the body, leaves first: Sᵀ p^A, D⁻¹ u, p^A + U m
-ABOVE = (6, 6)              # a column from the body on, root first: m − wᵀ a, or a + S q̈
+BELOW = (13, 12)            # a column from the body's on, leaves first: Sᵀ p^A, D⁻¹(δ − ·), p^A + U m
+ABOVE = (6, 6)              # a column from the body's on, root first: m − wᵀ a, or a + S q̈
 FOOT = ((9, 9), CROSS, (0, 6))  # p0 + E0ᵀ offset, p × f, the wrench off its body's force
 
 
@@ -70,11 +70,10 @@ def recursion_pieces(nb, unit_columns):
     bodies, columns = [], []
     for i in range(nb - 1, 0, -1):  # leaves first
         bodies += ([ACCUMULATE] if i < nb - 1 else []) + list(BODY_LEAVES_FIRST)
-        columns += [BELOW] * (nv - i) if unit_columns else []  # the columns after the body's own
     for i in range(2, nb):  # root first: the first body's a is its own
         bodies += BODY_ROOT_FIRST
-        columns += [ABOVE] * (2 * (nv - i) + 1) if unit_columns else []  # m − wᵀ a from i on, a + S q̈ after
-    columns += [(ABOVE[0], 0)] * (nv - 1) if unit_columns else []  # the first body's a: S q̈
+    # M⁻¹ (inverse_columns, counted for one column a run): dof d's row from column d on, each way
+    columns = [piece for d in range(nv) for piece in [BELOW] * (nv - d) + [ABOVE] * 2 * (nv - d)] if unit_columns else []
     return bodies, columns
 
 
@@ -104,7 +103,7 @@ class ArticulatedInverse:
     def operations(self):
         pieces = [piece for part in forward_dynamics_pieces(self.robot, len(self.feet), True) for piece in part]
         return {"mul": sum(m for m, _ in pieces), "add": sum(a for _, a in pieces),
-                "div": self.robot.nb - 1, "neg": self.robot.nb - 1 + 3}  # −D⁻¹ each body, −g
+                "div": self.robot.nb - 1, "neg": 3}  # −g
 
     def instructions(self):
         along, across, columns = forward_dynamics_pieces(self.robot, len(self.feet), True)
