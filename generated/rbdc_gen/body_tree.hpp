@@ -250,7 +250,9 @@ template <class Scalar, int NB, int NP>
 RBDC_HOST_DEVICE inline void root_frames(const BodyTree<NB>& tree, const Scalar* X, Scalar (*__restrict E0)[NP],
                                          Scalar (*__restrict p0)[NP], Scalar (*__restrict S)[NP]) noexcept {
   const bool walked = chain_frames(tree, X, E0, p0);
-  Scalar Ep[9] = {}, pp[3] = {};  // the parent's frame: along a chain kept from the body before, not stored and loaded
+  // the parent's frame: kept from the body before where that is the parent (along a chain, and
+  // along a tree's runs: TALOS's walk otherwise waits on what the body before stored), not loaded
+  Scalar Ep[9] = {}, pp[3] = {};
   RBDC_SCALAR_LOOP
   for (int i = walked ? NB : 1; i < NB; ++i) {
     const int parent = tree.parent[i];
@@ -261,7 +263,7 @@ RBDC_HOST_DEVICE inline void root_frames(const BodyTree<NB>& tree, const Scalar*
       for (int k = 0; k < 9; ++k) Ei[k] = E[k];
       for (int k = 0; k < 3; ++k) pi[k] = r[k];
     } else {
-      if (!tree.chain) {
+      if (parent != i - 1) {
         load<9>(E0, parent, Ep);
         load<3>(p0, parent, pp);
       }
