@@ -26,10 +26,10 @@ import generated_driver  # noqa: E402
 # (phase name, the text that opens it in rnea_derivatives_loop); the last phase ends at the return
 PHASES = [
     ("root frames and inertias", "  {\n    Scalar E0[9][NP], p0[3][NP];\n    root_frames"),
-    ("outward: v, u", "  for (int k = 0; k < 6; ++k) {  // the root: the trunk"),
-    ("outward: a, c", "  RBDC_SCALAR_LOOP\n  for (int i = 1; i < NB; ++i) {  // outward, parents first: a"),
-    ("forces, momenta, rates", "  for (int i = Floating ? 0 : 1; i < NB; ++i) {  // each body"),
-    ("inward sums", "  RBDC_SCALAR_LOOP\n  for (int i = NB - 1; i >= 1; --i) {  // inward: the subtrees"),
+    ("outward: v, u, a", "  for (int k = 0; k < 6; ++k) {  // the root: the trunk"),
+    ("c", "  // c = a_λ × S + v_λ × u = a × S + v × u"),
+    ("forces, momenta, rates", "  for (int i = 0; i < NP; ++i) {  // each body"),
+    ("inward sums", "  // Inward, leaves first"),
     ("rows and columns (ρ, G, D)", "  // ρ^I = I^C S, ρ^B"),
     ("outputs cleared", "  constexpr bool kFeet = !std::is_same_v<Feet, NoFeetForces>;\n  if constexpr (TakesVectors"),
     ("the trunk's rows and columns", "  // With the feet: χ component"),

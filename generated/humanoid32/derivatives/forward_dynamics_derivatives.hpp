@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_6ed73a68aa93.hpp
+//   humanoid32/common/forward_dynamics_derivatives_52e9b106755b.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_6ed73a68aa93.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_52e9b106755b.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// @param da_df out 38x15: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations     mul     add  div  sqrt  trig  neg   total
-///             115470  104038   55     0    64  145  219772
+///             117961  106218   55     0    64  145  224443
 /// schedule: limb lanes and looped RNEA derivatives (M's factor and the terms traced with the
 ///   isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of fewer than 4
 ///   repeated to fill the lanes), ∂τ a loop over the bodies, the solve's right-hand sides
@@ -36,7 +36,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///   83017), scalar tree 124296 (path 582, cost 295005), looped solve 64759 (path 582, cost
 ///   106465), limb lanes and a looped solve 51850 (path 582, cost 90426), looped RNEA
 ///   derivatives 68049 (path 582, cost 88872), looped CRBA 75759 (path 620, cost 104532)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_6ed73a68aa93::forward_dynamics_derivatives;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_52e9b106755b::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

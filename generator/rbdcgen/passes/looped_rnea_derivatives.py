@@ -101,26 +101,32 @@ class LoopedRneaDerivatives:
         return (self.writer.startswith("DenseDerivatives") and not self.feet
                 and body_tree.is_chain(body_tree.table_parents(self.robot)) and body_tree.depth_first_dofs(joints))
 
-    def _counts(self, vector_width=1):
+    def _counts(self, vector_width=1, padding=True):
         """(multiplications, additions) of rnea_derivatives_loop, by trip count; the entries' blocks
-        along the subtrees as `vector_width` lanes per instruction."""
+        along the subtrees as `vector_width` lanes per instruction. The loops SIMD across the bodies
+        run over the padding and the root too; without `padding`, over the bodies they are for (the
+        cost model's instructions: the padding rides in the bodies' vectors)."""
         robot, velocity = self.robot, self.velocity
         floating = robot.floating_base
         pieces = body_tree.root_frame_pieces(robot)
         pieces += [(0, 3)] + ([CROSS, (0, 3)] if floating and velocity else [])  # the root's a
-        for i in range(1, robot.nb):  # outward: c, then u, v, a
-            pieces += [SPATIAL_CROSS]
-            pieces += [_times(SPATIAL_CROSS, 2), (12, 18)] if velocity else []
+        padded = -(-robot.nb // PRODUCT_BLOCK) * PRODUCT_BLOCK
+        bodies = range(padded) if padding else range(1, robot.nb)
+        for i in range(1, robot.nb):  # outward: v, u and a
+            pieces += [SPATIAL_CROSS, (12, 12)] if velocity else []
             pieces += [(6, 6)] if self.acceleration else []
-        for i in range(0 if floating else 1, robot.nb):  # forces, momenta, rates
+        for i in bodies:  # c
+            pieces += [SPATIAL_CROSS] + ([SPATIAL_CROSS, (0, 6)] if velocity else [])
+        for i in range(padded) if padding else range(0 if floating else 1, robot.nb):  # forces, momenta, rates
             pieces += [APPLY] + ([APPLY, SPATIAL_CROSS, (0, 6), INERTIA_RATE] if velocity else [])
         for i in range(1, robot.nb):  # inward sums
             if floating or robot.parent[i] != 0:
                 pieces += [ACCUMULATE, (0, 6)] + ([MASSLESS_ACCUMULATE, (0, 6)] if velocity else [])
-        for i in range(1, robot.nb):  # ρ, G, D and the pairs
+        for i in bodies:  # ρ, G, D
             pieces += [APPLY, SPATIAL_CROSS, APPLY, (0, 6)]
             if velocity:
                 pieces += [APPLY, SPATIAL_CROSS, APPLY, (6, 18), APPLY, SPATIAL_CROSS, (0, 12)]
+        for i in range(1, robot.nb):  # the trunk's rows and columns with each body
             if floating:
                 pieces += [CROSS] + ([_times(CROSS, 2), (3, 6)] if velocity else [])
         if self.low_rank:  # InverseTimesVectors instead of the entries
@@ -165,7 +171,7 @@ class LoopedRneaDerivatives:
     def instructions(self):
         """The arithmetic as max(multiplications, additions) (fused), the blocks SIMD_DOUBLES lanes at a
         time, and STEP_OVERHEAD per ancestor step and twice per body."""
-        mul, add = self._counts(SIMD_DOUBLES)
+        mul, add = self._counts(SIMD_DOUBLES, padding=False)
         return max(mul, add) + STEP_OVERHEAD * (ancestor_steps(self.robot) + 2 * self.robot.nb)
 
     def cost(self):

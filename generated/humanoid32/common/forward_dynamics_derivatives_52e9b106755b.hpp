@@ -14,7 +14,7 @@
 #include "rbdc_gen/body_tree.hpp"
 #include "rbdc_gen/rnea_derivatives.hpp"
 
-namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_6ed73a68aa93 {
+namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_52e9b106755b {
 
 /// The traced part of forward_dynamics_derivatives: what the loop below solves.
 template <class Scalar>
@@ -3640,7 +3640,7 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives_terms(const Scalar* q,
 /// @param da_df out 38x15: ∂a/∂f = M⁻¹Jᵀ; column 3k + r: foot k, world axis r
 ///
 /// operations     mul     add  div  sqrt  trig  neg   total
-///             115470  104038   55     0    64  145  219772
+///             117961  106218   55     0    64  145  224443
 /// schedule: limb lanes and looped RNEA derivatives (M's factor and the terms traced with the
 ///   isomorphic limbs in SIMD lanes: 2 of pelvis, 2 of torso (a group of fewer than 4
 ///   repeated to fill the lanes), ∂τ a loop over the bodies, the solve's right-hand sides
@@ -3686,4 +3686,4 @@ RBDC_HOST_DEVICE inline void forward_dynamics_derivatives(const Scalar* q, const
   copy_out_columns<Scalar, 38, 128>(solve_rhs, solve_rhs_out);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_6ed73a68aa93
+}  // namespace rbdc_gen::humanoid32::common::forward_dynamics_derivatives_52e9b106755b

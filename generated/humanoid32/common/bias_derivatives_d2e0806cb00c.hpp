@@ -2,23 +2,22 @@
 // input: robots/humanoid32.urdf (sha256 3b7b8aae52a9743535f111685d4fbda9d72c5154d25036bf0a7617b356f3ad5b)
 // Regenerate instead of editing; docs/generator.md says how.
 //
-// inverse_dynamics_derivatives for humanoid32: straight-line code from rbdc's traced algorithm, constants
+// bias_derivatives for humanoid32: straight-line code from rbdc's traced algorithm, constants
 // folded, shared subexpressions computed once, only what reaches the outputs kept. The file is named
-// by a hash of its content: every scene whose inverse_dynamics_derivatives is this code includes this one file
-// and brings the function into its namespace (<scene>/inverse_dynamics_derivatives.hpp).
+// by a hash of its content: every scene whose bias_derivatives is this code includes this one file
+// and brings the function into its namespace (<scene>/bias_derivatives.hpp).
 #pragma once
 
 #include "rbdc_gen/support.hpp"
 #include "rbdc_gen/body_tree.hpp"
 #include "rbdc_gen/rnea_derivatives.hpp"
 
-namespace rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_ee27f6b01114 {
+namespace rbdc_gen::humanoid32::common::bias_derivatives_d2e0806cb00c {
 
-/// The traced part of inverse_dynamics_derivatives: what the loop below solves.
+/// The traced part of bias_derivatives: what the loop below solves.
 template <class Scalar>
-RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives_terms(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* X, Scalar* g) noexcept {
+RBDC_HOST_DEVICE inline void bias_derivatives_terms(const Scalar* q, const Scalar* v, Scalar* X, Scalar* g) noexcept {
   static_cast<void>(v);
-  static_cast<void>(a);
   // sines and cosines of the joint angles
   const Scalar joint_angle[32] = {q[7], q[8], q[9], q[10], q[11], q[12], q[13], q[14],
     q[15], q[16], q[17], q[18], q[19], q[20], q[21], q[22],
@@ -483,30 +482,29 @@ RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives_terms(const Scalar* q,
   g[1] = Scalar(-9.81) * ((q[5] * t2) + (q[3] * t0));
 }
 
-/// Derivatives of the inverse dynamics τ = M a + c + g (∂τ/∂a is M).
+/// Derivatives of the bias c + g (inverse dynamics at a = 0).
 ///
 /// @param q in  39x1: configuration (position, quaternion w x y z, joints)
 /// @param v in  38x1: velocity (trunk ω, v in trunk coordinates, joint rates)
-/// @param a in  38x1: acceleration (trunk ω̇, R_W^0 p̈, joint accelerations)
-/// @param dtau_dq out 38x38: ∂τ/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
-/// @param dtau_dv out 38x38: ∂τ/∂v
+/// @param dbias_dq out 38x38: ∂(c + g)/∂q; columns: tangent δ of q ⊕ δ, ordered like v (docs/conventions.md)
+/// @param dbias_dv out 38x38: ∂c/∂v
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
-///             32427  28524    0     0    64   30  61045
+///             34726  30512    0     0    64   30  65332
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
-///   21542 arithmetic instructions (critical path 196 cycles, cost 30602), scalar tree
-///   21575 (path 196, cost 47510), limb lanes 12525 (path 200, cost 35069)
-/// emission: looped RNEA derivatives: inverse_dynamics_derivatives_terms writes the 32 bodies'
-///   transforms and gravity, rnea_derivatives_loop runs the recursion over a table of the
-///   tree (129 body-ancestor steps)
+///   21350 arithmetic instructions (critical path 196 cycles, cost 30333), scalar tree
+///   21483 (path 196, cost 47289), limb lanes 12464 (path 200, cost 34872)
+/// emission: looped RNEA derivatives: bias_derivatives_terms writes the 32 bodies' transforms and
+///   gravity, rnea_derivatives_loop runs the recursion over a table of the tree (129 body-
+///   ancestor steps)
 template <class Scalar>
-RBDC_HOST_DEVICE inline void inverse_dynamics_derivatives(const Scalar* q, const Scalar* v, const Scalar* a, Scalar* dtau_dq, Scalar* dtau_dv) noexcept {
+RBDC_HOST_DEVICE inline void bias_derivatives(const Scalar* q, const Scalar* v, Scalar* dbias_dq, Scalar* dbias_dv) noexcept {
   alignas(64) Scalar solve_X[384];
   alignas(64) Scalar solve_g[3];
-  inverse_dynamics_derivatives_terms(q, v, a, solve_X, solve_g);
+  bias_derivatives_terms(q, v, solve_X, solve_g);
   RBDC_TABLE BodyTree<33> tree{{-1, 0, 1, 2, 3, 4, 5, 0, 7, 8, 9, 10, 11, 0, 13, 14, 15, 16, 17, 15, 19, 20, 21, 22, 23, 24, 15, 26, 27, 28, 29, 30, 31}, {33, 7, 7, 7, 7, 7, 7, 13, 13, 13, 13, 13, 13, 33, 33, 33, 19, 19, 19, 26, 26, 26, 26, 26, 26, 26, 33, 33, 33, 33, 33, 33, 33}, {-1, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 37}, {false, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true}, {{0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0}, {0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0}, {0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0}}, {66.95, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, {{0.0, 0.0, 0.0, 0.0, 0.0, 0.03, 0.0, 0.0, 0.0, 0.0, 0.0, 0.03, 0.0, 0.0, 0.16, 0.0, 0.0, 0.064, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, {0.0, 0.0, 0.052000000000000005, 0.0, 0.0, 0.0, 0.0, 0.0, -0.052000000000000005, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, {2.0625000000000004, 0.0, -0.026000000000000002, -2.7560000000000002, -1.0779999999999998, 0.0, -0.05, 0.0, -0.026000000000000002, -2.7560000000000002, -1.0779999999999998, 0.0, -0.05, 0.0, 0.012, 9.53045349457603, 0.0, 0.0, 0.32000000000000006, 0.0, -1.0805, 0.0, -0.447, 0.0, 0.0, -0.035, 0.0, -1.0805, 0.0, -0.447, 0.0, 0.0, -0.035}}, {{4.039851666744001, -1.3004133333700003, 1.3005433333700003, 0.0, 0.0, 0.0, 0.0034666666670000006, -1.3004133333700003, 1.3005433333700003, 0.0, 0.0, 0.0, 0.0034666666670000006, 0.0014800000000000004, 0.0, 4.379874803165695, 0.00010416666700000004, 0.0, 0.052613333300000016, 0.0, 0.29540833333300004, 0.10778583333300001, 0.0, 0.000125, 0.0, 0.0033875000000000003, 0.0, 0.29540833333300004, 0.10778583333300001, 0.0, 0.000125, 0.0, 0.0033875000000000003}, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0015, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0015, 0.0, 0.0, -0.032, 0.0, 0.0, -0.006400000000000002, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, {3.809688333444001, 0.0, -1.2981166667000004, 0.9642966667000001, 0.33454249999999996, 0.00595416667, 0.0018000000000000004, 0.0, -1.2981166667000004, 0.9642966667000001, 0.33454249999999996, 0.00595416667, 0.0018000000000000004, 0.0, 1.041084107405674, 2.432933254354346, 0.0, 0.019757499966999995, 0.03720000000000001, 0.001388333333, 0.29475500000000004, 0.0, 0.10778583333300001, 0.0, 0.000529166667, 0.0027125000000000005, 0.001388333333, 0.29475500000000004, 0.0, 0.10778583333300001, 0.0, 0.000529166667, 0.0027125000000000005}, {0.0, 0.0, 0.0, 0.00936, 0.0, 0.0, 0.0, 0.0, 0.0, -0.00936, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, {0.28349666669999996, 1.3015866667000002, 0.0, -0.9538100000300003, -0.33035749999999997, 0.00576666667, 0.0, 1.3015866667000002, 0.0, -0.9538100000300003, -0.33035749999999997, 0.00576666667, 0.0, 0.00381333333, 1.0401241074056742, 0.0, 0.00022916666699999999, 0.019653333299999996, 0.0, 0.000653333333, 0.0, 0.11002583333300002, -0.10680583333300002, 0.000270833333, 0.000404166667, 0.0, 0.000653333333, 0.0, 0.11002583333300002, -0.10680583333300002, 0.000270833333, 0.000404166667, 0.0}}, {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, true, false};
-  const DenseDerivatives<Scalar, 38> out{dtau_dq, dtau_dv};
-  rnea_derivatives_loop<Scalar, 33, 38, true, true, true>(tree, solve_X, solve_g, v, a, out);
+  const DenseDerivatives<Scalar, 38> out{dbias_dq, dbias_dv};
+  rnea_derivatives_loop<Scalar, 33, 38, true, true, false>(tree, solve_X, solve_g, v, nullptr, out);
 }
 
-}  // namespace rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_ee27f6b01114
+}  // namespace rbdc_gen::humanoid32::common::bias_derivatives_d2e0806cb00c
