@@ -7,11 +7,11 @@
 // bias_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   arm7/common/bias_derivatives_30dcab0d613b.hpp
+//   arm7/common/bias_derivatives_3b6e9e208999.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/bias_derivatives_30dcab0d613b.hpp"
+#include "arm7/common/bias_derivatives_3b6e9e208999.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///             1242  1054    0     0    12   10   2318
 /// schedule: scalar tree: 2318 arithmetic instructions (critical path 112 cycles, cost 2598),
 ///   looped RNEA derivatives 3995 (path 112, cost 5864)
-using ::rbdc_gen::arm7::common::bias_derivatives_30dcab0d613b::bias_derivatives;
+using ::rbdc_gen::arm7::common::bias_derivatives_3b6e9e208999::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_force_term_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_term_derivatives is the same code:
-//   arm7/common/feet_force_term_derivatives_7a47b6be8669.hpp
+//   arm7/common/feet_force_term_derivatives_ef614b521d55.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/feet_force_term_derivatives_7a47b6be8669.hpp"
+#include "arm7/common/feet_force_term_derivatives_ef614b521d55.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///             191  115    0     0    12    3    321
 /// schedule: scalar tree: 321 arithmetic instructions (critical path 76 cycles, cost 511), looped
 ///   feet force terms 451 (path 76, cost 1184)
-using ::rbdc_gen::arm7::common::feet_force_term_derivatives_7a47b6be8669::feet_force_term_derivatives;
+using ::rbdc_gen::arm7::common::feet_force_term_derivatives_ef614b521d55::feet_force_term_derivatives;
 
 /// feet_force_term_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

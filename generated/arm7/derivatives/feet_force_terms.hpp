@@ -7,11 +7,11 @@
 // feet_force_terms for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_terms is the same code:
-//   arm7/common/feet_force_terms_4e88ab3241d9.hpp
+//   arm7/common/feet_force_terms_1bda53863ff4.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/feet_force_terms_4e88ab3241d9.hpp"
+#include "arm7/common/feet_force_terms_1bda53863ff4.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              76   40    0     0    14    1    131
-using ::rbdc_gen::arm7::common::feet_force_terms_4e88ab3241d9::feet_force_terms;
+using ::rbdc_gen::arm7::common::feet_force_terms_1bda53863ff4::feet_force_terms;
 
 /// feet_force_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_velocity_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_velocity_derivatives is the same code:
-//   arm7/common/feet_velocity_derivatives_9ad26f5920e4.hpp
+//   arm7/common/feet_velocity_derivatives_135b6576a669.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/feet_velocity_derivatives_9ad26f5920e4.hpp"
+#include "arm7/common/feet_velocity_derivatives_135b6576a669.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             199  155    0     0    12    2    368
-using ::rbdc_gen::arm7::common::feet_velocity_derivatives_9ad26f5920e4::feet_velocity_derivatives;
+using ::rbdc_gen::arm7::common::feet_velocity_derivatives_135b6576a669::feet_velocity_derivatives;
 
 /// feet_velocity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   arm7/common/forward_dynamics_derivatives_a54d50ef2246.hpp
+//   arm7/common/forward_dynamics_derivatives_fe771d5886a4.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/forward_dynamics_derivatives_a54d50ef2246.hpp"
+#include "arm7/common/forward_dynamics_derivatives_fe771d5886a4.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -33,7 +33,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///   instructions (critical path 248 cycles, cost 4455), scalar tree 5077 (path 248, cost
 ///   8045), looped RNEA derivatives 5974 (path 248, cost 7348), looped CRBA 7802 (path 284,
 ///   cost 10610)
-using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_a54d50ef2246::forward_dynamics_derivatives;
+using ::rbdc_gen::arm7::common::forward_dynamics_derivatives_fe771d5886a4::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // gravity_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   arm7/common/gravity_derivatives_3ecb956adc47.hpp
+//   arm7/common/gravity_derivatives_bf1e699d61d6.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/gravity_derivatives_3ecb956adc47.hpp"
+#include "arm7/common/gravity_derivatives_bf1e699d61d6.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///             147   86    0     0    10    5    248
 /// schedule: scalar tree: 248 arithmetic instructions (critical path 75 cycles, cost 436), looped
 ///   RNEA derivatives 1928 (path 75, cost 2878)
-using ::rbdc_gen::arm7::common::gravity_derivatives_3ecb956adc47::gravity_derivatives;
+using ::rbdc_gen::arm7::common::gravity_derivatives_bf1e699d61d6::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

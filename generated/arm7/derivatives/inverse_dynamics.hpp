@@ -7,11 +7,11 @@
 // inverse_dynamics for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   arm7/common/inverse_dynamics_61aab4e813b4.hpp
+//   arm7/common/inverse_dynamics_3b38f0fb53a5.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/inverse_dynamics_61aab4e813b4.hpp"
+#include "arm7/common/inverse_dynamics_3b38f0fb53a5.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///             323  241    0     0    12    1    577
 /// schedule: scalar tree: 577 arithmetic instructions (critical path 102 cycles, cost 832), one
 ///   loop along the chain 1688 (path 102, cost 1730)
-using ::rbdc_gen::arm7::common::inverse_dynamics_61aab4e813b4::inverse_dynamics;
+using ::rbdc_gen::arm7::common::inverse_dynamics_3b38f0fb53a5::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   arm7/common/inverse_dynamics_derivatives_d39804704b1b.hpp
+//   arm7/common/inverse_dynamics_derivatives_2167538969a0.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/inverse_dynamics_derivatives_d39804704b1b.hpp"
+#include "arm7/common/inverse_dynamics_derivatives_2167538969a0.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///             1267  1083    0     0    12   10   2372
 /// schedule: scalar tree: 2372 arithmetic instructions (critical path 112 cycles, cost 2652),
 ///   looped RNEA derivatives 4037 (path 112, cost 5923)
-using ::rbdc_gen::arm7::common::inverse_dynamics_derivatives_d39804704b1b::inverse_dynamics_derivatives;
+using ::rbdc_gen::arm7::common::inverse_dynamics_derivatives_2167538969a0::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix for arm7, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   arm7/common/mass_matrix_070d7c785102.hpp
+//   arm7/common/mass_matrix_ff628434edb7.hpp
 #pragma once
 
 #include "arm7/derivatives.hpp"
-#include "arm7/common/mass_matrix_070d7c785102.hpp"
+#include "arm7/common/mass_matrix_ff628434edb7.hpp"
 
 namespace rbdc_gen::arm7::derivatives {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::arm7::derivatives {
 ///             161  120    0     0    10    3    294
 /// schedule: scalar tree: 294 arithmetic instructions (critical path 80 cycles, cost 494), looped
 ///   CRBA 1482 (path 80, cost 2266)
-using ::rbdc_gen::arm7::common::mass_matrix_070d7c785102::mass_matrix;
+using ::rbdc_gen::arm7::common::mass_matrix_ff628434edb7::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // bias for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   arm7/common/bias_1c5a36d102f5.hpp
+//   arm7/common/bias_169244be22bb.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/bias_1c5a36d102f5.hpp"
+#include "arm7/common/bias_169244be22bb.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::arm7::full {
 ///             314  227    0     0    12    1    554
 /// schedule: scalar tree: 554 arithmetic instructions (critical path 99 cycles, cost 802), one loop
 ///   along the chain 1646 (path 99, cost 1693)
-using ::rbdc_gen::arm7::common::bias_1c5a36d102f5::bias;
+using ::rbdc_gen::arm7::common::bias_169244be22bb::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

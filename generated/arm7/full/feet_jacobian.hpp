@@ -7,11 +7,11 @@
 // feet_jacobian for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_jacobian is the same code:
-//   arm7/common/feet_jacobian_4a382f97b553.hpp
+//   arm7/common/feet_jacobian_245294203697.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/feet_jacobian_4a382f97b553.hpp"
+#include "arm7/common/feet_jacobian_245294203697.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              96   60    0     0    12    4    172
-using ::rbdc_gen::arm7::common::feet_jacobian_4a382f97b553::feet_jacobian;
+using ::rbdc_gen::arm7::common::feet_jacobian_245294203697::feet_jacobian;
 
 /// feet_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

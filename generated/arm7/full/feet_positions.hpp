@@ -7,11 +7,11 @@
 // feet_positions for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_positions is the same code:
-//   arm7/common/feet_positions_1f2fa59578c5.hpp
+//   arm7/common/feet_positions_b9d064411953.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/feet_positions_1f2fa59578c5.hpp"
+#include "arm7/common/feet_positions_b9d064411953.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              56   30    0     0    12    0     98
-using ::rbdc_gen::arm7::common::feet_positions_1f2fa59578c5::feet_positions;
+using ::rbdc_gen::arm7::common::feet_positions_b9d064411953::feet_positions;
 
 /// feet_positions on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_velocities for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_velocities is the same code:
-//   arm7/common/feet_velocities_ed0136bbc653.hpp
+//   arm7/common/feet_velocities_0cc448ac2294.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/feet_velocities_ed0136bbc653.hpp"
+#include "arm7/common/feet_velocities_0cc448ac2294.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::arm7::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             119   63    0     0    14    0    196
-using ::rbdc_gen::arm7::common::feet_velocities_ed0136bbc653::feet_velocities;
+using ::rbdc_gen::arm7::common::feet_velocities_0cc448ac2294::feet_velocities;
 
 /// feet_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   arm7/common/forward_dynamics_a1d7a24bbbde.hpp
+//   arm7/common/forward_dynamics_72ff753f98c3.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/forward_dynamics_a1d7a24bbbde.hpp"
+#include "arm7/common/forward_dynamics_72ff753f98c3.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -29,7 +29,7 @@ namespace rbdc_gen::arm7::full {
 /// schedule: scalar tree: 1113 arithmetic instructions (critical path 162 cycles, cost 1518),
 ///   articulated-body algorithm 1261 (path 284, cost 1971), one loop along the chain 3015
 ///   (path 162, cost 3735)
-using ::rbdc_gen::arm7::common::forward_dynamics_a1d7a24bbbde::forward_dynamics;
+using ::rbdc_gen::arm7::common::forward_dynamics_72ff753f98c3::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // gravity_terms for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_terms is the same code:
-//   arm7/common/gravity_terms_8b47d6d858db.hpp
+//   arm7/common/gravity_terms_915b7c104070.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/gravity_terms_8b47d6d858db.hpp"
+#include "arm7/common/gravity_terms_915b7c104070.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              48   27    0     0    10    1     86
-using ::rbdc_gen::arm7::common::gravity_terms_8b47d6d858db::gravity_terms;
+using ::rbdc_gen::arm7::common::gravity_terms_915b7c104070::gravity_terms;
 
 /// gravity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

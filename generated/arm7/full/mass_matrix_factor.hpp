@@ -7,11 +7,11 @@
 // mass_matrix_factor for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   arm7/common/mass_matrix_factor_11ab999d05c8.hpp
+//   arm7/common/mass_matrix_factor_27ec52d01103.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/mass_matrix_factor_11ab999d05c8.hpp"
+#include "arm7/common/mass_matrix_factor_27ec52d01103.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::arm7::full {
 ///             230  170    5     0    10    3    418
 /// schedule: scalar tree: 418 arithmetic instructions (critical path 139 cycles, cost 766), looped
 ///   factor 517 (path 139, cost 1422), looped CRBA 1705 (path 139, cost 3194)
-using ::rbdc_gen::arm7::common::mass_matrix_factor_11ab999d05c8::mass_matrix_factor;
+using ::rbdc_gen::arm7::common::mass_matrix_factor_27ec52d01103::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

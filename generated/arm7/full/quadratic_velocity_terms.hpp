@@ -7,11 +7,11 @@
 // quadratic_velocity_terms for arm7, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose quadratic_velocity_terms is the same code:
-//   arm7/common/quadratic_velocity_terms_51ad599d626f.hpp
+//   arm7/common/quadratic_velocity_terms_44f6795a0de2.hpp
 #pragma once
 
 #include "arm7/full.hpp"
-#include "arm7/common/quadratic_velocity_terms_51ad599d626f.hpp"
+#include "arm7/common/quadratic_velocity_terms_44f6795a0de2.hpp"
 
 namespace rbdc_gen::arm7::full {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::arm7::full {
 ///             305  220    0     0    12    1    538
 /// schedule: scalar tree: 538 arithmetic instructions (critical path 99 cycles, cost 786), one loop
 ///   along the chain 1646 (path 99, cost 1693)
-using ::rbdc_gen::arm7::common::quadratic_velocity_terms_51ad599d626f::quadratic_velocity_terms;
+using ::rbdc_gen::arm7::common::quadratic_velocity_terms_44f6795a0de2::quadratic_velocity_terms;
 
 /// quadratic_velocity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // center_of_mass for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose center_of_mass is the same code:
-//   arm7/common/center_of_mass_6f56e231600c.hpp
+//   arm7/common/center_of_mass_3db1469293f2.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/center_of_mass_6f56e231600c.hpp"
+#include "arm7/common/center_of_mass_3db1469293f2.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::arm7::whole_body_arm {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             157  100    0     0    12    0    269
-using ::rbdc_gen::arm7::common::center_of_mass_6f56e231600c::center_of_mass;
+using ::rbdc_gen::arm7::common::center_of_mass_3db1469293f2::center_of_mass;
 
 /// center_of_mass on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

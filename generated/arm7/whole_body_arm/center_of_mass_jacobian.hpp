@@ -7,11 +7,11 @@
 // center_of_mass_jacobian for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose center_of_mass_jacobian is the same code:
-//   arm7/common/center_of_mass_jacobian_35bfdf67f83a.hpp
+//   arm7/common/center_of_mass_jacobian_76ab72a5739d.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/center_of_mass_jacobian_35bfdf67f83a.hpp"
+#include "arm7/common/center_of_mass_jacobian_76ab72a5739d.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::whole_body_arm {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             121   60    0     0    12    0    193
-using ::rbdc_gen::arm7::common::center_of_mass_jacobian_35bfdf67f83a::center_of_mass_jacobian;
+using ::rbdc_gen::arm7::common::center_of_mass_jacobian_76ab72a5739d::center_of_mass_jacobian;
 
 /// center_of_mass_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // centroidal_bias for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_bias is the same code:
-//   arm7/common/centroidal_bias_d48846face08.hpp
+//   arm7/common/centroidal_bias_65b534fc4737.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/centroidal_bias_d48846face08.hpp"
+#include "arm7/common/centroidal_bias_65b534fc4737.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::arm7::whole_body_arm {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             426  296    0     0    14    0    736
-using ::rbdc_gen::arm7::common::centroidal_bias_d48846face08::centroidal_bias;
+using ::rbdc_gen::arm7::common::centroidal_bias_65b534fc4737::centroidal_bias;
 
 /// centroidal_bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

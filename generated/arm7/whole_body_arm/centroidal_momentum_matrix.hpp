@@ -7,11 +7,11 @@
 // centroidal_momentum_matrix for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_momentum_matrix is the same code:
-//   arm7/common/centroidal_momentum_matrix_633d642ea6b4.hpp
+//   arm7/common/centroidal_momentum_matrix_5bca54e9b3d9.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/centroidal_momentum_matrix_633d642ea6b4.hpp"
+#include "arm7/common/centroidal_momentum_matrix_5bca54e9b3d9.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::whole_body_arm {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             298  226    0     0    12    4    540
-using ::rbdc_gen::arm7::common::centroidal_momentum_matrix_633d642ea6b4::centroidal_momentum_matrix;
+using ::rbdc_gen::arm7::common::centroidal_momentum_matrix_5bca54e9b3d9::centroidal_momentum_matrix;
 
 /// centroidal_momentum_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

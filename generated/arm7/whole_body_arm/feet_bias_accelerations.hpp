@@ -7,11 +7,11 @@
 // feet_bias_accelerations for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_bias_accelerations is the same code:
-//   arm7/common/feet_bias_accelerations_9e4c469a25a5.hpp
+//   arm7/common/feet_bias_accelerations_a674949cd318.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/feet_bias_accelerations_9e4c469a25a5.hpp"
+#include "arm7/common/feet_bias_accelerations_a674949cd318.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::arm7::whole_body_arm {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             188  110    0     0    14    0    312
-using ::rbdc_gen::arm7::common::feet_bias_accelerations_9e4c469a25a5::feet_bias_accelerations;
+using ::rbdc_gen::arm7::common::feet_bias_accelerations_a674949cd318::feet_bias_accelerations;
 
 /// feet_bias_accelerations on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

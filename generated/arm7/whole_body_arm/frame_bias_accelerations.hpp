@@ -7,11 +7,11 @@
 // frame_bias_accelerations for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_bias_accelerations is the same code:
-//   arm7/common/frame_bias_accelerations_8a831c778907.hpp
+//   arm7/common/frame_bias_accelerations_ee375bd7c2d1.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/frame_bias_accelerations_8a831c778907.hpp"
+#include "arm7/common/frame_bias_accelerations_ee375bd7c2d1.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::arm7::whole_body_arm {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             221  134    0     0    14    2    371
-using ::rbdc_gen::arm7::common::frame_bias_accelerations_8a831c778907::frame_bias_accelerations;
+using ::rbdc_gen::arm7::common::frame_bias_accelerations_ee375bd7c2d1::frame_bias_accelerations;
 
 /// frame_bias_accelerations on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // frame_jacobians for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_jacobians is the same code:
-//   arm7/common/frame_jacobians_91833f6a50ae.hpp
+//   arm7/common/frame_jacobians_d19b692c973c.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/frame_jacobians_91833f6a50ae.hpp"
+#include "arm7/common/frame_jacobians_d19b692c973c.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::arm7::whole_body_arm {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             262  164    0     0    14    9    449
-using ::rbdc_gen::arm7::common::frame_jacobians_91833f6a50ae::frame_jacobians;
+using ::rbdc_gen::arm7::common::frame_jacobians_d19b692c973c::frame_jacobians;
 
 /// frame_jacobians on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // frame_placements for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_placements is the same code:
-//   arm7/common/frame_placements_77b5ce63fdf7.hpp
+//   arm7/common/frame_placements_b7dc7a4540be.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/frame_placements_77b5ce63fdf7.hpp"
+#include "arm7/common/frame_placements_b7dc7a4540be.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::arm7::whole_body_arm {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              74   39    0     0    14    2    129
-using ::rbdc_gen::arm7::common::frame_placements_77b5ce63fdf7::frame_placements;
+using ::rbdc_gen::arm7::common::frame_placements_b7dc7a4540be::frame_placements;
 
 /// frame_placements on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // frame_velocities for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_velocities is the same code:
-//   arm7/common/frame_velocities_01ccf54fb73d.hpp
+//   arm7/common/frame_velocities_7269eaa6c042.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/frame_velocities_01ccf54fb73d.hpp"
+#include "arm7/common/frame_velocities_7269eaa6c042.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::arm7::whole_body_arm {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             146   82    0     0    14    1    243
-using ::rbdc_gen::arm7::common::frame_velocities_01ccf54fb73d::frame_velocities;
+using ::rbdc_gen::arm7::common::frame_velocities_7269eaa6c042::frame_velocities;
 
 /// frame_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

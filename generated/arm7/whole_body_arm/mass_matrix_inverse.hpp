@@ -7,11 +7,11 @@
 // mass_matrix_inverse for arm7, scene "whole_body_arm": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_inverse is the same code:
-//   arm7/common/mass_matrix_inverse_7d58dba9a69a.hpp
+//   arm7/common/mass_matrix_inverse_c49235297f64.hpp
 #pragma once
 
 #include "arm7/whole_body_arm.hpp"
-#include "arm7/common/mass_matrix_inverse_7d58dba9a69a.hpp"
+#include "arm7/common/mass_matrix_inverse_c49235297f64.hpp"
 
 namespace rbdc_gen::arm7::whole_body_arm {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::arm7::whole_body_arm {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             335  254    5     0    10    2    606
-using ::rbdc_gen::arm7::common::mass_matrix_inverse_7d58dba9a69a::mass_matrix_inverse;
+using ::rbdc_gen::arm7::common::mass_matrix_inverse_c49235297f64::mass_matrix_inverse;
 
 /// mass_matrix_inverse on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

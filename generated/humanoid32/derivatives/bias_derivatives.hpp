@@ -7,11 +7,11 @@
 // bias_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   humanoid32/common/bias_derivatives_d2e0806cb00c.hpp
+//   humanoid32/common/bias_derivatives_45981d791884.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/bias_derivatives_d2e0806cb00c.hpp"
+#include "humanoid32/common/bias_derivatives_45981d791884.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
 ///   21350 arithmetic instructions (critical path 196 cycles, cost 30333), scalar tree
 ///   21483 (path 196, cost 47289), limb lanes 12464 (path 200, cost 34872)
-using ::rbdc_gen::humanoid32::common::bias_derivatives_d2e0806cb00c::bias_derivatives;
+using ::rbdc_gen::humanoid32::common::bias_derivatives_45981d791884::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

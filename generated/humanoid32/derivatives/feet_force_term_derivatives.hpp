@@ -7,11 +7,11 @@
 // feet_force_term_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_term_derivatives is the same code:
-//   humanoid32/common/feet_force_term_derivatives_5ea59e2296d3.hpp
+//   humanoid32/common/feet_force_term_derivatives_d891c86060a3.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/feet_force_term_derivatives_5ea59e2296d3.hpp"
+#include "humanoid32/common/feet_force_term_derivatives_d891c86060a3.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///             1671  1160    0     0    46    0   2877
 /// schedule: scalar tree: 2877 arithmetic instructions (critical path 94 cycles, cost 3112), looped
 ///   feet force terms 4690 (path 94, cost 12220)
-using ::rbdc_gen::humanoid32::common::feet_force_term_derivatives_5ea59e2296d3::feet_force_term_derivatives;
+using ::rbdc_gen::humanoid32::common::feet_force_term_derivatives_d891c86060a3::feet_force_term_derivatives;
 
 /// feet_force_term_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_velocity_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_velocity_derivatives is the same code:
-//   humanoid32/common/feet_velocity_derivatives_f4c82363f0f1.hpp
+//   humanoid32/common/feet_velocity_derivatives_9fdd999d4f6f.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/feet_velocity_derivatives_f4c82363f0f1.hpp"
+#include "humanoid32/common/feet_velocity_derivatives_9fdd999d4f6f.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1341  1087    0     0    58    0   2486
-using ::rbdc_gen::humanoid32::common::feet_velocity_derivatives_f4c82363f0f1::feet_velocity_derivatives;
+using ::rbdc_gen::humanoid32::common::feet_velocity_derivatives_9fdd999d4f6f::feet_velocity_derivatives;
 
 /// feet_velocity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   humanoid32/common/forward_dynamics_derivatives_52e9b106755b.hpp
+//   humanoid32/common/forward_dynamics_derivatives_5f51ba008fe6.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/forward_dynamics_derivatives_52e9b106755b.hpp"
+#include "humanoid32/common/forward_dynamics_derivatives_5f51ba008fe6.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -36,7 +36,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///   83017), scalar tree 124296 (path 582, cost 295005), looped solve 64759 (path 582, cost
 ///   106465), limb lanes and a looped solve 51850 (path 582, cost 90426), looped RNEA
 ///   derivatives 68049 (path 582, cost 88872), looped CRBA 75759 (path 620, cost 104532)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_52e9b106755b::forward_dynamics_derivatives;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_derivatives_5f51ba008fe6::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

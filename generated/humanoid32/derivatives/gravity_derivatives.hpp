@@ -7,11 +7,11 @@
 // gravity_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   humanoid32/common/gravity_derivatives_814c58ac6ba6.hpp
+//   humanoid32/common/gravity_derivatives_95f35a9f3ab0.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/gravity_derivatives_814c58ac6ba6.hpp"
+#include "humanoid32/common/gravity_derivatives_95f35a9f3ab0.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 1949 arithmetic
 ///   instructions (critical path 135 cycles, cost 2286), scalar tree 3390 (path 131, cost
 ///   3718), looped RNEA derivatives 9856 (path 131, cost 14079)
-using ::rbdc_gen::humanoid32::common::gravity_derivatives_814c58ac6ba6::gravity_derivatives;
+using ::rbdc_gen::humanoid32::common::gravity_derivatives_95f35a9f3ab0::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

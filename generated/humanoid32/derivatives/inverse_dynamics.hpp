@@ -7,11 +7,11 @@
 // inverse_dynamics for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   humanoid32/common/inverse_dynamics_c53484209ec4.hpp
+//   humanoid32/common/inverse_dynamics_550e9bef170d.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/inverse_dynamics_c53484209ec4.hpp"
+#include "humanoid32/common/inverse_dynamics_550e9bef170d.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 1883 arithmetic
 ///   instructions (critical path 169 cycles, cost 2306), scalar tree 3056 (path 167, cost
 ///   3474), limb lanes with the pairs' spare lanes used 1791 (path 223, cost 2348)
-using ::rbdc_gen::humanoid32::common::inverse_dynamics_c53484209ec4::inverse_dynamics;
+using ::rbdc_gen::humanoid32::common::inverse_dynamics_550e9bef170d::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   humanoid32/common/inverse_dynamics_derivatives_a12512cf19cb.hpp
+//   humanoid32/common/inverse_dynamics_derivatives_7ae43f112496.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/inverse_dynamics_derivatives_a12512cf19cb.hpp"
+#include "humanoid32/common/inverse_dynamics_derivatives_7ae43f112496.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 /// schedule: looped RNEA derivatives (a loop over the bodies, the tree's constants in a table):
 ///   21542 arithmetic instructions (critical path 196 cycles, cost 30602), scalar tree
 ///   21575 (path 196, cost 47510), limb lanes 12525 (path 200, cost 35069)
-using ::rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_a12512cf19cb::inverse_dynamics_derivatives;
+using ::rbdc_gen::humanoid32::common::inverse_dynamics_derivatives_7ae43f112496::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

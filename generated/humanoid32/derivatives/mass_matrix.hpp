@@ -7,11 +7,11 @@
 // mass_matrix for humanoid32, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   humanoid32/common/mass_matrix_8a803b4672a9.hpp
+//   humanoid32/common/mass_matrix_09c847135874.hpp
 #pragma once
 
 #include "humanoid32/derivatives.hpp"
-#include "humanoid32/common/mass_matrix_8a803b4672a9.hpp"
+#include "humanoid32/common/mass_matrix_09c847135874.hpp"
 
 namespace rbdc_gen::humanoid32::derivatives {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::humanoid32::derivatives {
 ///   the root serves both): 1553 arithmetic instructions (critical path 128 cycles, cost
 ///   1873), scalar tree 3155 (path 127, cost 3472), limb lanes 1795 (path 129, cost 2118),
 ///   looped CRBA 7746 (path 127, cost 11121)
-using ::rbdc_gen::humanoid32::common::mass_matrix_8a803b4672a9::mass_matrix;
+using ::rbdc_gen::humanoid32::common::mass_matrix_09c847135874::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

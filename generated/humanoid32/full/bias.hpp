@@ -7,11 +7,11 @@
 // bias for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   humanoid32/common/bias_9ca61d45e201.hpp
+//   humanoid32/common/bias_638e56d386d2.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/bias_9ca61d45e201.hpp"
+#include "humanoid32/common/bias_638e56d386d2.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::humanoid32::full {
 ///   fewer than 4 repeated to fill the lanes); the rest scalar): 1811 arithmetic
 ///   instructions (critical path 168 cycles, cost 2231), scalar tree 2954 (path 164, cost
 ///   3364), limb lanes with the pairs' spare lanes used 1722 (path 222, cost 2277)
-using ::rbdc_gen::humanoid32::common::bias_9ca61d45e201::bias;
+using ::rbdc_gen::humanoid32::common::bias_638e56d386d2::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

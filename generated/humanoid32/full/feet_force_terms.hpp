@@ -7,11 +7,11 @@
 // feet_force_terms for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_terms is the same code:
-//   humanoid32/common/feet_force_terms_be87cfb8dac1.hpp
+//   humanoid32/common/feet_force_terms_288ed16dc303.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/feet_force_terms_be87cfb8dac1.hpp"
+#include "humanoid32/common/feet_force_terms_288ed16dc303.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::humanoid32::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             490  293    0     0    64   10    857
-using ::rbdc_gen::humanoid32::common::feet_force_terms_be87cfb8dac1::feet_force_terms;
+using ::rbdc_gen::humanoid32::common::feet_force_terms_288ed16dc303::feet_force_terms;
 
 /// feet_force_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_jacobian for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_jacobian is the same code:
-//   humanoid32/common/feet_jacobian_ed549038f594.hpp
+//   humanoid32/common/feet_jacobian_578620d9c04c.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/feet_jacobian_ed549038f594.hpp"
+#include "humanoid32/common/feet_jacobian_578620d9c04c.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::humanoid32::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             591  403    0     0    46    0   1040
-using ::rbdc_gen::humanoid32::common::feet_jacobian_ed549038f594::feet_jacobian;
+using ::rbdc_gen::humanoid32::common::feet_jacobian_578620d9c04c::feet_jacobian;
 
 /// feet_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_positions for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_positions is the same code:
-//   humanoid32/common/feet_positions_e60493936925.hpp
+//   humanoid32/common/feet_positions_eda4fa5763d6.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/feet_positions_e60493936925.hpp"
+#include "humanoid32/common/feet_positions_eda4fa5763d6.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::humanoid32::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             315  211    0     0    46    0    572
-using ::rbdc_gen::humanoid32::common::feet_positions_e60493936925::feet_positions;
+using ::rbdc_gen::humanoid32::common::feet_positions_eda4fa5763d6::feet_positions;
 
 /// feet_positions on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

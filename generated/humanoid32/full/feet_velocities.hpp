@@ -7,11 +7,11 @@
 // feet_velocities for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_velocities is the same code:
-//   humanoid32/common/feet_velocities_eef2bc6e22e7.hpp
+//   humanoid32/common/feet_velocities_690be92fd123.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/feet_velocities_eef2bc6e22e7.hpp"
+#include "humanoid32/common/feet_velocities_690be92fd123.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::humanoid32::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             712  429    0     0    64    0   1205
-using ::rbdc_gen::humanoid32::common::feet_velocities_eef2bc6e22e7::feet_velocities;
+using ::rbdc_gen::humanoid32::common::feet_velocities_690be92fd123::feet_velocities;
 
 /// feet_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

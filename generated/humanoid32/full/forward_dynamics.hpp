@@ -7,11 +7,11 @@
 // forward_dynamics for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   humanoid32/common/forward_dynamics_ce3e9037d621.hpp
+//   humanoid32/common/forward_dynamics_54321a6c95ab.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/forward_dynamics_ce3e9037d621.hpp"
+#include "humanoid32/common/forward_dynamics_54321a6c95ab.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -31,7 +31,7 @@ namespace rbdc_gen::humanoid32::full {
 ///   scalar): 4538 arithmetic instructions (critical path 625 cycles, cost 8713), scalar
 ///   tree 11607 (path 389, cost 24069), limb lanes 7319 (path 393, cost 17015),
 ///   articulated-body algorithm 7414 (path 620, cost 14584)
-using ::rbdc_gen::humanoid32::common::forward_dynamics_ce3e9037d621::forward_dynamics;
+using ::rbdc_gen::humanoid32::common::forward_dynamics_54321a6c95ab::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // gravity_terms for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_terms is the same code:
-//   humanoid32/common/gravity_terms_433e2a213012.hpp
+//   humanoid32/common/gravity_terms_349082e48c49.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/gravity_terms_433e2a213012.hpp"
+#include "humanoid32/common/gravity_terms_349082e48c49.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::humanoid32::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             308  178    0     0    64   13    563
-using ::rbdc_gen::humanoid32::common::gravity_terms_433e2a213012::gravity_terms;
+using ::rbdc_gen::humanoid32::common::gravity_terms_349082e48c49::gravity_terms;
 
 /// gravity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix_factor for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   humanoid32/common/mass_matrix_factor_ef69bfa9483e.hpp
+//   humanoid32/common/mass_matrix_factor_3c87b4b5fba2.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/mass_matrix_factor_ef69bfa9483e.hpp"
+#include "humanoid32/common/mass_matrix_factor_3c87b4b5fba2.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::humanoid32::full {
 ///             3897  2980   33     0    64   18   6992
 /// schedule: scalar tree: 6992 arithmetic instructions (critical path 330 cycles, cost 12846),
 ///   looped factor 7432 (path 330, cost 18950), looped CRBA 12023 (path 330, cost 26598)
-using ::rbdc_gen::humanoid32::common::mass_matrix_factor_ef69bfa9483e::mass_matrix_factor;
+using ::rbdc_gen::humanoid32::common::mass_matrix_factor_3c87b4b5fba2::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

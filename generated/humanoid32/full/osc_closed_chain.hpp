@@ -7,11 +7,11 @@
 // osc_closed_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   humanoid32/common/osc_closed_chain_57907301cfd3.hpp
+//   humanoid32/common/osc_closed_chain_1bceefc635d1.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_closed_chain_57907301cfd3.hpp"
+#include "humanoid32/common/osc_closed_chain_1bceefc635d1.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::humanoid32::full {
 ///             7220  5126   28     0    64    9  12447
 /// schedule: scalar tree: 12447 arithmetic instructions (critical path 372 cycles, cost 26043),
 ///   looped operational-space columns 18434 (path 372, cost 32906)
-using ::rbdc_gen::humanoid32::common::osc_closed_chain_57907301cfd3::osc_closed_chain;
+using ::rbdc_gen::humanoid32::common::osc_closed_chain_1bceefc635d1::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

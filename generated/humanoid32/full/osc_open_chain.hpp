@@ -7,11 +7,11 @@
 // osc_open_chain for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   humanoid32/common/osc_open_chain_900f17806ee0.hpp
+//   humanoid32/common/osc_open_chain_047478452bab.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/osc_open_chain_900f17806ee0.hpp"
+#include "humanoid32/common/osc_open_chain_047478452bab.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::humanoid32::full {
 ///             7420  5235   27     0    64   13  12759
 /// schedule: scalar tree: 12759 arithmetic instructions (critical path 372 cycles, cost 26792),
 ///   looped operational-space columns 18390 (path 372, cost 32800)
-using ::rbdc_gen::humanoid32::common::osc_open_chain_900f17806ee0::osc_open_chain;
+using ::rbdc_gen::humanoid32::common::osc_open_chain_047478452bab::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // quadratic_velocity_terms for humanoid32, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose quadratic_velocity_terms is the same code:
-//   humanoid32/common/quadratic_velocity_terms_7ecff933406b.hpp
+//   humanoid32/common/quadratic_velocity_terms_6e9f556cf3b1.hpp
 #pragma once
 
 #include "humanoid32/full.hpp"
-#include "humanoid32/common/quadratic_velocity_terms_7ecff933406b.hpp"
+#include "humanoid32/common/quadratic_velocity_terms_6e9f556cf3b1.hpp"
 
 namespace rbdc_gen::humanoid32::full {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::humanoid32::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1677  1194    0     0    64    0   2935
-using ::rbdc_gen::humanoid32::common::quadratic_velocity_terms_7ecff933406b::quadratic_velocity_terms;
+using ::rbdc_gen::humanoid32::common::quadratic_velocity_terms_6e9f556cf3b1::quadratic_velocity_terms;
 
 /// quadratic_velocity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

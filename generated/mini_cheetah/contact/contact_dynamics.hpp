@@ -7,11 +7,11 @@
 // contact_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics is the same code:
-//   mini_cheetah/common/contact_dynamics_6ea90fff6245.hpp
+//   mini_cheetah/common/contact_dynamics_3d95fe5a02e5.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_6ea90fff6245.hpp"
+#include "mini_cheetah/common/contact_dynamics_3d95fe5a02e5.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -29,7 +29,7 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4840 arithmetic
 ///   instructions (critical path 662 cycles, cost 9294), scalar tree 9403 (path 644, cost
 ///   19417)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_6ea90fff6245::contact_dynamics;
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_3d95fe5a02e5::contact_dynamics;
 
 /// contact_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

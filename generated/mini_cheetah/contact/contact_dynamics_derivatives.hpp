@@ -7,11 +7,11 @@
 // contact_dynamics_derivatives for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose contact_dynamics_derivatives is the same code:
-//   mini_cheetah/common/contact_dynamics_derivatives_2a813700d32e.hpp
+//   mini_cheetah/common/contact_dynamics_derivatives_2c0791917a83.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/contact_dynamics_derivatives_2a813700d32e.hpp"
+#include "mini_cheetah/common/contact_dynamics_derivatives_2c0791917a83.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -34,7 +34,7 @@ namespace rbdc_gen::mini_cheetah::contact {
 ///   lanes, the solve's right-hand sides in SIMD across columns): 27420 arithmetic
 ///   instructions (critical path 870 cycles, cost 39117), scalar tree 99155 (path 870, cost
 ///   235387), looped solve 39371 (path 870, cost 64337)
-using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_2a813700d32e::contact_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::contact_dynamics_derivatives_2c0791917a83::contact_dynamics_derivatives;
 
 /// contact_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

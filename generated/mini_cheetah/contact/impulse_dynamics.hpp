@@ -7,11 +7,11 @@
 // impulse_dynamics for mini_cheetah, scene "contact": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose impulse_dynamics is the same code:
-//   mini_cheetah/common/impulse_dynamics_aba5f87da2d9.hpp
+//   mini_cheetah/common/impulse_dynamics_7da1782e93b3.hpp
 #pragma once
 
 #include "mini_cheetah/contact.hpp"
-#include "mini_cheetah/common/impulse_dynamics_aba5f87da2d9.hpp"
+#include "mini_cheetah/common/impulse_dynamics_7da1782e93b3.hpp"
 
 namespace rbdc_gen::mini_cheetah::contact {
 
@@ -29,7 +29,7 @@ namespace rbdc_gen::mini_cheetah::contact {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 4160 arithmetic
 ///   instructions (critical path 662 cycles, cost 7222), scalar tree 7253 (path 644, cost
 ///   14257)
-using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_aba5f87da2d9::impulse_dynamics;
+using ::rbdc_gen::mini_cheetah::common::impulse_dynamics_7da1782e93b3::impulse_dynamics;
 
 /// impulse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

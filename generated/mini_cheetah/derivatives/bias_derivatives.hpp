@@ -7,11 +7,11 @@
 // bias_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_derivatives is the same code:
-//   mini_cheetah/common/bias_derivatives_3d6bf30e9fb1.hpp
+//   mini_cheetah/common/bias_derivatives_e92e97bcd21e.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/bias_derivatives_3d6bf30e9fb1.hpp"
+#include "mini_cheetah/common/bias_derivatives_e92e97bcd21e.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1611 arithmetic
 ///   instructions (critical path 100 cycles, cost 1861), scalar tree 5757 (path 95, cost
 ///   9294), looped RNEA derivatives 7624 (path 95, cost 10889)
-using ::rbdc_gen::mini_cheetah::common::bias_derivatives_3d6bf30e9fb1::bias_derivatives;
+using ::rbdc_gen::mini_cheetah::common::bias_derivatives_e92e97bcd21e::bias_derivatives;
 
 /// bias_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

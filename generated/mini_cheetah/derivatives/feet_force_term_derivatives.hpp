@@ -7,11 +7,11 @@
 // feet_force_term_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_term_derivatives is the same code:
-//   mini_cheetah/common/feet_force_term_derivatives_01b46ba523d4.hpp
+//   mini_cheetah/common/feet_force_term_derivatives_80b22607d3b1.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/feet_force_term_derivatives_01b46ba523d4.hpp"
+#include "mini_cheetah/common/feet_force_term_derivatives_80b22607d3b1.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///             891  659    0     0    24    8   1582
 /// schedule: scalar tree: 1582 arithmetic instructions (critical path 78 cycles, cost 1777), looped
 ///   feet force terms 1888 (path 78, cost 4288)
-using ::rbdc_gen::mini_cheetah::common::feet_force_term_derivatives_01b46ba523d4::feet_force_term_derivatives;
+using ::rbdc_gen::mini_cheetah::common::feet_force_term_derivatives_80b22607d3b1::feet_force_term_derivatives;
 
 /// feet_force_term_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

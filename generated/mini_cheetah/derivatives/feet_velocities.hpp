@@ -7,11 +7,11 @@
 // feet_velocities for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_velocities is the same code:
-//   mini_cheetah/common/feet_velocities_c0e876640975.hpp
+//   mini_cheetah/common/feet_velocities_daf38f95faf4.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/feet_velocities_c0e876640975.hpp"
+#include "mini_cheetah/common/feet_velocities_daf38f95faf4.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             321  213    0     0    24    0    558
-using ::rbdc_gen::mini_cheetah::common::feet_velocities_c0e876640975::feet_velocities;
+using ::rbdc_gen::mini_cheetah::common::feet_velocities_daf38f95faf4::feet_velocities;
 
 /// feet_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

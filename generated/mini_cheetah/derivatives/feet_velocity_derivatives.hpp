@@ -7,11 +7,11 @@
 // feet_velocity_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_velocity_derivatives is the same code:
-//   mini_cheetah/common/feet_velocity_derivatives_da01c8bbce9d.hpp
+//   mini_cheetah/common/feet_velocity_derivatives_7b08672ed759.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/feet_velocity_derivatives_da01c8bbce9d.hpp"
+#include "mini_cheetah/common/feet_velocity_derivatives_7b08672ed759.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             669  565    0     0    24    0   1258
-using ::rbdc_gen::mini_cheetah::common::feet_velocity_derivatives_da01c8bbce9d::feet_velocity_derivatives;
+using ::rbdc_gen::mini_cheetah::common::feet_velocity_derivatives_7b08672ed759::feet_velocity_derivatives;
 
 /// feet_velocity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

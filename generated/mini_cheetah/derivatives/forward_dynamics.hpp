@@ -7,11 +7,11 @@
 // forward_dynamics for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah/common/forward_dynamics_d2d28911cce2.hpp
+//   mini_cheetah/common/forward_dynamics_f6680cccfd80.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_d2d28911cce2.hpp"
+#include "mini_cheetah/common/forward_dynamics_f6680cccfd80.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -30,7 +30,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///   trunk scalar): 1069 arithmetic instructions (critical path 319 cycles, cost 1866),
 ///   scalar tree 3523 (path 234, cost 4280), limb lanes 1273 (path 239, cost 1870),
 ///   articulated-body algorithm 3328 (path 311, cost 4106)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_d2d28911cce2::forward_dynamics;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_f6680cccfd80::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_c9979ba32e8b.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_efec75299503.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_c9979ba32e8b.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_efec75299503.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -36,7 +36,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///   25004), looped RNEA derivatives 18012 (path 330, cost 24407), limb lanes and looped
 ///   RNEA derivatives 15055 (path 330, cost 17816), looped CRBA 21142 (path 330, cost
 ///   30948)
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_c9979ba32e8b::forward_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_efec75299503::forward_dynamics_derivatives;
 
 /// forward_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

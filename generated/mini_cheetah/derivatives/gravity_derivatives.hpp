@@ -7,11 +7,11 @@
 // gravity_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_derivatives is the same code:
-//   mini_cheetah/common/gravity_derivatives_c57031037919.hpp
+//   mini_cheetah/common/gravity_derivatives_38b9f7350be8.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/gravity_derivatives_c57031037919.hpp"
+#include "mini_cheetah/common/gravity_derivatives_38b9f7350be8.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 177 arithmetic
 ///   instructions (critical path 55 cycles, cost 314), scalar tree 579 (path 54, cost 714),
 ///   looped RNEA derivatives 3370 (path 54, cost 4831)
-using ::rbdc_gen::mini_cheetah::common::gravity_derivatives_c57031037919::gravity_derivatives;
+using ::rbdc_gen::mini_cheetah::common::gravity_derivatives_38b9f7350be8::gravity_derivatives;
 
 /// gravity_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

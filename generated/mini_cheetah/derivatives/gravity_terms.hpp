@@ -7,11 +7,11 @@
 // gravity_terms for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_terms is the same code:
-//   mini_cheetah/common/gravity_terms_f88acd71e0c1.hpp
+//   mini_cheetah/common/gravity_terms_29dfb8707393.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/gravity_terms_f88acd71e0c1.hpp"
+#include "mini_cheetah/common/gravity_terms_29dfb8707393.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             113   68    0     0    24    1    206
-using ::rbdc_gen::mini_cheetah::common::gravity_terms_f88acd71e0c1::gravity_terms;
+using ::rbdc_gen::mini_cheetah::common::gravity_terms_29dfb8707393::gravity_terms;
 
 /// gravity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   mini_cheetah/common/inverse_dynamics_09dc13e907da.hpp
+//   mini_cheetah/common/inverse_dynamics_61568dc3bdba.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/inverse_dynamics_09dc13e907da.hpp"
+#include "mini_cheetah/common/inverse_dynamics_61568dc3bdba.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 467 arithmetic
 ///   instructions (critical path 92 cycles, cost 697), scalar tree 1545 (path 87, cost
 ///   1762)
-using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_09dc13e907da::inverse_dynamics;
+using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_61568dc3bdba::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

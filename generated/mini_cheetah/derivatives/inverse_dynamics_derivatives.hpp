@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives is the same code:
-//   mini_cheetah/common/inverse_dynamics_derivatives_da19c8bdf3b9.hpp
+//   mini_cheetah/common/inverse_dynamics_derivatives_74e5401a0719.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/inverse_dynamics_derivatives_da19c8bdf3b9.hpp"
+#include "mini_cheetah/common/inverse_dynamics_derivatives_74e5401a0719.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1649 arithmetic
 ///   instructions (critical path 100 cycles, cost 1899), scalar tree 5894 (path 95, cost
 ///   9623), looped RNEA derivatives 7696 (path 95, cost 10990)
-using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_da19c8bdf3b9::inverse_dynamics_derivatives;
+using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_74e5401a0719::inverse_dynamics_derivatives;
 
 /// inverse_dynamics_derivatives on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

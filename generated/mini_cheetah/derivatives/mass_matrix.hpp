@@ -7,11 +7,11 @@
 // mass_matrix for mini_cheetah, scene "derivatives": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   mini_cheetah/common/mass_matrix_eb3f56f50b82.hpp
+//   mini_cheetah/common/mass_matrix_0a1d019d0b6b.hpp
 #pragma once
 
 #include "mini_cheetah/derivatives.hpp"
-#include "mini_cheetah/common/mass_matrix_eb3f56f50b82.hpp"
+#include "mini_cheetah/common/mass_matrix_0a1d019d0b6b.hpp"
 
 namespace rbdc_gen::mini_cheetah::derivatives {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::derivatives {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 191 arithmetic
 ///   instructions (critical path 68 cycles, cost 361), scalar tree 678 (path 64, cost 838),
 ///   looped CRBA 2252 (path 64, cost 3297)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_eb3f56f50b82::mass_matrix;
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_0a1d019d0b6b::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // bias for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   mini_cheetah/common/bias_17207ea3847a.hpp
+//   mini_cheetah/common/bias_e68f559c79d9.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/bias_17207ea3847a.hpp"
+#include "mini_cheetah/common/bias_e68f559c79d9.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::full {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 428 arithmetic
 ///   instructions (critical path 92 cycles, cost 658), scalar tree 1428 (path 89, cost
 ///   1650)
-using ::rbdc_gen::mini_cheetah::common::bias_17207ea3847a::bias;
+using ::rbdc_gen::mini_cheetah::common::bias_e68f559c79d9::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_force_terms for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_terms is the same code:
-//   mini_cheetah/common/feet_force_terms_bed86c5d6c31.hpp
+//   mini_cheetah/common/feet_force_terms_b9c5ee86a0a5.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/feet_force_terms_bed86c5d6c31.hpp"
+#include "mini_cheetah/common/feet_force_terms_b9c5ee86a0a5.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             237  168    0     0    24    3    432
-using ::rbdc_gen::mini_cheetah::common::feet_force_terms_bed86c5d6c31::feet_force_terms;
+using ::rbdc_gen::mini_cheetah::common::feet_force_terms_b9c5ee86a0a5::feet_force_terms;
 
 /// feet_force_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_positions for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_positions is the same code:
-//   mini_cheetah/common/feet_positions_eb576122860c.hpp
+//   mini_cheetah/common/feet_positions_3cd64aa5a843.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/feet_positions_eb576122860c.hpp"
+#include "mini_cheetah/common/feet_positions_3cd64aa5a843.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::mini_cheetah::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             183  145    0     0    24    0    352
-using ::rbdc_gen::mini_cheetah::common::feet_positions_eb576122860c::feet_positions;
+using ::rbdc_gen::mini_cheetah::common::feet_positions_3cd64aa5a843::feet_positions;
 
 /// feet_positions on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix_factor for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   mini_cheetah/common/mass_matrix_factor_18d339bd2f32.hpp
+//   mini_cheetah/common/mass_matrix_factor_01278d499058.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/mass_matrix_factor_18d339bd2f32.hpp"
+#include "mini_cheetah/common/mass_matrix_factor_01278d499058.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::full {
 ///             804  668   14     0    24   15   1525
 /// schedule: scalar tree: 1525 arithmetic instructions (critical path 199 cycles, cost 2022),
 ///   looped factor 1806 (path 199, cost 5124), looped CRBA 3380 (path 199, cost 7582)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_factor_18d339bd2f32::mass_matrix_factor;
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_factor_01278d499058::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_open_chain for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   mini_cheetah/common/osc_open_chain_2baecf11e640.hpp
+//   mini_cheetah/common/osc_open_chain_48fb1188fbc1.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/osc_open_chain_2baecf11e640.hpp"
+#include "mini_cheetah/common/osc_open_chain_48fb1188fbc1.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -29,7 +29,7 @@ namespace rbdc_gen::mini_cheetah::full {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1098 arithmetic
 ///   instructions (critical path 138 cycles, cost 1443), scalar tree 3842 (path 132, cost
 ///   4791), looped operational-space columns 6636 (path 132, cost 8934)
-using ::rbdc_gen::mini_cheetah::common::osc_open_chain_2baecf11e640::osc_open_chain;
+using ::rbdc_gen::mini_cheetah::common::osc_open_chain_48fb1188fbc1::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

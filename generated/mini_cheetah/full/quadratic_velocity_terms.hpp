@@ -7,11 +7,11 @@
 // quadratic_velocity_terms for mini_cheetah, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose quadratic_velocity_terms is the same code:
-//   mini_cheetah/common/quadratic_velocity_terms_cf9f1a3f62b0.hpp
+//   mini_cheetah/common/quadratic_velocity_terms_dd0fc3f45a2d.hpp
 #pragma once
 
 #include "mini_cheetah/full.hpp"
-#include "mini_cheetah/common/quadratic_velocity_terms_cf9f1a3f62b0.hpp"
+#include "mini_cheetah/common/quadratic_velocity_terms_dd0fc3f45a2d.hpp"
 
 namespace rbdc_gen::mini_cheetah::full {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             784  597    0     0    24    4   1409
-using ::rbdc_gen::mini_cheetah::common::quadratic_velocity_terms_cf9f1a3f62b0::quadratic_velocity_terms;
+using ::rbdc_gen::mini_cheetah::common::quadratic_velocity_terms_dd0fc3f45a2d::quadratic_velocity_terms;
 
 /// quadratic_velocity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // inverse_dynamics for mini_cheetah, scene "gravity_compensation": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   mini_cheetah/common/inverse_dynamics_7c7db1b6ee80.hpp
+//   mini_cheetah/common/inverse_dynamics_f2b326c3d06d.hpp
 #pragma once
 
 #include "mini_cheetah/gravity_compensation.hpp"
-#include "mini_cheetah/common/inverse_dynamics_7c7db1b6ee80.hpp"
+#include "mini_cheetah/common/inverse_dynamics_f2b326c3d06d.hpp"
 
 namespace rbdc_gen::mini_cheetah::gravity_compensation {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::gravity_compensation {
 ///             375  294    0     0    24    0    693
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 204 arithmetic
 ///   instructions (critical path 81 cycles, cost 406), scalar tree 674 (path 76, cost 864)
-using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_7c7db1b6ee80::inverse_dynamics;
+using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_f2b326c3d06d::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_jacobian for mini_cheetah, scene "kinematics_only": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_jacobian is the same code:
-//   mini_cheetah/common/feet_jacobian_23dcf50b69f1.hpp
+//   mini_cheetah/common/feet_jacobian_201bdf077452.hpp
 #pragma once
 
 #include "mini_cheetah/kinematics_only.hpp"
-#include "mini_cheetah/common/feet_jacobian_23dcf50b69f1.hpp"
+#include "mini_cheetah/common/feet_jacobian_201bdf077452.hpp"
 
 namespace rbdc_gen::mini_cheetah::kinematics_only {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::mini_cheetah::kinematics_only {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             327  265    0     0    24    0    616
-using ::rbdc_gen::mini_cheetah::common::feet_jacobian_23dcf50b69f1::feet_jacobian;
+using ::rbdc_gen::mini_cheetah::common::feet_jacobian_201bdf077452::feet_jacobian;
 
 /// feet_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // bias_lanes for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias_lanes is the same code:
-//   mini_cheetah/common/bias_lanes_70b29cd3cbd9.hpp
+//   mini_cheetah/common/bias_lanes_a8d8f2c0422d.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/bias_lanes_70b29cd3cbd9.hpp"
+#include "mini_cheetah/common/bias_lanes_a8d8f2c0422d.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             810  612    0     0    24    8   1454
-using ::rbdc_gen::mini_cheetah::common::bias_lanes_70b29cd3cbd9::bias_lanes;
+using ::rbdc_gen::mini_cheetah::common::bias_lanes_a8d8f2c0422d::bias_lanes;
 
 /// bias_lanes on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // forward_dynamics_derivatives_lanes for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_derivatives_lanes is the same code:
-//   mini_cheetah/common/forward_dynamics_derivatives_lanes_645d66eca3ec.hpp
+//   mini_cheetah/common/forward_dynamics_derivatives_lanes_ebc83f56b3c5.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/forward_dynamics_derivatives_lanes_645d66eca3ec.hpp"
+#include "mini_cheetah/common/forward_dynamics_derivatives_lanes_ebc83f56b3c5.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -30,7 +30,7 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 ///
 /// operations    mul    add  div  sqrt  trig  neg  total
 ///             13622  12003   14     0    24  231  25894
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_lanes_645d66eca3ec::forward_dynamics_derivatives_lanes;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_derivatives_lanes_ebc83f56b3c5::forward_dynamics_derivatives_lanes;
 
 /// forward_dynamics_derivatives_lanes on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

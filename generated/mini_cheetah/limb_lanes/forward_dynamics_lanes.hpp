@@ -7,11 +7,11 @@
 // forward_dynamics_lanes for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics_lanes is the same code:
-//   mini_cheetah/common/forward_dynamics_lanes_69399241bf54.hpp
+//   mini_cheetah/common/forward_dynamics_lanes_5d075138bafe.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/forward_dynamics_lanes_69399241bf54.hpp"
+#include "mini_cheetah/common/forward_dynamics_lanes_5d075138bafe.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1943  1580   14     0    24   85   3646
-using ::rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_69399241bf54::forward_dynamics_lanes;
+using ::rbdc_gen::mini_cheetah::common::forward_dynamics_lanes_5d075138bafe::forward_dynamics_lanes;
 
 /// forward_dynamics_lanes on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

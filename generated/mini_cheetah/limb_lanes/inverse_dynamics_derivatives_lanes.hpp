@@ -7,11 +7,11 @@
 // inverse_dynamics_derivatives_lanes for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_derivatives_lanes is the same code:
-//   mini_cheetah/common/inverse_dynamics_derivatives_lanes_1251b6a60b33.hpp
+//   mini_cheetah/common/inverse_dynamics_derivatives_lanes_efdaf55e17ae.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/inverse_dynamics_derivatives_lanes_1251b6a60b33.hpp"
+#include "mini_cheetah/common/inverse_dynamics_derivatives_lanes_efdaf55e17ae.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             3116  2787    0     0    24   66   5993
-using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_lanes_1251b6a60b33::inverse_dynamics_derivatives_lanes;
+using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_derivatives_lanes_efdaf55e17ae::inverse_dynamics_derivatives_lanes;
 
 /// inverse_dynamics_derivatives_lanes on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

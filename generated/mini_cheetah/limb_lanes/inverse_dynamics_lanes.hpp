@@ -7,11 +7,11 @@
 // inverse_dynamics_lanes for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics_lanes is the same code:
-//   mini_cheetah/common/inverse_dynamics_lanes_e52c10bd328a.hpp
+//   mini_cheetah/common/inverse_dynamics_lanes_fc902df9fd27.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/inverse_dynamics_lanes_e52c10bd328a.hpp"
+#include "mini_cheetah/common/inverse_dynamics_lanes_fc902df9fd27.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             873  686    0     0    24    0   1583
-using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_e52c10bd328a::inverse_dynamics_lanes;
+using ::rbdc_gen::mini_cheetah::common::inverse_dynamics_lanes_fc902df9fd27::inverse_dynamics_lanes;
 
 /// inverse_dynamics_lanes on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

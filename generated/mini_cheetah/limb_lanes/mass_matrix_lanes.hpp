@@ -7,11 +7,11 @@
 // mass_matrix_lanes for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_lanes is the same code:
-//   mini_cheetah/common/mass_matrix_lanes_1c0370326a2e.hpp
+//   mini_cheetah/common/mass_matrix_lanes_0e0e809f9300.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/mass_matrix_lanes_1c0370326a2e.hpp"
+#include "mini_cheetah/common/mass_matrix_lanes_0e0e809f9300.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             340  310    0     0    24   27    701
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_lanes_1c0370326a2e::mass_matrix_lanes;
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_lanes_0e0e809f9300::mass_matrix_lanes;
 
 /// mass_matrix_lanes on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

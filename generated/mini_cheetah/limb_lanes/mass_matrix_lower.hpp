@@ -7,11 +7,11 @@
 // mass_matrix_lower for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_lower is the same code:
-//   mini_cheetah/common/mass_matrix_lower_f9725ba6e5ba.hpp
+//   mini_cheetah/common/mass_matrix_lower_de56262692d8.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/mass_matrix_lower_f9725ba6e5ba.hpp"
+#include "mini_cheetah/common/mass_matrix_lower_de56262692d8.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 191 arithmetic
 ///   instructions (critical path 68 cycles, cost 361), scalar tree 678 (path 64, cost 838),
 ///   looped CRBA 2252 (path 64, cost 3297)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_lower_f9725ba6e5ba::mass_matrix_lower;
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_lower_de56262692d8::mass_matrix_lower;
 
 /// mass_matrix_lower on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

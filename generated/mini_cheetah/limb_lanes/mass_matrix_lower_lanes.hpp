@@ -7,11 +7,11 @@
 // mass_matrix_lower_lanes for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_lower_lanes is the same code:
-//   mini_cheetah/common/mass_matrix_lower_lanes_80256e8d3256.hpp
+//   mini_cheetah/common/mass_matrix_lower_lanes_76d1caa099eb.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/mass_matrix_lower_lanes_80256e8d3256.hpp"
+#include "mini_cheetah/common/mass_matrix_lower_lanes_76d1caa099eb.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             340  310    0     0    24   27    701
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_lower_lanes_80256e8d3256::mass_matrix_lower_lanes;
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_lower_lanes_76d1caa099eb::mass_matrix_lower_lanes;
 
 /// mass_matrix_lower_lanes on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // osc_open_chain_lanes for mini_cheetah, scene "limb_lanes": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain_lanes is the same code:
-//   mini_cheetah/common/osc_open_chain_lanes_31653b22a636.hpp
+//   mini_cheetah/common/osc_open_chain_lanes_d91cf37cf117.hpp
 #pragma once
 
 #include "mini_cheetah/limb_lanes.hpp"
-#include "mini_cheetah/common/osc_open_chain_lanes_31653b22a636.hpp"
+#include "mini_cheetah/common/osc_open_chain_lanes_d91cf37cf117.hpp"
 
 namespace rbdc_gen::mini_cheetah::limb_lanes {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::mini_cheetah::limb_lanes {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2200  1620    8     0    24   36   3888
-using ::rbdc_gen::mini_cheetah::common::osc_open_chain_lanes_31653b22a636::osc_open_chain_lanes;
+using ::rbdc_gen::mini_cheetah::common::osc_open_chain_lanes_d91cf37cf117::osc_open_chain_lanes;
 
 /// osc_open_chain_lanes on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // step_terms for mini_cheetah, scene "simulation": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose step_terms is the same code:
-//   mini_cheetah/common/step_terms_85a1c62e1f87.hpp
+//   mini_cheetah/common/step_terms_178181e26a4f.hpp
 #pragma once
 
 #include "mini_cheetah/simulation.hpp"
-#include "mini_cheetah/common/step_terms_85a1c62e1f87.hpp"
+#include "mini_cheetah/common/step_terms_178181e26a4f.hpp"
 
 namespace rbdc_gen::mini_cheetah::simulation {
 
@@ -34,7 +34,7 @@ namespace rbdc_gen::mini_cheetah::simulation {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2246  1819   14     0    24   28   4131
-using ::rbdc_gen::mini_cheetah::common::step_terms_85a1c62e1f87::step_terms;
+using ::rbdc_gen::mini_cheetah::common::step_terms_178181e26a4f::step_terms;
 
 /// step_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

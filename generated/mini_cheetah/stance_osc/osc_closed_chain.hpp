@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "stance_osc": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_869827f50af7.hpp
+//   mini_cheetah/common/osc_closed_chain_82a37f171fef.hpp
 #pragma once
 
 #include "mini_cheetah/stance_osc.hpp"
-#include "mini_cheetah/common/osc_closed_chain_869827f50af7.hpp"
+#include "mini_cheetah/common/osc_closed_chain_82a37f171fef.hpp"
 
 namespace rbdc_gen::mini_cheetah::stance_osc {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::mini_cheetah::stance_osc {
 ///             2271  1708    9     0    24   17   4029
 /// schedule: scalar tree: 4029 arithmetic instructions (critical path 136 cycles, cost 5250),
 ///   looped operational-space columns 6979 (path 136, cost 9768)
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_869827f50af7::osc_closed_chain;
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_82a37f171fef::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

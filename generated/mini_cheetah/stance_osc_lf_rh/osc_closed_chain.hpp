@@ -7,11 +7,11 @@
 // osc_closed_chain for mini_cheetah, scene "stance_osc_lf_rh": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah/common/osc_closed_chain_8993bcb4c6eb.hpp
+//   mini_cheetah/common/osc_closed_chain_6e65e302c7b7.hpp
 #pragma once
 
 #include "mini_cheetah/stance_osc_lf_rh.hpp"
-#include "mini_cheetah/common/osc_closed_chain_8993bcb4c6eb.hpp"
+#include "mini_cheetah/common/osc_closed_chain_6e65e302c7b7.hpp"
 
 namespace rbdc_gen::mini_cheetah::stance_osc_lf_rh {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::mini_cheetah::stance_osc_lf_rh {
 ///             2131  1602    9     0    24   18   3784
 /// schedule: scalar tree: 3784 arithmetic instructions (critical path 136 cycles, cost 4662),
 ///   looped operational-space columns 6733 (path 136, cost 9177)
-using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_8993bcb4c6eb::osc_closed_chain;
+using ::rbdc_gen::mini_cheetah::common::osc_closed_chain_6e65e302c7b7::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

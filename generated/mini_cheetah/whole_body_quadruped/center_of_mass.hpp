@@ -7,11 +7,11 @@
 // center_of_mass for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose center_of_mass is the same code:
-//   mini_cheetah/common/center_of_mass_9b76030fbff9.hpp
+//   mini_cheetah/common/center_of_mass_e20cead27d2f.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/center_of_mass_9b76030fbff9.hpp"
+#include "mini_cheetah/common/center_of_mass_e20cead27d2f.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 ///             346  234    0     0    24    0    604
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 202 arithmetic
 ///   instructions (critical path 67 cycles, cost 370), scalar tree 604 (path 62, cost 759)
-using ::rbdc_gen::mini_cheetah::common::center_of_mass_9b76030fbff9::center_of_mass;
+using ::rbdc_gen::mini_cheetah::common::center_of_mass_e20cead27d2f::center_of_mass;
 
 /// center_of_mass on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // center_of_mass_jacobian for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose center_of_mass_jacobian is the same code:
-//   mini_cheetah/common/center_of_mass_jacobian_361e86be6dd0.hpp
+//   mini_cheetah/common/center_of_mass_jacobian_7fcc40992ea0.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/center_of_mass_jacobian_361e86be6dd0.hpp"
+#include "mini_cheetah/common/center_of_mass_jacobian_7fcc40992ea0.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 ///             297  160    0     0    24    0    481
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 172 arithmetic
 ///   instructions (critical path 71 cycles, cost 350), scalar tree 481 (path 69, cost 654)
-using ::rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_361e86be6dd0::center_of_mass_jacobian;
+using ::rbdc_gen::mini_cheetah::common::center_of_mass_jacobian_7fcc40992ea0::center_of_mass_jacobian;
 
 /// center_of_mass_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // centroidal_bias for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_bias is the same code:
-//   mini_cheetah/common/centroidal_bias_9a91411578cd.hpp
+//   mini_cheetah/common/centroidal_bias_d12b205f7ba9.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/centroidal_bias_9a91411578cd.hpp"
+#include "mini_cheetah/common/centroidal_bias_d12b205f7ba9.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 552 arithmetic
 ///   instructions (critical path 101 cycles, cost 804), scalar tree 1729 (path 98, cost
 ///   1974)
-using ::rbdc_gen::mini_cheetah::common::centroidal_bias_9a91411578cd::centroidal_bias;
+using ::rbdc_gen::mini_cheetah::common::centroidal_bias_d12b205f7ba9::centroidal_bias;
 
 /// centroidal_bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

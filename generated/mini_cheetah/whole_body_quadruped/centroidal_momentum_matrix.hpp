@@ -7,11 +7,11 @@
 // centroidal_momentum_matrix for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_momentum_matrix is the same code:
-//   mini_cheetah/common/centroidal_momentum_matrix_ed2f03bb75ad.hpp
+//   mini_cheetah/common/centroidal_momentum_matrix_968b5a529e29.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/centroidal_momentum_matrix_ed2f03bb75ad.hpp"
+#include "mini_cheetah/common/centroidal_momentum_matrix_968b5a529e29.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 534 arithmetic
 ///   instructions (critical path 75 cycles, cost 722), scalar tree 1450 (path 72, cost
 ///   1630)
-using ::rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_ed2f03bb75ad::centroidal_momentum_matrix;
+using ::rbdc_gen::mini_cheetah::common::centroidal_momentum_matrix_968b5a529e29::centroidal_momentum_matrix;
 
 /// centroidal_momentum_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // feet_bias_accelerations for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_bias_accelerations is the same code:
-//   mini_cheetah/common/feet_bias_accelerations_986cb91c7501.hpp
+//   mini_cheetah/common/feet_bias_accelerations_ce3ebfdc061a.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/feet_bias_accelerations_986cb91c7501.hpp"
+#include "mini_cheetah/common/feet_bias_accelerations_ce3ebfdc061a.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 ///             511  345    0     0    24    0    880
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 244 arithmetic
 ///   instructions (critical path 72 cycles, cost 424), scalar tree 863 (path 71, cost 1040)
-using ::rbdc_gen::mini_cheetah::common::feet_bias_accelerations_986cb91c7501::feet_bias_accelerations;
+using ::rbdc_gen::mini_cheetah::common::feet_bias_accelerations_ce3ebfdc061a::feet_bias_accelerations;
 
 /// feet_bias_accelerations on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // frame_bias_accelerations for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_bias_accelerations is the same code:
-//   mini_cheetah/common/frame_bias_accelerations_327c4581145c.hpp
+//   mini_cheetah/common/frame_bias_accelerations_5b458d417d88.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/frame_bias_accelerations_327c4581145c.hpp"
+#include "mini_cheetah/common/frame_bias_accelerations_5b458d417d88.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 ///             556  383    0     0    24    4    967
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 283 arithmetic
 ///   instructions (critical path 72 cycles, cost 463), scalar tree 950 (path 71, cost 1128)
-using ::rbdc_gen::mini_cheetah::common::frame_bias_accelerations_327c4581145c::frame_bias_accelerations;
+using ::rbdc_gen::mini_cheetah::common::frame_bias_accelerations_5b458d417d88::frame_bias_accelerations;
 
 /// frame_bias_accelerations on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

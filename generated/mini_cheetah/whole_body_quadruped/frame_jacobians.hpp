@@ -7,11 +7,11 @@
 // frame_jacobians for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_jacobians is the same code:
-//   mini_cheetah/common/frame_jacobians_0073793535df.hpp
+//   mini_cheetah/common/frame_jacobians_ec42dffbda99.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/frame_jacobians_0073793535df.hpp"
+#include "mini_cheetah/common/frame_jacobians_ec42dffbda99.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 380 arithmetic
 ///   instructions (critical path 67 cycles, cost 548), scalar tree 1334 (path 66, cost
 ///   1499)
-using ::rbdc_gen::mini_cheetah::common::frame_jacobians_0073793535df::frame_jacobians;
+using ::rbdc_gen::mini_cheetah::common::frame_jacobians_ec42dffbda99::frame_jacobians;
 
 /// frame_jacobians on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

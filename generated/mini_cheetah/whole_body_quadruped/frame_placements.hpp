@@ -7,11 +7,11 @@
 // frame_placements for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_placements is the same code:
-//   mini_cheetah/common/frame_placements_ead2f34fc4f9.hpp
+//   mini_cheetah/common/frame_placements_afd132c50512.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/frame_placements_ead2f34fc4f9.hpp"
+#include "mini_cheetah/common/frame_placements_afd132c50512.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 ///             225  160    0     0    24   16    425
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 125 arithmetic
 ///   instructions (critical path 49 cycles, cost 248), scalar tree 404 (path 48, cost 524)
-using ::rbdc_gen::mini_cheetah::common::frame_placements_ead2f34fc4f9::frame_placements;
+using ::rbdc_gen::mini_cheetah::common::frame_placements_afd132c50512::frame_placements;
 
 /// frame_placements on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // frame_velocities for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_velocities is the same code:
-//   mini_cheetah/common/frame_velocities_b869a265874b.hpp
+//   mini_cheetah/common/frame_velocities_6d900e85869d.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/frame_velocities_b869a265874b.hpp"
+#include "mini_cheetah/common/frame_velocities_6d900e85869d.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -26,7 +26,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 ///             387  256    0     0    24    8    675
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 210 arithmetic
 ///   instructions (critical path 59 cycles, cost 358), scalar tree 660 (path 58, cost 805)
-using ::rbdc_gen::mini_cheetah::common::frame_velocities_b869a265874b::frame_velocities;
+using ::rbdc_gen::mini_cheetah::common::frame_velocities_6d900e85869d::frame_velocities;
 
 /// frame_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -7,11 +7,11 @@
 // mass_matrix_inverse for mini_cheetah, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_inverse is the same code:
-//   mini_cheetah/common/mass_matrix_inverse_fc484f6d5526.hpp
+//   mini_cheetah/common/mass_matrix_inverse_ef675d4f7495.hpp
 #pragma once
 
 #include "mini_cheetah/whole_body_quadruped.hpp"
-#include "mini_cheetah/common/mass_matrix_inverse_fc484f6d5526.hpp"
+#include "mini_cheetah/common/mass_matrix_inverse_ef675d4f7495.hpp"
 
 namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah::whole_body_quadruped {
 /// schedule: limb lanes (the 4 isomorphic limbs in SIMD lanes, the trunk scalar): 1282 arithmetic
 ///   instructions (critical path 212 cycles, cost 1812), scalar tree 3507 (path 206, cost
 ///   4172)
-using ::rbdc_gen::mini_cheetah::common::mass_matrix_inverse_fc484f6d5526::mass_matrix_inverse;
+using ::rbdc_gen::mini_cheetah::common::mass_matrix_inverse_ef675d4f7495::mass_matrix_inverse;
 
 /// mass_matrix_inverse on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // bias for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   mini_cheetah_rotors/common/bias_d048c8e4b59a.hpp
+//   mini_cheetah_rotors/common/bias_93221c581fe2.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/bias_d048c8e4b59a.hpp"
+#include "mini_cheetah_rotors/common/bias_93221c581fe2.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations   mul  add  div  sqrt  trig  neg  total
 ///             1222  992    0     0    24    0   2238
-using ::rbdc_gen::mini_cheetah_rotors::common::bias_d048c8e4b59a::bias;
+using ::rbdc_gen::mini_cheetah_rotors::common::bias_93221c581fe2::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

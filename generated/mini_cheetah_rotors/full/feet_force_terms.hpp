@@ -8,11 +8,11 @@
 // feet_force_terms for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_terms is the same code:
-//   mini_cheetah_rotors/common/feet_force_terms_50a6001c8605.hpp
+//   mini_cheetah_rotors/common/feet_force_terms_ba2f300ff863.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/feet_force_terms_50a6001c8605.hpp"
+#include "mini_cheetah_rotors/common/feet_force_terms_ba2f300ff863.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             237  168    0     0    24    3    432
-using ::rbdc_gen::mini_cheetah_rotors::common::feet_force_terms_50a6001c8605::feet_force_terms;
+using ::rbdc_gen::mini_cheetah_rotors::common::feet_force_terms_ba2f300ff863::feet_force_terms;
 
 /// feet_force_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // feet_jacobian for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_jacobian is the same code:
-//   mini_cheetah_rotors/common/feet_jacobian_c7995d6ec0e0.hpp
+//   mini_cheetah_rotors/common/feet_jacobian_c42d7a8645bf.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/feet_jacobian_c7995d6ec0e0.hpp"
+#include "mini_cheetah_rotors/common/feet_jacobian_c42d7a8645bf.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             327  265    0     0    24    0    616
-using ::rbdc_gen::mini_cheetah_rotors::common::feet_jacobian_c7995d6ec0e0::feet_jacobian;
+using ::rbdc_gen::mini_cheetah_rotors::common::feet_jacobian_c42d7a8645bf::feet_jacobian;
 
 /// feet_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

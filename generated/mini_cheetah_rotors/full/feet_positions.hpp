@@ -8,11 +8,11 @@
 // feet_positions for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_positions is the same code:
-//   mini_cheetah_rotors/common/feet_positions_3b8b72a9e8f8.hpp
+//   mini_cheetah_rotors/common/feet_positions_df4303f515ce.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/feet_positions_3b8b72a9e8f8.hpp"
+#include "mini_cheetah_rotors/common/feet_positions_df4303f515ce.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             183  145    0     0    24    0    352
-using ::rbdc_gen::mini_cheetah_rotors::common::feet_positions_3b8b72a9e8f8::feet_positions;
+using ::rbdc_gen::mini_cheetah_rotors::common::feet_positions_df4303f515ce::feet_positions;
 
 /// feet_positions on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

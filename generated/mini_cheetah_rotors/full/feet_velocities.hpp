@@ -8,11 +8,11 @@
 // feet_velocities for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_velocities is the same code:
-//   mini_cheetah_rotors/common/feet_velocities_348d9f6e985e.hpp
+//   mini_cheetah_rotors/common/feet_velocities_d8d9bdf41198.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/feet_velocities_348d9f6e985e.hpp"
+#include "mini_cheetah_rotors/common/feet_velocities_d8d9bdf41198.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             321  213    0     0    24    0    558
-using ::rbdc_gen::mini_cheetah_rotors::common::feet_velocities_348d9f6e985e::feet_velocities;
+using ::rbdc_gen::mini_cheetah_rotors::common::feet_velocities_d8d9bdf41198::feet_velocities;
 
 /// feet_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

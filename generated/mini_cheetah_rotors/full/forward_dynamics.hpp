@@ -8,11 +8,11 @@
 // forward_dynamics for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   mini_cheetah_rotors/common/forward_dynamics_5c71aad11c02.hpp
+//   mini_cheetah_rotors/common/forward_dynamics_ca3e1acfb634.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/forward_dynamics_5c71aad11c02.hpp"
+#include "mini_cheetah_rotors/common/forward_dynamics_ca3e1acfb634.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2359  1990   14     0    24    1   4388
-using ::rbdc_gen::mini_cheetah_rotors::common::forward_dynamics_5c71aad11c02::forward_dynamics;
+using ::rbdc_gen::mini_cheetah_rotors::common::forward_dynamics_ca3e1acfb634::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

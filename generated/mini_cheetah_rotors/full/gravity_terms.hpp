@@ -8,11 +8,11 @@
 // gravity_terms for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_terms is the same code:
-//   mini_cheetah_rotors/common/gravity_terms_a0581e5174eb.hpp
+//   mini_cheetah_rotors/common/gravity_terms_0e068b2c7197.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/gravity_terms_a0581e5174eb.hpp"
+#include "mini_cheetah_rotors/common/gravity_terms_0e068b2c7197.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             195  153    0     0    24    0    372
-using ::rbdc_gen::mini_cheetah_rotors::common::gravity_terms_a0581e5174eb::gravity_terms;
+using ::rbdc_gen::mini_cheetah_rotors::common::gravity_terms_0e068b2c7197::gravity_terms;
 
 /// gravity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

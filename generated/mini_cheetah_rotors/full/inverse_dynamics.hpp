@@ -8,11 +8,11 @@
 // inverse_dynamics for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   mini_cheetah_rotors/common/inverse_dynamics_1ce5e57f3fee.hpp
+//   mini_cheetah_rotors/common/inverse_dynamics_651843ebceee.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/inverse_dynamics_1ce5e57f3fee.hpp"
+#include "mini_cheetah_rotors/common/inverse_dynamics_651843ebceee.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1301  1102    0     0    24    0   2427
-using ::rbdc_gen::mini_cheetah_rotors::common::inverse_dynamics_1ce5e57f3fee::inverse_dynamics;
+using ::rbdc_gen::mini_cheetah_rotors::common::inverse_dynamics_651843ebceee::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

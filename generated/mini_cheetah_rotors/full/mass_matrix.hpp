@@ -8,11 +8,11 @@
 // mass_matrix for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   mini_cheetah_rotors/common/mass_matrix_b2d348878e03.hpp
+//   mini_cheetah_rotors/common/mass_matrix_9c5e71f5f936.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/mass_matrix_b2d348878e03.hpp"
+#include "mini_cheetah_rotors/common/mass_matrix_9c5e71f5f936.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             344  340    0     0    24   21    729
-using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_b2d348878e03::mass_matrix;
+using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_9c5e71f5f936::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // mass_matrix_factor for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   mini_cheetah_rotors/common/mass_matrix_factor_160022b51159.hpp
+//   mini_cheetah_rotors/common/mass_matrix_factor_28bacd0f3fb8.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/mass_matrix_factor_160022b51159.hpp"
+#include "mini_cheetah_rotors/common/mass_matrix_factor_28bacd0f3fb8.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///             818  705   14     0    24   14   1575
 /// schedule: scalar tree: 1575 arithmetic instructions (critical path 200 cycles, cost 2075),
 ///   looped factor 1857 (path 200, cost 5177)
-using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_factor_160022b51159::mass_matrix_factor;
+using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_factor_28bacd0f3fb8::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // osc_closed_chain for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_closed_chain is the same code:
-//   mini_cheetah_rotors/common/osc_closed_chain_6013428d31ba.hpp
+//   mini_cheetah_rotors/common/osc_closed_chain_95040e00ec60.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/osc_closed_chain_6013428d31ba.hpp"
+#include "mini_cheetah_rotors/common/osc_closed_chain_95040e00ec60.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2582  2049    9     0    24   31   4695
-using ::rbdc_gen::mini_cheetah_rotors::common::osc_closed_chain_6013428d31ba::osc_closed_chain;
+using ::rbdc_gen::mini_cheetah_rotors::common::osc_closed_chain_95040e00ec60::osc_closed_chain;
 
 /// osc_closed_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

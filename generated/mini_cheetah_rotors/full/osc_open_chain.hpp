@@ -8,11 +8,11 @@
 // osc_open_chain for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose osc_open_chain is the same code:
-//   mini_cheetah_rotors/common/osc_open_chain_462d2359e7cb.hpp
+//   mini_cheetah_rotors/common/osc_open_chain_539d7719dc2f.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/osc_open_chain_462d2359e7cb.hpp"
+#include "mini_cheetah_rotors/common/osc_open_chain_539d7719dc2f.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -27,7 +27,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2362  1872    8     0    24   29   4295
-using ::rbdc_gen::mini_cheetah_rotors::common::osc_open_chain_462d2359e7cb::osc_open_chain;
+using ::rbdc_gen::mini_cheetah_rotors::common::osc_open_chain_539d7719dc2f::osc_open_chain;
 
 /// osc_open_chain on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

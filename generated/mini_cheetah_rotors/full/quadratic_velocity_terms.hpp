@@ -8,11 +8,11 @@
 // quadratic_velocity_terms for mini_cheetah_rotors, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose quadratic_velocity_terms is the same code:
-//   mini_cheetah_rotors/common/quadratic_velocity_terms_202973023c30.hpp
+//   mini_cheetah_rotors/common/quadratic_velocity_terms_80d6894d7a4e.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/full.hpp"
-#include "mini_cheetah_rotors/common/quadratic_velocity_terms_202973023c30.hpp"
+#include "mini_cheetah_rotors/common/quadratic_velocity_terms_80d6894d7a4e.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::full {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah_rotors::full {
 ///
 /// operations   mul  add  div  sqrt  trig  neg  total
 ///             1213  982    0     0    24    0   2219
-using ::rbdc_gen::mini_cheetah_rotors::common::quadratic_velocity_terms_202973023c30::quadratic_velocity_terms;
+using ::rbdc_gen::mini_cheetah_rotors::common::quadratic_velocity_terms_80d6894d7a4e::quadratic_velocity_terms;
 
 /// quadratic_velocity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // step_terms for mini_cheetah_rotors, scene "simulation": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose step_terms is the same code:
-//   mini_cheetah_rotors/common/step_terms_5dba48b9b1fd.hpp
+//   mini_cheetah_rotors/common/step_terms_448052ab037b.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/simulation.hpp"
-#include "mini_cheetah_rotors/common/step_terms_5dba48b9b1fd.hpp"
+#include "mini_cheetah_rotors/common/step_terms_448052ab037b.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::simulation {
 
@@ -35,7 +35,7 @@ namespace rbdc_gen::mini_cheetah_rotors::simulation {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             2689  2241   14     0    24   27   4995
-using ::rbdc_gen::mini_cheetah_rotors::common::step_terms_5dba48b9b1fd::step_terms;
+using ::rbdc_gen::mini_cheetah_rotors::common::step_terms_448052ab037b::step_terms;
 
 /// step_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

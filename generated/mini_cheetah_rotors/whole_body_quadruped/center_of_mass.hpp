@@ -8,11 +8,11 @@
 // center_of_mass for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose center_of_mass is the same code:
-//   mini_cheetah_rotors/common/center_of_mass_c62120836db0.hpp
+//   mini_cheetah_rotors/common/center_of_mass_f99c2d0f353c.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/center_of_mass_c62120836db0.hpp"
+#include "mini_cheetah_rotors/common/center_of_mass_f99c2d0f353c.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             521  437    0     0    24    0    982
-using ::rbdc_gen::mini_cheetah_rotors::common::center_of_mass_c62120836db0::center_of_mass;
+using ::rbdc_gen::mini_cheetah_rotors::common::center_of_mass_f99c2d0f353c::center_of_mass;
 
 /// center_of_mass on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

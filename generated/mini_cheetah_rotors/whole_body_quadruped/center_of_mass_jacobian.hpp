@@ -8,11 +8,11 @@
 // center_of_mass_jacobian for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose center_of_mass_jacobian is the same code:
-//   mini_cheetah_rotors/common/center_of_mass_jacobian_de1bb0e1f852.hpp
+//   mini_cheetah_rotors/common/center_of_mass_jacobian_ce26a4e91174.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/center_of_mass_jacobian_de1bb0e1f852.hpp"
+#include "mini_cheetah_rotors/common/center_of_mass_jacobian_ce26a4e91174.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             378  283    0     0    24    0    685
-using ::rbdc_gen::mini_cheetah_rotors::common::center_of_mass_jacobian_de1bb0e1f852::center_of_mass_jacobian;
+using ::rbdc_gen::mini_cheetah_rotors::common::center_of_mass_jacobian_ce26a4e91174::center_of_mass_jacobian;
 
 /// center_of_mass_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // centroidal_bias for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_bias is the same code:
-//   mini_cheetah_rotors/common/centroidal_bias_0d29ceb749bb.hpp
+//   mini_cheetah_rotors/common/centroidal_bias_3dd332a96f78.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/centroidal_bias_0d29ceb749bb.hpp"
+#include "mini_cheetah_rotors/common/centroidal_bias_3dd332a96f78.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1465  1198    0     0    24    0   2687
-using ::rbdc_gen::mini_cheetah_rotors::common::centroidal_bias_0d29ceb749bb::centroidal_bias;
+using ::rbdc_gen::mini_cheetah_rotors::common::centroidal_bias_3dd332a96f78::centroidal_bias;
 
 /// centroidal_bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

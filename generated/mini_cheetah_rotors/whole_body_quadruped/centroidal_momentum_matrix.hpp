@@ -8,11 +8,11 @@
 // centroidal_momentum_matrix for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose centroidal_momentum_matrix is the same code:
-//   mini_cheetah_rotors/common/centroidal_momentum_matrix_2fb58fe0df4c.hpp
+//   mini_cheetah_rotors/common/centroidal_momentum_matrix_d7b9fcecdaab.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/centroidal_momentum_matrix_2fb58fe0df4c.hpp"
+#include "mini_cheetah_rotors/common/centroidal_momentum_matrix_d7b9fcecdaab.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             853  772    0     0    24   14   1663
-using ::rbdc_gen::mini_cheetah_rotors::common::centroidal_momentum_matrix_2fb58fe0df4c::centroidal_momentum_matrix;
+using ::rbdc_gen::mini_cheetah_rotors::common::centroidal_momentum_matrix_d7b9fcecdaab::centroidal_momentum_matrix;
 
 /// centroidal_momentum_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // feet_bias_accelerations for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_bias_accelerations is the same code:
-//   mini_cheetah_rotors/common/feet_bias_accelerations_1ef22158e084.hpp
+//   mini_cheetah_rotors/common/feet_bias_accelerations_6a919a4289d1.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/feet_bias_accelerations_1ef22158e084.hpp"
+#include "mini_cheetah_rotors/common/feet_bias_accelerations_6a919a4289d1.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             499  340    0     0    24    0    863
-using ::rbdc_gen::mini_cheetah_rotors::common::feet_bias_accelerations_1ef22158e084::feet_bias_accelerations;
+using ::rbdc_gen::mini_cheetah_rotors::common::feet_bias_accelerations_6a919a4289d1::feet_bias_accelerations;
 
 /// feet_bias_accelerations on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

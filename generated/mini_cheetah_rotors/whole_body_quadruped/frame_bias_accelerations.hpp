@@ -8,11 +8,11 @@
 // frame_bias_accelerations for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_bias_accelerations is the same code:
-//   mini_cheetah_rotors/common/frame_bias_accelerations_5a8daa0a7f8f.hpp
+//   mini_cheetah_rotors/common/frame_bias_accelerations_2c95643580dc.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/frame_bias_accelerations_5a8daa0a7f8f.hpp"
+#include "mini_cheetah_rotors/common/frame_bias_accelerations_2c95643580dc.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             544  378    0     0    24    4    950
-using ::rbdc_gen::mini_cheetah_rotors::common::frame_bias_accelerations_5a8daa0a7f8f::frame_bias_accelerations;
+using ::rbdc_gen::mini_cheetah_rotors::common::frame_bias_accelerations_2c95643580dc::frame_bias_accelerations;
 
 /// frame_bias_accelerations on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // frame_jacobians for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_jacobians is the same code:
-//   mini_cheetah_rotors/common/frame_jacobians_78a80bc76390.hpp
+//   mini_cheetah_rotors/common/frame_jacobians_af4c9f387481.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/frame_jacobians_78a80bc76390.hpp"
+#include "mini_cheetah_rotors/common/frame_jacobians_af4c9f387481.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             729  529    0     0    24   52   1334
-using ::rbdc_gen::mini_cheetah_rotors::common::frame_jacobians_78a80bc76390::frame_jacobians;
+using ::rbdc_gen::mini_cheetah_rotors::common::frame_jacobians_af4c9f387481::frame_jacobians;
 
 /// frame_jacobians on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

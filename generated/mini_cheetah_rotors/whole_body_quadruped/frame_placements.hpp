@@ -8,11 +8,11 @@
 // frame_placements for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_placements is the same code:
-//   mini_cheetah_rotors/common/frame_placements_df0c924010e3.hpp
+//   mini_cheetah_rotors/common/frame_placements_8350a316e639.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/frame_placements_df0c924010e3.hpp"
+#include "mini_cheetah_rotors/common/frame_placements_8350a316e639.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             207  157    0     0    24   16    404
-using ::rbdc_gen::mini_cheetah_rotors::common::frame_placements_df0c924010e3::frame_placements;
+using ::rbdc_gen::mini_cheetah_rotors::common::frame_placements_8350a316e639::frame_placements;
 
 /// frame_placements on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

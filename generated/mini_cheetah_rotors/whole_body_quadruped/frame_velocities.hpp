@@ -8,11 +8,11 @@
 // frame_velocities for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose frame_velocities is the same code:
-//   mini_cheetah_rotors/common/frame_velocities_90417d6bac6b.hpp
+//   mini_cheetah_rotors/common/frame_velocities_5715d490fb51.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/frame_velocities_90417d6bac6b.hpp"
+#include "mini_cheetah_rotors/common/frame_velocities_5715d490fb51.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///             375  251    0     0    24   10    660
-using ::rbdc_gen::mini_cheetah_rotors::common::frame_velocities_90417d6bac6b::frame_velocities;
+using ::rbdc_gen::mini_cheetah_rotors::common::frame_velocities_5715d490fb51::frame_velocities;
 
 /// frame_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -8,11 +8,11 @@
 // mass_matrix_inverse for mini_cheetah_rotors, scene "whole_body_quadruped": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_inverse is the same code:
-//   mini_cheetah_rotors/common/mass_matrix_inverse_ff54b853a6c4.hpp
+//   mini_cheetah_rotors/common/mass_matrix_inverse_39ab52fa2763.hpp
 #pragma once
 
 #include "mini_cheetah_rotors/whole_body_quadruped.hpp"
-#include "mini_cheetah_rotors/common/mass_matrix_inverse_ff54b853a6c4.hpp"
+#include "mini_cheetah_rotors/common/mass_matrix_inverse_39ab52fa2763.hpp"
 
 namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::mini_cheetah_rotors::whole_body_quadruped {
 ///
 /// operations   mul   add  div  sqrt  trig  neg  total
 ///             1892  1626   14     0    24    2   3558
-using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_inverse_ff54b853a6c4::mass_matrix_inverse;
+using ::rbdc_gen::mini_cheetah_rotors::common::mass_matrix_inverse_39ab52fa2763::mass_matrix_inverse;
 
 /// mass_matrix_inverse on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -28,16 +28,15 @@ from ..graph import expr as ex
 # 1500 40.6 s, 500 28.5 s, 250 16.9 s, 120 19.5 s (docs/performance.md, "Smaller blocks"); run
 # time unchanged (g++ 24.0 → 23.1 µs, clang 20.4 → 19.8 µs).
 SPLIT_ABOVE = 6500
-# Lane code takes g++ longer per statement (vector types, shuffles): TALOS's ∂q̈ terms in lanes (5 500
-# statements) took 17.7-19.3 s alone as one function, 10.0 s in 22 blocks, and held its full +
-# derivatives translation unit at 60 s, issue 20's limit; the blocks ran its ∂q̈ about 3 % slower
-# (docs/performance.md, "The feet's force terms on the RNEA loop's entries"). humanoid32's (3 500)
-# stays whole, at 8.7 s.
-LANE_SPLIT_ABOVE = 4500
+# Lane code has the same threshold. It had a lower one while g++ kept const lane values in memory
+# (backend/emit.py): TALOS's ∂q̈ terms in lanes (5 500 statements) then took 17.7-19.3 s as one
+# function and ran in 22 blocks; with the values in registers they take 12.5 s whole (14.4 s in
+# blocks) and the ∂q̈ runs 3.5 % faster whole (docs/performance.md, "Lane values g++ can keep in
+# registers").
 MAX_STATEMENTS = 250
 SCRATCH = "rbdc_scratch"
 LANE_TYPE = "using Lane = Lanes<Scalar>;"  # a lane function's first statement
-_DEFINITION = re.compile(r"^const (Scalar|Lane|auto) (\w+)(\[\d+\])? = ")
+_DEFINITION = re.compile(r"^(Scalar|Lane|auto) (\w+)(\[\d+\])? = ")
 _IDENTIFIER = re.compile(r"\b[A-Za-z_]\w*\b")
 
 
@@ -55,7 +54,7 @@ def _references(statement):
 def split(body, parameters, function_name, max_statements=MAX_STATEMENTS):
     """`body` (emit_body's statements) as Blocks, or None when it is short enough to stay one
     function. `parameters`: the function's parameter names, in order."""
-    if len(body) <= (LANE_SPLIT_ABOVE if LANE_TYPE in body else SPLIT_ABOVE):
+    if len(body) <= SPLIT_ABOVE:
         return None
     body, repeated = _lane_setup(body)
     first = _after_joint_trig(body)
@@ -131,8 +130,8 @@ def _places(readers, defined):
 
 def _load(name, kind, place):
     if kind == "Lane":
-        return "const Lane %s = load_lanes(%s + %d);" % (name, SCRATCH, place)
-    return "const Scalar %s = %s[%d];" % (name, SCRATCH, place)
+        return "Lane %s = load_lanes(%s + %d);" % (name, SCRATCH, place)
+    return "Scalar %s = %s[%d];" % (name, SCRATCH, place)
 
 
 def _store(name, kind, place):

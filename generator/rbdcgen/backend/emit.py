@@ -6,11 +6,11 @@ Inputs are read as `q[k]`, each output entry is written exactly once as `M[k] = 
 zeros and mirrored entries included). sin/cos of the joint angles come first, in one block: the
 angles are gathered into an array and `joint_sincos` (rbdc_gen/support.hpp) computes them all at once
 (a vectorised polynomial for double and float), named by joint (`sin_LF_knee`); then
-every node used more than once becomes `const Scalar tN = …;` in the order the algorithm created
-them (expr.Expr.position, kept topological), and nodes used
-once are inlined into their single user, up to MAX_INLINE_OPS operations per expression. Each output
-entry is stored right after the last temporary it needs (constant entries first), so its operands
-need not stay live to the end of the function: outputs must not overlap inputs
+every node used more than once becomes `Scalar tN = …;` in the order the algorithm created them
+(expr.Expr.position, kept topological), and nodes used once are inlined into their single user, up
+to MAX_INLINE_OPS operations per expression. Each output entry is stored right after the last
+temporary it needs (constant entries first), so its operands need not stay live to the end of the
+function: outputs must not overlap inputs
 (docs/generated_api.md). The trailing run of stores is headed by `// outputs`. A comment
 names the phase of the algorithm (expr labels: `// outward pass: body 3 LF_knee`) where it changes.
 Constants print in their shortest round-trip form and a negative constant operand of + or − flips
@@ -18,13 +18,18 @@ the operator (`x + Scalar(0.5)`, never `x - Scalar(-0.5)`). Same DAG in, same te
 
 A lane function (fn.lanes, views/limb_lanes.py) also declares `Lane = Lanes<Scalar>` (rbdc_gen/lanes.hpp),
 its lane inputs and constants as arrays `lane_v[…]`, `lane_c[…]` of make_lanes(…), loads the sin/cos
-of a lane angle from ex.LANES consecutive joint_trig entries, declares lane temporaries `const Lane`,
+of a lane angle from ex.LANES consecutive joint_trig entries, declares lane temporaries `Lane`,
 reads lane k of a lane value as `t7[k]`, writes the runs where each limb's entries are the same lanes
 of several lane values (a leg's column of M) transposed, `store_transposed_lanes<6>({M + 144, …},
 {t21, …});` (`store_interleaved_lanes<3>(M + 6, {t73, …})` where the limbs' runs follow one
 another), and each other run of ex.LANES consecutive output entries with one vector store,
 `store_lanes(M + 8, make_lanes(…));` (of the lane value itself where the run holds its lanes in order),
-unless a scalar or a constant sits among its computed values: those entries are stored one by one."""
+unless a scalar or a constant sits among its computed values: those entries are stored one by one.
+
+No local is const: g++'s scalar replacement of aggregates skips const locals, so where Scalar or Lane
+is a class (a Pack of states, a lane vector) every const value stayed in memory, and g++ -O3 spent
+its time walking the aliases of thousands of stores (humanoid32's ∂q̈ terms on Batch<double>: 37 s,
+9 s without const)."""
 
 from __future__ import annotations
 
@@ -179,8 +184,8 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
         entries = [_offset(entry, lane_offsets.get(k, 0.0)) for k, entry in enumerate(entries)]
         rows = [", ".join(entries[i:i + ANGLES_PER_LINE]) for i in range(0, n, ANGLES_PER_LINE)]
         lines = ["// sines and cosines of the joint angles",
-                 "const Scalar joint_angle[%d] = {%s};" % (n, (",\n    ").join(rows))]
-    lines.append("const auto joint_trig = joint_sincos(joint_angle);")
+                 "Scalar joint_angle[%d] = {%s};" % (n, (",\n    ").join(rows))]
+    lines.append("auto joint_trig = joint_sincos(joint_angle);")
     suffix = {}  # angle id -> "", "_2", …: the angles of one input symbol in trig's order
     named = {}  # input symbol -> how many of its angles have a name
     for node in trig:
@@ -193,9 +198,9 @@ def _trig_block(trig, names, text, angle_names, lanes=None):
         if node.lane:
             load = ("load_lanes" if width(angle) == ex.LANES
                     else "load_repeated_lanes<%d>" % width(angle))
-            lines.append("const Lane %s = %s(joint_trig.%s + %d);" % (name, load, node.op, slot[angle.id]))
+            lines.append("Lane %s = %s(joint_trig.%s + %d);" % (name, load, node.op, slot[angle.id]))
         else:
-            lines.append("const Scalar %s = joint_trig.%s[%d];" % (name, node.op, slot[angle.id]))
+            lines.append("Scalar %s = joint_trig.%s[%d];" % (name, node.op, slot[angle.id]))
         names[node.id] = name
     return lines
 
@@ -272,7 +277,7 @@ def _lane_block(fn, order, names):
                                        for n in constants]))
     for name, items in arrays:
         if items:
-            lines.append("const Lane %s[%d] = {%s};" % (name, len(items), ",\n    ".join(items)))
+            lines.append("Lane %s[%d] = {%s};" % (name, len(items), ",\n    ".join(items)))
     return lines
 
 
@@ -355,7 +360,7 @@ def emit_body(fn, angle_names=None):
             lines.append(_marker(label))
         name = "t%d" % index
         index += 1
-        lines.append("const %s %s = %s;" % ("Lane" if node.lane else "Scalar", name, text(node, False)))
+        lines.append("%s %s = %s;" % ("Lane" if node.lane else "Scalar", name, text(node, False)))
         names[node.id] = name
     return lines
 

@@ -8,18 +8,18 @@ import re
 import unittest
 
 import numeric_check  # noqa: F401  (puts the generator on sys.path)
-from rbdcgen.backend.blocks import LANE_SPLIT_ABOVE, LANE_TYPE, SCRATCH, SPLIT_ABOVE, split
+from rbdcgen.backend.blocks import LANE_TYPE, SCRATCH, SPLIT_ABOVE, split
 from rbdcgen.graph import expr as ex
 
-LANE_ARRAYS = ["const Lane lane_c[1] = {make_lanes(Scalar(1), Scalar(2), Scalar(3), Scalar(4))};",
-               "const Lane lane_v[1] = {make_lanes(v[0], v[1], v[2], v[3])};"]
+LANE_ARRAYS = ["Lane lane_c[1] = {make_lanes(Scalar(1), Scalar(2), Scalar(3), Scalar(4))};",
+               "Lane lane_v[1] = {make_lanes(v[0], v[1], v[2], v[3])};"]
 
 
 def lane_body():
     """A lane function's statements: a scalar and a lane value defined first and read last, after
     more filler statements than one function may hold."""
-    body = [LANE_TYPE, *LANE_ARRAYS, "const Scalar s = v[0] * v[1];", "const Lane l = lane_c[0] * s;"]
-    body += ["const Scalar f%d = s * Scalar(%d);" % (i, i) for i in range(SPLIT_ABOVE)]
+    body = [LANE_TYPE, *LANE_ARRAYS, "Scalar s = v[0] * v[1];", "Lane l = lane_c[0] * s;"]
+    body += ["Scalar f%d = s * Scalar(%d);" % (i, i) for i in range(SPLIT_ABOVE)]
     return body + ["out[0] = s + l[1];", "store_lanes(out + 4, l * lane_v[0]);"]
 
 
@@ -33,8 +33,8 @@ class LaneBlocks(unittest.TestCase):
         lane = [int(m) for m in re.findall(r"store_lanes\(%s \+ (\d+), l\);" % SCRATCH, "\n".join(self.first))]
         self.assertEqual(len(scalar), 1)
         self.assertEqual(len(lane), 1)
-        self.assertIn("const Scalar s = %s[%d];" % (SCRATCH, scalar[0]), self.last)
-        self.assertIn("const Lane l = load_lanes(%s + %d);" % (SCRATCH, lane[0]), self.last)
+        self.assertIn("Scalar s = %s[%d];" % (SCRATCH, scalar[0]), self.last)
+        self.assertIn("Lane l = load_lanes(%s + %d);" % (SCRATCH, lane[0]), self.last)
         self.assertGreater(lane[0], scalar[0])  # ex.LANES entries past every scalar's
         self.assertEqual(self.blocks.scratch_size, lane[0] + ex.LANES)
 
@@ -54,17 +54,6 @@ class LaneBlocks(unittest.TestCase):
         for part in blocks.parts:
             self.assertNotIn(LANE_TYPE, part)
         self.assertEqual(blocks.scratch_size, 1)
-
-
-class Threshold(unittest.TestCase):
-    def test_lane_code_is_cut_sooner_than_scalar_code(self):
-        """Between the two thresholds a lane body is cut into blocks and a scalar body of the same
-        length stays one function (g++'s time per lane statement is the higher)."""
-        self.assertLess(LANE_SPLIT_ABOVE, SPLIT_ABOVE)
-        filler = ["const Scalar f%d = v[0] * Scalar(%d);" % (i, i) for i in range(LANE_SPLIT_ABOVE + 1)]
-        self.assertIsNotNone(split([LANE_TYPE, *LANE_ARRAYS, *filler], ["v", "out"], "f"))
-        self.assertIsNone(split(filler, ["v", "out"], "f"))
-        self.assertIsNone(split([LANE_TYPE, *LANE_ARRAYS, *filler[:LANE_SPLIT_ABOVE - 3]], ["v", "out"], "f"))
 
 
 if __name__ == "__main__":

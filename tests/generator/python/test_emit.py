@@ -47,7 +47,7 @@ class Emission(unittest.TestCase):
             lines = emit_body(fn)
             defined = set()
             for line in (l for l in lines if not l.startswith("//")):
-                declared = re.match(r"const Scalar (\w+) = (.*);$", line)
+                declared = re.match(r"Scalar (\w+) = (.*);$", line)
                 used = set(re.findall(r"\b(t\d+|sin_q_\d+|cos_q_\d+)\b",
                                       declared.group(2) if declared else line.split("=", 1)[1]))
                 self.assertLessEqual(used, defined, "%s: %s" % (fn.name, line))
@@ -68,18 +68,18 @@ class Emission(unittest.TestCase):
         lines = emit_body(fn)
         # two revolute joints; the prismatic one has no angle
         self.assertEqual(lines[:3], ["// sines and cosines of the joint angles",
-                                     "const Scalar joint_angle[2] = {q[7], q[8]};",
-                                     "const auto joint_trig = joint_sincos(joint_angle);"])
+                                     "Scalar joint_angle[2] = {q[7], q[8]};",
+                                     "auto joint_trig = joint_sincos(joint_angle);"])
         trig = [l for l in lines if "joint_trig." in l]
         self.assertEqual(lines[3:3 + len(trig)], trig)
         self.assertEqual(len(trig), 4)
-        self.assertEqual(trig[0], "const Scalar sin_q_7 = joint_trig.sin[0];")
+        self.assertEqual(trig[0], "Scalar sin_q_7 = joint_trig.sin[0];")
 
     def test_joint_trig_is_named_by_joint(self):
         fn = trace_function(ROBOT, default_scene(), "inverse_dynamics")
         lines = emit_body(fn, {("q", 7): "hip", ("q", 8): "knee"})
-        self.assertIn("const Scalar sin_hip = joint_trig.sin[0];", lines)
-        self.assertIn("const Scalar cos_knee = joint_trig.cos[1];", lines)
+        self.assertIn("Scalar sin_hip = joint_trig.sin[0];", lines)
+        self.assertIn("Scalar cos_knee = joint_trig.cos[1];", lines)
         self.assertFalse([l for l in lines if "sin_q_" in l or "cos_q_" in l])
 
     def test_markers_follow_the_passes_of_the_algorithm(self):
@@ -98,7 +98,7 @@ class Emission(unittest.TestCase):
             read = [int(t) for t in re.findall(r"\bt(\d+)\b", lines[i])]
             previous = next(lines[j] for j in range(i - 1, -1, -1) if not lines[j].startswith("//"))
             if read:
-                self.assertTrue(previous.startswith("const Scalar t%d = " % max(read))
+                self.assertTrue(previous.startswith("Scalar t%d = " % max(read))
                                 or previous.startswith("M["), (previous, lines[i]))
 
     def test_constants_are_exact_and_symmetric_entries_mirrored(self):

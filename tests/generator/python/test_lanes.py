@@ -160,7 +160,7 @@ class MiniCheetahLanes(unittest.TestCase):
             written = {arg.name: [] for arg in fn.outputs}
             vector_stores, transposed, interleaved = 0, set(), {}
             for line in (l for l in lines if not l.startswith("//")):
-                declared = re.match(r"const (?:Scalar|Lane) (t\d+) = ", line)
+                declared = re.match(r"(?:Scalar|Lane) (t\d+) = ", line)
                 if declared:
                     defined.add(declared.group(1))
                     continue

@@ -44,10 +44,10 @@ struct Pack {
   Vector v;
 
   Pack() = default;
+  // Implicit: generated code writes Scalar(0.209). One vector expression (x − 0 is x, −0 and NaN
+  // included), not a loop over the lanes: g++ kept each constant's loop and a memory temporary.
   template <class U, std::enable_if_t<std::is_arithmetic<U>::value, int> = 0>
-  Pack(U value) noexcept {  // implicit: generated code writes Scalar(0.209)
-    for (int k = 0; k < W; ++k) v[k] = static_cast<T>(value);
-  }
+  Pack(U value) noexcept : v(static_cast<T>(value) - Vector{}) {}
   explicit Pack(const Vector& lanes_) noexcept : v(lanes_) {}
 
   T operator[](int lane) const noexcept { return v[lane]; }

@@ -6,11 +6,11 @@
 // bias for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose bias is the same code:
-//   two_link/common/bias_875ced90fca8.hpp
+//   two_link/common/bias_0d70206297ec.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/bias_875ced90fca8.hpp"
+#include "two_link/common/bias_0d70206297ec.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::two_link::full {
 ///              29   15    0     0     2    0     46
 /// schedule: scalar tree: 46 arithmetic instructions (critical path 49 cycles, cost 168), one loop
 ///   along the chain 459 (path 49, cost 525)
-using ::rbdc_gen::two_link::common::bias_875ced90fca8::bias;
+using ::rbdc_gen::two_link::common::bias_0d70206297ec::bias;
 
 /// bias on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

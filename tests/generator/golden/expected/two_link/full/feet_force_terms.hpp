@@ -6,11 +6,11 @@
 // feet_force_terms for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_force_terms is the same code:
-//   two_link/common/feet_force_terms_3ac020cc7a70.hpp
+//   two_link/common/feet_force_terms_897cab580d64.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/feet_force_terms_3ac020cc7a70.hpp"
+#include "two_link/common/feet_force_terms_897cab580d64.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::two_link::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              22   13    0     0     2    0     37
-using ::rbdc_gen::two_link::common::feet_force_terms_3ac020cc7a70::feet_force_terms;
+using ::rbdc_gen::two_link::common::feet_force_terms_897cab580d64::feet_force_terms;
 
 /// feet_force_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

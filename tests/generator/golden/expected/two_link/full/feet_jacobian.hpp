@@ -6,11 +6,11 @@
 // feet_jacobian for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_jacobian is the same code:
-//   two_link/common/feet_jacobian_1169d17dfecd.hpp
+//   two_link/common/feet_jacobian_ce3c60ca3801.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/feet_jacobian_1169d17dfecd.hpp"
+#include "two_link/common/feet_jacobian_ce3c60ca3801.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -21,7 +21,7 @@ namespace rbdc_gen::two_link::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              25   17    0     0     2    2     46
-using ::rbdc_gen::two_link::common::feet_jacobian_1169d17dfecd::feet_jacobian;
+using ::rbdc_gen::two_link::common::feet_jacobian_ce3c60ca3801::feet_jacobian;
 
 /// feet_jacobian on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

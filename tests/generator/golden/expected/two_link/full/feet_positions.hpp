@@ -6,11 +6,11 @@
 // feet_positions for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_positions is the same code:
-//   two_link/common/feet_positions_17ce72554bca.hpp
+//   two_link/common/feet_positions_0fa0858e93f8.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/feet_positions_17ce72554bca.hpp"
+#include "two_link/common/feet_positions_0fa0858e93f8.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -21,7 +21,7 @@ namespace rbdc_gen::two_link::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              17   13    0     0     2    0     32
-using ::rbdc_gen::two_link::common::feet_positions_17ce72554bca::feet_positions;
+using ::rbdc_gen::two_link::common::feet_positions_0fa0858e93f8::feet_positions;
 
 /// feet_positions on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

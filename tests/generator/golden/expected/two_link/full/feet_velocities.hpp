@@ -6,11 +6,11 @@
 // feet_velocities for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose feet_velocities is the same code:
-//   two_link/common/feet_velocities_951e3b555ff6.hpp
+//   two_link/common/feet_velocities_e115fdb8cd06.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/feet_velocities_951e3b555ff6.hpp"
+#include "two_link/common/feet_velocities_e115fdb8cd06.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -22,7 +22,7 @@ namespace rbdc_gen::two_link::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              21   12    0     0     2    0     35
-using ::rbdc_gen::two_link::common::feet_velocities_951e3b555ff6::feet_velocities;
+using ::rbdc_gen::two_link::common::feet_velocities_e115fdb8cd06::feet_velocities;
 
 /// feet_velocities on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -6,11 +6,11 @@
 // forward_dynamics for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose forward_dynamics is the same code:
-//   two_link/common/forward_dynamics_0a2fcdf3c3d1.hpp
+//   two_link/common/forward_dynamics_589c2a222598.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/forward_dynamics_0a2fcdf3c3d1.hpp"
+#include "two_link/common/forward_dynamics_589c2a222598.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -28,7 +28,7 @@ namespace rbdc_gen::two_link::full {
 /// schedule: scalar tree: 102 arithmetic instructions (critical path 59 cycles, cost 250),
 ///   articulated-body algorithm 105 (path 59, cost 252), one loop along the chain 843 (path
 ///   59, cost 1070)
-using ::rbdc_gen::two_link::common::forward_dynamics_0a2fcdf3c3d1::forward_dynamics;
+using ::rbdc_gen::two_link::common::forward_dynamics_589c2a222598::forward_dynamics;
 
 /// forward_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -6,11 +6,11 @@
 // gravity_terms for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose gravity_terms is the same code:
-//   two_link/common/gravity_terms_e552de97c626.hpp
+//   two_link/common/gravity_terms_bd5091b366f1.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/gravity_terms_e552de97c626.hpp"
+#include "two_link/common/gravity_terms_bd5091b366f1.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -21,7 +21,7 @@ namespace rbdc_gen::two_link::full {
 ///
 /// operations  mul  add  div  sqrt  trig  neg  total
 ///              10    6    0     0     2    0     18
-using ::rbdc_gen::two_link::common::gravity_terms_e552de97c626::gravity_terms;
+using ::rbdc_gen::two_link::common::gravity_terms_bd5091b366f1::gravity_terms;
 
 /// gravity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -6,11 +6,11 @@
 // inverse_dynamics for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose inverse_dynamics is the same code:
-//   two_link/common/inverse_dynamics_b75acfefb320.hpp
+//   two_link/common/inverse_dynamics_c3c27e214b8d.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/inverse_dynamics_b75acfefb320.hpp"
+#include "two_link/common/inverse_dynamics_c3c27e214b8d.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::two_link::full {
 ///              35   21    0     0     2    0     58
 /// schedule: scalar tree: 58 arithmetic instructions (critical path 49 cycles, cost 180), one loop
 ///   along the chain 471 (path 49, cost 534)
-using ::rbdc_gen::two_link::common::inverse_dynamics_b75acfefb320::inverse_dynamics;
+using ::rbdc_gen::two_link::common::inverse_dynamics_c3c27e214b8d::inverse_dynamics;
 
 /// inverse_dynamics on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -6,11 +6,11 @@
 // mass_matrix for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix is the same code:
-//   two_link/common/mass_matrix_9fc0450583f5.hpp
+//   two_link/common/mass_matrix_69871136acb1.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/mass_matrix_9fc0450583f5.hpp"
+#include "two_link/common/mass_matrix_69871136acb1.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -23,7 +23,7 @@ namespace rbdc_gen::two_link::full {
 ///              15    9    0     0     0    0     24
 /// schedule: scalar tree: 24 arithmetic instructions (critical path 23 cycles, cost 82), looped
 ///   CRBA 355 (path 34, cost 576)
-using ::rbdc_gen::two_link::common::mass_matrix_9fc0450583f5::mass_matrix;
+using ::rbdc_gen::two_link::common::mass_matrix_69871136acb1::mass_matrix;
 
 /// mass_matrix on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

@@ -6,11 +6,11 @@
 // mass_matrix_factor for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose mass_matrix_factor is the same code:
-//   two_link/common/mass_matrix_factor_85025417e8f4.hpp
+//   two_link/common/mass_matrix_factor_7f8e6668ab7a.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/mass_matrix_factor_85025417e8f4.hpp"
+#include "two_link/common/mass_matrix_factor_7f8e6668ab7a.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -25,7 +25,7 @@ namespace rbdc_gen::two_link::full {
 ///              15    9    1     0     0    0     25
 /// schedule: scalar tree: 25 arithmetic instructions (critical path 36 cycles, cost 115), looped
 ///   factor 34 (path 36, cost 149), looped CRBA 365 (path 36, cost 616)
-using ::rbdc_gen::two_link::common::mass_matrix_factor_85025417e8f4::mass_matrix_factor;
+using ::rbdc_gen::two_link::common::mass_matrix_factor_7f8e6668ab7a::mass_matrix_factor;
 
 /// mass_matrix_factor on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>

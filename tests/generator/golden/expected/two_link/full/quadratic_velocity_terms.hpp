@@ -6,11 +6,11 @@
 // quadratic_velocity_terms for two_link, scene "full": the overload on the scene's Eigen
 // types, and the raw-pointer overload with the straight-line body, from the file shared by every
 // scene whose quadratic_velocity_terms is the same code:
-//   two_link/common/quadratic_velocity_terms_454b8ee8ae4f.hpp
+//   two_link/common/quadratic_velocity_terms_8f0402b71adf.hpp
 #pragma once
 
 #include "two_link/full.hpp"
-#include "two_link/common/quadratic_velocity_terms_454b8ee8ae4f.hpp"
+#include "two_link/common/quadratic_velocity_terms_8f0402b71adf.hpp"
 
 namespace rbdc_gen::two_link::full {
 
@@ -24,7 +24,7 @@ namespace rbdc_gen::two_link::full {
 ///              23    9    0     0     0    0     32
 /// schedule: scalar tree: 32 arithmetic instructions (critical path 30 cycles, cost 107), one loop
 ///   along the chain 459 (path 34, cost 488)
-using ::rbdc_gen::two_link::common::quadratic_velocity_terms_454b8ee8ae4f::quadratic_velocity_terms;
+using ::rbdc_gen::two_link::common::quadratic_velocity_terms_8f0402b71adf::quadratic_velocity_terms;
 
 /// quadratic_velocity_terms on Eigen fixed-size types; same as the raw-pointer overload above.
 template <class Scalar>
