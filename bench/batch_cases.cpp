@@ -1,7 +1,7 @@
 // Generated mini_cheetah code on SIMD batches (rbdc_gen/batch.hpp): one call evaluates
-// Batch<double> (8 states) or Batch<float> (16 states). Implementations "generated_double_x8" and
-// "generated_float_x16": the time is per call, so per state it is that over 8 or 16
-// (docs/performance.md). The states are the harness's, packed 8 or 16 at a time.
+// Batch<double> or Batch<float>, one register of states (8 or 16 with AVX-512). Implementations
+// "generated_double_xW" and "generated_float_xW", W the lanes: the time is per call, so per state it
+// is that over W (docs/performance.md). The states are the harness's, packed W at a time.
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -44,7 +44,8 @@ struct BatchContext {
 };
 
 template <class T>
-void add_batch_cases(const LoadedRobot& loaded, const std::string& implementation) {
+void add_batch_cases(const LoadedRobot& loaded, const std::string& kind) {
+  const std::string implementation = kind + "_x" + std::to_string(rbdc_gen::Batch<T>::lanes);
   if (loaded.model.nq != mc::nq || loaded.model.nv != mc::nv)
     throw std::runtime_error("generated/mini_cheetah does not match robots/mini_cheetah.urdf (run tools/regenerate)");
   using Context = BatchContext<T>;
@@ -71,8 +72,8 @@ void provide_batches() {
   for_each_loaded_robot(
       "generated batches",
       [](const LoadedRobot& loaded) {
-        add_batch_cases<double>(loaded, "generated_double_x8");
-        add_batch_cases<float>(loaded, "generated_float_x16");
+        add_batch_cases<double>(loaded, "generated_double");
+        add_batch_cases<float>(loaded, "generated_float");
       },
       "mini_cheetah");
 }

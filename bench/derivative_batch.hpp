@@ -1,9 +1,10 @@
-// generated_double_x8 (derivative_cases.hpp): the generated derivative code on Batch<double>, states
-// packed 8 at a time as in batch_cases.cpp; a call evaluates 8 states. Timed only (its lanes compute
+// generated_double_xW (derivative_cases.hpp): the generated derivative code on Batch<double>, states
+// packed W at a time as in batch_cases.cpp (W = 8 with AVX-512); a call evaluates W states. Timed only (its lanes compute
 // what generated_double computes).
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "derivative_cases.hpp"
@@ -47,8 +48,9 @@ void call_batch(void* context, int k) {
 template <class Api>
 void add_batch(const LoadedRobot& loaded) {
   auto ctx = std::make_shared<BatchContext<Api>>(to_arrays<double>(loaded.states));
-  add_case(loaded.robot.name, kId, "generated_double_x8", ctx, call_batch<Api, Quantity::inverse_dynamics>);
-  add_case(loaded.robot.name, kFd, "generated_double_x8", ctx, call_batch<Api, Quantity::forward_dynamics>);
+  const std::string implementation = "generated_double_x" + std::to_string(BatchContext<Api>::P::lanes);
+  add_case(loaded.robot.name, kId, implementation, ctx, call_batch<Api, Quantity::inverse_dynamics>);
+  add_case(loaded.robot.name, kFd, implementation, ctx, call_batch<Api, Quantity::forward_dynamics>);
 }
 
 template <class Api>

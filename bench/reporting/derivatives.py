@@ -18,8 +18,18 @@ DERIVATIVE_TARGETS = ["rbdc-bench-derivatives", "rbdc-derivative-error-study"]
 # order, and the primal call each is quoted against (timed in the same run).
 DERIVATIVE_PRIMAL = {"inverse_dynamics_derivatives": "inverse_dynamics",
                      "forward_dynamics_derivatives": "forward_dynamics"}
-DERIVATIVE_IMPLEMENTATIONS = ["generated_double", "generated_float", "generated_double_x8", "runtime",
+# generated_double_xW: Batch<double>, W its lanes on the machine (generated_double_x8 with AVX-512).
+DERIVATIVE_IMPLEMENTATIONS = ["generated_double", "generated_float", "generated_double_xW", "runtime",
                               "dual_ad", "finite_differences"]
+
+
+def _in_table_order(implementations):
+    """`implementations` in DERIVATIVE_IMPLEMENTATIONS' order (a batch by its kind), others left out."""
+    kinds = {name: re.sub(r"_x\d+$", "_xW", name) for name in implementations}
+    return sorted((name for name, kind in kinds.items() if kind in DERIVATIVE_IMPLEMENTATIONS),
+                  key=lambda name: DERIVATIVE_IMPLEMENTATIONS.index(kinds[name]))
+
+
 DERIVATIVE_TITLES = {"inverse_dynamics_derivatives": "∂τ/∂q, ∂τ/∂v",
                      "forward_dynamics_derivatives": "∂a/∂q, ∂a/∂v, ∂a/∂τ, ∂a/∂f"}
 # The error study's parts (generated outputs) in table order, and the variants in column order.
@@ -85,10 +95,8 @@ def derivative_markdown(table, details):
                   "FLOPs | generated double faster by (median) |", "|---|---|---|---|---|---|---|"]
         for quantity, entries in rows.items():
             fastest = entries.get("generated_double", {}).get("ns")
-            for implementation in DERIVATIVE_IMPLEMENTATIONS:
-                e = entries.get(implementation)
-                if not e:
-                    continue
+            for implementation in _in_table_order(entries):
+                e = entries[implementation]
                 per = (f"{e['per_primal_min']:.1f}×, {e['per_primal']:.1f}×" if "per_primal" in e else "–")
                 lanes = re.search(r"_x(\d+)$", implementation)
                 note = f" (per state {format_ns(e['ns'] / int(lanes.group(1)))})" if lanes else ""

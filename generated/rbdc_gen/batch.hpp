@@ -3,8 +3,8 @@
 //
 // SIMD batches of states for the generated functions (GCC and clang vector extensions):
 // Pack<T, W> holds one value for each of W states, so that any generated function instantiated with
-// Scalar = Pack<T, W> evaluates W states per call (Batch<double>: 8 lanes, Batch<float>: 16, one
-// AVX-512 register each). Only the raw-pointer overloads take packs. pack_states/unpack_states
+// Scalar = Pack<T, W> evaluates W states per call (Batch<T>: one register of the target, 8 doubles
+// with AVX-512, 4 with AVX, 2 with SSE2 alone). Only the raw-pointer overloads take packs. pack_states/unpack_states
 // convert between W states stored one after another and one pack per entry. docs/performance.md.
 #pragma once
 
@@ -72,9 +72,20 @@ struct Pack {
   Pack& operator/=(const Pack& b) noexcept { return *this = *this / b; }
 };
 
-/// One AVX-512 register of T: 8 doubles or 16 floats.
+#if defined(__AVX512F__)
+inline constexpr int kBatchBytes = 64;
+#elif defined(__AVX__)
+inline constexpr int kBatchBytes = 32;
+#else
+inline constexpr int kBatchBytes = 16;
+#endif
+
+/// One vector register of the target, of T: 8 doubles or 16 floats with AVX-512, 4 or 8 with AVX, 2
+/// or 4 with SSE2 alone. A pack wider than the registers stays in memory, value by value: with AVX2
+/// (-march=znver3) humanoid32's ∂q̈ on eight lanes ran 2.6 times slower a state than on four, and
+/// took 35 s of g++ instead of 13 (docs/performance.md, "Lane values g++ can keep in registers").
 template <class T>
-using Batch = Pack<T, 64 / static_cast<int>(sizeof(T))>;
+using Batch = Pack<T, kBatchBytes / static_cast<int>(sizeof(T))>;
 
 namespace simd {
 

@@ -1,6 +1,7 @@
-// rbdc_gen/batch.hpp: every Mini Cheetah function instantiated with Scalar = Batch<double> (8 lanes)
-// and Batch<float> (16 lanes) gives, lane by lane, what the scalar function gives for that lane's
-// state, to round-off; pack_states/unpack_states are inverse; Pack arithmetic and sin/cos per lane.
+// rbdc_gen/batch.hpp: every Mini Cheetah function instantiated with Scalar = Batch<double> and
+// Batch<float> (one register of the target: 8 and 16 lanes with AVX-512, 2 and 4 with SSE2 alone)
+// gives, lane by lane, what the scalar function gives for that lane's state, to round-off;
+// pack_states/unpack_states are inverse; Pack arithmetic and sin/cos per lane.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -124,15 +125,32 @@ void check_every_function(double tolerance) {
   });
 }
 
-TEST(Batch, EveryFunctionInDoubleEqualsEightScalarCalls) { check_every_function<double, 8>(1e-12); }
+TEST(Batch, EveryFunctionInDoubleEqualsOneScalarCallPerLane) {
+  check_every_function<double, rbdc_gen::Batch<double>::lanes>(1e-12);
+}
 
-TEST(Batch, EveryFunctionInFloatEqualsSixteenScalarCalls) { check_every_function<float, 16>(1e-4); }
+TEST(Batch, EveryFunctionInFloatEqualsOneScalarCallPerLane) {
+  check_every_function<float, rbdc_gen::Batch<float>::lanes>(1e-4);
+}
+
+TEST(Batch, IsOneRegisterOfTheTarget) {
+#if defined(__AVX512F__)
+  constexpr int bytes = 64;
+#elif defined(__AVX__)
+  constexpr int bytes = 32;
+#else
+  constexpr int bytes = 16;
+#endif
+  EXPECT_EQ(rbdc_gen::Batch<double>::lanes, bytes / 8);
+  EXPECT_EQ(rbdc_gen::Batch<float>::lanes, bytes / 4);
+  EXPECT_EQ(sizeof(rbdc_gen::Batch<double>), static_cast<size_t>(bytes));
+}
 
 TEST(Batch, PackAndUnpackAreInverse) {
   constexpr int W = 8, size = 5, stride = 7;  // stride > size: gaps between states stay untouched
   std::vector<double> states(W * stride);
   for (size_t i = 0; i < states.size(); ++i) states[i] = 0.5 * static_cast<double>(i);
-  rbdc_gen::Batch<double> packs[size];
+  rbdc_gen::Pack<double, W> packs[size];
   rbdc_gen::pack_states(states.data(), stride, size, packs);
   EXPECT_EQ(packs[2][3], states[3 * stride + 2]);
   std::vector<double> back(W * stride, -1.0);
@@ -184,7 +202,7 @@ TEST(Lanes, StoredTransposedPutsEachLimbsLanesTogether) {
 }
 
 TEST(Batch, ArithmeticAndTrigonometryPerLane) {
-  using P = rbdc_gen::Batch<double>;
+  using P = rbdc_gen::Pack<double, 8>;
   P x, y;
   for (int k = 0; k < P::lanes; ++k) {
     x.v[k] = 0.75 * k - 2.0;

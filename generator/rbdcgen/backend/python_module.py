@@ -8,8 +8,9 @@ from .names import cpp_identifier
 from .render import ALIASES, BATCH_HEADER, GeneratedFile, eigen_type, input_records, template_environment
 
 QUATERNION_W = 3  # q = (p, quaternion w x y z, joints) for a floating base (docs/conventions.md)
-# Lanes per call of the Pack kernels (rbdc_gen::Batch<T>: one AVX-512 register, two AVX2 ones).
-PACK_LANES = {"double": 8, "float": 16}
+# Lanes per call of the Pack kernels: rbdc_gen::Batch<T>, one register of the target the module is
+# compiled for.
+PACK_LANES = {"double": "rbdc_gen::Batch<double>::lanes", "float": "rbdc_gen::Batch<float>::lanes"}
 
 
 # Aliases that are matrices whatever their size (FeetMatrix of one foot is 3 x 1).
