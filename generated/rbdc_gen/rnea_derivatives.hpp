@@ -384,6 +384,7 @@ RBDC_HOST_DEVICE inline void rnea_derivatives_loop(const BodyTree<NB>& tree, con
         for (int c = 0; c < kSums; ++c) sum_rows[c][parent] = sum_rows[c][parent] + carry[c];
         break;
       }
+      RBDC_UNROLLED  // carry in registers: g++ left the loop rolled and carry on the stack
       for (int c = 0; c < kSums; ++c) sum_rows[c][parent] = carry[c] = sum_rows[c][parent] + carry[c];
       if (parent == 0) break;
     }
