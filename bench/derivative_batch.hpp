@@ -1,6 +1,6 @@
 // generated_double_xW (derivative_cases.hpp): the generated derivative code on Batch<double>, states
-// packed W at a time as in batch_cases.cpp (W = 8 with AVX-512); a call evaluates W states. Timed only (its lanes compute
-// what generated_double computes).
+// packed W at a time as in batch_cases.cpp (W = 8 with AVX-512); a call evaluates W states. Timed
+// only (its lanes compute what generated_double computes).
 #pragma once
 
 #include <memory>

@@ -5,7 +5,8 @@
 // Both are built from one translation unit per robot and implementation, written by CMake from
 // derivative_robot.cpp.in, so that the long generated functions compile in parallel:
 //   generated_double, generated_float   the generated derivative code (derivative_generated.hpp)
-//   generated_double_xW                 the same on Batch<double>, time per call of W states (8 with AVX-512)
+//   generated_double_xW                 the same on Batch<double>, time per call of W states (W = 8
+//                                       with AVX-512)
 //                                       (derivative_batch.hpp; timed only)
 //   dual_ad                             the generated PRIMAL code on forward-mode duals, 12
 //                                       directions per call (derivative_dual.hpp)

@@ -4,8 +4,9 @@
 // SIMD batches of states for the generated functions (GCC and clang vector extensions):
 // Pack<T, W> holds one value for each of W states, so that any generated function instantiated with
 // Scalar = Pack<T, W> evaluates W states per call (Batch<T>: one register of the target, 8 doubles
-// with AVX-512, 4 with AVX, 2 with SSE2 alone). Only the raw-pointer overloads take packs. pack_states/unpack_states
-// convert between W states stored one after another and one pack per entry. docs/performance.md.
+// with AVX-512, 4 with AVX, 2 with SSE2 alone). Only the raw-pointer overloads take packs.
+// pack_states/unpack_states convert between W states stored one after another and one pack per
+// entry. docs/performance.md.
 #pragma once
 
 #include <cmath>
